@@ -1,0 +1,147 @@
+//! Snell's law, `n_i sin θ_i = n_t sin θ_t`, and the angles it singles out:
+//! the critical angle of total internal reflection and Brewster's angle.
+//! Angles in radians; indices of refraction are unitless.
+//!
+//! Functions on angles take the relative index along the path,
+//! `eta = n_t / n_i` (light goes from medium i into medium t). Functions on
+//! signed cosines follow the crate convention: `eta = n_inside / n_outside`
+//! and the sign of `cos_i` says which side the light comes from; they resolve
+//! the side once, through [`Incidence::resolve`].
+//!
+//! ```
+//! use radiometry::snell;
+//!
+//! // The course's quiz: light leaving a medium of index 10 into air.
+//! let theta_c = snell::critical_angle(1.0_f64 / 10.0).unwrap();
+//! assert!((theta_c.to_degrees() - 5.739).abs() < 1e-3);
+//! // Entering a denser medium there is no critical angle.
+//! assert!(snell::critical_angle(1.5_f64).is_none());
+//! ```
+
+#[allow(unused_imports)]
+use num_traits::{Float, FloatConst, One, Zero};
+
+use crate::compensated;
+use crate::Real;
+
+/// The incident side of an interface, resolved from the sign of `cos_i`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Incidence<T> {
+    /// `|cos θ_i|`, clamped into `[0, 1]`.
+    pub cos_i: T,
+    /// The relative index along the path, `n_t / n_i`: `eta` when the light
+    /// arrives from the outside, `1 / eta` from the inside.
+    pub eta: T,
+    /// Whether the light arrives from the inside (`cos_i < 0`).
+    pub from_inside: bool,
+}
+
+impl<T: Real> Incidence<T> {
+    /// Resolves the side: flips `eta` to `1 / eta` when `cos_i < 0`.
+    ///
+    /// `cos_i` is clamped into `[-1, 1]`, absorbing the rounding of a dot
+    /// product of unit vectors; NaN stays NaN.
+    #[inline]
+    pub fn resolve(cos_i: T, eta: T) -> Self {
+        let from_inside = cos_i < T::zero();
+        let cos_i = clamp_unit(cos_i.abs());
+        let eta = if from_inside { eta.recip() } else { eta };
+        Self { cos_i, eta, from_inside }
+    }
+
+    /// `eta² cos²θ_t = eta² − sin²θ_i`, computed without cancellation.
+    /// Negative exactly when Snell's law has no real solution (total
+    /// internal reflection).
+    #[inline]
+    pub(crate) fn discriminant(&self) -> T {
+        compensated::eta2_minus_1_plus_c2(self.eta, T::zero(), self.cos_i)
+    }
+
+    /// `cos θ_t ≥ 0` on the far side, or `None` under total internal
+    /// reflection (`sin θ_t` would exceed 1).
+    #[inline]
+    pub fn cos_transmitted(&self) -> Option<T> {
+        let d = self.discriminant();
+        // `!(d >= 0)` also catches NaN.
+        if !(d >= T::zero()) {
+            return None;
+        }
+        Some(clamp_unit(d.sqrt() / self.eta))
+    }
+}
+
+/// `cos θ_t ≥ 0` for light with signed cosine `cos_i` at an interface of
+/// relative index `eta = n_inside / n_outside`, or `None` under total internal
+/// reflection.
+///
+/// Accurate to a few ulps also within 1e-12 rad of the critical angle, where
+/// `1 − sin²θ_t` cancels: the discriminant is summed in twice the precision.
+///
+/// ```
+/// use radiometry::snell::cos_transmitted;
+/// // Normal incidence goes straight through.
+/// assert_eq!(cos_transmitted(1.0_f64, 1.5), Some(1.0));
+/// // From inside glass, beyond the critical angle (41.8°), nothing transmits.
+/// let cos_60deg = 0.5_f64;
+/// assert_eq!(cos_transmitted(-cos_60deg, 1.5), None);
+/// ```
+#[inline]
+pub fn cos_transmitted<T: Real>(cos_i: T, eta: T) -> Option<T> {
+    Incidence::resolve(cos_i, eta).cos_transmitted()
+}
+
+/// The angle of refraction `θ_t` for light meeting the interface at `θ_i`
+/// (in `[0, π/2]`), with `eta = n_t / n_i`; `None` under total internal
+/// reflection.
+///
+/// ```
+/// use radiometry::snell::transmitted_angle;
+/// let theta_t = transmitted_angle(30f64.to_radians(), 1.5).unwrap();
+/// assert!((theta_t.sin() * 1.5 - 0.5).abs() < 1e-15);
+/// ```
+#[inline]
+pub fn transmitted_angle<T: Real>(theta_i: T, eta: T) -> Option<T> {
+    if !(eta > T::zero()) {
+        return None;
+    }
+    let sin_t = theta_i.sin() / eta;
+    (sin_t <= T::one()).then(|| sin_t.asin())
+}
+
+/// The critical angle `θ_c = asin(eta)` beyond which light from the denser
+/// side is totally reflected, with `eta = n_t / n_i`; `None` when `eta ≥ 1`
+/// (no critical angle going into a denser medium) or `eta` is not positive.
+#[inline]
+pub fn critical_angle<T: Real>(eta: T) -> Option<T> {
+    if !(eta > T::zero() && eta < T::one()) {
+        return None;
+    }
+    // atan2(eta, cos θ_c) keeps full precision as eta → 1, where asin is
+    // ill-conditioned; (1 − eta)(1 + eta) avoids the cancellation in 1 − eta².
+    let cos_c = ((T::one() - eta) * (T::one() + eta)).sqrt();
+    Some(eta.atan2(cos_c))
+}
+
+/// Brewster's angle `θ_B = atan(eta)`, with `eta = n_t / n_i`, at which the
+/// p-polarised reflectance vanishes; `None` for a non-positive `eta`.
+///
+/// ```
+/// let theta_b = radiometry::snell::brewster_angle(1.5_f64).unwrap();
+/// assert!((theta_b.to_degrees() - 56.31).abs() < 1e-2);
+/// ```
+#[inline]
+pub fn brewster_angle<T: Real>(eta: T) -> Option<T> {
+    (eta > T::zero()).then(|| eta.atan())
+}
+
+/// Clamps into `[-1, 1]`, keeping NaN (unlike `Float::max`/`min`, which drop it).
+#[inline]
+pub(crate) fn clamp_unit<T: Real>(x: T) -> T {
+    if x > T::one() {
+        T::one()
+    } else if x < -T::one() {
+        -T::one()
+    } else {
+        x
+    }
+}

@@ -1,0 +1,79 @@
+//! Directions of ideal (specular) reflection and refraction at a smooth
+//! interface: the law of reflection, `θ_r = θ_i` in the plane of incidence,
+//! and Snell's law in vector form. Directions are unit vectors pointing away
+//! from the surface (see the crate's conventions).
+
+#[allow(unused_imports)]
+use num_traits::{Float, FloatConst, One, Zero};
+
+use crate::snell::Incidence;
+use crate::Vector3;
+
+/// The mirror direction of `w` about the normal `n`: `2 (w·n) n − w`.
+///
+/// Both `w` and the result point away from the surface, on the same side;
+/// the sign of `n` does not matter. Reflecting twice gives `w` back.
+///
+/// The course's GLSL `reflect(I, N) = I − 2 (N·I) N` takes the incident ray's
+/// direction of travel `I = −w`; it returns the same vector.
+///
+/// ```
+/// use glam::DVec3;
+/// let r = radiometry::specular::reflect(DVec3::new(0.0, 0.6, 0.8), DVec3::Z);
+/// assert_eq!(r, DVec3::new(0.0, -0.6, 0.8));
+/// ```
+#[inline]
+pub fn reflect<V: Vector3>(w: V, n: V) -> V {
+    let two_cos = w.dot(n) + w.dot(n);
+    n * two_cos - w
+}
+
+/// A refracted ray: its direction and the relative index along the path.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Refraction<V: Vector3> {
+    /// The transmitted direction, a unit vector pointing away from the
+    /// surface on the side opposite to the incident light.
+    pub direction: V,
+    /// The effective relative index along the path, `n_t / n_i`: `eta` when
+    /// the light arrived from the outside, `1 / eta` from the inside. Radiance
+    /// crossing the interface scales by `1 / eta²`.
+    pub eta: V::Scalar,
+    /// `cos θ_t ≥ 0`, the cosine between the transmitted direction and the
+    /// normal on its side.
+    pub cos_t: V::Scalar,
+}
+
+/// Refracts the incident direction `wi` through an interface with normal
+/// `n` and relative index `eta = n_inside / n_outside`.
+///
+/// The side is read from the sign of `dot(n, wi)`: from the outside the
+/// light bends by `eta`, from the inside by `1 / eta`. Returns `None` when no
+/// refracted ray exists: under total internal reflection (Snell's law would
+/// need `sin θ_t > 1`), and for inputs that describe no interface (a NaN
+/// component, `eta ≤ 0` or not finite).
+///
+/// The transmitted direction is `−wi / η + (cos θ_i / η − cos θ_t) n'`, with
+/// `η` and `n'` the effective index and the normal on the incident side
+/// (pbrt-v4 §9.3, eq. 9.4). `cos θ_t` comes from [`Incidence::cos_transmitted`],
+/// accurate near the critical angle.
+///
+/// ```
+/// use glam::DVec3;
+/// use radiometry::specular::refract;
+/// // Straight through at normal incidence, from either side.
+/// assert_eq!(refract(DVec3::Z, DVec3::Z, 1.5).unwrap().direction, -DVec3::Z);
+/// assert_eq!(refract(-DVec3::Z, DVec3::Z, 1.5).unwrap().eta, 1.0 / 1.5);
+/// ```
+#[inline]
+pub fn refract<V: Vector3>(wi: V, n: V, eta: V::Scalar) -> Option<Refraction<V>> {
+    if !(eta > V::Scalar::zero() && eta.is_finite()) {
+        return None;
+    }
+    let cos_signed = n.dot(wi);
+    let incidence = Incidence::resolve(cos_signed, eta);
+    let cos_t = incidence.cos_transmitted()?;
+    let n_facing = if incidence.from_inside { -n } else { n };
+    let inv_eta = V::Scalar::one() / incidence.eta;
+    let direction = (n_facing * incidence.cos_i - wi) * inv_eta - n_facing * cos_t;
+    Some(Refraction { direction, eta: incidence.eta, cos_t })
+}
