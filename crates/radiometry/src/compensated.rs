@@ -1,7 +1,7 @@
 //! Error-free transformations for the few sums where the laws cancel.
 //!
-//! Near the critical angle `eta² − 1 + cos²θ` is a difference of nearly equal
-//! numbers, and near Brewster's angle so is `cos²θ (eta² + 1) − 1`. Evaluated
+//! Near the critical angle `n_t² − n_i² sin²θ` is a difference of nearly equal
+//! numbers, and near Brewster's angle so is `cos²θ (n_t² + n_i²) − n_i²`. Evaluated
 //! naively each loses as many digits as cancel (all of them within 1e-12 rad
 //! of the critical angle). Here every product is split exactly into a rounded
 //! value and its rounding error (`two_prod`, via a fused multiply-add) and
@@ -55,32 +55,40 @@ fn square_of_product<T: Real>(a: T, b: T) -> (T, T) {
     (q, qe + (p + p) * pe)
 }
 
-/// `x² − y² − 1 + c²` for the real part of `eta² − 1 + cos²θ` with a complex
-/// index `eta = x + i·y` (`y = 0` for a dielectric).
+// The interface quantities below are written for light going from a medium
+// of real index `n_i` into one of index `n_t = x + i·y` (`y = 0` for a
+// dielectric). The crate always has one of the two indices equal to 1, so no
+// ratio of indices is ever rounded.
+
+/// `x² − y² − n_i²`, the real part of `n_t² − n_i²`.
 #[inline]
-pub(crate) fn eta2_minus_1_plus_c2<T: Real>(x: T, y: T, c: T) -> T {
+pub(crate) fn index_contrast<T: Real>(x: T, y: T, n_i: T) -> T {
     let (x2, x2e) = two_prod(x, x);
     let (y2, y2e) = two_prod(y, y);
-    let (c2, c2e) = two_prod(c, c);
-    sum([x2, -T::one(), c2, -y2, x2e, c2e, -y2e])
+    let (i2, i2e) = two_prod(n_i, n_i);
+    sum([x2, -i2, -y2, x2e, -i2e, -y2e])
 }
 
-/// `x² − y² − 1`, the real part of `eta² − 1` with `eta = x + i·y`.
+/// `x² − y² − n_i² + (n_i c)²`, the real part of `n_t² − n_i² sin²θ_i`
+/// (`= n_t² cos²θ_t`), which vanishes at the critical angle.
 #[inline]
-pub(crate) fn eta2_minus_1<T: Real>(x: T, y: T) -> T {
+pub(crate) fn snell_discriminant<T: Real>(x: T, y: T, n_i: T, c: T) -> T {
     let (x2, x2e) = two_prod(x, x);
     let (y2, y2e) = two_prod(y, y);
-    sum([x2, -T::one(), -y2, x2e, -y2e])
+    let (i2, i2e) = two_prod(n_i, n_i);
+    let (ic2, ic2e) = square_of_product(n_i, c);
+    sum([x2, -i2, ic2, -y2, x2e, -i2e, ic2e, -y2e])
 }
 
-/// `c²(x² − y² + 1) − 1`, the real part of `cos²θ (eta² + 1) − 1`, which
-/// vanishes at Brewster's angle for a dielectric.
+/// `(c x)² − (c y)² + (c n_i)² − n_i²`, the real part of
+/// `c² (n_t² + n_i²) − n_i²`, which vanishes at Brewster's angle.
 #[inline]
-pub(crate) fn brewster_factor<T: Real>(x: T, y: T, c: T) -> T {
+pub(crate) fn brewster_factor<T: Real>(x: T, y: T, n_i: T, c: T) -> T {
     let (cx2, cx2e) = square_of_product(c, x);
     let (cy2, cy2e) = square_of_product(c, y);
-    let (c2, c2e) = two_prod(c, c);
-    sum([cx2, -cy2, c2, -T::one(), cx2e, -cy2e, c2e])
+    let (ci2, ci2e) = square_of_product(c, n_i);
+    let (i2, i2e) = two_prod(n_i, n_i);
+    sum([cx2, -cy2, ci2, -i2, cx2e, -cy2e, ci2e, -i2e])
 }
 
 #[cfg(test)]
@@ -103,8 +111,8 @@ mod tests {
         // form drops the 2⁻⁶⁰, the compensated one keeps it.
         let eta = 1.0 + 2f64.powi(-30);
         let exact = 2f64.powi(-29) + 2f64.powi(-60);
-        assert_eq!(eta2_minus_1_plus_c2(eta, 0.0, 0.0), exact);
-        assert_eq!(eta2_minus_1(eta, 0.0), exact);
+        assert_eq!(snell_discriminant(eta, 0.0, 1.0, 0.0), exact);
+        assert_eq!(index_contrast(eta, 0.0, 1.0), exact);
         assert_ne!(eta * eta - 1.0, exact);
     }
 }

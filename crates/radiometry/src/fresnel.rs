@@ -15,16 +15,20 @@
 //! The textbook form `r_s = (cos θ_i − η cos θ_t) / (cos θ_i + η cos θ_t)`
 //! cancels catastrophically twice: in `1 − sin²θ_t` near the critical angle,
 //! and in the numerator when `η → 1` or near Brewster's angle. Here both are
-//! removed algebraically. With `c = cos θ_i`, `s = η cos θ_t = √(η² − 1 + c²)`:
+//! removed algebraically. For light going from index `n_i` into `n_t`, with
+//! `c = cos θ_i`, `a = n_i c` and `s = n_t cos θ_t = √(n_t² − n_i² + a²)`:
 //!
 //! ```text
-//! r_s = (1 − η²) / (c + s)²                 t_s-power: T_s = 4 c s / (c + s)²
-//! r_p = (η² − 1)(c²(η² + 1) − 1) / (η² c + s)²     T_p = 4 η² c s / (η² c + s)²
+//! r_s = (n_i² − n_t²) / (a + s)²                          T_s = 4 a s / (a + s)²
+//! r_p = (n_t² − n_i²)(c²(n_t² + n_i²) − n_i²) / (n_t² c + n_i s)²
+//!                                                     T_p = 4 a s n_t² / (n_t² c + n_i s)²
 //! ```
 //!
 //! (multiply numerator and denominator of each textbook amplitude by its
-//! denominator, and use `s² = η² − 1 + c²`). The two sums that can still
-//! cancel, `η² − 1 + c²` and `c²(η² + 1) − 1`, are summed in twice the working
+//! denominator, and use Snell's law for `s²`). One of `n_i`, `n_t` is exactly
+//! 1 and the other is `eta`, so light from the inside never pays for a
+//! rounded `1 / eta`. The two sums that can still cancel, `s²` and the
+//! Brewster factor `c²(n_t² + n_i²) − n_i²`, are summed in twice the working
 //! precision. `T` is computed directly rather than as `1 − R`, so it keeps
 //! its relative accuracy where it is small (near the critical angle and at
 //! grazing incidence). The workspace test `fresnel_reference` measures the
@@ -104,8 +108,9 @@ pub fn schlick_dielectric<T: Real>(cos_i: T, eta: T) -> T {
         return T::nan();
     }
     let incidence = Incidence::resolve(cos_i, eta);
-    let f0 = f0(incidence.eta, T::zero());
-    if incidence.eta >= T::one() {
+    // F0 is the same from both sides: ((η−1)/(η+1))² = ((1/η−1)/(1/η+1))².
+    let f0 = f0(eta, T::zero());
+    if incidence.n_t >= incidence.n_i {
         schlick(incidence.cos_i, f0)
     } else {
         match incidence.cos_transmitted() {
@@ -181,36 +186,39 @@ pub fn dielectric_polarized<T: Real>(cos_i: T, eta: T) -> DielectricFresnel<T> {
         return DielectricFresnel::all(T::nan(), None, T::nan());
     }
     let incidence = Incidence::resolve(cos_i, eta);
-    let (c, eta) = (incidence.cos_i, incidence.eta);
-    let eta2_m1 = compensated::eta2_minus_1(eta, T::zero());
-    if eta2_m1 == T::zero() {
-        return DielectricFresnel::all(T::zero(), Some(c), eta);
+    let (c, n_i, n_t) = (incidence.cos_i, incidence.n_i, incidence.n_t);
+    let contrast = compensated::index_contrast(n_t, T::zero(), n_i); // n_t² − n_i²
+    if contrast == T::zero() {
+        return DielectricFresnel::all(T::zero(), Some(c), incidence.eta());
     }
-    let d = incidence.discriminant();
+    let d = incidence.discriminant(); // s² with s = n_t cos θ_t
     if d < T::zero() {
-        return DielectricFresnel::all(T::one(), None, eta);
+        return DielectricFresnel::all(T::one(), None, incidence.eta());
     }
-    let s = d.sqrt(); // η cos θ_t
-    let four_cs = T::lit(4.0) * c * s;
-    let eta2 = eta * eta;
+    let s = d.sqrt();
+    let a = n_i * c; // n_i cos θ_i
+    let four_as = T::lit(4.0) * a * s;
 
-    // (c + s)² = c² + 2cs + s², with s² = d exactly as computed: at grazing
-    // incidence this makes r_s = (1 − η²)/d = −1 to the last bit.
-    let ws2 = c * c + (c + c) * s + d;
-    let r_s = sqr(eta2_m1 / ws2);
-    let t_s = four_cs / ws2;
+    // (a + s)² as a² + 2as + s² with s² = d exactly as computed: at grazing
+    // incidence this makes r_s = (n_i² − n_t²)/d = −1 to the last bit.
+    let ws2 = a * a + (a + a) * s + d;
+    let r_s = sqr(contrast / ws2);
+    let t_s = four_as / ws2;
 
-    let wp = eta2 * c + s;
-    let r_p = sqr(eta2_m1 * compensated::brewster_factor(eta, T::zero(), c) / (wp * wp));
-    let t_p = four_cs * eta2 / (wp * wp);
+    let n_t2 = n_t * n_t;
+    let wp = n_t2 * c + n_i * s;
+    let wp2 = wp * wp;
+    let brewster = compensated::brewster_factor(n_t, T::zero(), n_i, c);
+    let r_p = sqr(contrast * brewster / wp2);
+    let t_p = four_as * n_t2 / wp2;
 
     DielectricFresnel {
         r_s: fraction(r_s),
         r_p: fraction(r_p),
         t_s: fraction(t_s),
         t_p: fraction(t_p),
-        cos_t: Some(clamp_unit(s / eta)),
-        eta,
+        cos_t: Some(clamp_unit(s / n_t)),
+        eta: incidence.eta(),
     }
 }
 
@@ -276,15 +284,16 @@ pub fn conductor_polarized<T: Real>(cos_i: T, n: T, kappa: T) -> ConductorFresne
     }
     let c = clamp_unit(cos_i.abs());
     let two_nk = (n + n) * kappa;
-    let eta2_m1 = Complex::new(compensated::eta2_minus_1(n, kappa), two_nk);
+    let one = T::one();
+    let eta2_m1 = Complex::new(compensated::index_contrast(n, kappa, one), two_nk);
     if eta2_m1.re == T::zero() && eta2_m1.im == T::zero() {
         return ConductorFresnel { r_s: T::zero(), r_p: T::zero() };
     }
     // s = η cos θ_t = √(η² − 1 + c²), principal branch (Re s ≥ 0).
-    let d = Complex::new(compensated::eta2_minus_1_plus_c2(n, kappa, c), two_nk);
+    let d = Complex::new(compensated::snell_discriminant(n, kappa, one, c), two_nk);
     let s = principal_sqrt(d);
-    let eta2 = Complex::new(eta2_m1.re + T::one(), two_nk);
-    let brewster = Complex::new(compensated::brewster_factor(n, kappa, c), c * c * two_nk);
+    let eta2 = Complex::new(eta2_m1.re + one, two_nk);
+    let brewster = Complex::new(compensated::brewster_factor(n, kappa, one, c), c * c * two_nk);
 
     let ws = s + c; // Re ws ≥ c ≥ 0: no cancellation
     let wp = eta2 * c + s;

@@ -25,36 +25,49 @@ use crate::compensated;
 use crate::Real;
 
 /// The incident side of an interface, resolved from the sign of `cos_i`.
+///
+/// The indices are kept apart rather than as their ratio: one of `n_i`,
+/// `n_t` is exactly 1 and the other is `eta`, so light from the inside never
+/// pays for a rounded `1 / eta`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Incidence<T> {
     /// `|cos θ_i|`, clamped into `[0, 1]`.
     pub cos_i: T,
-    /// The relative index along the path, `n_t / n_i`: `eta` when the light
-    /// arrives from the outside, `1 / eta` from the inside.
-    pub eta: T,
+    /// The (relative) index of the medium the light comes from: 1 from the
+    /// outside, `eta` from the inside.
+    pub n_i: T,
+    /// The (relative) index of the medium the light goes into: `eta` from the
+    /// outside, 1 from the inside.
+    pub n_t: T,
     /// Whether the light arrives from the inside (`cos_i < 0`).
     pub from_inside: bool,
 }
 
 impl<T: Real> Incidence<T> {
-    /// Resolves the side: flips `eta` to `1 / eta` when `cos_i < 0`.
+    /// Resolves the side from the sign of `cos_i`, for an interface of
+    /// relative index `eta = n_inside / n_outside`.
     ///
     /// `cos_i` is clamped into `[-1, 1]`, absorbing the rounding of a dot
     /// product of unit vectors; NaN stays NaN.
     #[inline]
     pub fn resolve(cos_i: T, eta: T) -> Self {
         let from_inside = cos_i < T::zero();
-        let cos_i = clamp_unit(cos_i.abs());
-        let eta = if from_inside { eta.recip() } else { eta };
-        Self { cos_i, eta, from_inside }
+        let (n_i, n_t) = if from_inside { (eta, T::one()) } else { (T::one(), eta) };
+        Self { cos_i: clamp_unit(cos_i.abs()), n_i, n_t, from_inside }
     }
 
-    /// `eta² cos²θ_t = eta² − sin²θ_i`, computed without cancellation.
+    /// The relative index along the path, `n_t / n_i` (rounded once).
+    #[inline]
+    pub fn eta(&self) -> T {
+        self.n_t / self.n_i
+    }
+
+    /// `n_t² cos²θ_t = n_t² − n_i² sin²θ_i`, computed without cancellation.
     /// Negative exactly when Snell's law has no real solution (total
     /// internal reflection).
     #[inline]
     pub(crate) fn discriminant(&self) -> T {
-        compensated::eta2_minus_1_plus_c2(self.eta, T::zero(), self.cos_i)
+        compensated::snell_discriminant(self.n_t, T::zero(), self.n_i, self.cos_i)
     }
 
     /// `cos θ_t ≥ 0` on the far side, or `None` under total internal
@@ -66,7 +79,7 @@ impl<T: Real> Incidence<T> {
         if !(d >= T::zero()) {
             return None;
         }
-        Some(clamp_unit(d.sqrt() / self.eta))
+        Some(clamp_unit(d.sqrt() / self.n_t))
     }
 }
 

@@ -73,7 +73,13 @@ pub fn refract<V: Vector3>(wi: V, n: V, eta: V::Scalar) -> Option<Refraction<V>>
     let incidence = Incidence::resolve(cos_signed, eta);
     let cos_t = incidence.cos_transmitted()?;
     let n_facing = if incidence.from_inside { -n } else { n };
-    let inv_eta = V::Scalar::one() / incidence.eta;
-    let direction = (n_facing * incidence.cos_i - wi) * inv_eta - n_facing * cos_t;
-    Some(Refraction { direction, eta: incidence.eta, cos_t })
+    // The tangential part scales by n_i / n_t; one of the two is exactly 1.
+    let tangential = n_facing * incidence.cos_i - wi;
+    let tangential = if incidence.from_inside {
+        tangential * incidence.n_i
+    } else {
+        tangential * (V::Scalar::one() / incidence.n_t)
+    };
+    let direction = tangential - n_facing * cos_t;
+    Some(Refraction { direction, eta: incidence.eta(), cos_t })
 }

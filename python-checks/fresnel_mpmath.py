@@ -1,0 +1,246 @@
+"""Exact Fresnel reflectance references computed with mpmath.
+
+Regenerate (from the repository root; the output is byte-for-byte stable):
+
+    python3 python-checks/fresnel_mpmath.py
+
+writes ``validation/reference/fresnel_mpmath.json``.
+
+The formulas are the plain textbook ones, deliberately independent of the
+reformulated Rust implementation. Everything is evaluated at ``mp.dps = 90``
+so that cancellation (near the critical angle, near eta = 1) costs nothing;
+values are stored to 50 significant digits.
+
+Dielectric, ``eta = n_inside / n_outside``, signed ``cos_i`` (> 0: light from
+outside, eta_eff = eta; < 0: light from inside, eta_eff = 1 / eta), c = |cos_i|:
+
+    sin2_t = (1 - c^2) / eta_eff^2          TIR if sin2_t > 1: R_s = R_p = 1, T = 0
+    cos_t  = sqrt(1 - sin2_t)
+    r_s = (c - eta_eff cos_t) / (c + eta_eff cos_t)     R_s = r_s^2
+    r_p = (eta_eff c - cos_t) / (eta_eff c + cos_t)     R_p = r_p^2
+    R = (R_s + R_p) / 2,  T = 1 - R  (exact subtraction, so R + T == 1 exactly)
+
+and eta == 1 exactly is index matched: R = 0, T = 1 at every angle.
+
+Conductor, complex index eta = n + i kappa, light from outside, c = |cos_i|:
+the same r_s, r_p with cos_t = sqrt(1 - (1 - c^2) / eta^2) (principal branch),
+R_s = |r_s|^2, R_p = |r_p|^2, R = mean; n = 1, kappa = 0 gives 0.
+
+Inputs are exactly representable in their tier ("f64": Python floats; "f32":
+float32 values stored as the exact Python float) and the reference is computed
+at the stored value. Every quantity q is stored as [hi, lo] (hi = nearest
+double, lo = nearest double of q - hi) and, for R and T, as a 50-digit string.
+The relative condition number is cond = sum_x |x dq/dx / q| over the inputs
+(cos_i, eta) or (cos_i, n, kappa), by central differences (mpmath.diff) with
+step |x| * 2^-120, which never straddles the critical angle (checked). It is
+0.0 where q == 0 or under TIR; at eta == 1 exactly R has a double zero in eta
+and is identically 0 in cos_i, so cond_t = 0.0 there too (at cos_i = 0 that
+limit is discontinuous; 0.0 is stored by the same convention).
+"""
+import json
+import math
+import os
+import struct
+import sys
+
+import mpmath
+from mpmath import mp, mpc, mpf
+
+DPS = 90
+DIGITS = 50
+STEP = mpf(2) ** -120
+mp.dps = DPS
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+DEFAULT_PATH = os.path.join(ROOT, "validation", "reference", "fresnel_mpmath.json")
+
+
+def dielectric(cos_i, eta):
+    """Textbook dielectric Fresnel terms at the current precision (a dict)."""
+    cos_i, eta = mpf(cos_i), mpf(eta)
+    if eta == 1:
+        return {"r_s": mpf(0), "r_p": mpf(0), "r": mpf(0), "t": mpf(1), "tir": False}
+    eta_eff = eta if cos_i >= 0 else 1 / eta
+    c = abs(cos_i)
+    sin2_t = (1 - c * c) / (eta_eff * eta_eff)
+    if sin2_t > 1:
+        return {"r_s": mpf(1), "r_p": mpf(1), "r": mpf(1), "t": mpf(0), "tir": True}
+    cos_t = mp.sqrt(1 - sin2_t)
+    r_s = (c - eta_eff * cos_t) / (c + eta_eff * cos_t)
+    r_p = (eta_eff * c - cos_t) / (eta_eff * c + cos_t)
+    R_s, R_p = r_s * r_s, r_p * r_p
+    R = (R_s + R_p) / 2
+    return {"r_s": R_s, "r_p": R_p, "r": R, "t": mp.fsub(1, R, exact=True), "tir": False}
+
+
+def conductor(cos_i, n, kappa):
+    """Textbook conductor Fresnel reflectances (R_s, R_p, R), light from outside."""
+    c, n, kappa = abs(mpf(cos_i)), mpf(n), mpf(kappa)
+    if n == 1 and kappa == 0:
+        return mpf(0), mpf(0), mpf(0)
+    eta = mpc(n, kappa)
+    cos_t = mp.sqrt(1 - (1 - c * c) / (eta * eta))
+    r_s = (c - eta * cos_t) / (c + eta * cos_t)
+    r_p = (eta * c - cos_t) / (eta * c + cos_t)
+    R_s, R_p = abs(r_s) ** 2, abs(r_p) ** 2
+    return R_s, R_p, (R_s + R_p) / 2
+
+
+def _log_sensitivities(f, args, regime=None):
+    """|x_i * df/dx_i| for each input (0 where x_i == 0), by central differences.
+
+    ``regime(*args)`` (optional) must not change across x_i +- h: this guards
+    against a difference quotient straddling the critical angle."""
+    out = []
+    for i, x in enumerate(map(mpf, args)):
+        if x == 0:
+            out.append(mpf(0))
+            continue
+        h = abs(x) * STEP
+
+        def at(t, i=i):
+            return [mpf(a) for a in args[:i]] + [t] + [mpf(a) for a in args[i + 1:]]
+
+        if regime is not None and len({regime(*at(x + k * h)) for k in (-1, 0, 1)}) != 1:
+            raise ArithmeticError(f"difference straddles a regime change at {args!r}")
+        out.append(abs(x * mp.diff(lambda t: f(*at(t)), x, h=h)))
+    return out
+
+
+def _cond(sens, q):
+    return 0.0 if q == 0 else float(mp.fsum(sens) / abs(q))
+
+
+def _pair(x):
+    hi = float(x)
+    return [hi, float(x - hi)]
+
+
+def dielectric_case(label, cos_i, eta):
+    d = dielectric(cos_i, eta)
+    sens = [] if eta == 1 else _log_sensitivities(  # eta == 1: both conds 0 (docstring)
+        lambda c, e: dielectric(c, e)["r"], (cos_i, eta), regime=lambda c, e: dielectric(c, e)["tir"])
+    return {"label": label, "cos_i": cos_i, "eta": eta, "tir": d["tir"],
+            "r_s": _pair(d["r_s"]), "r_p": _pair(d["r_p"]), "r": _pair(d["r"]), "t": _pair(d["t"]),
+            "r_digits": mp.nstr(d["r"], DIGITS), "t_digits": mp.nstr(d["t"], DIGITS),
+            "cond_r": _cond(sens, d["r"]), "cond_t": _cond(sens, d["t"])}
+
+
+def conductor_case(label, cos_i, n, kappa):
+    R_s, R_p, R = conductor(cos_i, n, kappa)
+    sens = _log_sensitivities(lambda c, a, b: conductor(c, a, b)[2], (cos_i, n, kappa))
+    return {"label": label, "cos_i": cos_i, "n": n, "kappa": kappa,
+            "r_s": _pair(R_s), "r_p": _pair(R_p), "r": _pair(R),
+            "r_digits": mp.nstr(R, DIGITS), "cond_r": _cond(sens, R)}
+
+
+# ---------------------------------------------------------------- input grids
+def f32(x):
+    """Round a double to the nearest float32, returned as the exact Python float."""
+    return struct.unpack("<f", struct.pack("<f", x))[0]
+
+
+def f32_step(x, k):
+    """The float32 k steps from float32 x away from zero (k < 0: towards zero)."""
+    return struct.unpack("<f", struct.pack("<I", struct.unpack("<I", struct.pack("<f", x))[0] + k))[0]
+
+
+COS = [("1", 1.0), ("0.9999999", 0.9999999), ("0.99", 0.99), ("0.9", 0.9), ("0.7", 0.7),
+       ("0.5", 0.5), ("0.3", 0.3), ("0.1", 0.1), ("1e-3", 1e-3), ("1e-8", 1e-8)]
+TINY_COS = {"f64": [("1e-300", 1e-300)], "f32": [("1e-38", 1e-38), ("2^-149", 2.0 ** -149)]}
+DIELECTRICS = [("glass", 1.5), ("water", 1.333), ("diamond", 2.42), ("index-matched", 1.0)]
+NEAR_ONE = {"f64": [("eta=1+1e-12", 1 + 1e-12), ("eta=1-1e-12", 1 - 1e-12)],
+            "f32": [("eta=1+2^-23", 1 + 2.0 ** -23), ("eta=1-2^-24", 1 - 2.0 ** -24)]}
+OTHER = [("eta=1e-3", 1e-3), ("eta=1e3", 1e3), ("eta=1.0001", 1.0001)]
+CONDUCTORS = [("gold R", 0.17, 3.1), ("gold G", 0.35, 2.7), ("gold B", 1.5, 1.9),
+              ("aluminium", 1.2, 7.0), ("silver", 0.15, 3.6), ("copper", 0.27, 3.4),
+              ("kappa=1e3 n=1", 1.0, 1e3), ("n=1e-3 kappa=1", 1e-3, 1.0),
+              ("dielectric via conductor n=1.5", 1.5, 0.0),
+              ("dielectric below 1 via conductor n=0.5", 0.5, 0.0),
+              ("index matched via conductor", 1.0, 0.0)]
+TINY_KAPPA = {"f64": ("tiny absorption kappa=1e-12", 1.5, 1e-12),
+              "f32": ("tiny absorption kappa=1e-7", 1.5, 1e-7)}
+
+
+def _near(name, offsets, exact_cos, side):
+    """[(label, cos_i)] with cos_i = side * cos(theta + d), rounded to double, for
+    angle offsets d (decimal strings, radians) about theta = acos(exact_cos)."""
+    theta, where = mp.acos(exact_cos), ("outside" if side > 0 else "inside")
+    return [(f"{name} {where} {lab}", float(side * mp.cos(theta + mpf(d)))) for lab, d in offsets]
+
+
+def dielectric_inputs(tier):
+    """[(label, cos_i, eta)] for one tier, in a fixed order."""
+    rnd = f32 if tier == "f32" else float
+    cos_grid = [(lab, rnd(x)) for lab, x in COS + TINY_COS[tier]] + [("0", 0.0)]
+    out = []
+    for name, eta in DIELECTRICS + NEAR_ONE[tier] + OTHER:
+        eta = rnd(eta)
+        for lab, c in cos_grid:
+            out.append((f"{name} outside cos={lab}", c, eta))
+            if c != 0:
+                out.append((f"{name} inside cos=-{lab}", -c, eta))
+    glass, water = rnd(1.5), rnd(1.333)
+    crit = lambda eta: mp.sqrt(1 - 1 / mpf(eta) ** 2)  # cos of the critical angle
+    brewster = 1 / mp.sqrt(1 + mpf(glass) ** 2)  # cos(atan(eta))
+    if tier == "f64":
+        offs = [(f"critical{s}rad", s) for s in ("-1e-6", "-1e-9", "-1e-12", "+1e-12", "+1e-9", "+1e-6")]
+        near = _near("glass", offs, crit(glass), -1)
+        x = float(-crit(glass))
+        near += [("glass inside critical nearest double", x),
+                 ("glass inside critical |cos|+1ulp", math.nextafter(x, -math.inf)),
+                 ("glass inside critical |cos|-1ulp", math.nextafter(x, math.inf))]
+        out += [(lab, c, glass) for lab, c in near]
+        out += [(lab, c, water) for lab, c in _near("water", offs[2:4], crit(water), -1)]
+        offs = [("brewster", "0")] + [(f"brewster{s}rad", s) for s in ("-1e-9", "+1e-9", "-1e-4", "+1e-4")]
+        out += [(lab, c, glass) for lab, c in _near("glass", offs, brewster, 1)]
+    else:
+        x, b = f32(float(-crit(glass))), f32(float(brewster))
+        out += [(f"glass inside critical f32 |cos|{k:+d}ulp" if k else "glass inside critical f32 nearest",
+                 f32_step(x, k), glass) for k in range(-4, 5)]
+        out += [(f"glass outside brewster f32 {k:+d}ulp" if k else "glass outside brewster f32 nearest",
+                 f32_step(b, k), glass) for k in range(-2, 3)]
+    return out
+
+
+def conductor_inputs(tier):
+    """[(label, cos_i, n, kappa)] for one tier, in a fixed order."""
+    rnd = f32 if tier == "f32" else float
+    cos_grid = [(lab, rnd(x)) for lab, x in COS if lab != "0.9999999"]
+    cos_grid += [(lab, rnd(x)) for lab, x in TINY_COS[tier] if lab != "2^-149"] + [("0", 0.0)]
+    return [(f"{name} cos={lab}", c, rnd(n), rnd(k))
+            for name, n, k in CONDUCTORS + [TINY_KAPPA[tier]] for lab, c in cos_grid]
+
+
+def build_reference():
+    """The whole reference document as a JSON-ready dict (deterministic)."""
+    doc = {"schema": "fresnel-reference/1",
+           "description": "Exact textbook Fresnel reflectances and transmittances of dielectrics and "
+                          "conductors at exactly representable f64 and f32 inputs, computed with mpmath.",
+           "regenerate": "python3 python-checks/fresnel_mpmath.py",
+           "generator": "python-checks/fresnel_mpmath.py",
+           "mpmath_version": mpmath.__version__,
+           "significant_digits": DIGITS,
+           "conventions": "eta = n_inside / n_outside; cos_i > 0: light from outside; "
+                          "conductor index n + i kappa, light from outside",
+           "dielectric": {}, "conductor": {}}
+    with mp.workdps(DPS):
+        for tier in ("f64", "f32"):
+            doc["dielectric"][tier] = [dielectric_case(*a) for a in dielectric_inputs(tier)]
+            doc["conductor"][tier] = [conductor_case(*a) for a in conductor_inputs(tier)]
+    for kind in ("dielectric", "conductor"):
+        for tier, cases in doc[kind].items():
+            labels = [c["label"] for c in cases]
+            assert len(set(labels)) == len(labels), f"duplicate labels in {kind}/{tier}"
+    return doc
+
+
+def main(path=DEFAULT_PATH):
+    os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
+    with open(path, "w", encoding="utf-8", newline="\n") as fh:
+        json.dump(build_reference(), fh, indent=1, allow_nan=False)
+        fh.write("\n")
+
+
+if __name__ == "__main__":
+    main(sys.argv[1] if len(sys.argv) > 1 else DEFAULT_PATH)
