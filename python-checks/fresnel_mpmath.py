@@ -8,8 +8,9 @@ writes ``validation/reference/fresnel_mpmath.json``.
 
 The formulas are the plain textbook ones, deliberately independent of the
 reformulated Rust implementation. Everything is evaluated at ``mp.dps = 90``
-so that cancellation (near the critical angle, near eta = 1) costs nothing;
-values are stored to 50 significant digits.
+(more at grazing incidence, see ``working_dps``: there T = 1 - R ~ |cos_i|)
+so that cancellation (near the critical angle, near eta = 1, in T) costs
+nothing; values are stored to 50 significant digits.
 
 Dielectric, ``eta = n_inside / n_outside``, signed ``cos_i`` (> 0: light from
 outside, eta_eff = eta; < 0: light from inside, eta_eff = 1 / eta), c = |cos_i|:
@@ -24,12 +25,14 @@ and eta == 1 exactly is index matched: R = 0, T = 1 at every angle.
 
 Conductor, complex index eta = n + i kappa, light from outside, c = |cos_i|:
 the same r_s, r_p with cos_t = sqrt(1 - (1 - c^2) / eta^2) (principal branch),
-R_s = |r_s|^2, R_p = |r_p|^2, R = mean; n = 1, kappa = 0 gives 0.
+R_s = |r_s|^2, R_p = |r_p|^2 (as |numerator|^2 / |denominator|^2), R = mean;
+n = 1, kappa = 0 gives 0.
 
 Inputs are exactly representable in their tier ("f64": Python floats; "f32":
 float32 values stored as the exact Python float) and the reference is computed
-at the stored value. Every quantity q is stored as [hi, lo] (hi = nearest
-double, lo = nearest double of q - hi) and, for R and T, as a 50-digit string.
+at the stored value. The keys r_s, r_p, r, t hold the power quantities R_s,
+R_p, R, T, each as [hi, lo] (hi = nearest double, lo = nearest double of
+q - hi); R and T also as 50-digit strings (r_digits, t_digits).
 The relative condition number is cond = sum_x |x dq/dx / q| over the inputs
 (cos_i, eta) or (cos_i, n, kappa), by central differences (mpmath.diff) with
 step |x| * 2^-120, which never straddles the critical angle (checked). It is
@@ -80,9 +83,10 @@ def conductor(cos_i, n, kappa):
         return mpf(0), mpf(0), mpf(0)
     eta = mpc(n, kappa)
     cos_t = mp.sqrt(1 - (1 - c * c) / (eta * eta))
-    r_s = (c - eta * cos_t) / (c + eta * cos_t)
-    r_p = (eta * c - cos_t) / (eta * c + cos_t)
-    R_s, R_p = abs(r_s) ** 2, abs(r_p) ** 2
+    abs2 = lambda z: z.real ** 2 + z.imag ** 2  # |z|^2 without a square root
+    # |r|^2 = |num|^2 / |den|^2: exactly 1 under TIR (kappa = 0, n < 1), where num = conj(den)
+    R_s = abs2(c - eta * cos_t) / abs2(c + eta * cos_t)
+    R_p = abs2(eta * c - cos_t) / abs2(eta * c + cos_t)
     return R_s, R_p, (R_s + R_p) / 2
 
 
@@ -107,6 +111,12 @@ def _log_sensitivities(f, args, regime=None):
     return out
 
 
+def working_dps(cos_i):
+    """DPS, plus ~log10(1/|cos_i|) digits: at grazing incidence T = 1 - R ~ |cos_i|
+    cancels, and so does the difference quotient of R in cos_i."""
+    return DPS + max(0, -math.frexp(cos_i)[1]) // 3  # 2^3 < 10: at least log10(1/c)
+
+
 def _cond(sens, q):
     return 0.0 if q == 0 else float(mp.fsum(sens) / abs(q))
 
@@ -117,24 +127,26 @@ def _pair(x):
 
 
 def dielectric_case(label, cos_i, eta):
-    d = dielectric(cos_i, eta)
-    sens = [] if eta == 1 else _log_sensitivities(  # eta == 1: both conds 0 (docstring)
-        lambda c, e: dielectric(c, e)["r"], (cos_i, eta), regime=lambda c, e: dielectric(c, e)["tir"])
-    return {"label": label, "cos_i": cos_i, "eta": eta, "tir": d["tir"],
-            "r_s": _pair(d["r_s"]), "r_p": _pair(d["r_p"]), "r": _pair(d["r"]), "t": _pair(d["t"]),
-            "r_digits": mp.nstr(d["r"], DIGITS), "t_digits": mp.nstr(d["t"], DIGITS),
-            "cond_r": _cond(sens, d["r"]), "cond_t": _cond(sens, d["t"])}
+    with mp.workdps(working_dps(cos_i)):
+        d = dielectric(cos_i, eta)
+        sens = [] if eta == 1 else _log_sensitivities(  # eta == 1: both conds 0 (docstring)
+            lambda c, e: dielectric(c, e)["r"], (cos_i, eta), regime=lambda c, e: dielectric(c, e)["tir"])
+        return {"label": label, "cos_i": cos_i, "eta": eta, "tir": d["tir"],
+                "r_s": _pair(d["r_s"]), "r_p": _pair(d["r_p"]), "r": _pair(d["r"]), "t": _pair(d["t"]),
+                "r_digits": mp.nstr(d["r"], DIGITS), "t_digits": mp.nstr(d["t"], DIGITS),
+                "cond_r": _cond(sens, d["r"]), "cond_t": _cond(sens, d["t"])}
 
 
 def conductor_case(label, cos_i, n, kappa):
-    R_s, R_p, R = conductor(cos_i, n, kappa)
-    sens = _log_sensitivities(lambda c, a, b: conductor(c, a, b)[2], (cos_i, n, kappa))
-    return {"label": label, "cos_i": cos_i, "n": n, "kappa": kappa,
-            "r_s": _pair(R_s), "r_p": _pair(R_p), "r": _pair(R),
-            "r_digits": mp.nstr(R, DIGITS), "cond_r": _cond(sens, R)}
+    with mp.workdps(working_dps(cos_i)):
+        R_s, R_p, R = conductor(cos_i, n, kappa)
+        sens = _log_sensitivities(lambda c, a, b: conductor(c, a, b)[2], (cos_i, n, kappa))
+        return {"label": label, "cos_i": cos_i, "n": n, "kappa": kappa,
+                "r_s": _pair(R_s), "r_p": _pair(R_p), "r": _pair(R),
+                "r_digits": mp.nstr(R, DIGITS), "cond_r": _cond(sens, R)}
 
 
-# ---------------------------------------------------------------- input grids
+# Input grids ---------------------------------------------------------------
 def f32(x):
     """Round a double to the nearest float32, returned as the exact Python float."""
     return struct.unpack("<f", struct.pack("<f", x))[0]

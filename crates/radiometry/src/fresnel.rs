@@ -205,9 +205,10 @@ pub fn dielectric_polarized<T: Real>(cos_i: T, eta: T) -> DielectricFresnel<T> {
     let r_s = sqr(contrast / ws2);
     let t_s = four_as / ws2;
 
+    // (n_t² c + n_i s)² likewise with n_i² d for (n_i s)²: exact at grazing.
     let n_t2 = n_t * n_t;
-    let wp = n_t2 * c + n_i * s;
-    let wp2 = wp * wp;
+    let b = n_t2 * c;
+    let wp2 = b * b + (b + b) * (n_i * s) + n_i * n_i * d;
     let brewster = compensated::brewster_factor(n_t, T::zero(), n_i, c);
     let r_p = sqr(contrast * brewster / wp2);
     let t_p = four_as * n_t2 / wp2;
@@ -295,11 +296,15 @@ pub fn conductor_polarized<T: Real>(cos_i: T, n: T, kappa: T) -> ConductorFresne
     let eta2 = Complex::new(eta2_m1.re + one, two_nk);
     let brewster = Complex::new(compensated::brewster_factor(n, kappa, one, c), c * c * two_nk);
 
-    let ws = s + c; // Re ws ≥ c ≥ 0: no cancellation
-    let wp = eta2 * c + s;
+    // |x + s|² = |x|² + 2 Re(x̄ s) + |s|² with |s|² = |d|: at grazing incidence
+    // (x = 0) the ratios below are then |d| / |d| = 1 to the last bit.
     let abs = |z: Complex<T>| z.re.hypot(z.im);
-    let r_s = sqr(abs(eta2_m1) / ws.norm_sqr());
-    let r_p = sqr(abs(eta2_m1) * abs(brewster) / wp.norm_sqr());
+    let two = T::lit(2.0);
+    let ws2 = c * c + two * c * s.re + abs(d); // Re s ≥ 0: no cancellation
+    let b = eta2 * c;
+    let wp2 = b.norm_sqr() + two * (b.re * s.re + b.im * s.im) + abs(d);
+    let r_s = sqr(abs(eta2_m1) / ws2);
+    let r_p = sqr(abs(eta2_m1) * abs(brewster) / wp2);
     ConductorFresnel { r_s: fraction(r_s), r_p: fraction(r_p) }
 }
 

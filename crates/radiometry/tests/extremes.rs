@@ -1,0 +1,225 @@
+//! Numerical stability at the extremes of every input: each named test is
+//! one extreme. No valid input may give NaN or infinity; invalid input gives
+//! what the crate conventions document (NaN, or `None` for a direction).
+//!
+//! Exact values at these extremes, to the last bit, are checked against
+//! 50-digit references in the workspace test `fresnel_reference`; here the
+//! checks are the limits the laws must reach.
+
+use glam::{DVec3, Vec3};
+use proptest::prelude::*;
+use radiometry::fresnel::{conductor, conductor_polarized, dielectric, dielectric_polarized, f0, schlick};
+use radiometry::snell::{cos_transmitted, critical_angle};
+use radiometry::specular::refract;
+
+const EPS: f64 = f64::EPSILON;
+const GLASS: f64 = 1.5;
+
+#[test]
+fn normal_incidence_cos_1_gives_f0_from_both_sides() {
+    for eta in [GLASS, 1.333, 2.42, 1e-3, 1e3] {
+        let f0 = f0(eta, 0.0);
+        for cos_i in [1.0, -1.0] {
+            let r = dielectric(cos_i, eta);
+            assert!((r - f0).abs() <= 4.0 * EPS * f0, "eta {eta}, cos {cos_i}: {r} vs {f0}");
+        }
+    }
+}
+
+#[test]
+fn grazing_incidence_cos_0_reflects_everything() {
+    for eta in [GLASS, 1.0 / GLASS, 1.0 + 1e-12, 1.0 - 1e-12, 1e-3, 1e3] {
+        for cos_i in [0.0, -0.0] {
+            let f = dielectric_polarized(cos_i, eta);
+            assert_eq!((f.r_s, f.r_p, f.t_s, f.t_p), (1.0, 1.0, 0.0, 0.0), "eta {eta}: {f:?}");
+        }
+        assert_eq!(conductor(0.0, eta, 0.0), 1.0);
+        assert_eq!(conductor(0.0, 0.17, 3.1), 1.0);
+    }
+}
+
+/// cos θ = 1e-300: the light skims the surface. R is 1 to within 1e-299 and
+/// T is a tiny positive number, not zero, NaN or a negative rounding residue.
+#[test]
+fn cos_1e_minus_300_is_finite_and_just_below_total_reflection() {
+    for eta in [GLASS, 1.333, 1e3] {
+        let f = dielectric_polarized(1e-300, eta);
+        assert_eq!(f.reflectance(), 1.0);
+        let t = f.transmittance();
+        assert!(t > 0.0 && t < 1e-290, "eta {eta}: T = {t}");
+        // T_s = 4 c s / (c + s)² → 4c / s for c → 0, with s = √(η² − 1).
+        let expected = 4.0 * 1e-300 / (eta * eta - 1.0).sqrt();
+        assert!((f.t_s - expected).abs() <= 4.0 * EPS * expected, "{} vs {expected}", f.t_s);
+    }
+    assert!((1.0 - conductor(1e-300_f64, 0.17, 3.1)).abs() < 1e-290);
+    // From the dense side a grazing ray is beyond the critical angle.
+    assert_eq!(dielectric(-1e-300, GLASS), 1.0);
+}
+
+/// eta exactly 1: no interface, nothing reflects, at every angle, grazing
+/// included, and the ray goes straight through.
+#[test]
+fn index_matched_interface_reflects_exactly_nothing() {
+    for cos_i in [1.0, 0.5, 1e-300, 0.0, -0.0, -0.5, -1.0] {
+        let f = dielectric_polarized(cos_i, 1.0);
+        assert_eq!((f.r_s, f.r_p, f.t_s, f.t_p), (0.0, 0.0, 1.0, 1.0), "cos {cos_i}");
+        assert_eq!(conductor(cos_i, 1.0, 0.0), 0.0);
+    }
+    let wi = DVec3::new(0.6, 0.0, 0.8);
+    assert_eq!(refract(wi, DVec3::Z, 1.0).unwrap().direction, -wi);
+}
+
+/// eta = 1 ± 1e-12: R at normal incidence is ((η−1)/(η+1))² ≈ 2.5e-25, and
+/// must come out with full relative precision. η − 1 is exact in floating
+/// point here, so the closed form is a reference.
+#[test]
+fn eta_within_1e_minus_12_of_one_keeps_relative_precision() {
+    for eta in [1.0 + 1e-12, 1.0 - 1e-12_f64] {
+        let expected = ((eta - 1.0) / (eta + 1.0)).powi(2);
+        for cos_i in [1.0, -1.0] {
+            let r = dielectric(cos_i, eta);
+            assert!((r - expected).abs() <= 8.0 * EPS * expected, "eta {eta}: {r} vs {expected}");
+        }
+        // At 60° the reflectance is still ~1e-25, smooth in the angle.
+        let r60 = dielectric(0.5, eta);
+        assert!(r60 > 0.0 && r60 < 1e-23, "{r60}");
+    }
+}
+
+#[test]
+fn extreme_indices_1e_minus_3_and_1e3_stay_in_range() {
+    for eta in [1e-3, 1e3] {
+        for k in 0..=1000 {
+            let cos_i = -1.0 + 2.0 * k as f64 / 1000.0;
+            let f = dielectric_polarized(cos_i, eta);
+            for v in [f.r_s, f.r_p, f.t_s, f.t_p] {
+                assert!((0.0..=1.0).contains(&v), "eta {eta}, cos {cos_i}: {f:?}");
+            }
+            let c = conductor_polarized(cos_i, eta, 0.0);
+            assert!(c.r_s.is_finite() && c.r_p.is_finite());
+        }
+        // Nearly everything reflects at normal incidence, from both sides.
+        let f0 = ((eta - 1.0) / (eta + 1.0)).powi(2);
+        for cos_i in [1.0, -1.0] {
+            assert!((dielectric(cos_i, eta) - f0).abs() <= 4.0 * EPS, "{f0}");
+        }
+    }
+}
+
+/// κ = 1e3: an almost perfect mirror. F0 = (0 + 1e6)/(4 + 1e6) leaves 4e-6
+/// unreflected; the exact law must agree at normal incidence and stay in
+/// [0.999, 1] at every angle: R_p dips to its minimum, 0.999001 (mpmath, at
+/// cos θ = 1e-3 = 1/κ), before rising to 1 at grazing incidence.
+#[test]
+fn kappa_1e3_is_an_almost_perfect_mirror() {
+    let f0 = f0(1.0_f64, 1e3);
+    assert!((1.0 - f0 - 4.0 / (4.0 + 1e6)).abs() < 1e-15);
+    assert!((conductor(1.0, 1.0, 1e3) - f0).abs() <= 4.0 * EPS);
+    for k in 0..=1000 {
+        let r = conductor(k as f64 / 1000.0, 1.0, 1e3);
+        assert!(r.is_finite() && (0.999..=1.0).contains(&r), "cos {}: {r}", k as f64 / 1000.0);
+    }
+}
+
+/// Within 1e-12 rad of the critical angle of glass, from the inside: just
+/// below it the light still refracts (barely), just above it nothing does.
+/// R must approach 1 continuously from below, and 1 − R be a tiny positive
+/// number of order √(1e-12), computed directly rather than as 1 − R.
+#[test]
+fn within_1e_minus_12_rad_of_the_critical_angle_from_both_sides() {
+    let theta_c = critical_angle(1.0 / GLASS).unwrap();
+    let below = -(theta_c - 1e-12).cos();
+    let above = -(theta_c + 1e-12).cos();
+    assert!(refract(DVec3::new((theta_c - 1e-12).sin(), 0.0, below), DVec3::Z, GLASS).is_some());
+    assert!(refract(DVec3::new((theta_c + 1e-12).sin(), 0.0, above), DVec3::Z, GLASS).is_none());
+    assert_eq!(dielectric(above, GLASS), 1.0);
+    let t = dielectric_polarized(below, GLASS).transmittance();
+    assert!(t > 1e-7 && t < 1e-4, "T just below the critical angle: {t}");
+    // And from the outside, light meeting glass at the matching angle of
+    // refraction (grazing) is nowhere near a discontinuity.
+    assert!(cos_transmitted(1e-12, GLASS).is_some());
+}
+
+#[test]
+fn nan_input_gives_nan_and_no_direction() {
+    let nan = f64::NAN;
+    assert!(dielectric(nan, GLASS).is_nan());
+    assert!(dielectric(0.5, nan).is_nan());
+    assert!(conductor(nan, 0.17, 3.1).is_nan());
+    assert!(conductor(0.5, nan, 3.1).is_nan());
+    assert!(conductor(0.5, 0.17, nan).is_nan());
+    assert!(f0(nan, 0.0).is_nan() && f0(1.5, nan).is_nan());
+    assert!(schlick(nan, 0.04).is_nan());
+    assert!(cos_transmitted(nan, GLASS).is_none());
+    assert!(refract(DVec3::new(nan, 0.0, 1.0), DVec3::Z, GLASS).is_none());
+    assert!(refract(DVec3::Z, DVec3::Z, nan).is_none());
+}
+
+#[test]
+fn non_physical_indices_give_nan() {
+    for bad in [0.0, -1.5, f64::INFINITY, -f64::INFINITY] {
+        assert!(dielectric(0.5, bad).is_nan(), "eta {bad}");
+        assert!(conductor(0.5, bad, 1.0).is_nan(), "n {bad}");
+        assert!(refract(DVec3::Z, DVec3::Z, bad).is_none());
+    }
+    assert!(conductor(0.5_f64, 0.17, -3.1).is_nan());
+    assert!(f0(0.0_f64, 1.0).is_nan() && f0(1.5_f64, -1.0).is_nan());
+}
+
+/// A cosine a rounding step outside [-1, 1], as a dot product of unit
+/// vectors can give, is clamped: it is normal incidence, not NaN.
+#[test]
+fn cosines_rounded_past_one_are_clamped() {
+    let just_over = 1.0 + 2.0 * EPS;
+    assert_eq!(dielectric(just_over, GLASS), dielectric(1.0, GLASS));
+    assert_eq!(dielectric(-just_over, GLASS), dielectric(-1.0, GLASS));
+    assert_eq!(conductor(just_over, 0.17, 3.1), conductor(1.0, 0.17, 3.1));
+}
+
+/// The f32 tier at its own extremes: subnormal and tiny cosines, indices
+/// 1e-3 and 1e3, κ = 1e3.
+#[test]
+fn f32_extremes_stay_finite_and_in_range() {
+    let tiny = [f32::MIN_POSITIVE, 1e-38, 1e-45, 0.0];
+    for cos_i in tiny.into_iter().chain(tiny.map(|c| -c)) {
+        for eta in [1.5f32, 1e-3, 1e3, 1.0 + f32::EPSILON] {
+            let f = dielectric_polarized(cos_i, eta);
+            for v in [f.r_s, f.r_p, f.t_s, f.t_p] {
+                assert!((0.0..=1.0).contains(&v), "cos {cos_i}, eta {eta}: {f:?}");
+            }
+            assert!((0.0..=1.0).contains(&conductor(cos_i, eta, 1e3)));
+        }
+    }
+    assert_eq!(dielectric(0.3f32, 1.0), 0.0);
+    let t = refract(Vec3::new(0.6, 0.0, 0.8), Vec3::Z, 1.5f32).unwrap();
+    assert!((t.direction.length() - 1.0).abs() < 4.0 * f32::EPSILON);
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(5000))]
+
+    /// No valid input gives NaN or infinity, over the whole documented
+    /// range: η and n from 1e-3 to 1e3 (log-uniform), κ from 0 to 1e3, every
+    /// cosine including both signs.
+    #[test]
+    fn valid_input_never_gives_nan_or_infinity(
+        cos_i in -1.0..=1.0f64,
+        log_eta in -3.0..=3.0f64,
+        log_kappa in -12.0..=3.0f64,
+        zero_kappa in any::<bool>(),
+    ) {
+        let eta = 10f64.powf(log_eta);
+        let kappa = if zero_kappa { 0.0 } else { 10f64.powf(log_kappa) };
+        let f = dielectric_polarized(cos_i, eta);
+        for v in [f.r_s, f.r_p, f.t_s, f.t_p] {
+            prop_assert!(v.is_finite(), "{f:?}");
+        }
+        let c = conductor_polarized(cos_i, eta, kappa);
+        prop_assert!(c.r_s.is_finite() && c.r_p.is_finite(), "{c:?}");
+        prop_assert!(schlick(cos_i, f0(eta, kappa)).is_finite());
+        let wi = DVec3::new((1.0 - cos_i * cos_i).sqrt(), 0.0, cos_i);
+        if let Some(t) = refract(wi, DVec3::Z, eta) {
+            prop_assert!(t.direction.is_finite(), "{t:?}");
+        }
+    }
+}
