@@ -9,6 +9,9 @@
 //! result is as accurate as if it had been computed in twice the working
 //! precision and rounded once.
 //!
+//! The `f32` tier carries these sums in `f64` ([`Real::Wide`]), where its
+//! products are exact, so its results are limited only by the final rounding.
+//!
 //! Reference: T. Ogita, S. M. Rump, S. Oishi, "Accurate sum and dot product",
 //! SIAM J. Sci. Comput. 26(6), 2005 (algorithms TwoSum, TwoProduct, Sum2).
 
@@ -47,12 +50,15 @@ fn sum<T: Real, const N: usize>(terms: [T; N]) -> T {
     s + err
 }
 
-/// `(a · b)²` as an unevaluated sum `hi + lo`, accurate to about `ε²`.
+/// `(a · b)²` as an unevaluated sum of three terms, exact to about `ε³`
+/// relative: with `a b = p + e` exactly, `(a b)² = p² + 2pe + e²`, and the
+/// first two products are split again.
 #[inline]
-fn square_of_product<T: Real>(a: T, b: T) -> (T, T) {
-    let (p, pe) = two_prod(a, b);
+fn square_of_product<T: Real>(a: T, b: T) -> [T; 3] {
+    let (p, e) = two_prod(a, b);
     let (q, qe) = two_prod(p, p);
-    (q, qe + (p + p) * pe)
+    let (m, me) = two_prod(p + p, e);
+    [q, m, qe + me + e * e]
 }
 
 // The interface quantities below are written for light going from a medium
@@ -62,7 +68,7 @@ fn square_of_product<T: Real>(a: T, b: T) -> (T, T) {
 
 /// `x² − y² − n_i²`, the real part of `n_t² − n_i²`.
 #[inline]
-pub(crate) fn index_contrast<T: Real>(x: T, y: T, n_i: T) -> T {
+fn index_contrast_in<T: Real>(x: T, y: T, n_i: T) -> T {
     let (x2, x2e) = two_prod(x, x);
     let (y2, y2e) = two_prod(y, y);
     let (i2, i2e) = two_prod(n_i, n_i);
@@ -72,23 +78,41 @@ pub(crate) fn index_contrast<T: Real>(x: T, y: T, n_i: T) -> T {
 /// `x² − y² − n_i² + (n_i c)²`, the real part of `n_t² − n_i² sin²θ_i`
 /// (`= n_t² cos²θ_t`), which vanishes at the critical angle.
 #[inline]
-pub(crate) fn snell_discriminant<T: Real>(x: T, y: T, n_i: T, c: T) -> T {
+fn snell_discriminant_in<T: Real>(x: T, y: T, n_i: T, c: T) -> T {
     let (x2, x2e) = two_prod(x, x);
     let (y2, y2e) = two_prod(y, y);
     let (i2, i2e) = two_prod(n_i, n_i);
-    let (ic2, ic2e) = square_of_product(n_i, c);
-    sum([x2, -i2, ic2, -y2, x2e, -i2e, ic2e, -y2e])
+    let [ic2, ic2m, ic2e] = square_of_product(n_i, c);
+    sum([x2, -i2, ic2, -y2, ic2m, x2e, -i2e, ic2e, -y2e])
 }
 
 /// `(c x)² − (c y)² + (c n_i)² − n_i²`, the real part of
 /// `c² (n_t² + n_i²) − n_i²`, which vanishes at Brewster's angle.
 #[inline]
-pub(crate) fn brewster_factor<T: Real>(x: T, y: T, n_i: T, c: T) -> T {
-    let (cx2, cx2e) = square_of_product(c, x);
-    let (cy2, cy2e) = square_of_product(c, y);
-    let (ci2, ci2e) = square_of_product(c, n_i);
+fn brewster_factor_in<T: Real>(x: T, y: T, n_i: T, c: T) -> T {
+    let [cx2, cx2m, cx2e] = square_of_product(c, x);
+    let [cy2, cy2m, cy2e] = square_of_product(c, y);
+    let [ci2, ci2m, ci2e] = square_of_product(c, n_i);
     let (i2, i2e) = two_prod(n_i, n_i);
-    sum([cx2, -cy2, ci2, -i2, cx2e, -cy2e, ci2e, -i2e])
+    sum([cx2, -cy2, ci2, -i2, cx2m, -cy2m, ci2m, cx2e, -cy2e, ci2e, -i2e])
+}
+
+/// Real part of `n_t² − n_i²`, `n_t = x + i·y`; see [`index_contrast_in`].
+#[inline]
+pub(crate) fn index_contrast<T: Real>(x: T, y: T, n_i: T) -> T {
+    T::narrow(index_contrast_in(x.widen(), y.widen(), n_i.widen()))
+}
+
+/// Real part of `n_t² − n_i² sin²θ_i`; see [`snell_discriminant_in`].
+#[inline]
+pub(crate) fn snell_discriminant<T: Real>(x: T, y: T, n_i: T, c: T) -> T {
+    T::narrow(snell_discriminant_in(x.widen(), y.widen(), n_i.widen(), c.widen()))
+}
+
+/// Real part of `c² (n_t² + n_i²) − n_i²`; see [`brewster_factor_in`].
+#[inline]
+pub(crate) fn brewster_factor<T: Real>(x: T, y: T, n_i: T, c: T) -> T {
+    T::narrow(brewster_factor_in(x.widen(), y.widen(), n_i.widen(), c.widen()))
 }
 
 #[cfg(test)]

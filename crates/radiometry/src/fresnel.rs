@@ -197,13 +197,15 @@ pub fn dielectric_polarized<T: Real>(cos_i: T, eta: T) -> DielectricFresnel<T> {
     }
     let s = d.sqrt();
     let a = n_i * c; // n_i cos θ_i
-    let four_as = T::lit(4.0) * a * s;
+    // T = 4 a s / w² is evaluated as 4c · (n_i s / w²): at grazing incidence
+    // a = n_i c, or the product 4 a s, would underflow before the division.
+    let four_c = T::lit(4.0) * c;
 
     // (a + s)² as a² + 2as + s² with s² = d exactly as computed: at grazing
     // incidence this makes r_s = (n_i² − n_t²)/d = −1 to the last bit.
     let ws2 = a * a + (a + a) * s + d;
     let r_s = sqr(contrast / ws2);
-    let t_s = four_as / ws2;
+    let t_s = four_c * (n_i * s / ws2);
 
     // (n_t² c + n_i s)² likewise with n_i² d for (n_i s)²: exact at grazing.
     let n_t2 = n_t * n_t;
@@ -211,7 +213,7 @@ pub fn dielectric_polarized<T: Real>(cos_i: T, eta: T) -> DielectricFresnel<T> {
     let wp2 = b * b + (b + b) * (n_i * s) + n_i * n_i * d;
     let brewster = compensated::brewster_factor(n_t, T::zero(), n_i, c);
     let r_p = sqr(contrast * brewster / wp2);
-    let t_p = four_as * n_t2 / wp2;
+    let t_p = four_c * (n_i * n_t2 * s / wp2);
 
     DielectricFresnel {
         r_s: fraction(r_s),

@@ -7,21 +7,47 @@ use num_traits::{Float, FloatConst, Zero};
 
 /// A floating-point scalar the laws are written over: `f32` or `f64`.
 pub trait Real: Float + FloatConst + Debug + Display + Default + Send + Sync + 'static {
+    /// The precision in which the few sums that cancel are carried (in
+    /// twice *its* precision): `f64` for both tiers. Products of `f32`s are
+    /// exact in `f64`, so the `f32` tier gets those sums essentially exact.
+    type Wide: Real;
     /// Converts a literal `f64` constant (rounding once for `f32`).
     fn lit(x: f64) -> Self;
+    /// Converts exactly into [`Real::Wide`].
+    fn widen(self) -> Self::Wide;
+    /// Rounds from [`Real::Wide`] once.
+    fn narrow(wide: Self::Wide) -> Self;
 }
 
 impl Real for f32 {
+    type Wide = f64;
     #[inline]
     fn lit(x: f64) -> Self {
         x as f32
     }
+    #[inline]
+    fn widen(self) -> f64 {
+        self.into()
+    }
+    #[inline]
+    fn narrow(wide: f64) -> Self {
+        wide as f32
+    }
 }
 
 impl Real for f64 {
+    type Wide = f64;
     #[inline]
     fn lit(x: f64) -> Self {
         x
+    }
+    #[inline]
+    fn widen(self) -> f64 {
+        self
+    }
+    #[inline]
+    fn narrow(wide: f64) -> Self {
+        wide
     }
 }
 
