@@ -108,8 +108,10 @@ pub fn refract_001_cg<V: Vector3>(i: V, n: V, eta_ratio: V::Scalar) -> V {
 /// `max(0, min(1, bias + scale (0 + I·N)^power))`.
 ///
 /// **Wrong**: with `I` pointing towards the surface `I·N = −cos θ ≤ 0`, and
-/// a negative base to a fractional power is NaN (an even power makes it
-/// large at normal incidence instead of at grazing). The vertex program on
+/// a negative base to a fractional power is NaN, which the clamps turn into
+/// whatever min/max make of NaN (`f64::min` here: 1); an odd power gives
+/// `bias − scale cos^power θ`, never above the bias; an even one is largest
+/// at normal incidence instead of at grazing. The vertex program on
 /// the next slide has `1 + dot(I, N)`, which is what is meant: see
 /// [`empirical_fresnel_001_code`].
 #[inline]
