@@ -5,13 +5,16 @@ use std::path::PathBuf;
 
 /// The path of a file under `validation/reference/`.
 pub fn reference_path(name: &str) -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../validation/reference").join(name)
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("../validation/reference")
+        .join(name)
 }
 
 /// Reads and parses a committed reference file, naming it on failure.
 pub fn load_reference<T: serde::de::DeserializeOwned>(name: &str) -> T {
     let path = reference_path(name);
-    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("reading {}: {e}", path.display()));
+    let text = std::fs::read_to_string(&path)
+        .unwrap_or_else(|e| panic!("reading {}: {e}", path.display()));
     serde_json::from_str(&text).unwrap_or_else(|e| panic!("parsing {}: {e}", path.display()))
 }
 

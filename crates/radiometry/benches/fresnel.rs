@@ -13,7 +13,9 @@ const ANGLES: usize = 1024;
 
 /// Cosines spread over both sides of the interface.
 fn cosines<T: Real>() -> Vec<T> {
-    (0..ANGLES).map(|k| T::lit(-1.0 + 2.0 * (k as f64 + 0.5) / ANGLES as f64)).collect()
+    (0..ANGLES)
+        .map(|k| T::lit(-1.0 + 2.0 * (k as f64 + 0.5) / ANGLES as f64))
+        .collect()
 }
 
 fn bench_tier<T: Real>(c: &mut Criterion, tier: &str) {
@@ -24,12 +26,18 @@ fn bench_tier<T: Real>(c: &mut Criterion, tier: &str) {
     group.throughput(Throughput::Elements(ANGLES as u64));
     let mut run = |name: &str, law: &dyn Fn(T) -> T| {
         group.bench_function(BenchmarkId::from_parameter(name), |b| {
-            b.iter(|| cosines.iter().fold(T::zero(), |acc, &c| acc + law(black_box(c))))
+            b.iter(|| {
+                cosines
+                    .iter()
+                    .fold(T::zero(), |acc, &c| acc + law(black_box(c)))
+            })
         });
     };
     run("dielectric_exact", &|c| dielectric(c, eta));
     run("dielectric_schlick", &|c| schlick(c, f0_glass));
-    run("dielectric_schlick_both_sides", &|c| schlick_dielectric(c, eta));
+    run("dielectric_schlick_both_sides", &|c| {
+        schlick_dielectric(c, eta)
+    });
     run("conductor_exact", &|c| conductor(c, n, kappa));
     run("conductor_schlick", &|c| schlick(c, f0_gold));
     group.finish();

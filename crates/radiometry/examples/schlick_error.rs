@@ -18,13 +18,23 @@ struct Worst {
 
 fn worst(exact: impl Fn(f64) -> f64, approx: impl Fn(f64) -> f64) -> Worst {
     const STEPS: usize = 90_000; // 0.001° apart
-    let mut w = Worst { abs_error: 0.0, theta_deg: 0.0, exact: 0.0, approx: 0.0 };
+    let mut w = Worst {
+        abs_error: 0.0,
+        theta_deg: 0.0,
+        exact: 0.0,
+        approx: 0.0,
+    };
     for k in 0..=STEPS {
         let theta = std::f64::consts::FRAC_PI_2 * k as f64 / STEPS as f64;
         let c = theta.cos();
         let (e, a) = (exact(c), approx(c));
         if (e - a).abs() > w.abs_error {
-            w = Worst { abs_error: (e - a).abs(), theta_deg: theta.to_degrees(), exact: e, approx: a };
+            w = Worst {
+                abs_error: (e - a).abs(),
+                theta_deg: theta.to_degrees(),
+                exact: e,
+                approx: a,
+            };
         }
     }
     w
@@ -41,9 +51,24 @@ fn main() {
     };
     for (name, eta) in [("water", 1.333), ("glass", 1.5), ("diamond", 2.42)] {
         let f0 = f0(eta, 0.0);
-        row(name, "outside", "cos θ_i", worst(|c| dielectric(c, eta), |c| schlick(c, f0)));
-        row(name, "inside", "cos θ_i (course)", worst(|c| dielectric(-c, eta), |c| schlick(c, f0)));
-        row(name, "inside", "cos θ_t (`schlick_dielectric`)", worst(|c| dielectric(-c, eta), |c| schlick_dielectric(-c, eta)));
+        row(
+            name,
+            "outside",
+            "cos θ_i",
+            worst(|c| dielectric(c, eta), |c| schlick(c, f0)),
+        );
+        row(
+            name,
+            "inside",
+            "cos θ_i (course)",
+            worst(|c| dielectric(-c, eta), |c| schlick(c, f0)),
+        );
+        row(
+            name,
+            "inside",
+            "cos θ_t (`schlick_dielectric`)",
+            worst(|c| dielectric(-c, eta), |c| schlick_dielectric(-c, eta)),
+        );
     }
     let metals = [
         ("gold R (course)", 0.17, 3.1),
@@ -55,6 +80,11 @@ fn main() {
     ];
     for (name, n, kappa) in metals {
         let f0 = f0(n, kappa);
-        row(name, "outside", "cos θ_i, F0(n, κ)", worst(|c| conductor(c, n, kappa), |c| schlick(c, f0)));
+        row(
+            name,
+            "outside",
+            "cos θ_i, F0(n, κ)",
+            worst(|c| conductor(c, n, kappa), |c| schlick(c, f0)),
+        );
     }
 }

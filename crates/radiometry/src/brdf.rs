@@ -190,7 +190,11 @@ pub struct ReciprocityReport<V: Vector3> {
 /// let fixed = BlinnPhongReciprocal { kd: 0.2, ks: 0.5, shine: 20.0 };
 /// assert!(reciprocity(&fixed, DVec3::Z, &dirs).worst_rel < 1e-14);
 /// ```
-pub fn reciprocity<V: Vector3, B: Brdf<V::Scalar>>(brdf: &B, n: V, directions: &[V]) -> ReciprocityReport<V> {
+pub fn reciprocity<V: Vector3, B: Brdf<V::Scalar>>(
+    brdf: &B,
+    n: V,
+    directions: &[V],
+) -> ReciprocityReport<V> {
     let zero = V::Scalar::zero();
     let mut report = ReciprocityReport {
         worst_abs: zero,
@@ -221,7 +225,8 @@ pub fn hemisphere_directions<V: Vector3>(count: usize) -> Vec<V> {
     (0..count)
         .map(|k| {
             let k = V::Scalar::lit(k as f64);
-            let cos_theta = V::Scalar::one() - (k + V::Scalar::lit(0.5)) / V::Scalar::lit(count as f64);
+            let cos_theta =
+                V::Scalar::one() - (k + V::Scalar::lit(0.5)) / V::Scalar::lit(count as f64);
             let sin_theta = (V::Scalar::one() - cos_theta * cos_theta).sqrt();
             let phi = golden_angle * k;
             V::new(sin_theta * phi.cos(), sin_theta * phi.sin(), cos_theta)
@@ -267,7 +272,12 @@ pub fn directional_albedo<V: Vector3, B: Brdf<V::Scalar>>(
     }
 }
 
-fn midpoint_albedo<V: Vector3, B: Brdf<V::Scalar>>(brdf: &B, n: V, wo: V, rows: usize) -> V::Scalar {
+fn midpoint_albedo<V: Vector3, B: Brdf<V::Scalar>>(
+    brdf: &B,
+    n: V,
+    wo: V,
+    rows: usize,
+) -> V::Scalar {
     let (t, b) = orthonormal_frame(n);
     let one = V::Scalar::one();
     let half = V::Scalar::lit(0.5);
@@ -311,7 +321,11 @@ mod tests {
 
     #[test]
     fn orthonormal_frame_is_orthonormal() {
-        for n in hemisphere_directions::<DVec3>(50).into_iter().chain([DVec3::Z, -DVec3::Z, DVec3::X]) {
+        for n in
+            hemisphere_directions::<DVec3>(50)
+                .into_iter()
+                .chain([DVec3::Z, -DVec3::Z, DVec3::X])
+        {
             let (t, b) = orthonormal_frame(n);
             for (u, v) in [(t, b), (t, n), (b, n)] {
                 assert!(u.dot(v).abs() < 1e-15, "{u} · {v}");

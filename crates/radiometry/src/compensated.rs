@@ -94,7 +94,9 @@ fn brewster_factor_in<T: Real>(x: T, y: T, n_i: T, c: T) -> T {
     let [cy2, cy2m, cy2e] = square_of_product(c, y);
     let [ci2, ci2m, ci2e] = square_of_product(c, n_i);
     let (i2, i2e) = two_prod(n_i, n_i);
-    sum([cx2, -cy2, ci2, -i2, cx2m, -cy2m, ci2m, cx2e, -cy2e, ci2e, -i2e])
+    sum([
+        cx2, -cy2, ci2, -i2, cx2m, -cy2m, ci2m, cx2e, -cy2e, ci2e, -i2e,
+    ])
 }
 
 /// Real part of `n_t² − n_i²`, `n_t = x + i·y`; see [`index_contrast_in`].
@@ -106,13 +108,23 @@ pub(crate) fn index_contrast<T: Real>(x: T, y: T, n_i: T) -> T {
 /// Real part of `n_t² − n_i² sin²θ_i`; see [`snell_discriminant_in`].
 #[inline]
 pub(crate) fn snell_discriminant<T: Real>(x: T, y: T, n_i: T, c: T) -> T {
-    T::narrow(snell_discriminant_in(x.widen(), y.widen(), n_i.widen(), c.widen()))
+    T::narrow(snell_discriminant_in(
+        x.widen(),
+        y.widen(),
+        n_i.widen(),
+        c.widen(),
+    ))
 }
 
 /// Real part of `c² (n_t² + n_i²) − n_i²`; see [`brewster_factor_in`].
 #[inline]
 pub(crate) fn brewster_factor<T: Real>(x: T, y: T, n_i: T, c: T) -> T {
-    T::narrow(brewster_factor_in(x.widen(), y.widen(), n_i.widen(), c.widen()))
+    T::narrow(brewster_factor_in(
+        x.widen(),
+        y.widen(),
+        n_i.widen(),
+        c.widen(),
+    ))
 }
 
 #[cfg(test)]

@@ -58,7 +58,8 @@ pub fn refract_003_boxed<V: Vector3>(v: V, n: V, eta: V::Scalar) -> V {
     let one = V::Scalar::one();
     let cos_alpha = -v.dot(n);
     let alpha = cos_alpha.acos();
-    v * (one / eta) + n * ((alpha / eta).cos() - (one - (one - cos_alpha * cos_alpha) / (eta * eta)).sqrt())
+    v * (one / eta)
+        + n * ((alpha / eta).cos() - (one - (one - cos_alpha * cos_alpha) / (eta * eta)).sqrt())
 }
 
 /// `003`, the tangent used in the refraction derivation:
@@ -101,7 +102,11 @@ pub fn refract_001_cg<V: Vector3>(i: V, n: V, eta_ratio: V::Scalar) -> V {
     let cos_i = -i.dot(n);
     let cos_t2 = one - eta_ratio * eta_ratio * (one - cos_i * cos_i);
     let t = i * eta_ratio + n * (eta_ratio * cos_i - cos_t2.abs().sqrt());
-    t * if cos_t2 > V::Scalar::zero() { one } else { V::Scalar::zero() }
+    t * if cos_t2 > V::Scalar::zero() {
+        one
+    } else {
+        V::Scalar::zero()
+    }
 }
 
 /// `001`, the empirical Fresnel approximation on the slide:
@@ -115,7 +120,13 @@ pub fn refract_001_cg<V: Vector3>(i: V, n: V, eta_ratio: V::Scalar) -> V {
 /// the next slide has `1 + dot(I, N)`, which is what is meant: see
 /// [`empirical_fresnel_001_code`].
 #[inline]
-pub fn empirical_fresnel_001_slide<V: Vector3>(i: V, n: V, bias: V::Scalar, scale: V::Scalar, power: V::Scalar) -> V::Scalar {
+pub fn empirical_fresnel_001_slide<V: Vector3>(
+    i: V,
+    n: V,
+    bias: V::Scalar,
+    scale: V::Scalar,
+    power: V::Scalar,
+) -> V::Scalar {
     let f = bias + scale * (V::Scalar::zero() + i.dot(n)).powf(power);
     f.min(V::Scalar::one()).max(V::Scalar::zero())
 }
@@ -128,6 +139,12 @@ pub fn empirical_fresnel_001_slide<V: Vector3>(i: V, n: V, bias: V::Scalar, scal
 /// clamp into `[0, 1]`, so `bias + scale > 1` gives a reflectance above 1 at
 /// grazing incidence.
 #[inline]
-pub fn empirical_fresnel_001_code<V: Vector3>(i: V, n: V, bias: V::Scalar, scale: V::Scalar, power: V::Scalar) -> V::Scalar {
+pub fn empirical_fresnel_001_code<V: Vector3>(
+    i: V,
+    n: V,
+    bias: V::Scalar,
+    scale: V::Scalar,
+    power: V::Scalar,
+) -> V::Scalar {
     bias + scale * (V::Scalar::one() + i.dot(n)).powf(power)
 }

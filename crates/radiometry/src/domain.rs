@@ -55,7 +55,10 @@ pub fn finite(name: &str, value: f64) -> Result<f64, DomainError> {
     if value.is_finite() {
         Ok(value)
     } else {
-        Err(DomainError::NotFinite { name: name.to_owned(), value })
+        Err(DomainError::NotFinite {
+            name: name.to_owned(),
+            value,
+        })
     }
 }
 
@@ -64,7 +67,11 @@ fn in_range(name: &str, value: f64, ok: bool, expected: &'static str) -> Result<
     if ok {
         Ok(value)
     } else {
-        Err(DomainError::OutOfRange { name: name.to_owned(), value, expected })
+        Err(DomainError::OutOfRange {
+            name: name.to_owned(),
+            value,
+            expected,
+        })
     }
 }
 
@@ -80,7 +87,12 @@ pub fn refractive_index(name: &str, value: f64) -> Result<f64, DomainError> {
 
 /// An extinction coefficient `kappa`: non-negative.
 pub fn extinction(name: &str, value: f64) -> Result<f64, DomainError> {
-    in_range(name, value, value >= 0.0, "a non-negative extinction coefficient")
+    in_range(
+        name,
+        value,
+        value >= 0.0,
+        "a non-negative extinction coefficient",
+    )
 }
 
 /// A fraction (reflectance, albedo), in `[0, 1]`.
@@ -125,9 +137,17 @@ pub fn direction(name: &str, v: DVec3) -> Result<Direction, DomainError> {
     for (axis, c) in ["x", "y", "z"].into_iter().zip(v.to_array()) {
         finite(&format!("{name}.{axis}"), c)?;
     }
-    let zero = || DomainError::ZeroVector { name: name.to_owned(), x: v.x, y: v.y, z: v.z };
+    let zero = || DomainError::ZeroVector {
+        name: name.to_owned(),
+        x: v.x,
+        y: v.y,
+        z: v.z,
+    };
     let unit = crate::Vector3::try_normalize(v).ok_or_else(zero)?;
-    Ok(Direction { unit, given_length: v.length() })
+    Ok(Direction {
+        unit,
+        given_length: v.length(),
+    })
 }
 
 #[cfg(test)]
@@ -138,11 +158,23 @@ mod tests {
     fn errors_name_the_input_and_the_expectation() {
         let cases: [(Result<f64, DomainError>, &str); 6] = [
             (cosine("cos_i", 1.5), "cos_i must be in [-1, 1], got 1.5"),
-            (cosine("cos_i", f64::NAN), "cos_i must be a finite number, got NaN"),
-            (extinction("--kappa", -0.1), "--kappa must be a non-negative extinction coefficient, got -0.1"),
-            (refractive_index("eta", 0.0), "eta must be a positive refractive index, got 0"),
+            (
+                cosine("cos_i", f64::NAN),
+                "cos_i must be a finite number, got NaN",
+            ),
+            (
+                extinction("--kappa", -0.1),
+                "--kappa must be a non-negative extinction coefficient, got -0.1",
+            ),
+            (
+                refractive_index("eta", 0.0),
+                "eta must be a positive refractive index, got 0",
+            ),
             (fraction("kd", 1.2), "kd must be in [0, 1], got 1.2"),
-            (finite("radiance", f64::INFINITY), "radiance must be a finite number, got inf"),
+            (
+                finite("radiance", f64::INFINITY),
+                "radiance must be a finite number, got inf",
+            ),
         ];
         for (result, message) in cases {
             assert_eq!(result.unwrap_err().to_string(), message);
@@ -160,7 +192,9 @@ mod tests {
             "--normal must be a non-zero direction, got (0, 0, 0)"
         );
         assert_eq!(
-            direction("n", DVec3::new(0.0, f64::NAN, 1.0)).unwrap_err().to_string(),
+            direction("n", DVec3::new(0.0, f64::NAN, 1.0))
+                .unwrap_err()
+                .to_string(),
             "n.y must be a finite number, got NaN"
         );
         assert!(direction("tiny", DVec3::splat(1e-320)).is_err());

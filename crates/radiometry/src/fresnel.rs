@@ -159,7 +159,14 @@ impl<T: Real> DielectricFresnel<T> {
 
     fn all(value: T, cos_t: Option<T>, eta: T) -> Self {
         let other = T::one() - value;
-        Self { r_s: value, r_p: value, t_s: other, t_p: other, cos_t, eta }
+        Self {
+            r_s: value,
+            r_p: value,
+            t_s: other,
+            t_p: other,
+            cos_t,
+            eta,
+        }
     }
 }
 
@@ -197,8 +204,8 @@ pub fn dielectric_polarized<T: Real>(cos_i: T, eta: T) -> DielectricFresnel<T> {
     }
     let s = d.sqrt();
     let a = n_i * c; // n_i cos θ_i
-    // T = 4 a s / w² is evaluated as 4c · (n_i s / w²): at grazing incidence
-    // a = n_i c, or the product 4 a s, would underflow before the division.
+                     // T = 4 a s / w² is evaluated as 4c · (n_i s / w²): at grazing incidence
+                     // a = n_i c, or the product 4 a s, would underflow before the division.
     let four_c = T::lit(4.0) * c;
 
     // (a + s)² as a² + 2as + s² with s² = d exactly as computed: at grazing
@@ -283,20 +290,29 @@ impl<T: Real> ConductorFresnel<T> {
 pub fn conductor_polarized<T: Real>(cos_i: T, n: T, kappa: T) -> ConductorFresnel<T> {
     let valid = n > T::zero() && n.is_finite() && kappa >= T::zero() && kappa.is_finite();
     if cos_i.is_nan() || !valid {
-        return ConductorFresnel { r_s: T::nan(), r_p: T::nan() };
+        return ConductorFresnel {
+            r_s: T::nan(),
+            r_p: T::nan(),
+        };
     }
     let c = clamp_unit(cos_i.abs());
     let two_nk = (n + n) * kappa;
     let one = T::one();
     let eta2_m1 = Complex::new(compensated::index_contrast(n, kappa, one), two_nk);
     if eta2_m1.re == T::zero() && eta2_m1.im == T::zero() {
-        return ConductorFresnel { r_s: T::zero(), r_p: T::zero() };
+        return ConductorFresnel {
+            r_s: T::zero(),
+            r_p: T::zero(),
+        };
     }
     // s = η cos θ_t = √(η² − 1 + c²), principal branch (Re s ≥ 0).
     let d = Complex::new(compensated::snell_discriminant(n, kappa, one, c), two_nk);
     let s = principal_sqrt(d);
     let eta2 = Complex::new(eta2_m1.re + one, two_nk);
-    let brewster = Complex::new(compensated::brewster_factor(n, kappa, one, c), c * c * two_nk);
+    let brewster = Complex::new(
+        compensated::brewster_factor(n, kappa, one, c),
+        c * c * two_nk,
+    );
 
     // |x + s|² = |x|² + 2 Re(x̄ s) + |s|² with |s|² = |d|: at grazing incidence
     // (x = 0) the ratios below are then |d| / |d| = 1 to the last bit.
@@ -307,7 +323,10 @@ pub fn conductor_polarized<T: Real>(cos_i: T, n: T, kappa: T) -> ConductorFresne
     let wp2 = b.norm_sqr() + two * (b.re * s.re + b.im * s.im) + abs(d);
     let r_s = sqr(abs(eta2_m1) / ws2);
     let r_p = sqr(abs(eta2_m1) * abs(brewster) / wp2);
-    ConductorFresnel { r_s: fraction(r_s), r_p: fraction(r_p) }
+    ConductorFresnel {
+        r_s: fraction(r_s),
+        r_p: fraction(r_p),
+    }
 }
 
 /// Unpolarised reflectance of a conductor of complex index `n + i·kappa`,
@@ -393,7 +412,10 @@ mod tests {
         // relative precision.
         let delta = 1e-10_f64;
         let s = principal_sqrt(Complex::new(-1.0, delta));
-        assert!((s.re / (delta / 2.0) - 1.0).abs() < 4.0 * f64::EPSILON, "{s}");
+        assert!(
+            (s.re / (delta / 2.0) - 1.0).abs() < 4.0 * f64::EPSILON,
+            "{s}"
+        );
         assert_eq!(s.im, 1.0);
         // The polar-form square root loses most of those digits.
         let polar = Complex::new(-1.0_f64, delta).sqrt();
@@ -402,7 +424,13 @@ mod tests {
 
     #[test]
     fn principal_sqrt_matches_real_sqrt_on_the_real_axis() {
-        assert_eq!(principal_sqrt(Complex::new(2.25_f64, 0.0)), Complex::new(1.5, 0.0));
-        assert_eq!(principal_sqrt(Complex::new(-2.25_f64, 0.0)), Complex::new(0.0, 1.5));
+        assert_eq!(
+            principal_sqrt(Complex::new(2.25_f64, 0.0)),
+            Complex::new(1.5, 0.0)
+        );
+        assert_eq!(
+            principal_sqrt(Complex::new(-2.25_f64, 0.0)),
+            Complex::new(0.0, 1.5)
+        );
     }
 }

@@ -72,7 +72,11 @@ pub fn radiance_from_flux<T: Real>(flux: T, area: T, cos_theta: T, solid_angle: 
 /// assert!((e - 4.0).abs() < 1e-15);
 /// ```
 #[inline]
-pub fn directional_irradiance<V: Vector3>(e_perpendicular: V::Scalar, n: V, to_light: V) -> V::Scalar {
+pub fn directional_irradiance<V: Vector3>(
+    e_perpendicular: V::Scalar,
+    n: V,
+    to_light: V,
+) -> V::Scalar {
     e_perpendicular * geometry_term(n, to_light)
 }
 
@@ -118,7 +122,11 @@ pub fn point_irradiance<V: Vector3>(
     let distance = distance2.sqrt();
     let to_light = offset * distance.recip();
     let irradiance = intensity * geometry_term(n, to_light) / distance2;
-    Some(PointLightSample { to_light, distance, irradiance })
+    Some(PointLightSample {
+        to_light,
+        distance,
+        irradiance,
+    })
 }
 
 /// Radiance reflected towards the viewer, `L = f_r · E`, from a BRDF value

@@ -52,8 +52,17 @@ impl<T: Real> Incidence<T> {
     #[inline]
     pub fn resolve(cos_i: T, eta: T) -> Self {
         let from_inside = cos_i < T::zero();
-        let (n_i, n_t) = if from_inside { (eta, T::one()) } else { (T::one(), eta) };
-        Self { cos_i: clamp_unit(cos_i.abs()), n_i, n_t, from_inside }
+        let (n_i, n_t) = if from_inside {
+            (eta, T::one())
+        } else {
+            (T::one(), eta)
+        };
+        Self {
+            cos_i: clamp_unit(cos_i.abs()),
+            n_i,
+            n_t,
+            from_inside,
+        }
     }
 
     /// The relative index along the path, `n_t / n_i` (rounded once).

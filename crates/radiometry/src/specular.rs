@@ -81,5 +81,9 @@ pub fn refract<V: Vector3>(wi: V, n: V, eta: V::Scalar) -> Option<Refraction<V>>
         tangential * (V::Scalar::one() / incidence.n_t)
     };
     let direction = tangential - n_facing * cos_t;
-    Some(Refraction { direction, eta: incidence.eta(), cos_t })
+    Some(Refraction {
+        direction,
+        eta: incidence.eta(),
+        cos_t,
+    })
 }

@@ -8,7 +8,9 @@
 
 use glam::{DVec3, Vec3};
 use proptest::prelude::*;
-use radiometry::fresnel::{conductor, conductor_polarized, dielectric, dielectric_polarized, f0, schlick};
+use radiometry::fresnel::{
+    conductor, conductor_polarized, dielectric, dielectric_polarized, f0, schlick,
+};
 use radiometry::snell::{cos_transmitted, critical_angle};
 use radiometry::specular::refract;
 
@@ -21,7 +23,10 @@ fn normal_incidence_cos_1_gives_f0_from_both_sides() {
         let f0 = f0(eta, 0.0);
         for cos_i in [1.0, -1.0] {
             let r = dielectric(cos_i, eta);
-            assert!((r - f0).abs() <= 4.0 * EPS * f0, "eta {eta}, cos {cos_i}: {r} vs {f0}");
+            assert!(
+                (r - f0).abs() <= 4.0 * EPS * f0,
+                "eta {eta}, cos {cos_i}: {r} vs {f0}"
+            );
         }
     }
 }
@@ -31,7 +36,11 @@ fn grazing_incidence_cos_0_reflects_everything() {
     for eta in [GLASS, 1.0 / GLASS, 1.0 + 1e-12, 1.0 - 1e-12, 1e-3, 1e3] {
         for cos_i in [0.0, -0.0] {
             let f = dielectric_polarized(cos_i, eta);
-            assert_eq!((f.r_s, f.r_p, f.t_s, f.t_p), (1.0, 1.0, 0.0, 0.0), "eta {eta}: {f:?}");
+            assert_eq!(
+                (f.r_s, f.r_p, f.t_s, f.t_p),
+                (1.0, 1.0, 0.0, 0.0),
+                "eta {eta}: {f:?}"
+            );
         }
         assert_eq!(conductor(0.0, eta, 0.0), 1.0);
         assert_eq!(conductor(0.0, 0.17, 3.1), 1.0);
@@ -49,7 +58,11 @@ fn cos_1e_minus_300_is_finite_and_just_below_total_reflection() {
         assert!(t > 0.0 && t < 1e-290, "eta {eta}: T = {t}");
         // T_s = 4 c s / (c + s)² → 4c / s for c → 0, with s = √(η² − 1).
         let expected = 4.0 * 1e-300 / (eta * eta - 1.0).sqrt();
-        assert!((f.t_s - expected).abs() <= 4.0 * EPS * expected, "{} vs {expected}", f.t_s);
+        assert!(
+            (f.t_s - expected).abs() <= 4.0 * EPS * expected,
+            "{} vs {expected}",
+            f.t_s
+        );
     }
     assert!((1.0 - conductor(1e-300_f64, 0.17, 3.1)).abs() < 1e-290);
     // From the dense side a grazing ray is beyond the critical angle.
@@ -62,7 +75,11 @@ fn cos_1e_minus_300_is_finite_and_just_below_total_reflection() {
 fn index_matched_interface_reflects_exactly_nothing() {
     for cos_i in [1.0, 0.5, 1e-300, 0.0, -0.0, -0.5, -1.0] {
         let f = dielectric_polarized(cos_i, 1.0);
-        assert_eq!((f.r_s, f.r_p, f.t_s, f.t_p), (0.0, 0.0, 1.0, 1.0), "cos {cos_i}");
+        assert_eq!(
+            (f.r_s, f.r_p, f.t_s, f.t_p),
+            (0.0, 0.0, 1.0, 1.0),
+            "cos {cos_i}"
+        );
         assert_eq!(conductor(cos_i, 1.0, 0.0), 0.0);
     }
     let wi = DVec3::new(0.6, 0.0, 0.8);
@@ -78,7 +95,10 @@ fn eta_within_1e_minus_12_of_one_keeps_relative_precision() {
         let expected = ((eta - 1.0) / (eta + 1.0)).powi(2);
         for cos_i in [1.0, -1.0] {
             let r = dielectric(cos_i, eta);
-            assert!((r - expected).abs() <= 8.0 * EPS * expected, "eta {eta}: {r} vs {expected}");
+            assert!(
+                (r - expected).abs() <= 8.0 * EPS * expected,
+                "eta {eta}: {r} vs {expected}"
+            );
         }
         // At 60° the reflectance is still ~1e-25, smooth in the angle.
         let r60 = dielectric(0.5, eta);
@@ -117,7 +137,11 @@ fn kappa_1e3_is_an_almost_perfect_mirror() {
     assert!((conductor(1.0, 1.0, 1e3) - f0).abs() <= 4.0 * EPS);
     for k in 0..=1000 {
         let r = conductor(k as f64 / 1000.0, 1.0, 1e3);
-        assert!(r.is_finite() && (0.999..=1.0).contains(&r), "cos {}: {r}", k as f64 / 1000.0);
+        assert!(
+            r.is_finite() && (0.999..=1.0).contains(&r),
+            "cos {}: {r}",
+            k as f64 / 1000.0
+        );
     }
 }
 
@@ -130,8 +154,18 @@ fn within_1e_minus_12_rad_of_the_critical_angle_from_both_sides() {
     let theta_c = critical_angle(1.0 / GLASS).unwrap();
     let below = -(theta_c - 1e-12).cos();
     let above = -(theta_c + 1e-12).cos();
-    assert!(refract(DVec3::new((theta_c - 1e-12).sin(), 0.0, below), DVec3::Z, GLASS).is_some());
-    assert!(refract(DVec3::new((theta_c + 1e-12).sin(), 0.0, above), DVec3::Z, GLASS).is_none());
+    assert!(refract(
+        DVec3::new((theta_c - 1e-12).sin(), 0.0, below),
+        DVec3::Z,
+        GLASS
+    )
+    .is_some());
+    assert!(refract(
+        DVec3::new((theta_c + 1e-12).sin(), 0.0, above),
+        DVec3::Z,
+        GLASS
+    )
+    .is_none());
     assert_eq!(dielectric(above, GLASS), 1.0);
     let t = dielectric_polarized(below, GLASS).transmittance();
     assert!(t > 1e-7 && t < 1e-4, "T just below the critical angle: {t}");

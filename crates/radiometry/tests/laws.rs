@@ -6,11 +6,12 @@
 use glam::DVec3;
 use proptest::prelude::*;
 use radiometry::brdf::{
-    directional_albedo, hemisphere_directions, reciprocity, BlinnPhong, BlinnPhongReciprocal, Brdf, CourseLambert,
-    Lambert, Phong,
+    directional_albedo, hemisphere_directions, reciprocity, BlinnPhong, BlinnPhongReciprocal, Brdf,
+    CourseLambert, Lambert, Phong,
 };
 use radiometry::fresnel::{
-    conductor, conductor_polarized, dielectric, dielectric_polarized, f0, schlick, schlick_dielectric,
+    conductor, conductor_polarized, dielectric, dielectric_polarized, f0, schlick,
+    schlick_dielectric,
 };
 use radiometry::specular::{reflect, refract};
 use radiometry::{fresnel, snell};
@@ -231,7 +232,11 @@ proptest! {
 /// reflection by up to 0.96.
 #[test]
 fn schlick_stays_within_measured_bound() {
-    let dielectrics = [("water", 1.333, 0.060), ("glass", 1.5, 0.036), ("diamond", 2.42, 0.076)];
+    let dielectrics = [
+        ("water", 1.333, 0.060),
+        ("glass", 1.5, 0.036),
+        ("diamond", 2.42, 0.076),
+    ];
     let metals = [
         ("gold R", 0.17, 3.1, 0.015),
         ("gold G", 0.35, 2.7, 0.018),
@@ -246,10 +251,18 @@ fn schlick_stays_within_measured_bound() {
         for c in angles() {
             let outside = (schlick(c, f0) - dielectric(c, eta)).abs();
             let inside = (schlick_dielectric(-c, eta) - dielectric(-c, eta)).abs();
-            assert!(outside <= bound && inside <= bound, "{name} at cos {c}: {outside}, {inside} > {bound}");
+            assert!(
+                outside <= bound && inside <= bound,
+                "{name} at cos {c}: {outside}, {inside} > {bound}"
+            );
         }
-        let course_inside = angles().map(|c| (schlick(c, f0) - dielectric(-c, eta)).abs()).fold(0.0, f64::max);
-        assert!(course_inside > 0.8, "{name}: course Schlick from inside errs by only {course_inside}");
+        let course_inside = angles()
+            .map(|c| (schlick(c, f0) - dielectric(-c, eta)).abs())
+            .fold(0.0, f64::max);
+        assert!(
+            course_inside > 0.8,
+            "{name}: course Schlick from inside errs by only {course_inside}"
+        );
     }
     for (name, n, kappa, bound) in metals {
         let f0 = f0(n, kappa);
@@ -327,7 +340,10 @@ mod brdfs {
     #[test]
     fn course_lambert_has_albedo_pi_kd() {
         let rho = directional_albedo(&CourseLambert { kd: 0.6 }, DVec3::Z, DVec3::Z, 8);
-        assert!((rho.albedo - 0.6 * std::f64::consts::PI).abs() < 1e-12, "{rho:?}");
+        assert!(
+            (rho.albedo - 0.6 * std::f64::consts::PI).abs() < 1e-12,
+            "{rho:?}"
+        );
     }
 
     /// The course's Phong-Blinn BRDF violates reciprocity, as the course says
@@ -340,17 +356,49 @@ mod brdfs {
     fn helmholtz_reciprocity_fails_for_course_blinn_phong() {
         let dirs = hemisphere_directions::<DVec3>(200);
         let n = DVec3::Z;
-        let course = reciprocity(&BlinnPhong { kd: 0.0, ks: 1.0, shine: 10.0 }, n, &dirs);
-        let phong = reciprocity(&Phong { kd: 0.0, ks: 1.0, shine: 10.0 }, n, &dirs);
-        let fixed = reciprocity(&BlinnPhongReciprocal { kd: 0.0, ks: 1.0, shine: 10.0 }, n, &dirs);
+        let course = reciprocity(
+            &BlinnPhong {
+                kd: 0.0,
+                ks: 1.0,
+                shine: 10.0,
+            },
+            n,
+            &dirs,
+        );
+        let phong = reciprocity(
+            &Phong {
+                kd: 0.0,
+                ks: 1.0,
+                shine: 10.0,
+            },
+            n,
+            &dirs,
+        );
+        let fixed = reciprocity(
+            &BlinnPhongReciprocal {
+                kd: 0.0,
+                ks: 1.0,
+                shine: 10.0,
+            },
+            n,
+            &dirs,
+        );
         assert!(course.worst_rel > 0.99, "{course:?}");
         assert!(phong.worst_rel > 0.99, "{phong:?}");
         assert!(fixed.worst_rel < 1e-14, "{fixed:?}");
         // The asymmetry is exactly the ratio of the cosines the course divides by.
         let (a, b) = course.worst_pair;
-        let brdf = BlinnPhong { kd: 0.0, ks: 1.0, shine: 10.0 };
+        let brdf = BlinnPhong {
+            kd: 0.0,
+            ks: 1.0,
+            shine: 10.0,
+        };
         let ratio = brdf.eval(n, a, b) / brdf.eval(n, b, a);
-        assert!((ratio - b.z / a.z).abs() <= 1e-12 * ratio, "{ratio} vs {}", b.z / a.z);
+        assert!(
+            (ratio - b.z / a.z).abs() <= 1e-12 * ratio,
+            "{ratio} vs {}",
+            b.z / a.z
+        );
     }
 
     /// The course's Blinn-Phong in radiance form: L = L_in (kd + ks cos^s δ / cos θ) cos θ
@@ -358,8 +406,16 @@ mod brdfs {
     /// (L_in = 5, ks = √2, shine 3, L = (0, 3, 4)/5, V = (0, 4, 3)/5) gives 2.5.
     #[test]
     fn course_blinn_phong_reproduces_quiz_5() {
-        let brdf = BlinnPhong { kd: 0.0, ks: 2f64.sqrt(), shine: 3.0 };
-        let (n, l, v) = (DVec3::Z, DVec3::new(0.0, 0.6, 0.8), DVec3::new(0.0, 0.8, 0.6));
+        let brdf = BlinnPhong {
+            kd: 0.0,
+            ks: 2f64.sqrt(),
+            shine: 3.0,
+        };
+        let (n, l, v) = (
+            DVec3::Z,
+            DVec3::new(0.0, 0.6, 0.8),
+            DVec3::new(0.0, 0.8, 0.6),
+        );
         let radiance = 5.0 * brdf.eval(n, l, v) * l.dot(n);
         assert!((radiance - 2.5).abs() < 1e-14, "{radiance}");
     }

@@ -82,7 +82,11 @@ fn course_003_boxed_refraction_formula_is_wrong() {
     let boxed = course::refract_003_boxed(v, n, 1.5);
     let law = refract(-v, n, 1.5).unwrap().direction;
     let angle_off = boxed.normalize().dot(law).acos().to_degrees();
-    assert!((boxed.length() - 0.6780).abs() < 1e-4, "length {}", boxed.length());
+    assert!(
+        (boxed.length() - 0.6780).abs() < 1e-4,
+        "length {}",
+        boxed.length()
+    );
     assert!((angle_off - 15.92).abs() < 0.01, "{angle_off}°");
     // Even head-on it is wrong: cos(0/n) = 1 where cos(0)/n = 1/n, so the
     // boxed vector is −N/1.5 instead of −N.
@@ -105,7 +109,10 @@ fn course_003_tangent_is_neither_unit_nor_perpendicular() {
     assert!((t.normalize().dot(n).acos().to_degrees() - 67.5).abs() < 1e-9);
     // At grazing incidence (α = 90°) the claim happens to hold.
     let grazing = course::tangent_003(DVec3::X, n);
-    assert!((grazing.length() - 2f64.sqrt()).abs() < 1e-15, "and even there |v + N| = √2, not sin α = 1");
+    assert!(
+        (grazing.length() - 2f64.sqrt()).abs() < 1e-15,
+        "and even there |v + N| = √2, not sin α = 1"
+    );
 }
 
 /// `000`, GLSL `Fresnel(F0, cosTheta) = F0 + (1 − F0) cosθ⁵`. Wrong: the
@@ -144,7 +151,10 @@ fn course_003_f0_formula_and_glass_example_are_right() {
 fn course_001_empirical_fresnel_slide_is_wrong_code_is_schlick() {
     let n = DVec3::Z;
     let v = DVec3::new(0.6, 0.0, -0.8);
-    assert_eq!(course::empirical_fresnel_001_slide(v, n, 0.04, 0.96, 5.5), 1.0);
+    assert_eq!(
+        course::empirical_fresnel_001_slide(v, n, 0.04, 0.96, 5.5),
+        1.0
+    );
     for k in 0..=100 {
         let cos = k as f64 / 100.0;
         let v = DVec3::new((1.0 - cos * cos).sqrt(), 0.0, -cos);
@@ -153,7 +163,10 @@ fn course_001_empirical_fresnel_slide_is_wrong_code_is_schlick() {
         let slide = course::empirical_fresnel_001_slide(v, n, 0.04, 0.96, 5.0);
         assert!((slide - (0.04 - 0.96 * cos.powi(5)).max(0.0)).abs() <= 4.0 * EPS && slide <= 0.04);
         let code = course::empirical_fresnel_001_code(v, n, 0.04, 0.96, 5.0);
-        assert!((code - schlick(cos, 0.04)).abs() <= 4.0 * EPS, "cos {cos}: {code}");
+        assert!(
+            (code - schlick(cos, 0.04)).abs() <= 4.0 * EPS,
+            "cos {cos}: {code}"
+        );
     }
     let grazing = DVec3::X;
     assert!(course::empirical_fresnel_001_code(grazing, n, 0.5, 0.9, 5.0) > 1.0);
