@@ -135,44 +135,72 @@ fn textbook_dielectric(cos_i: f64, eta: f64) -> (f64, f64) {
     (r, 1.0 - r)
 }
 
+/// The worst errors of one law's quantities in one tier, and every
+/// comparison beyond the bound.
+struct Tally {
+    precision: Precision,
+    law: &'static str,
+    names: &'static [&'static str],
+    worst: Vec<Worst>,
+    failures: Vec<String>,
+}
+
+impl Tally {
+    fn new(precision: Precision, law: &'static str, names: &'static [&'static str]) -> Self {
+        let worst = names.iter().map(|_| Worst::default()).collect();
+        Self {
+            precision,
+            law,
+            names,
+            worst,
+            failures: Vec::new(),
+        }
+    }
+
+    fn compare(&mut self, label: &str, got: &[f64], exact: &[Exact]) {
+        for (i, (&g, &e)) in got.iter().zip(exact).enumerate() {
+            self.worst[i].update(e, g, self.precision, label);
+            let ulps = e.ulps(g, self.precision);
+            if ulps > BOUND_ULPS {
+                let (precision, law, name) = (self.precision, self.law, self.names[i]);
+                self.failures.push(format!(
+                    "{precision:?} {law} {name} at {label}: {ulps:.1} ulps"
+                ));
+            }
+        }
+    }
+
+    /// Prints the table rows and hands back the failures.
+    fn finish(self) -> Vec<String> {
+        for (name, w) in self.names.iter().zip(&self.worst) {
+            let (precision, law) = (self.precision, self.law);
+            println!(
+                "| {precision:?} | {law} | {name} | {:.2} | {:.1e} | {} |",
+                w.ulps, w.relative, w.at
+            );
+        }
+        self.failures
+    }
+}
+
 fn check_dielectric(precision: Precision, cases: &[DielectricCase]) -> Vec<String> {
-    let mut failures = Vec::new();
-    let names = ["R_s", "R_p", "R", "T"];
-    let mut worst: Vec<Worst> = names.iter().map(|_| Worst::default()).collect();
+    let mut tally = Tally::new(precision, "dielectric", &["R_s", "R_p", "R", "T"]);
     for case in cases {
         let f = dielectric_at(case, precision);
         if f.is_total_internal_reflection() != case.tir {
-            failures.push(format!(
+            tally.failures.push(format!(
                 "{}: total internal reflection {} but exactly {}",
                 case.label, !case.tir, case.tir
             ));
         }
         let got = [f.r_s, f.r_p, f.reflectance(), f.transmittance()];
-        let exact = [case.r_s, case.r_p, case.r, case.t];
-        for ((w, (&g, &e)), name) in worst.iter_mut().zip(got.iter().zip(&exact)).zip(names) {
-            w.update(e, g, precision, &case.label);
-            let ulps = e.ulps(g, precision);
-            if ulps > BOUND_ULPS {
-                failures.push(format!(
-                    "{precision:?} dielectric {name} at {}: {ulps:.1} ulps",
-                    case.label
-                ));
-            }
-        }
+        tally.compare(&case.label, &got, &[case.r_s, case.r_p, case.r, case.t]);
     }
-    for (name, w) in names.iter().zip(&worst) {
-        println!(
-            "| {precision:?} | dielectric | {name} | {:.2} | {:.1e} | {} |",
-            w.ulps, w.relative, w.at
-        );
-    }
-    failures
+    tally.finish()
 }
 
 fn check_conductor(precision: Precision, cases: &[ConductorCase]) -> Vec<String> {
-    let mut failures = Vec::new();
-    let names = ["R_s", "R_p", "R"];
-    let mut worst: Vec<Worst> = names.iter().map(|_| Worst::default()).collect();
+    let mut tally = Tally::new(precision, "conductor", &["R_s", "R_p", "R"]);
     for case in cases {
         let got: [f64; 3] = match precision {
             Precision::F64 => {
@@ -184,25 +212,9 @@ fn check_conductor(precision: Precision, cases: &[ConductorCase]) -> Vec<String>
                 [f.r_s.into(), f.r_p.into(), f.reflectance().into()]
             }
         };
-        let exact = [case.r_s, case.r_p, case.r];
-        for ((w, (&g, &e)), name) in worst.iter_mut().zip(got.iter().zip(&exact)).zip(names) {
-            w.update(e, g, precision, &case.label);
-            let ulps = e.ulps(g, precision);
-            if ulps > BOUND_ULPS {
-                failures.push(format!(
-                    "{precision:?} conductor {name} at {}: {ulps:.1} ulps",
-                    case.label
-                ));
-            }
-        }
+        tally.compare(&case.label, &got, &[case.r_s, case.r_p, case.r]);
     }
-    for (name, w) in names.iter().zip(&worst) {
-        println!(
-            "| {precision:?} | conductor | {name} | {:.2} | {:.1e} | {} |",
-            w.ulps, w.relative, w.at
-        );
-    }
-    failures
+    tally.finish()
 }
 
 #[test]

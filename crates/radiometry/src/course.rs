@@ -109,42 +109,44 @@ pub fn refract_001_cg<V: Vector3>(i: V, n: V, eta_ratio: V::Scalar) -> V {
     }
 }
 
-/// `001`, the empirical Fresnel approximation on the slide:
-/// `max(0, min(1, bias + scale (0 + I·N)^power))`.
-///
-/// **Wrong**: with `I` pointing towards the surface `I·N = −cos θ ≤ 0`, and
-/// a negative base to a fractional power is NaN, which the clamps turn into
-/// whatever min/max make of NaN (`f64::min` here: 1); an odd power gives
-/// `bias − scale cos^power θ`, never above the bias; an even one is largest
-/// at normal incidence instead of at grazing. The vertex program on
-/// the next slide has `1 + dot(I, N)`, which is what is meant: see
-/// [`empirical_fresnel_001_code`].
-#[inline]
-pub fn empirical_fresnel_001_slide<V: Vector3>(
-    i: V,
-    n: V,
-    bias: V::Scalar,
-    scale: V::Scalar,
-    power: V::Scalar,
-) -> V::Scalar {
-    let f = bias + scale * (V::Scalar::zero() + i.dot(n)).powf(power);
-    f.min(V::Scalar::one()).max(V::Scalar::zero())
-}
-
-/// `001`, the vertex program `C7E5v_dispersion`:
-/// `bias + scale · (1 + dot(I, N))^power`, unclamped.
+/// `001`, the empirical Fresnel approximation: `bias + scale · x^power`,
+/// with `x` written two ways in the source (see the methods).
 ///
 /// An empirical curve, not a law: with `bias = F0`, `scale = 1 − F0`,
-/// `power = 5` it is Schlick's approximation. Unlike the slide it does not
-/// clamp into `[0, 1]`, so `bias + scale > 1` gives a reflectance above 1 at
-/// grazing incidence.
-#[inline]
-pub fn empirical_fresnel_001_code<V: Vector3>(
-    i: V,
-    n: V,
-    bias: V::Scalar,
-    scale: V::Scalar,
-    power: V::Scalar,
-) -> V::Scalar {
-    bias + scale * (V::Scalar::one() + i.dot(n)).powf(power)
+/// `power = 5` and the vertex program's `x` it is Schlick's approximation.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct EmpiricalFresnel<T> {
+    /// The reflectance at normal incidence the curve starts from.
+    pub bias: T,
+    /// How much the curve rises towards grazing incidence.
+    pub scale: T,
+    /// How sharply it rises.
+    pub power: T,
+}
+
+impl<T: Real> EmpiricalFresnel<T> {
+    /// The slide: `max(0, min(1, bias + scale (0 + I·N)^power))`.
+    ///
+    /// **Wrong**: with `I` pointing towards the surface `I·N = −cos θ ≤ 0`,
+    /// and a negative base to a fractional power is NaN, which the clamps
+    /// turn into whatever min/max make of NaN (`f64::min` here: 1); an odd
+    /// power gives `bias − scale cos^power θ`, never above the bias; an even
+    /// one is largest at normal incidence instead of at grazing. The vertex
+    /// program on the next slide has `1 + dot(I, N)`, which is what is
+    /// meant: see [`EmpiricalFresnel::vertex_program`].
+    #[inline]
+    pub fn slide<V: Vector3<Scalar = T>>(&self, i: V, n: V) -> T {
+        let f = self.bias + self.scale * (T::zero() + i.dot(n)).powf(self.power);
+        f.min(T::one()).max(T::zero())
+    }
+
+    /// The vertex program `C7E5v_dispersion`:
+    /// `bias + scale · (1 + dot(I, N))^power`, unclamped.
+    ///
+    /// Unlike the slide it does not clamp into `[0, 1]`, so `bias + scale > 1`
+    /// gives a reflectance above 1 at grazing incidence.
+    #[inline]
+    pub fn vertex_program<V: Vector3<Scalar = T>>(&self, i: V, n: V) -> T {
+        self.bias + self.scale * (T::one() + i.dot(n)).powf(self.power)
+    }
 }

@@ -152,24 +152,42 @@ fn course_001_empirical_fresnel_slide_is_wrong_code_is_schlick() {
     let n = DVec3::Z;
     let v = DVec3::new(0.6, 0.0, -0.8);
     assert_eq!(
-        course::empirical_fresnel_001_slide(v, n, 0.04, 0.96, 5.5),
+        course::EmpiricalFresnel {
+            bias: 0.04,
+            scale: 0.96,
+            power: 5.5
+        }
+        .slide(v, n),
         1.0
     );
+    let schlick_like = course::EmpiricalFresnel {
+        bias: 0.04,
+        scale: 0.96,
+        power: 5.0,
+    };
     for k in 0..=100 {
         let cos = k as f64 / 100.0;
         let v = DVec3::new((1.0 - cos * cos).sqrt(), 0.0, -cos);
         // With an odd power the slide gives max(0, bias − scale cos⁵θ): never
         // above the bias, so no rise towards grazing incidence at all.
-        let slide = course::empirical_fresnel_001_slide(v, n, 0.04, 0.96, 5.0);
+        let slide = schlick_like.slide(v, n);
         assert!((slide - (0.04 - 0.96 * cos.powi(5)).max(0.0)).abs() <= 4.0 * EPS && slide <= 0.04);
-        let code = course::empirical_fresnel_001_code(v, n, 0.04, 0.96, 5.0);
+        let code = schlick_like.vertex_program(v, n);
         assert!(
             (code - schlick(cos, 0.04)).abs() <= 4.0 * EPS,
             "cos {cos}: {code}"
         );
     }
     let grazing = DVec3::X;
-    assert!(course::empirical_fresnel_001_code(grazing, n, 0.5, 0.9, 5.0) > 1.0);
+    assert!(
+        course::EmpiricalFresnel {
+            bias: 0.5,
+            scale: 0.9,
+            power: 5.0
+        }
+        .vertex_program(grazing, n)
+            > 1.0
+    );
 }
 
 /// `003`, quiz 2: a dielectric of index 1.4 reflects F0 = 0.16/5.76 =
