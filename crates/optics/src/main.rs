@@ -2,6 +2,7 @@
 
 mod inspect;
 mod render;
+mod validate;
 
 use clap::{Parser, Subcommand, ValueEnum};
 use std::process::ExitCode;
@@ -38,6 +39,8 @@ enum Command {
     Render(render::RenderArgs),
     /// Report which effects a scene needs and what the renderer skips.
     Inspect(inspect::InspectArgs),
+    /// Cross-check the laws, spectra and renders against the references.
+    Validate(validate::ValidateArgs),
 }
 
 fn main() -> ExitCode {
@@ -46,6 +49,7 @@ fn main() -> ExitCode {
     let result = match &cli.command {
         Command::Render(args) => render::run(args, &ui),
         Command::Inspect(args) => inspect::run(args, &ui),
+        Command::Validate(args) => validate::run(args, &ui),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
