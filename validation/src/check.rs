@@ -1,0 +1,143 @@
+//! The outcome of one check: what was compared with what, within which
+//! tolerance, the worst disagreements, and the failures and findings.
+//!
+//! A **failure** is a disagreement the suite is responsible for: one of its
+//! laws beyond the stated tolerance of a reference. A **finding** is a
+//! disagreement between two references (Mitsuba's float32 evaluation against
+//! the exact value, say) that the suite reports without failing for it.
+
+use serde::Serialize;
+
+/// One check's result, as it appears in `report.json`.
+#[derive(Clone, Debug, Serialize)]
+pub struct Check {
+    /// A stable identifier, `group.reference.law`, e.g. `laws.mitsuba.fresnel`.
+    pub id: String,
+    /// What is compared, in words.
+    pub title: String,
+    /// The reference the law is compared with, and its version.
+    pub reference: String,
+    /// The tolerance and why it is that.
+    pub tolerance: String,
+    /// The number of cases compared.
+    pub cases: usize,
+    /// The worst disagreements measured, one per quantity.
+    pub metrics: Vec<Metric>,
+    /// Cases beyond tolerance, each naming the case and the numbers.
+    pub failures: Vec<String>,
+    /// Disagreements between references, reported and not counted as failures.
+    pub findings: Vec<String>,
+}
+
+/// The worst value of one measured quantity and where it occurred.
+#[derive(Clone, Debug, Serialize, PartialEq)]
+pub struct Metric {
+    /// What is measured, with its unit (`|ours − exact| in f32 ulps`).
+    pub name: String,
+    /// The worst value over the cases.
+    pub worst: f64,
+    /// The label of the case where it occurred (empty when no case was compared).
+    pub at: String,
+}
+
+impl Check {
+    /// A check with no cases compared yet.
+    pub fn new(id: &str, title: &str, reference: &str, tolerance: &str) -> Self {
+        Self {
+            id: id.to_owned(),
+            title: title.to_owned(),
+            reference: reference.to_owned(),
+            tolerance: tolerance.to_owned(),
+            cases: 0,
+            metrics: Vec::new(),
+            failures: Vec::new(),
+            findings: Vec::new(),
+        }
+    }
+
+    /// Whether every case was within tolerance.
+    pub fn passed(&self) -> bool {
+        self.failures.is_empty() && self.cases > 0
+    }
+
+    /// Records `value` for the quantity `name` at case `at`, keeping the worst.
+    /// NaN counts as worse than any number.
+    pub fn measure(&mut self, name: &str, value: f64, at: &str) {
+        let value = if value.is_nan() { f64::INFINITY } else { value };
+        match self.metrics.iter_mut().find(|m| m.name == name) {
+            Some(m) if value > m.worst => {
+                m.worst = value;
+                at.clone_into(&mut m.at);
+            }
+            Some(_) => {}
+            None => self.metrics.push(Metric {
+                name: name.to_owned(),
+                worst: value,
+                at: at.to_owned(),
+            }),
+        }
+    }
+
+    /// The worst value recorded for `name`, if any.
+    pub fn worst(&self, name: &str) -> Option<&Metric> {
+        self.metrics.iter().find(|m| m.name == name)
+    }
+
+    /// Records a failure.
+    pub fn fail(&mut self, message: String) {
+        self.failures.push(message);
+    }
+
+    /// Records a finding.
+    pub fn find(&mut self, message: String) {
+        self.findings.push(message);
+    }
+}
+
+/// The spacing of `f32` values at `x` (its unit in the last place), down to
+/// the smallest subnormal, as an `f64`.
+pub fn ulp_f32(x: f64) -> f64 {
+    let x = x.abs();
+    let exponent = ((x.to_bits() >> 52) & 0x7ff) as i32 - 1023;
+    2f64.powi((exponent - 23).max(-149))
+}
+
+/// `|computed − exact|` in `f32` ulps of `exact`; infinite if `computed` is NaN.
+pub fn ulps_f32(computed: f64, exact: f64) -> f64 {
+    let err = (computed - exact).abs();
+    if err.is_nan() {
+        f64::INFINITY
+    } else {
+        err / ulp_f32(exact)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ulp_f32_is_the_float32_spacing() {
+        assert_eq!(ulp_f32(1.0), f32::EPSILON as f64);
+        assert_eq!(ulp_f32(0.75), f32::EPSILON as f64 / 2.0);
+        assert_eq!(ulp_f32(0.0), 2f64.powi(-149));
+        assert_eq!(ulps_f32(1.0 + f32::EPSILON as f64, 1.0), 1.0);
+        assert!(ulps_f32(f64::NAN, 1.0).is_infinite());
+    }
+
+    #[test]
+    fn measure_keeps_the_worst_and_where() {
+        let mut check = Check::new("t", "t", "t", "t");
+        check.measure("err", 1.0, "a");
+        check.measure("err", 3.0, "b");
+        check.measure("err", 2.0, "c");
+        check.measure("err", f64::NAN, "d");
+        assert_eq!(check.worst("err").unwrap().at, "d");
+        assert!(check.worst("err").unwrap().worst.is_infinite());
+    }
+
+    #[test]
+    fn a_check_without_cases_does_not_pass() {
+        assert!(!Check::new("t", "t", "t", "t").passed());
+    }
+}

@@ -1,0 +1,30 @@
+//! The cross-check harness: the radiometry crate's laws and colorimetry
+//! against references nobody here wrote (Mitsuba 3, colour-science) and
+//! against 50-digit values (mpmath).
+//!
+//! The references are JSON files in `validation/reference/`, written by the
+//! scripts in `python-checks/` and committed, so every check runs with no
+//! Python installed. Each check is a pure function of the laws under test
+//! and a reference document, returning a [`Check`]: the worst disagreements,
+//! the failures (ours beyond tolerance) and the findings (the references
+//! disagreeing with each other). The laws are a parameter, so a deliberately
+//! broken law can be shown to be caught.
+//!
+//! ```
+//! use validation::laws::{self, Laws, MitsubaLaws};
+//!
+//! let reference = MitsubaLaws::load(&validation::reference::committed_dir()).unwrap();
+//! let checks = laws::check_all(&Laws::radiometry(), &reference);
+//! assert!(checks.iter().all(|c| c.passed()));
+//! ```
+
+#![forbid(unsafe_code)]
+#![warn(missing_docs)]
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
+pub mod check;
+pub mod laws;
+pub mod reference;
+
+pub use check::{Check, Metric};
+pub use reference::ReferenceError;

@@ -1,0 +1,116 @@
+//! Deliberately broken laws, injected into the harness in place of the
+//! radiometry crate's, must be reported as failures: a harness that passes
+//! everything would pass these too.
+
+use glam::Vec3;
+use radiometry::fresnel::{self, DielectricFresnel};
+use radiometry::specular::{self, Refraction};
+use validation::laws::{self, Laws, MitsubaLaws};
+use validation::reference::committed_dir;
+use validation::Check;
+
+fn reference() -> MitsubaLaws {
+    MitsubaLaws::load(&committed_dir()).expect("committed Mitsuba reference")
+}
+
+fn failures_of(check: &Check) -> usize {
+    assert!(!check.passed(), "{} passed with a broken law", check.id);
+    check.failures.len()
+}
+
+/// `(1 − cos)^(−5)` instead of `(1 − cos)^5`.
+fn schlick_wrong_exponent_sign(cos_i: f32, f0: f32) -> f32 {
+    f0 + (1.0 - f0) * (1.0 - cos_i.abs()).powi(-5)
+}
+
+/// The refracted direction with its tangential part pointing the wrong way.
+fn refract_tangent_sign_flipped(wi: Vec3, n: Vec3, eta: f32) -> Option<Refraction<Vec3>> {
+    specular::refract(wi, n, eta).map(|mut r| {
+        let normal_part = n * r.direction.dot(n);
+        r.direction = normal_part - (r.direction - normal_part);
+        r
+    })
+}
+
+/// `eta` read as `n_outside / n_inside`, the opposite of the crate convention.
+fn dielectric_eta_inverted(cos_i: f32, eta: f32) -> DielectricFresnel<f32> {
+    fresnel::dielectric_polarized(cos_i, 1.0 / eta)
+}
+
+#[test]
+fn schlick_with_the_wrong_exponent_sign_is_caught() {
+    let broken = Laws {
+        schlick: schlick_wrong_exponent_sign,
+        ..Laws::radiometry()
+    };
+    let check = laws::check_schlick(&broken, &reference());
+    // Only cos = 0 escapes, where 1 − cos = 1 and both exponents give 1.
+    assert!(
+        failures_of(&check) >= check.cases / 2,
+        "{:#?}",
+        check.failures
+    );
+}
+
+#[test]
+fn refraction_with_a_sign_flip_is_caught() {
+    let broken = Laws {
+        refract: refract_tangent_sign_flipped,
+        ..Laws::radiometry()
+    };
+    let check = laws::check_directions(&broken, &reference());
+    failures_of(&check);
+    assert!(
+        check.failures.iter().all(|f| f.starts_with("refract")),
+        "{:#?}",
+        check.failures
+    );
+    // Normal incidence has no tangential part: the flip is invisible there, and only there.
+    assert!(
+        check.failures.iter().all(|f| !f.contains(" 0deg ")),
+        "{:#?}",
+        check.failures
+    );
+}
+
+#[test]
+fn inverted_eta_convention_is_caught() {
+    let broken = Laws {
+        dielectric: dielectric_eta_inverted,
+        ..Laws::radiometry()
+    };
+    let check = laws::check_dielectric(&broken, &reference());
+    failures_of(&check);
+}
+
+/// If the exact reference shared our mistake, Mitsuba still catches it: the
+/// reference's exact values are replaced by the broken law's own (in f64), so
+/// that only the comparison with Mitsuba can tell.
+#[test]
+fn a_mistake_shared_by_ours_and_the_exact_reference_is_caught_by_mitsuba() {
+    let mut reference = reference();
+    for case in &mut reference.dielectric {
+        let f = fresnel::dielectric_polarized(case.cos_i, 1.0 / case.eta);
+        case.exact.r = f.reflectance();
+        case.exact.r_s = f.r_s;
+        case.exact.r_p = f.r_p;
+        case.exact.tir = f.is_total_internal_reflection();
+    }
+    let broken = Laws {
+        dielectric: dielectric_eta_inverted,
+        ..Laws::radiometry()
+    };
+    let check = laws::check_dielectric(&broken, &reference);
+    failures_of(&check);
+    assert!(
+        check.failures.iter().any(|f| f.contains("Mitsuba")),
+        "{:#?}",
+        check.failures
+    );
+}
+
+#[test]
+fn the_unbroken_laws_pass_the_same_checks() {
+    let checks = laws::check_all(&Laws::radiometry(), &reference());
+    assert!(checks.iter().all(Check::passed));
+}
