@@ -157,12 +157,25 @@ impl<T: Real> Brdf<T> for BlinnPhongReciprocal<T> {
     }
 }
 
-/// `(cos⁺δ)^shine` with `cos δ = n · normalize(wi + wo)`; 0 if `wi = −wo`.
+/// The half vector `h = (wi + wo) / ‖wi + wo‖` of Blinn's model, halfway
+/// between the directions to the light and to the viewer; `None` when they
+/// are opposite (`wi = −wo`) and no half vector exists.
+///
+/// ```
+/// use glam::DVec3;
+/// // The course's quiz 5: light from (0, 3, 4)/5, viewer at (0, 4, 3)/5.
+/// let h = radiometry::brdf::half_vector(DVec3::new(0.0, 0.6, 0.8), DVec3::new(0.0, 0.8, 0.6)).unwrap();
+/// assert!((h.z - 0.5_f64.sqrt()).abs() < 1e-15);
+/// ```
+#[inline]
+pub fn half_vector<V: Vector3>(wi: V, wo: V) -> Option<V> {
+    (wi + wo).try_normalize()
+}
+
+/// `(cos⁺δ)^shine` with `cos δ = n · h`; 0 if `wi = −wo`.
 #[inline]
 fn half_vector_lobe<V: Vector3>(n: V, wi: V, wo: V, shine: V::Scalar) -> V::Scalar {
-    (wi + wo)
-        .try_normalize()
-        .map_or(V::Scalar::zero(), |h| cos_plus(n.dot(h)).powf(shine))
+    half_vector(wi, wo).map_or(V::Scalar::zero(), |h| cos_plus(n.dot(h)).powf(shine))
 }
 
 /// The worst violation of Helmholtz reciprocity found over a set of

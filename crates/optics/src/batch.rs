@@ -1,0 +1,151 @@
+//! `optics batch`: JSON Lines in, JSON Lines out.
+//!
+//! Each input line is one request, `{"law": "fresnel", "eta": 1.5, ...}`,
+//! with the fields of the matching subcommand's flags (`--cos-i` is
+//! `cos_i`, vectors are `[x, y, z]`). Each output line is the record that
+//! subcommand prints with `--json`, in input order; a line that cannot be
+//! evaluated yields `{"line": N, "law": ..., "error": "..."}` and the rest
+//! go on. Lines are evaluated in parallel in blocks; the output order is the
+//! input order whatever the thread count.
+
+use crate::input::Via;
+use crate::lang::Lang;
+use crate::laws::{FresnelArgs, ReflectArgs, RefractArgs, ShadeArgs};
+use crate::quiz::{BlinnPhongArgs, CriticalAngleArgs, F0Args, LambertArgs};
+use crate::record::Record;
+use anyhow::{anyhow, Result};
+use rayon::prelude::*;
+use serde::de::DeserializeOwned;
+use serde_json::{json, Map, Value};
+use std::io::{BufRead, Write};
+
+#[derive(clap::Args, Debug)]
+#[command(
+    after_help = r#"Requests are JSON objects, one per line; "law" is one of:
+  fresnel, refract, reflect, shade, f0, lambert, critical_angle, blinn_phong
+and the other fields are the subcommand's flags with '_' for '-' and vectors as [x, y, z].
+
+Example:
+  printf '%s\n' '{"law": "fresnel", "eta": 1.5, "cos_i": 0.3}' \
+                '{"law": "refract", "wi": [0, 0.6, 0.8], "normal": [0, 0, 1], "eta": 1.5}' | optics batch
+
+Exit status: 0 when every line was evaluated, 1 when any line gave an error object."#
+)]
+pub struct BatchArgs {
+    /// Lines evaluated together in parallel before their results are written.
+    #[arg(long, default_value_t = 16384, value_parser = clap::value_parser!(u32).range(1..))]
+    pub block: u32,
+}
+
+/// The laws a request may name, in the order `--help` lists them.
+pub const LAWS: [&str; 8] = [
+    "fresnel",
+    "refract",
+    "reflect",
+    "shade",
+    "f0",
+    "lambert",
+    "critical_angle",
+    "blinn_phong",
+];
+
+/// Evaluates one request.
+pub fn evaluate(request: Map<String, Value>, law: &str, lang: Lang) -> Result<Record> {
+    fn parse<T: DeserializeOwned>(fields: Map<String, Value>) -> Result<T> {
+        serde_path_to_error::deserialize(Value::Object(fields)).map_err(|e| {
+            let path = e.path().to_string();
+            if path == "." {
+                anyhow!("{}", e.inner())
+            } else {
+                anyhow!("{path}: {}", e.inner())
+            }
+        })
+    }
+    let via = Via::Json;
+    match law {
+        "fresnel" => parse::<FresnelArgs>(request)?.solve(via, lang),
+        "refract" => parse::<RefractArgs>(request)?.solve(via, lang),
+        "reflect" => parse::<ReflectArgs>(request)?.solve(via, lang),
+        "shade" => parse::<ShadeArgs>(request)?.solve(via, lang),
+        "f0" => parse::<F0Args>(request)?.solve(via, lang),
+        "lambert" => parse::<LambertArgs>(request)?.solve(via, lang),
+        "critical_angle" => parse::<CriticalAngleArgs>(request)?.solve(via, lang),
+        "blinn_phong" => parse::<BlinnPhongArgs>(request)?.solve(via, lang),
+        other => Err(anyhow!(
+            "law: unknown law {other:?}, expected one of {}",
+            LAWS.join(", ")
+        )),
+    }
+}
+
+/// One input line to one output line (without the newline), and whether it
+/// was evaluated.
+pub fn line(number: usize, text: &str, lang: Lang) -> (String, bool) {
+    let error = |law: Value, message: String| {
+        let object = json!({ "line": number, "law": law, "error": message });
+        (object.to_string(), false)
+    };
+    if text.trim().is_empty() {
+        return error(
+            Value::Null,
+            "empty line: every line holds one request".into(),
+        );
+    }
+    let mut request = match serde_json::from_str::<Value>(text) {
+        Ok(Value::Object(map)) => map,
+        Ok(_) => return error(Value::Null, "a request must be a JSON object".into()),
+        Err(e) => return error(Value::Null, format!("malformed JSON: {e}")),
+    };
+    let law = match request.remove("law") {
+        Some(Value::String(law)) => law,
+        Some(other) => return error(other, "law: must be a string".into()),
+        None => {
+            return error(
+                Value::Null,
+                "law: missing; every request names its law".into(),
+            )
+        }
+    };
+    match evaluate(request, &law, lang) {
+        Ok(record) => match serde_json::to_string(&record) {
+            Ok(json) => (json, true),
+            Err(e) => error(Value::String(law), format!("{e}")),
+        },
+        Err(e) => error(Value::String(law), format!("{e:#}")),
+    }
+}
+
+/// Streams `input` to `output`; returns how many lines were read and how
+/// many of them gave errors.
+pub fn run(
+    args: &BatchArgs,
+    input: impl BufRead,
+    mut output: impl Write,
+    lang: Lang,
+) -> Result<(usize, usize)> {
+    let block = args.block as usize;
+    let mut lines = input.lines();
+    let (mut read, mut failed) = (0usize, 0usize);
+    loop {
+        let mut texts = Vec::with_capacity(block);
+        for text in lines.by_ref().take(block) {
+            texts.push(text.map_err(|e| anyhow!("reading line {}: {e}", read + texts.len() + 1))?);
+        }
+        if texts.is_empty() {
+            break;
+        }
+        let results: Vec<(String, bool)> = texts
+            .par_iter()
+            .enumerate()
+            .map(|(i, text)| line(read + i + 1, text, lang))
+            .collect();
+        for (json, ok) in &results {
+            output.write_all(json.as_bytes())?;
+            output.write_all(b"\n")?;
+            failed += usize::from(!ok);
+        }
+        read += texts.len();
+    }
+    output.flush()?;
+    Ok((read, failed))
+}

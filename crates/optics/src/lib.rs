@@ -1,0 +1,150 @@
+//! The suite's command line, `optics`, as a library: the binary is a thin
+//! `main` over [`main_entry`], and benches drive [`batch`] directly.
+//!
+//! Every subcommand prints a record (the working and the answer) as text, or
+//! with `--json` as one JSON object whose fields the README documents.
+//! Errors name the argument that was wrong and exit with status 1 (2 for
+//! command-line syntax, as reported by the argument parser).
+
+pub mod batch;
+
+pub mod input;
+mod inspect;
+pub mod lang;
+pub mod laws;
+pub mod quiz;
+pub mod record;
+mod render;
+mod validate;
+
+pub use lang::Lang;
+
+use clap::{Parser, Subcommand};
+use input::Via;
+use record::Record;
+use std::io::Write;
+use std::process::ExitCode;
+
+/// How results are shown: plain text or one JSON object, in English or Hungarian.
+#[derive(Debug, Clone, Copy)]
+pub struct Ui {
+    pub json: bool,
+    pub lang: Lang,
+}
+
+impl Ui {
+    /// Prints a record in the chosen form.
+    pub fn show(&self, record: &Record) -> anyhow::Result<()> {
+        let mut out = std::io::stdout().lock();
+        if self.json {
+            serde_json::to_writer(&mut out, record)?;
+            writeln!(out)?;
+        } else {
+            write!(out, "{}", record.to_text(self.lang))?;
+        }
+        Ok(())
+    }
+}
+
+#[derive(Parser, Debug)]
+#[command(
+    name = "optics",
+    version,
+    about = "Optics laws, the course's quiz, and the course's ray tracers, cross-checked.",
+    after_help = "Examples:
+  optics quiz seed
+  optics fresnel --eta 1.5 --theta-i-deg 60
+  optics --json refract --wi 0,0.6,0.8 --normal 0,0,1 --eta 1.5
+  optics --lang hu quiz f0 --n 1.4"
+)]
+struct Cli {
+    /// Print one JSON object instead of text.
+    #[arg(long, global = true)]
+    json: bool,
+    /// Language of the text output: en (English) or hu (magyar).
+    #[arg(long, global = true, value_enum, default_value = "en")]
+    lang: Lang,
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// Worked exercises of the course's quiz, with the steps.
+    Quiz(quiz::QuizArgs),
+    /// Fresnel reflectance, exact or Schlick, dielectric or conductor.
+    Fresnel(laws::FresnelArgs),
+    /// The refracted direction (Snell's law in vector form).
+    Refract(laws::RefractArgs),
+    /// The mirror direction.
+    Reflect(laws::ReflectArgs),
+    /// Radiance reflected by a BRDF under a directional light.
+    Shade(laws::ShadeArgs),
+    /// Evaluate JSON Lines requests from stdin, one JSON result per line.
+    Batch(batch::BatchArgs),
+    /// Render a scene file to PNG and a float image.
+    Render(render::RenderArgs),
+    /// Report which effects a scene needs and what the renderer skips.
+    Inspect(inspect::InspectArgs),
+    /// Cross-check the laws, spectra and renders against the references.
+    Validate(validate::ValidateArgs),
+}
+
+fn run(command: &Command, ui: &Ui) -> anyhow::Result<ExitCode> {
+    let (via, lang) = (Via::Flags, ui.lang);
+    match command {
+        Command::Quiz(args) => match &args.exercise {
+            None => ui.show(&quiz::list(lang))?,
+            Some(quiz::Exercise::Seed) if ui.json => ui.show(&quiz::seed_record(lang)?)?,
+            Some(quiz::Exercise::Seed) => {
+                for (i, question) in quiz::seed(lang)?.iter().enumerate() {
+                    if i > 0 {
+                        println!();
+                    }
+                    ui.show(question)?;
+                }
+            }
+            Some(quiz::Exercise::F0(a)) => ui.show(&a.solve(via, lang)?)?,
+            Some(quiz::Exercise::Lambert(a)) => ui.show(&a.solve(via, lang)?)?,
+            Some(quiz::Exercise::CriticalAngle(a)) => ui.show(&a.solve(via, lang)?)?,
+            Some(quiz::Exercise::BlinnPhong(a)) => ui.show(&a.solve(via, lang)?)?,
+        },
+        Command::Fresnel(args) => ui.show(&args.solve(via, lang)?)?,
+        Command::Refract(args) => ui.show(&args.solve(via, lang)?)?,
+        Command::Reflect(args) => ui.show(&args.solve(via, lang)?)?,
+        Command::Shade(args) => ui.show(&args.solve(via, lang)?)?,
+        Command::Batch(args) => {
+            let stdin = std::io::stdin().lock();
+            let stdout = std::io::BufWriter::with_capacity(1 << 16, std::io::stdout().lock());
+            let (read, failed) = batch::run(args, stdin, stdout, lang)?;
+            if failed > 0 {
+                eprintln!("optics batch: {failed} of {read} lines gave errors");
+                return Ok(ExitCode::FAILURE);
+            }
+        }
+        Command::Render(args) => render::run(args, ui)?,
+        Command::Inspect(args) => inspect::run(args, ui)?,
+        Command::Validate(args) => validate::run(args, ui)?,
+    }
+    Ok(ExitCode::SUCCESS)
+}
+
+/// Parses the command line, runs the command, prints any error; the exit status.
+pub fn main_entry() -> ExitCode {
+    let cli = Cli::parse();
+    let ui = Ui {
+        json: cli.json,
+        lang: cli.lang,
+    };
+    match run(&cli.command, &ui) {
+        Ok(code) => code,
+        Err(error) => {
+            let message = format!("{error:#}");
+            if ui.json {
+                println!("{}", serde_json::json!({ "error": message }));
+            }
+            eprintln!("error: {message}");
+            ExitCode::FAILURE
+        }
+    }
+}

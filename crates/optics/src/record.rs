@@ -1,0 +1,183 @@
+//! The result record every subcommand prints: as text for people, or as one
+//! JSON object with stable fields for scripts (documented in the README).
+
+use crate::lang::Lang;
+use serde::Serialize;
+use serde_json::{Map, Value};
+
+/// The answer to one evaluation.
+#[derive(Clone, Debug, Serialize)]
+#[serde(untagged)]
+pub enum Answer {
+    Number(f64),
+    Vector([f64; 3]),
+    /// No value exists (a ray totally reflected has no refracted direction).
+    None,
+    /// Several answers, in order (a whole quiz).
+    List(Vec<Value>),
+}
+
+/// One evaluation: what was asked, the answer with its unit, and the working.
+///
+/// The JSON fields `law`, `inputs`, `answer`, `unit`, `steps` are always
+/// present; `details` and `notes` only when there is something in them.
+#[derive(Clone, Debug, Serialize)]
+pub struct Record {
+    /// The law or exercise evaluated, as named in `optics batch`.
+    pub law: &'static str,
+    /// A one-line heading in the chosen language (text output only).
+    #[serde(skip)]
+    pub title: String,
+    /// The inputs as given (directions before normalisation).
+    pub inputs: Map<String, Value>,
+    pub answer: Answer,
+    /// How the answer reads for people, when a bare number would say less
+    /// (`0.0277778 (2.78 %)`); text output only.
+    #[serde(skip)]
+    pub answer_text: Option<String>,
+    /// The answer's unit: `"1"` for dimensionless, `"W/(sr m^2)"`, `"deg"`.
+    pub unit: &'static str,
+    /// The working, one line each: formula, substitution, result.
+    pub steps: Vec<String>,
+    /// Further named results (R_s, R_p, T, …), machine-readable.
+    #[serde(skip_serializing_if = "Map::is_empty")]
+    pub details: Map<String, Value>,
+    /// Remarks: normalised inputs, disagreements with a printed answer.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub notes: Vec<String>,
+}
+
+impl Record {
+    pub fn new(law: &'static str, title: String, unit: &'static str) -> Self {
+        Self {
+            law,
+            title,
+            inputs: Map::new(),
+            answer: Answer::None,
+            answer_text: None,
+            unit,
+            steps: Vec::new(),
+            details: Map::new(),
+            notes: Vec::new(),
+        }
+    }
+
+    pub fn input(&mut self, name: &str, value: impl Serialize) -> &mut Self {
+        self.inputs.insert(name.to_owned(), json(value));
+        self
+    }
+
+    pub fn detail(&mut self, name: &str, value: impl Serialize) -> &mut Self {
+        self.details.insert(name.to_owned(), json(value));
+        self
+    }
+
+    pub fn step(&mut self, line: String) -> &mut Self {
+        self.steps.push(line);
+        self
+    }
+
+    pub fn note(&mut self, line: String) -> &mut Self {
+        self.notes.push(line);
+        self
+    }
+
+    /// The record as people read it.
+    pub fn to_text(&self, lang: Lang) -> String {
+        let mut out = format!("{}\n", self.title);
+        for step in &self.steps {
+            out.push_str(&format!("  {step}\n"));
+        }
+        let label = lang.pick("answer", "eredmény");
+        let answer = match (&self.answer_text, &self.answer) {
+            (Some(text), _) => text.clone(),
+            (None, Answer::Number(x)) => format!("{}{}", number(*x), unit_text(self.unit)),
+            (None, Answer::Vector(v)) => vector(*v),
+            (None, Answer::None) => lang.pick("none", "nincs").to_owned(),
+            (None, Answer::List(items)) => items
+                .iter()
+                .map(|item| match item {
+                    Value::String(s) => s.clone(),
+                    Value::Bool(b) => lang
+                        .pick(&b.to_string(), if *b { "igaz" } else { "hamis" })
+                        .to_owned(),
+                    other => other.to_string(),
+                })
+                .collect::<Vec<_>>()
+                .join(", "),
+        };
+        out.push_str(&format!("{label}: {}\n", answer.trim_end()));
+        for note in &self.notes {
+            out.push_str(&format!("{} {note}\n", lang.pick("note:", "megjegyzés:")));
+        }
+        out
+    }
+}
+
+fn json(value: impl Serialize) -> Value {
+    // Serialising plain numbers, strings and arrays cannot fail; a NaN would
+    // become null, but inputs are validated finite before they get here.
+    serde_json::to_value(value).unwrap_or(Value::Null)
+}
+
+/// The unit as it follows a number in text: `2.4 W/(sr m^2)`, `5.74°`.
+fn unit_text(unit: &str) -> String {
+    match unit {
+        "1" | "" => String::new(),
+        "deg" => "°".to_owned(),
+        other => format!(" {other}"),
+    }
+}
+
+/// A number for people: six significant digits, no trailing zeros.
+pub fn number(x: f64) -> String {
+    if x == 0.0 {
+        return "0".to_owned(); // also −0, which a reader would take for a sign error
+    }
+    if !x.is_finite() {
+        return format!("{x}");
+    }
+    let magnitude = x.abs().log10().floor() as i32;
+    if !(-4..=6).contains(&magnitude) {
+        return format!("{x:.5e}");
+    }
+    let decimals = (5 - magnitude).max(0) as usize;
+    let text = format!("{x:.decimals$}");
+    if text.contains('.') {
+        text.trim_end_matches('0').trim_end_matches('.').to_owned()
+    } else {
+        text
+    }
+}
+
+/// A vector for people: `(x, y, z)` with [`number`]s.
+pub fn vector(v: [f64; 3]) -> String {
+    format!("({}, {}, {})", number(v[0]), number(v[1]), number(v[2]))
+}
+
+/// A fraction as a percentage rounded half-away-from-zero to `decimals`.
+pub fn percent(x: f64, decimals: usize) -> String {
+    format!("{:.decimals$} %", x * 100.0)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn numbers_show_six_significant_digits_without_trailing_zeros() {
+        assert_eq!(number(0.027777777777777776), "0.0277778");
+        assert_eq!(number(2.5), "2.5");
+        assert_eq!(number(2.4000000000000004), "2.4");
+        assert_eq!(number(5.739170477266787), "5.73917");
+        assert_eq!(number(-0.6), "-0.6");
+        assert_eq!(number(1e-9), "1.00000e-9");
+        assert_eq!(number(0.0), "0");
+    }
+
+    #[test]
+    fn percentages_round_to_nearest() {
+        assert_eq!(percent(0.027777777777777776, 2), "2.78 %");
+        assert_eq!(percent(0.04, 1), "4.0 %");
+    }
+}
