@@ -1,1 +1,51 @@
-//! The course's ray tracers, built only from the laws of the `radiometry` crate.
+//! The course's ray tracers, built only from the laws of the `radiometry`
+//! crate: scene files, the course's primitives and cameras, three levels of
+//! light transport (`local`, `whitted`, `path`) and the course shader's own
+//! loop (`course`), images in PNG and PFM.
+//!
+//! Every shading formula (BRDFs, Fresnel, irradiance of the lights, mirror
+//! and refraction directions, radiance across an interface) is a call into
+//! `radiometry`; this crate adds geometry, sampling and bookkeeping.
+//!
+//! ```
+//! use tracer::{integrator::Settings, needs, render, scene};
+//!
+//! // The course's first picture: a red sphere at (1, 1, 4), seen from (0, 0, −2).
+//! let scene = scene::parse(r#"{
+//!     "version": 1,
+//!     "image": { "width": 32, "height": 24 },
+//!     "camera": { "type": "course_pinhole" },
+//!     "materials": { "red": { "type": "flat", "radiance": [1, 0, 0] } },
+//!     "objects": [ { "type": "sphere", "center": [1, 1, 4], "radius": 0.8, "material": "red" } ]
+//! }"#).unwrap();
+//! let settings = Settings::default();
+//! let machinery = needs::analyse(&scene, &settings).machinery(&settings);
+//! let out = render::render(&scene, &settings, &machinery, Some(1), &|_| {}).unwrap();
+//! // Up and to the right of the centre, as the course says; the centre is empty.
+//! assert_eq!(out.image.get(20, 8).to_array(), [1.0, 0.0, 0.0]);
+//! assert_eq!(out.image.get(16, 12).to_array(), [0.0, 0.0, 0.0]);
+//! ```
+//!
+//! # Precision
+//!
+//! The tracer computes in `f32`, the precision of the course's shaders and
+//! of production renderers, so that the course's precision problems are
+//! reproduced and their fixes shown where they matter: the sphere
+//! intersection is the stable form ([`geometry::Sphere::roots`]), hit points
+//! are re-projected onto their surface and carry an error bound, and
+//! secondary rays are offset by that bound ([`spawn`]). Cameras are built in
+//! `f64` and rounded once; pixel means are summed in `f64`.
+
+#![forbid(unsafe_code)]
+#![warn(missing_docs)]
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
+pub mod camera;
+pub mod geometry;
+pub mod integrator;
+pub mod needs;
+pub mod output;
+pub mod render;
+pub mod rng;
+pub mod scene;
+pub mod spawn;

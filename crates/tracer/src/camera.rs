@@ -1,0 +1,140 @@
+//! Cameras: how a pixel becomes a primary ray.
+//!
+//! Rays pass through pixel centres, as the course's fragment shaders do
+//! (`gl_FragCoord` is the centre): images are not anti-aliased. Pixel
+//! `(0, 0)` is the top-left corner of the image; `ndc.y` grows upwards.
+
+use glam::{DMat4, DVec3, DVec4, Vec3};
+
+use crate::geometry::Ray;
+
+/// How primary rays are made.
+// One camera per scene: the size difference between the variants costs nothing.
+#[allow(clippy::large_enum_variant)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Camera {
+    /// The course's pinhole (`000`, `getRay`): eye at (0, 0, −2), the
+    /// pixel's point on the plane z = 0 at `(ndc.x · aspect, ndc.y, 0)`.
+    CoursePinhole {
+        /// Width / height.
+        aspect: f64,
+        /// Image size, pixels.
+        width: u32,
+        /// Image size, pixels.
+        height: u32,
+    },
+    /// A look-at camera unprojected through the inverse view-projection
+    /// matrix (`002`, vertex shader): the ray starts on the near plane and
+    /// points at the same pixel on the far plane.
+    LookAt {
+        /// Inverse of `projection · view` (OpenGL clip space, z in [−1, 1]).
+        inverse_view_projection: DMat4,
+        /// The parameters it was built from, to rebuild it at another size.
+        view: LookAtView,
+        /// Image size, pixels.
+        width: u32,
+        /// Image size, pixels.
+        height: u32,
+    },
+}
+
+/// A look-at camera's placement and lens.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LookAtView {
+    /// Eye position, m.
+    pub eye: DVec3,
+    /// Point looked at, m.
+    pub target: DVec3,
+    /// Up direction.
+    pub up: DVec3,
+    /// Vertical field of view, radians.
+    pub fov_y: f64,
+    /// Near plane distance, m.
+    pub near: f64,
+    /// Far plane distance, m.
+    pub far: f64,
+}
+
+/// The course's eye position, m.
+pub const COURSE_EYE: Vec3 = Vec3::new(0.0, 0.0, -2.0);
+
+impl Camera {
+    /// The course's pinhole for an image of `width × height`.
+    pub fn course_pinhole(width: u32, height: u32) -> Self {
+        Camera::CoursePinhole {
+            aspect: width as f64 / height as f64,
+            width,
+            height,
+        }
+    }
+
+    /// A right-handed look-at camera with an OpenGL perspective projection.
+    pub fn look_at(view: LookAtView, width: u32, height: u32) -> Self {
+        let LookAtView {
+            eye,
+            target,
+            up,
+            fov_y,
+            near,
+            far,
+        } = view;
+        let world_to_camera = DMat4::look_at_rh(eye, target, up);
+        let projection = DMat4::perspective_rh_gl(fov_y, width as f64 / height as f64, near, far);
+        Camera::LookAt {
+            inverse_view_projection: (projection * world_to_camera).inverse(),
+            view,
+            width,
+            height,
+        }
+    }
+
+    /// The same camera for an image of another size.
+    pub fn resized(&self, width: u32, height: u32) -> Self {
+        match *self {
+            Camera::CoursePinhole { .. } => Camera::course_pinhole(width, height),
+            Camera::LookAt { view, .. } => Camera::look_at(view, width, height),
+        }
+    }
+
+    /// Normalised device coordinates of the centre of pixel `(x, y)`:
+    /// `(−1, −1)` at the bottom-left corner of the image, `(1, 1)` at the
+    /// top-right.
+    pub fn ndc(width: u32, height: u32, x: u32, y: u32) -> (f64, f64) {
+        let nx = (x as f64 + 0.5) / width as f64 * 2.0 - 1.0;
+        let ny = 1.0 - (y as f64 + 0.5) / height as f64 * 2.0;
+        (nx, ny)
+    }
+
+    /// The primary ray through the centre of pixel `(x, y)`. The
+    /// construction is carried in `f64` and rounded once to the tracer's
+    /// `f32`.
+    pub fn ray(&self, x: u32, y: u32) -> Ray {
+        match *self {
+            Camera::CoursePinhole {
+                aspect,
+                width,
+                height,
+            } => {
+                let (nx, ny) = Self::ndc(width, height, x, y);
+                let eye = COURSE_EYE.as_dvec3();
+                let on_plane = DVec3::new(nx * aspect, ny, 0.0);
+                Ray::new(eye.as_vec3(), (on_plane - eye).normalize().as_vec3())
+            }
+            Camera::LookAt {
+                inverse_view_projection,
+                width,
+                height,
+                ..
+            } => {
+                let (nx, ny) = Self::ndc(width, height, x, y);
+                let unproject = |z: f64| {
+                    let p = inverse_view_projection * DVec4::new(nx, ny, z, 1.0);
+                    p.truncate() / p.w
+                };
+                // OpenGL's near plane is at z = −1 in clip space, the far at +1.
+                let (near, far) = (unproject(-1.0), unproject(1.0));
+                Ray::new(near.as_vec3(), (far - near).normalize().as_vec3())
+            }
+        }
+    }
+}

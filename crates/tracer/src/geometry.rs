@@ -1,0 +1,311 @@
+//! Rays and the course scenes' primitives: spheres, two-sided planes and the
+//! kaleidoscope's regular-polygon mirror tube; lengths in metres, `f32`.
+//!
+//! Every hit point is re-projected onto the surface it lies on, so its
+//! rounding error is a few ulps of the surface's own coordinates whatever
+//! the ray's length; [`Hit::error`] bounds it, and [`crate::spawn`] moves
+//! secondary rays off the surface by that bound.
+
+use glam::Vec3;
+
+/// A ray: `origin + t · direction` for `t` in `(0, t_max)`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Ray {
+    /// Where the ray starts, m.
+    pub origin: Vec3,
+    /// Unit direction of travel.
+    pub direction: Vec3,
+    /// The ray ends here (a point light's distance; infinity otherwise).
+    pub t_max: f32,
+}
+
+impl Ray {
+    /// An unbounded ray.
+    pub fn new(origin: Vec3, direction: Vec3) -> Self {
+        Ray {
+            origin,
+            direction,
+            t_max: f32::INFINITY,
+        }
+    }
+
+    /// The point at parameter `t`.
+    pub fn at(&self, t: f32) -> Vec3 {
+        self.origin + self.direction * t
+    }
+}
+
+/// Where a ray meets a surface.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Hit {
+    /// Ray parameter of the hit, m (the direction is a unit vector).
+    pub t: f32,
+    /// The hit point, re-projected onto the surface.
+    pub point: Vec3,
+    /// Bound on the absolute rounding error of each component of `point`, m.
+    pub error: f32,
+    /// Unit normal. For a sphere it points outside (so `dot(normal,
+    /// direction) > 0` means the ray arrived from inside); for the two-sided
+    /// plane and tube it is the normal as declared, whichever side was hit.
+    pub normal: Vec3,
+    /// Whether the surface has no inside (plane, tube): shading uses the
+    /// side of the normal the ray came from.
+    pub two_sided: bool,
+    /// Index of the material.
+    pub material: u32,
+    /// Index of the object.
+    pub object: u32,
+}
+
+impl Hit {
+    /// The normal on the side the ray came from, for two-sided surfaces; the
+    /// outward normal for closed ones.
+    pub fn shading_normal(&self, ray_direction: Vec3) -> Vec3 {
+        if self.two_sided && self.normal.dot(ray_direction) > 0.0 {
+            -self.normal
+        } else {
+            self.normal
+        }
+    }
+}
+
+/// `γ(n) = n ε / (1 − n ε)`: the bound on the relative error of `n`
+/// successive roundings in `f32` (Higham, *Accuracy and Stability of
+/// Numerical Algorithms*, §3.1; pbrt-v4 §6.8.1).
+pub fn gamma(n: u32) -> f32 {
+    let ne = n as f32 * f32::EPSILON * 0.5;
+    ne / (1.0 - ne)
+}
+
+/// A sphere.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Sphere {
+    /// Centre, m.
+    pub center: Vec3,
+    /// Radius, m, > 0.
+    pub radius: f32,
+    /// Material index.
+    pub material: u32,
+}
+
+/// The two roots `t0 ≤ t1` of `|o + t d − c|² = r²` for a unit `d`, or `None`.
+pub type Roots = Option<(f32, f32)>;
+
+impl Sphere {
+    /// The roots of the ray-sphere quadratic, computed stably.
+    ///
+    /// With `f = o − c` and unit `d`, the textbook discriminant
+    /// `b² − 4ac = 4((f·d)² − (f·f − r²))` subtracts two numbers of size
+    /// `|f|²` to get one of size `r²`: for a sphere small against its
+    /// distance, `f32` keeps none of its digits. Here the discriminant is
+    /// `r² − |f − (f·d) d|²`, the squared half-chord from the distance of
+    /// the centre to the line (Haines et al., "Precision Improvements for
+    /// Ray/Sphere Intersection", *Ray Tracing Gems* ch. 7), and the smaller
+    /// root avoids cancelling `−b ± √Δ` by taking `q = −(b + sign(b)√Δ)`,
+    /// `t = c/q` and `t = q` (Press et al., *Numerical Recipes* §5.6).
+    pub fn roots(&self, ray: &Ray) -> Roots {
+        let f = ray.origin - self.center;
+        let b = f.dot(ray.direction);
+        let perp = f - ray.direction * b;
+        let r2 = self.radius * self.radius;
+        let disc = r2 - perp.dot(perp);
+        if !(disc >= 0.0) {
+            return None;
+        }
+        let c = f.dot(f) - r2;
+        let q = -(b + disc.sqrt().copysign(b));
+        let (t0, t1) = if q == 0.0 { (0.0, 0.0) } else { (c / q, q) };
+        Some(if t0 <= t1 { (t0, t1) } else { (t1, t0) })
+    }
+
+    /// The roots as the course's shader computes them (`000`,
+    /// `intersectSphere`): `(−b ± √(b² − 4ac)) / 2a`. Kept to show, in the
+    /// tests and in the `course` integrator, where it fails.
+    pub fn roots_naive(&self, ray: &Ray) -> Roots {
+        let dist = ray.origin - self.center;
+        let a = ray.direction.dot(ray.direction);
+        let b = dist.dot(ray.direction) * 2.0;
+        let c = dist.dot(dist) - self.radius * self.radius;
+        let discr = b * b - 4.0 * a * c;
+        if discr < 0.0 {
+            return None;
+        }
+        let s = discr.sqrt();
+        Some(((-b - s) / 2.0 / a, (-b + s) / 2.0 / a))
+    }
+
+    /// The nearest hit in `(t_min, ray.t_max)`.
+    pub fn intersect(&self, ray: &Ray, t_min: f32, roots: Roots) -> Option<Hit> {
+        let (t0, t1) = roots?;
+        let t = if t0 > t_min && t0 < ray.t_max {
+            t0
+        } else if t1 > t_min && t1 < ray.t_max {
+            t1
+        } else {
+            return None;
+        };
+        let normal = (ray.at(t) - self.center).normalize_or_zero();
+        // Re-projection: c + r n is within a few ulps of |c| + r of the
+        // true surface point, however far the ray travelled.
+        let point = self.center + normal * self.radius;
+        let error = gamma(6) * (self.center.abs() + Vec3::splat(self.radius)).max_element();
+        Some(Hit {
+            t,
+            point,
+            error,
+            normal,
+            two_sided: false,
+            material: self.material,
+            object: 0,
+        })
+    }
+}
+
+/// An infinite plane, visible from both sides.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Plane {
+    /// A point on the plane, m.
+    pub point: Vec3,
+    /// Unit normal, as declared.
+    pub normal: Vec3,
+    /// Material index.
+    pub material: u32,
+}
+
+impl Plane {
+    /// The hit in `(t_min, ray.t_max)` from either side; rays parallel to
+    /// the plane (including those lying in it) miss.
+    pub fn intersect(&self, ray: &Ray, t_min: f32) -> Option<Hit> {
+        let denom = self.normal.dot(ray.direction);
+        if denom == 0.0 {
+            return None;
+        }
+        let t = (self.point - ray.origin).dot(self.normal) / denom;
+        if !(t > t_min && t < ray.t_max) {
+            return None;
+        }
+        let p = ray.at(t);
+        // Re-projection onto the plane along its normal.
+        let point = p - self.normal * (p - self.point).dot(self.normal);
+        let error = gamma(8) * point.abs().max(self.point.abs()).max_element();
+        Some(Hit {
+            t,
+            point,
+            error,
+            normal: self.normal,
+            two_sided: true,
+            material: self.material,
+            object: 0,
+        })
+    }
+}
+
+/// The homework's kaleidoscope (`000`): `sides` mirror strips forming a
+/// regular polygon of circumradius `radius` around an axis, infinite along
+/// it. Corner `i` is at angle `2π i / sides` from the first basis vector
+/// perpendicular to the axis (the x axis for a tube along z, as in the course).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Tube {
+    /// The side planes; each normal points out of the tube.
+    pub faces: Vec<Plane>,
+    /// Unit axis direction.
+    pub axis: Vec3,
+    /// A point on the axis.
+    pub axis_point: Vec3,
+    /// Half the side length, m: a hit farther than this from the side's
+    /// midline is off the strip.
+    pub half_side: f32,
+    /// Midpoints of the sides (on the axis plane through `axis_point`).
+    pub midpoints: Vec<Vec3>,
+    /// Unit tangents along each side, perpendicular to the axis.
+    pub tangents: Vec<Vec3>,
+}
+
+impl Tube {
+    /// Builds the tube. `axis` must be a unit vector and `sides ≥ 3`.
+    pub fn new(axis_point: Vec3, axis: Vec3, sides: u32, radius: f32, material: u32) -> Self {
+        let reference = if axis.x.abs() < 0.9 { Vec3::X } else { Vec3::Y };
+        let u = (reference - axis * reference.dot(axis)).normalize();
+        let v = axis.cross(u);
+        let alpha = std::f64::consts::TAU / sides as f64;
+        let corner = |i: u32| {
+            let a = alpha * i as f64;
+            axis_point + (u * a.cos() as f32 + v * a.sin() as f32) * radius
+        };
+        let mut faces = Vec::new();
+        let mut midpoints = Vec::new();
+        let mut tangents = Vec::new();
+        for i in 0..sides {
+            let (p1, p2) = (corner(i), corner(i + 1));
+            let tangent = (p2 - p1).normalize();
+            // As the course builds it: cross(edge, axis) points outwards for
+            // corners running anticlockwise about the axis.
+            let normal = tangent.cross(axis).normalize();
+            faces.push(Plane {
+                point: p1,
+                normal,
+                material,
+            });
+            midpoints.push((p1 + p2) * 0.5);
+            tangents.push(tangent);
+        }
+        let half_side = (radius as f64 * (alpha / 2.0).sin()) as f32;
+        Tube {
+            faces,
+            axis,
+            axis_point,
+            half_side,
+            midpoints,
+            tangents,
+        }
+    }
+
+    /// The nearest hit on any strip, from either side.
+    pub fn intersect(&self, ray: &Ray, t_min: f32) -> Option<Hit> {
+        let mut best: Option<Hit> = None;
+        for ((face, mid), tangent) in self.faces.iter().zip(&self.midpoints).zip(&self.tangents) {
+            let bounded = Ray {
+                t_max: best.map_or(ray.t_max, |h| h.t),
+                ..*ray
+            };
+            if let Some(hit) = face.intersect(&bounded, t_min) {
+                // On the strip: within half a side of the side's midline.
+                // A hit exactly on an edge belongs to both strips; the
+                // small slack keeps rays into a corner from slipping through.
+                let along = (hit.point - *mid).dot(*tangent).abs();
+                if along <= self.half_side * (1.0 + 4.0 * f32::EPSILON) + hit.error {
+                    best = Some(hit);
+                }
+            }
+        }
+        best
+    }
+}
+
+/// One object of a scene.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Object {
+    /// A sphere.
+    Sphere(Sphere),
+    /// A two-sided plane.
+    Plane(Plane),
+    /// A kaleidoscope tube.
+    Tube(Tube),
+}
+
+impl Object {
+    /// The material index.
+    pub fn material(&self) -> u32 {
+        match self {
+            Object::Sphere(s) => s.material,
+            Object::Plane(p) => p.material,
+            Object::Tube(t) => t.faces[0].material,
+        }
+    }
+
+    /// Whether no segment between two of its points leaves it: such an
+    /// object cannot cast a shadow on itself or reflect into itself.
+    pub fn is_convex(&self) -> bool {
+        matches!(self, Object::Sphere(_) | Object::Plane(_))
+    }
+}

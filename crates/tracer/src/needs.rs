@@ -1,0 +1,164 @@
+//! What a scene needs: which effects can occur in it, so the renderer runs
+//! only that machinery (`optics inspect` reports it, and measures what the
+//! rest would have cost).
+//!
+//! Each rule is conservative: it switches a part off only where it provably
+//! cannot change the image. The test `skipping_unused_machinery_leaves_the_image_unchanged`
+//! renders every course scene both ways and requires identical pixels.
+
+use serde::Serialize;
+
+use crate::geometry::Object;
+use crate::integrator::{Machinery, Settings};
+use crate::scene::{IntegratorKind, Light, Material, Scene, SceneError};
+
+/// How deep specular recursion can go in a scene.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ReflectionDepth {
+    /// No mirror or glass is visible to the integrator.
+    None,
+    /// One bounce at most: a single convex mirror cannot see itself.
+    One,
+    /// Bounded only by `max_depth`: mirrors that see each other or
+    /// themselves (the tube), or glass (light bounces inside it).
+    UpToMaxDepth(u32),
+}
+
+/// One light and whether it matters.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct LightUse {
+    /// Its index in `lights`.
+    pub index: usize,
+    /// `directional` or `point`.
+    pub kind: &'static str,
+    /// Whether it can light anything.
+    pub used: bool,
+    /// Why not, when it is not.
+    pub reason: Option<&'static str>,
+}
+
+/// The effects a scene needs under given settings.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Needs {
+    /// How deep reflections and refractions can go.
+    pub reflection_depth: ReflectionDepth,
+    /// Whether a dielectric refracts.
+    pub refraction: bool,
+    /// Whether a conductor's complex-index Fresnel is evaluated.
+    pub conductors: bool,
+    /// Whether surfaces are shaded from lights.
+    pub rough_surfaces: bool,
+    /// Whether an object can block a light (else no shadow ray is needed).
+    pub shadows: bool,
+    /// Each light.
+    pub lights: Vec<LightUse>,
+    /// Whether the path tracer's paths are all deterministic, so one sample
+    /// per pixel is the converged image.
+    pub deterministic: bool,
+}
+
+/// Analyses `scene` for `settings`.
+pub fn analyse(scene: &Scene, settings: &Settings) -> Needs {
+    let material = |o: &Object| scene.materials[o.material() as usize];
+    let rough = scene.objects.iter().any(|o| material(o).is_rough());
+    let specular: Vec<&Object> = scene
+        .objects
+        .iter()
+        .filter(|o| material(o).is_specular())
+        .collect();
+    let refraction = specular
+        .iter()
+        .any(|o| matches!(material(o), Material::Dielectric { .. }));
+    let conductors = specular
+        .iter()
+        .any(|o| matches!(material(o), Material::Conductor { .. }));
+    let recursive = matches!(
+        settings.integrator,
+        IntegratorKind::Whitted | IntegratorKind::Path | IntegratorKind::Course
+    );
+    let reflection_depth = if !recursive || specular.is_empty() || settings.max_depth == 0 {
+        ReflectionDepth::None
+    } else if specular.len() == 1 && specular[0].is_convex() && !refraction {
+        ReflectionDepth::One
+    } else {
+        ReflectionDepth::UpToMaxDepth(settings.max_depth)
+    };
+    let lights: Vec<LightUse> = scene
+        .lights
+        .iter()
+        .enumerate()
+        .map(|(index, light)| {
+            let (kind, power) = match *light {
+                Light::Directional { irradiance, .. } => ("directional", irradiance),
+                Light::Point { intensity, .. } => ("point", intensity),
+            };
+            let reason = if power.max_element() <= 0.0 {
+                Some("it emits nothing")
+            } else if !rough {
+                Some("no surface is shaded from lights")
+            } else {
+                None
+            };
+            LightUse {
+                index,
+                kind,
+                used: reason.is_none(),
+                reason,
+            }
+        })
+        .collect();
+    let lit = lights.iter().any(|l| l.used);
+    // A single convex object cannot block the light to its own lit side:
+    // cos θ > 0 there, and the segment towards the light leaves it.
+    let shadows = lit && (scene.objects.len() > 1 || scene.objects.iter().any(|o| !o.is_convex()));
+    // The path tracer draws random numbers only at rough surfaces (when it
+    // may bounce on) and at glass.
+    let random_at_rough =
+        rough && settings.integrator == IntegratorKind::Path && settings.max_depth > 0;
+    let deterministic = !(refraction || random_at_rough);
+    Needs {
+        reflection_depth,
+        refraction,
+        conductors,
+        rough_surfaces: rough,
+        shadows,
+        lights,
+        deterministic,
+    }
+}
+
+impl Needs {
+    /// The machinery to run.
+    pub fn machinery(&self, settings: &Settings) -> Machinery {
+        Machinery {
+            shadow_rays: self.shadows,
+            lights: self.lights.iter().map(|l| l.used).collect(),
+            spp: if self.deterministic || settings.integrator != IntegratorKind::Path {
+                1
+            } else {
+                settings.spp
+            },
+        }
+    }
+}
+
+/// Refuses combinations an integrator cannot render.
+pub fn check_integrator(scene: &Scene, settings: &Settings) -> Result<(), SceneError> {
+    if settings.integrator == IntegratorKind::Course {
+        if let Some((name, _)) = scene
+            .material_names
+            .iter()
+            .zip(&scene.materials)
+            .find(|(_, m)| matches!(m, Material::Dielectric { .. }))
+        {
+            return Err(SceneError::Invalid {
+                path: format!("materials.{name}"),
+                message: "the course's shader has no refraction; render dielectrics with \
+                          --integrator whitted or path"
+                    .into(),
+            });
+        }
+    }
+    Ok(())
+}

@@ -1,0 +1,160 @@
+//! Writing images: PNG for people, PFM for comparison, both atomically.
+//!
+//! **Tone mapping, stated**: none beyond the display's range. Each channel's
+//! radiance is taken as the display-referred linear value (1 W/(sr·m²) is
+//! full white), clamped to `[0, 1]` as the course's OpenGL framebuffer does,
+//! encoded with the sRGB transfer function (IEC 61966-2-1) and rounded to 8
+//! bits. The PFM holds the unclamped linear radiance as 32-bit floats.
+//!
+//! A file is written to a temporary file in the destination's directory and
+//! renamed over the destination only once complete, so an interrupted or
+//! failed write never leaves a partial image.
+
+use std::io::Write;
+
+use image::ImageEncoder;
+use std::path::Path;
+
+use crate::render::Image;
+
+/// Why an image could not be written.
+#[derive(Debug, thiserror::Error)]
+pub enum OutputError {
+    /// An I/O failure, with the file it concerns.
+    #[error("cannot write {path}: {source}")]
+    Io {
+        /// The destination.
+        path: String,
+        /// The reason.
+        source: std::io::Error,
+    },
+    /// The PNG encoder failed.
+    #[error("cannot encode {path} as PNG: {source}")]
+    Png {
+        /// The destination.
+        path: String,
+        /// The reason.
+        source: image::ImageError,
+    },
+}
+
+/// The sRGB encoding of a linear value in `[0, 1]` (IEC 61966-2-1).
+pub fn srgb_encode(linear: f32) -> f32 {
+    if linear <= 0.003_130_8 {
+        12.92 * linear
+    } else {
+        1.055 * linear.powf(1.0 / 2.4) - 0.055
+    }
+}
+
+/// One channel of a pixel as an 8-bit sRGB value (NaN shows as black).
+pub fn to_srgb8(radiance: f32) -> u8 {
+    let clamped = if radiance.is_nan() {
+        0.0
+    } else {
+        radiance.clamp(0.0, 1.0)
+    };
+    (srgb_encode(clamped) * 255.0).round() as u8
+}
+
+/// The image as 8-bit sRGB bytes, rows top to bottom.
+pub fn srgb8(image: &Image) -> Vec<u8> {
+    image
+        .pixels
+        .iter()
+        .flat_map(|p| p.to_array().map(to_srgb8))
+        .collect()
+}
+
+/// The image as a PFM file: `PF`, size, `-1` (little-endian), then rows
+/// from the bottom up, three `f32` per pixel.
+pub fn pfm_bytes(image: &Image) -> Vec<u8> {
+    let mut out = format!("PF\n{} {}\n-1.0\n", image.width, image.height).into_bytes();
+    for y in (0..image.height).rev() {
+        for x in 0..image.width {
+            for c in image.get(x, y).to_array() {
+                out.extend_from_slice(&c.to_le_bytes());
+            }
+        }
+    }
+    out
+}
+
+/// Writes `bytes` to `path` atomically: a temporary file beside it, renamed.
+pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), OutputError> {
+    let io = |source| OutputError::Io {
+        path: path.display().to_string(),
+        source,
+    };
+    let dir = match path.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d,
+        _ => Path::new("."),
+    };
+    let mut temp = tempfile::NamedTempFile::new_in(dir).map_err(io)?;
+    temp.write_all(bytes).map_err(io)?;
+    temp.as_file().sync_all().map_err(io)?;
+    temp.persist(path).map_err(|e| io(e.error))?;
+    Ok(())
+}
+
+/// Writes the image as an sRGB PNG, atomically.
+pub fn write_png(path: &Path, image: &Image) -> Result<(), OutputError> {
+    let mut encoded = Vec::new();
+    image::codecs::png::PngEncoder::new(&mut encoded)
+        .write_image(
+            &srgb8(image),
+            image.width,
+            image.height,
+            image::ExtendedColorType::Rgb8,
+        )
+        .map_err(|source| OutputError::Png {
+            path: path.display().to_string(),
+            source,
+        })?;
+    write_atomically(path, &encoded)
+}
+
+/// Writes the image as a PFM, atomically.
+pub fn write_pfm(path: &Path, image: &Image) -> Result<(), OutputError> {
+    write_atomically(path, &pfm_bytes(image))
+}
+
+/// Reads a PFM written by [`pfm_bytes`] (three channels, little-endian).
+pub fn read_pfm(bytes: &[u8]) -> Option<Image> {
+    let mut fields = Vec::new();
+    let mut start = 0;
+    for (i, b) in bytes.iter().enumerate() {
+        if *b == b'\n' {
+            fields.push(std::str::from_utf8(&bytes[start..i]).ok()?);
+            start = i + 1;
+            if fields.len() == 3 {
+                break;
+            }
+        }
+    }
+    if fields.len() != 3 || fields[0] != "PF" || fields[2] != "-1.0" {
+        return None;
+    }
+    let mut size = fields[1].split(' ').map(|s| s.parse::<u32>());
+    let (width, height) = (size.next()?.ok()?, size.next()?.ok()?);
+    let data = &bytes[start..];
+    if data.len() != width as usize * height as usize * 12 {
+        return None;
+    }
+    let float =
+        |i: usize| f32::from_le_bytes(data[4 * i..4 * i + 4].try_into().unwrap_or_default());
+    let mut pixels = vec![glam::Vec3::ZERO; (width * height) as usize];
+    for row in 0..height {
+        let y = height - 1 - row;
+        for x in 0..width {
+            let i = ((row * width + x) * 3) as usize;
+            pixels[(y * width + x) as usize] =
+                glam::Vec3::new(float(i), float(i + 1), float(i + 2));
+        }
+    }
+    Some(Image {
+        width,
+        height,
+        pixels,
+    })
+}

@@ -1,0 +1,119 @@
+//! Rendering an image: rows in parallel (rayon), each pixel on its own
+//! random stream, so the image is bit-identical for any number of threads.
+
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::time::{Duration, Instant};
+
+use glam::{DVec3, Vec3};
+use rayon::prelude::*;
+
+use crate::integrator::{Machinery, RayCounts, Settings, Tracer};
+use crate::rng::Pcg32;
+use crate::scene::Scene;
+
+/// A linear-radiance image, W/(sr·m²) per channel, rows top to bottom.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Image {
+    /// Width, pixels.
+    pub width: u32,
+    /// Height, pixels.
+    pub height: u32,
+    /// `width × height` pixels.
+    pub pixels: Vec<Vec3>,
+}
+
+impl Image {
+    /// The pixel at column `x`, row `y` (0 is the top row).
+    pub fn get(&self, x: u32, y: u32) -> Vec3 {
+        self.pixels[(y * self.width + x) as usize]
+    }
+
+    /// Mean over pixels of the largest channel difference, and the largest.
+    pub fn difference(&self, other: &Image) -> (f64, f64) {
+        let mut sum = 0.0;
+        let mut max = 0.0_f64;
+        for (a, b) in self.pixels.iter().zip(&other.pixels) {
+            let d = (*a - *b).abs().max_element() as f64;
+            sum += d;
+            max = max.max(d);
+        }
+        (sum / self.pixels.len().max(1) as f64, max)
+    }
+}
+
+/// What a render produced and what it cost.
+#[derive(Clone, Debug)]
+pub struct Rendered {
+    /// The image.
+    pub image: Image,
+    /// Rays cast, by purpose.
+    pub rays: RayCounts,
+    /// Wall-clock time of the tracing.
+    pub elapsed: Duration,
+}
+
+/// Renders `scene` with `settings`, running only `machinery`, on `threads`
+/// threads (`None`: all cores). `progress` is called with the number of rows
+/// finished so far, from any thread.
+pub fn render(
+    scene: &Scene,
+    settings: &Settings,
+    machinery: &Machinery,
+    threads: Option<usize>,
+    progress: &(dyn Fn(usize) + Sync),
+) -> Result<Rendered, rayon::ThreadPoolBuildError> {
+    let tracer = Tracer {
+        scene,
+        settings: *settings,
+        machinery: machinery.clone(),
+    };
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads.unwrap_or(0))
+        .build()?;
+    let rows_done = AtomicUsize::new(0);
+    let start = Instant::now();
+    let (width, height) = (scene.width, scene.height);
+    let rows: Vec<(Vec<Vec3>, RayCounts)> = pool.install(|| {
+        (0..height)
+            .into_par_iter()
+            .map(|y| {
+                let mut counts = RayCounts::default();
+                let row = (0..width)
+                    .map(|x| pixel(&tracer, x, y, &mut counts))
+                    .collect();
+                progress(rows_done.fetch_add(1, Ordering::Relaxed) + 1);
+                (row, counts)
+            })
+            .collect()
+    });
+    let elapsed = start.elapsed();
+    let mut rays = RayCounts::default();
+    let mut pixels = Vec::with_capacity((width * height) as usize);
+    for (row, counts) in rows {
+        pixels.extend(row);
+        rays.add(&counts);
+    }
+    Ok(Rendered {
+        image: Image {
+            width,
+            height,
+            pixels,
+        },
+        rays,
+        elapsed,
+    })
+}
+
+/// One pixel: the mean of its samples, summed in `f64` so that the mean of
+/// many samples keeps `f32` precision.
+fn pixel(tracer: &Tracer, x: u32, y: u32, counts: &mut RayCounts) -> Vec3 {
+    let index = y as u64 * tracer.scene.width as u64 + x as u64;
+    let mut rng = Pcg32::for_pixel(tracer.settings.seed, index);
+    let ray = tracer.scene.camera.ray(x, y);
+    let spp = tracer.machinery.spp.max(1);
+    let mut sum = DVec3::ZERO;
+    for _ in 0..spp {
+        sum += tracer.radiance(&ray, &mut rng, counts).as_dvec3();
+    }
+    (sum / spp as f64).as_vec3()
+}
