@@ -23,6 +23,7 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 pub mod check;
+pub mod colorimetry;
 pub mod laws;
 pub mod reference;
 

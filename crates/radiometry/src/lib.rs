@@ -28,6 +28,8 @@
 //! | [`fresnel`] | exact dielectric and conductor reflectance, F0, Schlick |
 //! | [`radiance`] | radiance, irradiance, directional and point lights, `cos⁺` |
 //! | [`brdf`] | Lambert, Phong, Blinn-Phong, their checkers (reciprocity, albedo) |
+//! | [`spectrum`] | sampled spectra on the CIE grid, CIE 1931 XYZ under D65 |
+//! | [`colour`] | linear and encoded sRGB, CIELAB, the CIEDE2000 colour difference |
 //! | [`course`] | the course's formulas exactly as written, errors included, for auditing |
 //! | [`domain`] | validation of user input into the domain of the laws |
 //!
@@ -86,6 +88,9 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 pub mod brdf;
+#[rustfmt::skip]
+mod cie_tables;
+pub mod colour;
 mod compensated;
 pub mod course;
 pub mod domain;
@@ -93,6 +98,7 @@ pub mod fresnel;
 pub mod radiance;
 mod real;
 pub mod snell;
+pub mod spectrum;
 pub mod specular;
 
 pub use real::{Real, Vector3};

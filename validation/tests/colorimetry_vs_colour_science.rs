@@ -1,0 +1,81 @@
+//! The radiometry crate's colorimetry against colour-science, from the
+//! committed `validation/reference/colorimetry.json` (regenerate with
+//! `.venv/bin/python python-checks/colorimetry.py`). Tolerances are stated in
+//! `validation::colorimetry`. Run with `--nocapture` for the table.
+
+use radiometry::colour::{self, Lab};
+use validation::colorimetry::{self, Colorimetry, ColourLaws};
+use validation::reference::committed_dir;
+use validation::Check;
+
+fn reference() -> Colorimetry {
+    Colorimetry::load(&committed_dir()).expect("committed colorimetry reference")
+}
+
+#[test]
+fn colorimetry_agrees_with_colour_science() {
+    let checks = colorimetry::check_all(&ColourLaws::radiometry(), &reference());
+    for check in &checks {
+        println!("{} ({} cases)", check.id, check.cases);
+        for m in &check.metrics {
+            println!("  {:<45} {:>10.3e}  at {}", m.name, m.worst, m.at);
+        }
+    }
+    let failures: Vec<_> = checks.iter().flat_map(|c| &c.failures).collect();
+    assert!(failures.is_empty(), "{failures:#?}");
+    assert!(checks.iter().all(Check::passed));
+}
+
+/// The CIE 1976 difference, the Euclidean distance in CIELAB, in place of
+/// CIEDE2000: a common substitution, and a different law.
+fn delta_e_1976(lab1: Lab, lab2: Lab) -> f64 {
+    let (dl, da, db) = (lab1.l - lab2.l, lab1.a - lab2.a, lab1.b - lab2.b);
+    (dl * dl + da * da + db * db).sqrt()
+}
+
+#[test]
+fn delta_e_1976_in_place_of_2000_is_caught() {
+    let broken = ColourLaws {
+        delta_e_2000: delta_e_1976,
+        ..ColourLaws::radiometry()
+    };
+    let check = colorimetry::check_delta_e(&broken, &reference());
+    assert!(!check.passed());
+    // Pair 1 is a blue pair where the two differ by half (2.04 against 4.00).
+    assert!(
+        check
+            .failures
+            .iter()
+            .any(|f| f.starts_with("Sharma 2005 pair 1:")),
+        "{:#?}",
+        check.failures
+    );
+}
+
+/// Lab against the white of the spectral integration instead of the D65
+/// chromaticity: a change of white shifts a*, b* by up to ~0.1 and is caught.
+fn xyz_to_lab_with_equal_energy_white(xyz: colour::Xyz, _white: colour::Xyz) -> Lab {
+    colour::xyz_to_lab(
+        xyz,
+        colour::Xyz {
+            x: 1.0,
+            y: 1.0,
+            z: 1.0,
+        },
+    )
+}
+
+#[test]
+fn cielab_against_the_wrong_white_is_caught() {
+    let broken = ColourLaws {
+        xyz_to_lab: xyz_to_lab_with_equal_energy_white,
+        ..ColourLaws::radiometry()
+    };
+    let check = colorimetry::check_spectra(&broken, &reference());
+    assert!(!check.passed());
+    assert!(
+        check.failures.iter().all(|f| f.starts_with("CIELAB")),
+        "{:#?}",
+        check.failures
+    );
+}
