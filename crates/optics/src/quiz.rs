@@ -639,6 +639,24 @@ pub fn seed_record(lang: Lang) -> Result<Record> {
             .map(|q| serde_json::to_value(&q.answer).unwrap_or(Value::Null))
             .collect(),
     );
+    for q in &questions {
+        let agrees = q.details.get("agrees_with_printed") == Some(&Value::Bool(true));
+        record.step(format!(
+            "{} — {}",
+            q.title,
+            if agrees {
+                lang.pick(
+                    "agrees with the printed answer",
+                    "egyezik a közölt megoldással",
+                )
+            } else {
+                lang.pick(
+                    "differs from the printed answer",
+                    "eltér a közölt megoldástól",
+                )
+            }
+        ));
+    }
     let values: Vec<Value> = questions
         .iter()
         .map(|q| serde_json::to_value(q).unwrap_or(Value::Null))
