@@ -568,6 +568,11 @@ fn hungarian_output_speaks_the_course_language() {
     }
     // The statements of question 1 are quoted as the course prints them.
     assert!(text.contains("A törésmutató a két közegbeli fénysebességek arányával egyezik meg."));
+    let refused = optics(&["--lang", "hu", "fresnel", "--eta", "-1", "--cos-i", "0.5"]);
+    assert_eq!(
+        stderr(&refused).trim(),
+        "hiba: --eta: pozitív törésmutatónak kell lennie, kapott érték: -1"
+    );
     let english = stdout(&optics(&["quiz", "seed"]));
     assert!(!english.contains("kérdés"));
 }

@@ -31,3 +31,57 @@ macro_rules! say {
     };
 }
 pub(crate) use say;
+
+/// An error message in `lang`: the domain errors of the laws (a wrong
+/// number, named by its argument) are translated; others stay in English.
+pub fn error_message(error: &anyhow::Error, lang: Lang) -> String {
+    use radiometry::domain::DomainError;
+    match (lang, error.downcast_ref::<DomainError>()) {
+        (Lang::Hu, Some(DomainError::NotFinite { name, value })) => {
+            format!("{name}: véges számnak kell lennie, kapott érték: {value}")
+        }
+        (
+            Lang::Hu,
+            Some(DomainError::OutOfRange {
+                name,
+                value,
+                expected,
+            }),
+        ) => {
+            let expected = match *expected {
+                "in [-1, 1]" => "a [-1, 1] tartományba kell esnie",
+                "in [0, 1]" => "a [0, 1] tartományba kell esnie",
+                "a positive refractive index" => "pozitív törésmutatónak kell lennie",
+                "a non-negative extinction coefficient" => {
+                    "nemnegatív kioltási tényezőnek kell lennie"
+                }
+                "non-negative" => "nemnegatívnak kell lennie",
+                other => other,
+            };
+            format!("{name}: {expected}, kapott érték: {value}")
+        }
+        (Lang::Hu, Some(DomainError::ZeroVector { name, x, y, z })) => {
+            format!("{name}: nem nulla hosszú iránynak kell lennie, kapott: ({x}, {y}, {z})")
+        }
+        _ => format!("{error:#}"),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use radiometry::domain;
+
+    #[test]
+    fn domain_errors_are_translated_and_keep_the_argument_name() {
+        let error = anyhow::Error::from(domain::refractive_index("--eta", -1.0).unwrap_err());
+        assert_eq!(
+            error_message(&error, Lang::En),
+            "--eta must be a positive refractive index, got -1"
+        );
+        assert_eq!(
+            error_message(&error, Lang::Hu),
+            "--eta: pozitív törésmutatónak kell lennie, kapott érték: -1"
+        );
+    }
+}

@@ -139,11 +139,11 @@ pub fn main_entry() -> ExitCode {
     match run(&cli.command, &ui) {
         Ok(code) => code,
         Err(error) => {
-            let message = format!("{error:#}");
+            let message = lang::error_message(&error, ui.lang);
             if ui.json {
                 println!("{}", serde_json::json!({ "error": message }));
             }
-            eprintln!("error: {message}");
+            eprintln!("{}: {message}", ui.lang.pick("error", "hiba"));
             ExitCode::FAILURE
         }
     }
