@@ -581,6 +581,7 @@ fn hungarian_output_speaks_the_course_language() {
 fn every_subcommand_has_help_with_an_example() {
     let subcommands: &[&[&str]] = &[
         &["quiz"],
+        &["quiz", "seed"],
         &["quiz", "f0"],
         &["quiz", "lambert"],
         &["quiz", "critical-angle"],

@@ -31,6 +31,10 @@ pub struct QuizArgs {
 #[derive(clap::Subcommand, Debug)]
 pub enum Exercise {
     /// Every question of the course's quiz, with the printed answers checked.
+    #[command(after_help = "Examples:
+  optics quiz seed
+  optics --lang hu quiz seed          (in the course's language)
+  optics --json quiz seed             (one JSON object; the questions under details.questions)")]
     Seed,
     /// Reflectance at normal incidence, F0, from the refractive index.
     F0(F0Args),
