@@ -1,13 +1,198 @@
-//! `optics inspect`: what a scene needs.
+//! `optics inspect`: what a scene needs, what the renderer skips, and what
+//! each skipped part would have cost, measured by rendering with it on.
 
+use std::path::PathBuf;
+
+use serde_json::json;
+use tracer::integrator::Machinery;
+use tracer::needs::{self, ReflectionDepth};
+use tracer::render;
+use tracer::scene::IntegratorKind;
+
+use crate::lang::say;
+use crate::render::{prepare, Integrator};
 use crate::Ui;
 
 #[derive(clap::Args, Debug)]
+#[command(after_help = "Examples:
+  optics inspect validation/scenes/shadow.json
+  optics --json inspect validation/scenes/kaleidoscope.json --integrator path --spp 16
+
+The costs are measured by rendering the scene twice or more at its own size
+(or --width/--height): with only the machinery it needs, and with each
+skipped part switched back on. The images are compared: skipping must not
+change a pixel.")]
 pub struct InspectArgs {
     /// The scene file (JSON).
-    pub scene: std::path::PathBuf,
+    pub scene: PathBuf,
+    /// Light transport to inspect for (default: the scene's).
+    #[arg(long, value_enum)]
+    pub integrator: Option<Integrator>,
+    /// Samples per pixel to inspect for.
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=tracer::scene::MAX_SPP as i64))]
+    pub spp: Option<u32>,
+    /// Width of the measuring renders, pixels.
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=tracer::scene::MAX_IMAGE_SIDE as i64))]
+    pub width: Option<u32>,
+    /// Height of the measuring renders, pixels.
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=tracer::scene::MAX_IMAGE_SIDE as i64))]
+    pub height: Option<u32>,
 }
 
-pub fn run(_args: &InspectArgs, _ui: &Ui) -> anyhow::Result<()> {
-    anyhow::bail!("inspection is not available yet")
+pub fn run(args: &InspectArgs, ui: &Ui) -> anyhow::Result<()> {
+    let (scene, mut settings) = prepare(&args.scene, args.width, args.height)?;
+    if let Some(i) = args.integrator {
+        settings.integrator = match i {
+            Integrator::Local => IntegratorKind::Local,
+            Integrator::Whitted => IntegratorKind::Whitted,
+            Integrator::Path => IntegratorKind::Path,
+            Integrator::Course => IntegratorKind::Course,
+        };
+    }
+    settings.spp = args.spp.unwrap_or(settings.spp);
+    needs::check_integrator(&scene, &settings)?;
+    let needs = needs::analyse(&scene, &settings);
+    let lean = needs.machinery(&settings);
+    let everything = Machinery::everything(&scene, &settings);
+    let quiet = |_: usize| {};
+    let base = render::render(&scene, &settings, &lean, None, &quiet)?;
+
+    // Each skipped part switched back on alone, then all together.
+    let mut parts: Vec<(&str, Machinery)> = Vec::new();
+    if !lean.shadow_rays {
+        parts.push((
+            "shadow_rays",
+            Machinery {
+                shadow_rays: true,
+                ..lean.clone()
+            },
+        ));
+    }
+    if lean.lights != everything.lights {
+        parts.push((
+            "unused_lights",
+            Machinery {
+                lights: everything.lights.clone(),
+                ..lean.clone()
+            },
+        ));
+    }
+    if lean.spp != everything.spp {
+        parts.push((
+            "extra_samples",
+            Machinery {
+                spp: everything.spp,
+                ..lean.clone()
+            },
+        ));
+    }
+    if parts.len() > 1 {
+        parts.push(("all", everything.clone()));
+    }
+    let lang = ui.lang;
+    let mut costs = Vec::new();
+    let mut lines = Vec::new();
+    for (name, machinery) in &parts {
+        let full = render::render(&scene, &settings, machinery, None, &quiet)?;
+        let extra_rays = full.rays.total() as i64 - base.rays.total() as i64;
+        let extra_seconds = full.elapsed.as_secs_f64() - base.elapsed.as_secs_f64();
+        let identical = full.image == base.image;
+        lines.push(say!(
+            lang,
+            "{}: would cost {} more rays ({:+.1} %), {:+.4} s; image identical: {}",
+            "{}: {} további sugár ({:+.1} %), {:+.4} s; a kép azonos: {}",
+            name,
+            extra_rays,
+            100.0 * extra_rays as f64 / base.rays.total().max(1) as f64,
+            extra_seconds,
+            identical
+        ));
+        costs.push(json!({
+            "part": name,
+            "extra_rays": extra_rays,
+            "extra_seconds": extra_seconds,
+            "image_identical": identical,
+        }));
+    }
+    let depth = match needs.reflection_depth {
+        ReflectionDepth::None => "0".to_string(),
+        ReflectionDepth::One => "1".to_string(),
+        ReflectionDepth::UpToMaxDepth(d) => {
+            say!(lang, "up to {} (max_depth)", "legfeljebb {} (max_depth)", d)
+        }
+    };
+    let lights: Vec<String> = needs
+        .lights
+        .iter()
+        .map(|l| match l.reason {
+            None => format!("{} {}", l.index, l.kind),
+            Some(r) => format!("{} {} ({})", l.index, l.kind, r),
+        })
+        .collect();
+    let mut steps = vec![
+        say!(
+            lang,
+            "reflection depth reachable: {}",
+            "elérhető tükrözési mélység: {}",
+            depth
+        ),
+        say!(lang, "refraction: {}", "fénytörés: {}", needs.refraction),
+        say!(
+            lang,
+            "conductors (complex Fresnel): {}",
+            "fémek (komplex Fresnel): {}",
+            needs.conductors
+        ),
+        say!(
+            lang,
+            "surfaces shaded from lights: {}",
+            "fényforrásokkal árnyalt felületek: {}",
+            needs.rough_surfaces
+        ),
+        say!(
+            lang,
+            "shadows possible: {}",
+            "lehet árnyék: {}",
+            needs.shadows
+        ),
+        say!(
+            lang,
+            "lights used: {}",
+            "használt fények: {}",
+            lights.join(", ")
+        ),
+        say!(
+            lang,
+            "{}×{} {}: {} rays with only what the scene needs",
+            "{}×{} {}: {} sugár csak a szükséges részekkel",
+            scene.width,
+            scene.height,
+            settings.integrator,
+            base.rays.total()
+        ),
+    ];
+    steps.extend(crate::render::steps(&needs, &lean, &settings, lang));
+    steps.extend(lines);
+    if ui.json {
+        println!(
+            "{}",
+            json!({
+                "command": "inspect",
+                "inputs": {
+                    "scene": args.scene.display().to_string(),
+                    "width": scene.width,
+                    "height": scene.height,
+                    "settings": settings,
+                },
+                "answer": { "needs": needs, "skipped": costs, "rays": base.rays },
+                "unit": "rays",
+                "steps": steps,
+            })
+        );
+    } else {
+        for s in steps {
+            println!("{s}");
+        }
+    }
+    Ok(())
 }

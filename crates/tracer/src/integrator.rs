@@ -86,6 +86,25 @@ impl Default for Settings {
     }
 }
 
+impl Settings {
+    /// The scene's own settings over the defaults.
+    pub fn from_scene(scene: &Scene) -> Self {
+        let d = Settings::default();
+        let r = &scene.render;
+        Settings {
+            integrator: r.integrator.unwrap_or(d.integrator),
+            spp: r.spp.map_or(d.spp, |x| x as u32),
+            max_depth: r.max_depth.map_or(d.max_depth, |x| x as u32),
+            fresnel: r.fresnel.unwrap_or(d.fresnel),
+            throughput_cutoff: r
+                .throughput_cutoff
+                .map_or(d.throughput_cutoff, |x| x as f32),
+            seed: r.seed.unwrap_or(d.seed),
+            ray_offset: r.ray_offset.unwrap_or(d.ray_offset),
+        }
+    }
+}
+
 /// What a render actually runs: the scene's needs (see [`crate::needs`])
 /// decide which parts are switched on. Switching a part on that the scene
 /// does not need never changes the image, only its cost.
