@@ -1,0 +1,348 @@
+//! The integrators against known answers: an analytic Lambert plane, a
+//! point light's inverse square and its shadow ray stopping at the light,
+//! the path tracer converging to Whitted's answer, images independent of the
+//! thread count, robust ray offsets where a fixed epsilon fails, and
+//! skipping unused machinery without changing a pixel.
+
+use glam::Vec3;
+use serde_json::json;
+use tracer::geometry::Ray;
+use tracer::integrator::{Machinery, RayCounts, Settings, Tracer};
+use tracer::needs;
+use tracer::render::{render, Image};
+use tracer::rng::Pcg32;
+use tracer::scene::{self, FresnelModel, IntegratorKind, RayOffset, Scene};
+
+fn parse(value: serde_json::Value) -> Scene {
+    scene::parse(&value.to_string()).expect("test scene is valid")
+}
+
+fn settings(integrator: IntegratorKind) -> Settings {
+    Settings {
+        integrator,
+        ..Settings::default()
+    }
+}
+
+fn render_with(scene: &Scene, settings: &Settings, threads: Option<usize>) -> Image {
+    let machinery = needs::analyse(scene, settings).machinery(settings);
+    render(scene, settings, &machinery, threads, &|_| {}).unwrap().image
+}
+
+fn radiance_along(scene: &Scene, settings: &Settings, ray: &Ray) -> Vec3 {
+    let tracer = Tracer {
+        scene,
+        settings: *settings,
+        machinery: Machinery::everything(scene, settings),
+    };
+    let mut rng = Pcg32::for_pixel(settings.seed, 0);
+    tracer.radiance(ray, &mut rng, &mut RayCounts::default())
+}
+
+/// A Lambert floor (albedo 0.5, 0.25, 0.75) under a directional light of
+/// E⊥ = 2 W/m² from 60° off the normal, seen from above: `L = albedo/π · E⊥
+/// cos 60°` at every pixel that sees the floor, for all three integrators
+/// (the path tracer's bounces escape to a black sky, so it adds nothing).
+#[test]
+fn lambert_plane_under_a_directional_light_matches_kd_over_pi_e_cos_for_every_integrator() {
+    let theta = 60_f64.to_radians();
+    let scene = parse(json!({
+        "version": 1,
+        "image": { "width": 16, "height": 12 },
+        "camera": { "type": "look_at", "eye": [0, 3, 3], "target": [0, 0, 0], "up": [0, 1, 0],
+                    "fov_y_deg": 40, "near": 0.1, "far": 100 },
+        "materials": { "floor": { "type": "lambert", "albedo": [0.5, 0.25, 0.75] } },
+        "objects": [ { "type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "material": "floor" } ],
+        "lights": [ { "type": "directional", "towards": [theta.sin(), theta.cos(), 0], "irradiance": [2, 2, 2] } ]
+    }));
+    let expected = Vec3::new(0.5, 0.25, 0.75) / std::f32::consts::PI * 2.0 * 0.5;
+    for integrator in [IntegratorKind::Local, IntegratorKind::Whitted, IntegratorKind::Path] {
+        let s = Settings {
+            spp: 8,
+            ..settings(integrator)
+        };
+        let image = render_with(&scene, &s, Some(1));
+        for (i, p) in image.pixels.iter().enumerate() {
+            // A dozen f32 roundings (normalising the light, the cosine, the
+            // BRDF, the product): relative 2e-6 would do; 1e-5 is stated.
+            let err = ((*p - expected).abs() / expected).max_element();
+            assert!(err < 1e-5, "{integrator}: pixel {i} is {p}, expected {expected}");
+        }
+    }
+}
+
+fn lit_floor(occluder: Option<([f64; 3], f64)>, light_height: f64) -> Scene {
+    let mut objects = vec![json!({ "type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "material": "floor" })];
+    if let Some((center, radius)) = occluder {
+        objects.push(json!({ "type": "sphere", "center": center, "radius": radius, "material": "floor" }));
+    }
+    parse(json!({
+        "version": 1,
+        "image": { "width": 4, "height": 4 },
+        "camera": { "type": "course_pinhole" },
+        "materials": { "floor": { "type": "lambert", "albedo": [0.6, 0.6, 0.6] } },
+        "objects": objects,
+        "lights": [ { "type": "point", "position": [0, light_height, 0], "intensity": [10, 10, 10] } ]
+    }))
+}
+
+/// The floor's origin seen along the diagonal from (3, 3, 0).
+fn to_origin() -> Ray {
+    Ray::new(Vec3::new(3.0, 3.0, 0.0), Vec3::new(-1.0, -1.0, 0.0).normalize())
+}
+
+#[test]
+fn point_light_falls_off_with_the_inverse_square_of_distance() {
+    let s = settings(IntegratorKind::Whitted);
+    // L = albedo/π · I cos θ / r² with θ = 0 straight below the light.
+    for height in [1.0, 2.0] {
+        let l = radiance_along(&lit_floor(None, height), &s, &to_origin());
+        let expected = 0.6 / std::f32::consts::PI * 10.0 / (height * height) as f32;
+        assert!((l.x - expected).abs() < 1e-5 * expected, "h = {height}: {l} vs {expected}");
+    }
+}
+
+#[test]
+fn shadow_ray_stops_at_the_point_light() {
+    let s = settings(IntegratorKind::Whitted);
+    let unshadowed = radiance_along(&lit_floor(None, 1.0), &s, &to_origin());
+    // A sphere beyond the light, on the same line: it must not shadow.
+    let beyond = radiance_along(&lit_floor(Some(([0.0, 3.0, 0.0], 0.5)), 1.0), &s, &to_origin());
+    assert_eq!(beyond, unshadowed);
+    // The same sphere between the floor and the light: full shadow.
+    let between = radiance_along(&lit_floor(Some(([0.0, 0.5, 0.0], 0.2)), 1.0), &s, &to_origin());
+    assert_eq!(between, Vec3::ZERO);
+}
+
+/// Only specular surfaces scatter (a gold sphere, a glass sphere), lit by an
+/// unlit emitter panel and the sky; the delta light reaches no rough
+/// surface. Whitted's recursion, cut nowhere, is then the exact answer, and
+/// the path tracer, which picks reflection or refraction at the glass with
+/// the Fresnel probability, is an unbiased estimate of it: its mean over 256
+/// independent seeds must lie within 5 standard errors of Whitted at every
+/// pixel and channel (a false alarm in 1.7 million per value).
+#[test]
+fn path_converges_to_whitted_where_only_mirrors_and_glass_scatter() {
+    let scene = parse(json!({
+        "version": 1,
+        "image": { "width": 24, "height": 18 },
+        "camera": { "type": "course_pinhole" },
+        "background": [0.2, 0.3, 0.5],
+        "materials": {
+            "gold": { "type": "conductor", "n": [0.17, 0.35, 1.5], "kappa": [3.1, 2.7, 1.9] },
+            "glass": { "type": "dielectric", "eta": 1.5 },
+            "panel": { "type": "flat", "radiance": [1.0, 0.9, 0.7] }
+        },
+        "objects": [
+            { "type": "sphere", "center": [0.6, 0, 4], "radius": 0.8, "material": "gold" },
+            { "type": "sphere", "center": [-0.7, 0, 3.5], "radius": 0.7, "material": "glass" },
+            { "type": "plane", "point": [0, -1, 0], "normal": [0, 1, 0], "material": "panel" }
+        ],
+        "lights": [ { "type": "directional", "towards": [0, 1, 0], "irradiance": [1, 1, 1] } ]
+    }));
+    let base = Settings {
+        max_depth: 6,
+        throughput_cutoff: 0.0,
+        ..Settings::default()
+    };
+    let whitted = render_with(&scene, &Settings { integrator: IntegratorKind::Whitted, ..base }, Some(1));
+    let n = 256;
+    let mut sum = vec![[0.0_f64; 3]; whitted.pixels.len()];
+    let mut sum2 = sum.clone();
+    for seed in 0..n {
+        let s = Settings {
+            integrator: IntegratorKind::Path,
+            seed,
+            ..base
+        };
+        let image = render_with(&scene, &s, None);
+        for (i, p) in image.pixels.iter().enumerate() {
+            for c in 0..3 {
+                sum[i][c] += p[c] as f64;
+                sum2[i][c] += (p[c] as f64).powi(2);
+            }
+        }
+    }
+    let mut noisy = 0;
+    for (i, w) in whitted.pixels.iter().enumerate() {
+        for c in 0..3 {
+            let mean = sum[i][c] / n as f64;
+            let var = (sum2[i][c] / n as f64 - mean * mean).max(0.0) * n as f64 / (n - 1) as f64;
+            let standard_error = (var / n as f64).sqrt();
+            if standard_error > 0.0 {
+                noisy += 1;
+            }
+            // Plus f32 rounding of sums of a few dozen terms of order 1.
+            let allowed = 5.0 * standard_error + 1e-5;
+            assert!(
+                (mean - w[c] as f64).abs() <= allowed,
+                "pixel {i} channel {c}: path mean {mean} vs whitted {} (allowed {allowed})",
+                w[c]
+            );
+        }
+    }
+    assert!(noisy > 50, "the glass must make some pixels random, got {noisy}");
+}
+
+#[test]
+fn image_is_identical_for_any_thread_count() {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../../validation/scenes/kaleidoscope_lit.json");
+    let scene = scene::load(std::path::Path::new(path)).unwrap().resized(32, 24);
+    for integrator in [IntegratorKind::Whitted, IntegratorKind::Path] {
+        let s = Settings {
+            spp: 3,
+            seed: 11,
+            ..settings(integrator)
+        };
+        let one = render_with(&scene, &s, Some(1));
+        for threads in [2, 3, 8] {
+            assert!(one == render_with(&scene, &s, Some(threads)), "{integrator} with {threads} threads");
+        }
+    }
+}
+
+/// A matte sphere 100 km from the origin, lit from the camera's side, with
+/// a second sphere so that shadow rays are cast. A convex sphere cannot
+/// shadow its own lit side, so every lit pixel must be lit. At 10⁵ m one f32
+/// ulp is 7.8 mm: the course's fixed 1 mm offset rounds back onto the
+/// surface and the shadow rays find it again (shadow acne).
+#[test]
+fn fixed_epsilon_shadows_acne_far_from_the_origin_where_the_error_bound_offset_holds() {
+    let far = 1.0e5;
+    let scene = parse(json!({
+        "version": 1,
+        "image": { "width": 32, "height": 24 },
+        "camera": { "type": "look_at", "eye": [far, 0, far - 4.0], "target": [far, 0, far], "up": [0, 1, 0],
+                    "fov_y_deg": 40, "near": 0.1, "far": 100 },
+        "materials": { "matte": { "type": "lambert", "albedo": [0.8, 0.8, 0.8] } },
+        "objects": [
+            { "type": "sphere", "center": [far, 0, far], "radius": 1, "material": "matte" },
+            { "type": "sphere", "center": [far + 50.0, 50, far + 50.0], "radius": 1, "material": "matte" }
+        ],
+        "lights": [ { "type": "directional", "towards": [0.3, 0.4, -1], "irradiance": [1, 1, 1] } ]
+    }));
+    let dark_lit_pixels = |offset: RayOffset| {
+        let s = Settings {
+            ray_offset: offset,
+            ..settings(IntegratorKind::Whitted)
+        };
+        let tracer = Tracer {
+            scene: &scene,
+            settings: s,
+            machinery: Machinery::everything(&scene, &s),
+        };
+        let (mut lit, mut dark) = (0, 0);
+        for y in 0..scene.height {
+            for x in 0..scene.width {
+                let ray = scene.camera.ray(x, y);
+                let Some(hit) = tracer.intersect(&ray) else { continue };
+                if hit.normal.dot(Vec3::new(0.3, 0.4, -1.0).normalize()) > 0.05 {
+                    lit += 1;
+                    let l = tracer.radiance(&ray, &mut Pcg32::for_pixel(0, 0), &mut RayCounts::default());
+                    if l == Vec3::ZERO {
+                        dark += 1;
+                    }
+                }
+            }
+        }
+        assert!(lit > 50, "the test must see the lit side, saw {lit} pixels");
+        dark as f64 / lit as f64
+    };
+    let robust = dark_lit_pixels(RayOffset::Robust);
+    let fixed = dark_lit_pixels(RayOffset::Fixed(0.001));
+    eprintln!("lit pixels shadowed by their own surface: robust {robust:.3}, fixed 1 mm {fixed:.3}");
+    assert_eq!(robust, 0.0, "error-bound offsets: no acne");
+    assert!(fixed > 0.2, "the course's fixed epsilon was expected to fail here: {fixed}");
+}
+
+fn course_scenes() -> Vec<(String, Scene)> {
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/../../validation/scenes");
+    let mut scenes: Vec<(String, Scene)> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "json"))
+        .map(|p| (p.display().to_string(), scene::load(&p).unwrap().resized(32, 24)))
+        .collect();
+    scenes.sort_by(|a, b| a.0.cmp(&b.0));
+    scenes
+}
+
+#[test]
+fn every_course_scene_loads_and_renders() {
+    let scenes = course_scenes();
+    assert!(scenes.len() >= 9);
+    for (name, scene) in scenes {
+        let s = Settings::from_scene(&scene);
+        let image = render_with(&scene, &s, None);
+        assert!(image.pixels.iter().all(|p| p.is_finite()), "{name}");
+        assert!(image.pixels.iter().any(|p| p.max_element() > 0.0), "{name} is black");
+    }
+}
+
+#[test]
+fn skipping_unused_machinery_leaves_the_image_unchanged() {
+    for (name, scene) in course_scenes() {
+        for integrator in [IntegratorKind::Local, IntegratorKind::Whitted, IntegratorKind::Path] {
+            let s = Settings {
+                spp: 2,
+                ..Settings { integrator, ..Settings::from_scene(&scene) }
+            };
+            let lean = needs::analyse(&scene, &s).machinery(&s);
+            let full = Machinery::everything(&scene, &s);
+            let a = render(&scene, &s, &lean, None, &|_| {}).unwrap();
+            let b = render(&scene, &s, &full, None, &|_| {}).unwrap();
+            if lean.spp == full.spp {
+                assert!(a.image == b.image, "{name} {integrator}: skipping changed the image");
+            } else {
+                // Fewer samples of a deterministic path: the same value,
+                // up to the f64 mean's last rounding to f32.
+                let (_, max) = a.image.difference(&b.image);
+                assert!(max <= 1e-6, "{name} {integrator}: {max}");
+            }
+            assert!(a.rays.total() <= b.rays.total());
+        }
+    }
+}
+
+#[test]
+fn a_single_convex_sphere_needs_no_shadow_rays_and_two_spheres_do() {
+    let scenes = course_scenes();
+    let find = |suffix: &str| &scenes.iter().find(|(n, _)| n.ends_with(suffix)).unwrap().1;
+    let s = Settings::default();
+    assert!(!needs::analyse(find("/blinn_phong.json"), &s).shadows);
+    assert!(needs::analyse(find("/shadow.json"), &s).shadows);
+    let kaleidoscope = needs::analyse(find("/kaleidoscope.json"), &s);
+    assert_eq!(kaleidoscope.reflection_depth, needs::ReflectionDepth::UpToMaxDepth(s.max_depth));
+    assert!(kaleidoscope.conductors && !kaleidoscope.refraction);
+}
+
+/// The course's Fresnel (`pow(cos θ, 5)` for `pow(1 − cos θ, 5)`) makes a
+/// mirror reflect everything head-on; the exact law gives gold's F0 there.
+#[test]
+fn course_integrator_uses_the_course_fresnel_and_whitted_the_exact_law() {
+    let scene = parse(json!({
+        "version": 1,
+        "image": { "width": 4, "height": 4 },
+        "camera": { "type": "course_pinhole" },
+        "materials": {
+            "gold": { "type": "conductor", "n": [0.17, 0.35, 1.5], "kappa": [3.1, 2.7, 1.9] },
+            "white": { "type": "flat", "radiance": [1, 1, 1] }
+        },
+        "objects": [
+            { "type": "sphere", "center": [0, 0, 4], "radius": 1, "material": "gold" },
+            { "type": "sphere", "center": [0, 0, -20], "radius": 10, "material": "white" }
+        ]
+    }));
+    let head_on = Ray::new(Vec3::new(0.0, 0.0, -2.0), Vec3::Z);
+    let course = radiance_along(&scene, &settings(IntegratorKind::Course), &head_on);
+    assert!((course - Vec3::ONE).abs().max_element() < 1e-6, "{course}");
+    let exact = radiance_along(&scene, &settings(IntegratorKind::Whitted), &head_on);
+    let f0 = radiometry::fresnel::f0_rgb([0.17_f32, 0.35, 1.5], [3.1, 2.7, 1.9]);
+    assert!((exact - Vec3::from_array(f0)).abs().max_element() < 1e-6, "{exact}");
+    let schlick = radiance_along(
+        &scene,
+        &Settings { fresnel: FresnelModel::Schlick, ..settings(IntegratorKind::Whitted) },
+        &head_on,
+    );
+    assert!((schlick - Vec3::from_array(f0)).abs().max_element() < 1e-6, "Schlick is exact head-on");
+}
