@@ -25,7 +25,18 @@
 pub mod check;
 pub mod colorimetry;
 pub mod laws;
+pub mod metals;
 pub mod reference;
+pub mod report;
+pub mod speed;
+pub mod suite;
 
 pub use check::{Check, Metric};
+
+/// The root of the suite's checkout (the parent of `validation/`), where
+/// `python-checks/` and the default Python environment `.venv` live.
+pub fn repo_root() -> std::path::PathBuf {
+    let manifest = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    manifest.parent().unwrap_or(manifest).to_path_buf()
+}
 pub use reference::ReferenceError;

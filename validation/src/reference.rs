@@ -90,6 +90,18 @@ pub fn parse<T: DeserializeOwned>(
         .map_err(malformed)
 }
 
+/// Parses any reference document, whatever its schema (for reading the
+/// self-description fields every reference carries).
+pub fn parse_any<T: DeserializeOwned>(path: &Path, text: &str) -> Result<T, ReferenceError> {
+    serde_path_to_error::deserialize(&mut serde_json::Deserializer::from_str(text)).map_err(|e| {
+        ReferenceError::Malformed {
+            path: path.to_owned(),
+            field: e.path().to_string(),
+            message: e.inner().to_string(),
+        }
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -1,0 +1,150 @@
+"""Figures of a validation report, drawn with matplotlib from ``report.json``.
+
+    .venv/bin/python python-checks/plot_report.py validation/out/report.json validation/out/figures
+
+``optics validate`` runs this after writing ``report.json`` (schema
+``validation-report/1``, see ``validation/README.md``); it reads only that file
+and writes PNGs into the figure directory, printing each file name on its own
+line. The numbers are the report's; nothing is recomputed here.
+"""
+import json
+import math
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+SCHEMA = "validation-report/1"
+
+
+def _grid(n):
+    cols = 3
+    return math.ceil(n / cols), cols
+
+
+def fresnel_curves(report, out):
+    curves = report["fresnel_curves"]
+    rows, cols = _grid(len(curves))
+    fig, axes = plt.subplots(rows, cols, figsize=(4 * cols, 3 * rows), squeeze=False)
+    for ax, c in zip(axes.flat, curves):
+        ax.plot(c["angle_deg"], c["exact"], "k-", label="exact")
+        ax.plot(c["angle_deg"], c["schlick"], "b--", label="Schlick (cos θi)")
+        ax.plot(c["angle_deg"], c["mitsuba"], "r:", lw=2, label="Mitsuba 3")
+        ax.set_title(c["label"], fontsize=10)
+        ax.set_xlim(0, 90)
+        ax.set_ylim(0, 1.02)
+        ax.set_xlabel("angle of incidence (deg)")
+        ax.set_ylabel("reflectance")
+    for ax in list(axes.flat)[len(curves):]:
+        ax.axis("off")
+    axes.flat[0].legend(fontsize=8)
+    fig.tight_layout()
+    path = os.path.join(out, "fresnel_curves.png")
+    fig.savefig(path, dpi=90)
+    plt.close(fig)
+    return path
+
+
+def fresnel_errors(report, out):
+    curves = report["fresnel_curves"]
+    rows, cols = _grid(len(curves))
+    fig, axes = plt.subplots(rows, cols, figsize=(4 * cols, 3 * rows), squeeze=False)
+    floor = 1e-10  # below any float32 rounding; zeros are drawn here
+    for ax, c in zip(axes.flat, curves):
+        schlick = [max(abs(s - e), floor) for s, e in zip(c["schlick"], c["exact"])]
+        mitsuba = [max(abs(m - e), floor) for m, e in zip(c["mitsuba"], c["exact"])]
+        ax.semilogy(c["angle_deg"], schlick, "b-", label="|Schlick − exact|")
+        ax.semilogy(c["angle_deg"], mitsuba, "r-", label="|Mitsuba (float32) − exact|")
+        ax.set_title(c["label"], fontsize=10)
+        ax.set_xlim(0, 90)
+        ax.set_ylim(floor, 2)
+        ax.set_xlabel("angle of incidence (deg)")
+    for ax in list(axes.flat)[len(curves):]:
+        ax.axis("off")
+    axes.flat[0].legend(fontsize=8)
+    fig.tight_layout()
+    path = os.path.join(out, "fresnel_errors.png")
+    fig.savefig(path, dpi=90)
+    plt.close(fig)
+    return path
+
+
+def metal_swatches(report, out):
+    colours = report["metal_colours"]
+    metals = list(dict.fromkeys(c["metal"] for c in colours))
+    angles = sorted(set(c["angle_deg"] for c in colours))
+    fig, axes = plt.subplots(len(metals), 1, figsize=(1.6 * len(angles) + 5, 2.0 * len(metals)), squeeze=False)
+    for ax, metal in zip(axes.flat, metals):
+        methods = list(dict.fromkeys(c["method"] for c in colours if c["metal"] == metal))
+        for row, method in enumerate(methods):
+            for col, angle in enumerate(angles):
+                cell = next(c for c in colours if c["metal"] == metal and c["method"] == method and c["angle_deg"] == angle)
+                rgb = [min(max(x, 0.0), 1.0) for x in cell["srgb"]]
+                ax.add_patch(plt.Rectangle((col, -row - 1), 0.95, 0.9, color=rgb))
+                if method != "spectral (exact)":
+                    de = cell["delta_e_2000"]
+                    ax.text(col + 0.47, -row - 0.55, f"{de:.2f}", ha="center", va="center", fontsize=7,
+                            color="black" if sum(rgb) > 1.2 else "white")
+        ax.set_xlim(0, len(angles))
+        ax.set_ylim(-len(methods), 0)
+        ax.set_xticks([i + 0.47 for i in range(len(angles))], [f"{a:g}°" for a in angles])
+        ax.set_yticks([-i - 0.55 for i in range(len(methods))], methods, fontsize=7)
+        ax.set_title(f"{metal}: colour by method and angle (ΔE00 from spectral)", fontsize=9)
+        ax.tick_params(length=0)
+        for side in ax.spines.values():
+            side.set_visible(False)
+    fig.subplots_adjust(left=0.3, right=0.98, top=0.95, bottom=0.04, hspace=0.45)
+    path = os.path.join(out, "metal_swatches.png")
+    fig.savefig(path, dpi=90)
+    plt.close(fig)
+    return path
+
+
+def delta_e_table(report, out):
+    rows = report["metal_delta_e"]
+    metals = list(dict.fromkeys(r["metal"] for r in rows))
+    methods = list(dict.fromkeys(r["method"] for r in rows))
+    fig, ax = plt.subplots(figsize=(10, 4))
+    width = 0.8 / len(methods)
+    for i, method in enumerate(methods):
+        xs, ys = [], []
+        for j, metal in enumerate(metals):
+            r = next((r for r in rows if r["metal"] == metal and r["method"] == method), None)
+            if r is not None:
+                xs.append(j + i * width)
+                ys.append(r["delta_e_2000"])
+        ax.bar(xs, ys, width, label=method)
+    ax.axhline(1.0, color="grey", lw=0.8, ls="--")
+    ax.set_xticks([j + 0.4 - width / 2 for j in range(len(metals))], metals)
+    ax.set_ylabel("worst CIEDE2000 over angles")
+    ax.set_title("Colour error of the shortcuts against the spectral colour (dashed: just noticeable)")
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    path = os.path.join(out, "metal_delta_e.png")
+    fig.savefig(path, dpi=90)
+    plt.close(fig)
+    return path
+
+
+def main(report_path, out):
+    with open(report_path, encoding="utf-8") as fh:
+        report = json.load(fh)
+    if report.get("schema") != SCHEMA:
+        sys.exit(f"{report_path}: schema {report.get('schema')!r}, expected {SCHEMA!r}")
+    os.makedirs(out, exist_ok=True)
+    drawn = []
+    if report["fresnel_curves"]:
+        drawn += [fresnel_curves(report, out), fresnel_errors(report, out)]
+    if report["metal_colours"]:
+        drawn += [metal_swatches(report, out), delta_e_table(report, out)]
+    for path in drawn:
+        print(os.path.basename(path))
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 3:
+        sys.exit("usage: plot_report.py REPORT_JSON FIGURE_DIR")
+    main(sys.argv[1], sys.argv[2])

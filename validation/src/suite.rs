@@ -1,0 +1,300 @@
+//! The harness: every kind of check, run in order against one directory of
+//! references, gathered into one [`Report`].
+//!
+//! A kind of check ([`CheckKind`]) reads the references it needs, appends its
+//! [`Check`]s and its figure data to the report, and says how many steps it
+//! takes for the progress display. Adding a kind (the renders against
+//! Mitsuba, say) is one more implementation in [`standard_kinds`].
+
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+
+use serde::Serialize;
+
+use crate::check::Check;
+use crate::colorimetry::{self, Colorimetry, ColourLaws};
+use crate::laws::{self, Laws, MitsubaLaws};
+use crate::metals::{self, MetalColour, MetalLaws, MetalsReference};
+use crate::reference::ReferenceError;
+use crate::speed::{self, Timing};
+
+/// The schema of `report.json`.
+pub const REPORT_SCHEMA: &str = "validation-report/1";
+
+/// What the checks run against, and how much of them.
+#[derive(Clone, Debug)]
+pub struct Context {
+    /// The directory holding the reference JSON files.
+    pub reference_dir: PathBuf,
+    /// The reduced set: fewer timing iterations (and, for future kinds, fewer
+    /// samples).
+    pub quick: bool,
+}
+
+/// One kind of check.
+pub trait CheckKind {
+    /// A stable name, used in progress messages (`laws`, `colorimetry`).
+    fn name(&self) -> &'static str;
+    /// Runs the checks, appending them and their data to `report`.
+    fn run(&self, context: &Context, report: &mut Report) -> Result<(), ReferenceError>;
+}
+
+/// `report.json`: every check, its data for the figures, and the references used.
+#[derive(Clone, Debug, Serialize)]
+pub struct Report {
+    /// [`REPORT_SCHEMA`].
+    pub schema: &'static str,
+    /// Whether this was the reduced set.
+    pub quick: bool,
+    /// The command line that produced the report.
+    pub command: String,
+    /// Counts of checks, passes, failures and findings.
+    pub summary: Summary,
+    /// The reference files read, by name: their description fields.
+    pub references: BTreeMap<String, ReferenceInfo>,
+    /// Every check.
+    pub checks: Vec<Check>,
+    /// Reflectance against angle per material: exact, Schlick, Mitsuba.
+    pub fresnel_curves: Vec<FresnelCurve>,
+    /// Every metal colour by every method.
+    pub metal_colours: Vec<MetalColour>,
+    /// The worst CIEDE2000 of each shortcut per metal.
+    pub metal_delta_e: Vec<WorstDeltaE>,
+    /// Time per metal colour by method.
+    pub speed: Vec<Timing>,
+}
+
+/// Counts over the checks.
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct Summary {
+    /// Checks run.
+    pub checks: usize,
+    /// Checks within tolerance.
+    pub passed: usize,
+    /// Checks with failures.
+    pub failed: usize,
+    /// Findings about the references.
+    pub findings: usize,
+}
+
+/// The self-description of a reference file.
+#[derive(Clone, Debug, Default, Serialize, serde::Deserialize)]
+pub struct ReferenceInfo {
+    /// Its schema.
+    pub schema: String,
+    /// The script that wrote it.
+    #[serde(default)]
+    pub generator: String,
+    /// The command that regenerates it.
+    #[serde(default)]
+    pub regenerate: String,
+    /// What it holds.
+    #[serde(default)]
+    pub description: String,
+}
+
+/// One material's reflectance curves, one value per degree.
+#[derive(Clone, Debug, Serialize)]
+pub struct FresnelCurve {
+    /// Material and side.
+    pub label: String,
+    /// Angle of incidence, degrees.
+    pub angle_deg: Vec<f64>,
+    /// The exact law (the radiometry crate, f64).
+    pub exact: Vec<f64>,
+    /// Schlick's approximation with `cos θ_i` and `F0(n, κ)`, as the course uses it.
+    pub schlick: Vec<f64>,
+    /// Mitsuba 3 (float32).
+    pub mitsuba: Vec<f64>,
+}
+
+/// The worst colour error of one shortcut for one metal.
+#[derive(Clone, Debug, Serialize)]
+pub struct WorstDeltaE {
+    /// The metal.
+    pub metal: String,
+    /// The shortcut.
+    pub method: String,
+    /// Its worst CIEDE2000 over the angles.
+    pub delta_e_2000: f64,
+    /// Where.
+    pub at_angle_deg: f64,
+}
+
+impl Report {
+    /// An empty report.
+    pub fn new(quick: bool, command: &str) -> Self {
+        Self {
+            schema: REPORT_SCHEMA,
+            quick,
+            command: command.to_owned(),
+            summary: Summary::default(),
+            references: BTreeMap::new(),
+            checks: Vec::new(),
+            fresnel_curves: Vec::new(),
+            metal_colours: Vec::new(),
+            metal_delta_e: Vec::new(),
+            speed: Vec::new(),
+        }
+    }
+
+    /// Records the description fields of reference `name` in `dir`.
+    pub fn note_reference(&mut self, dir: &Path, name: &str) -> Result<(), ReferenceError> {
+        let path = dir.join(name);
+        let text = std::fs::read_to_string(&path).map_err(|source| ReferenceError::Io {
+            path: path.clone(),
+            source,
+        })?;
+        let info: ReferenceInfo = crate::reference::parse_any(&path, &text)?;
+        self.references.insert(name.to_owned(), info);
+        Ok(())
+    }
+
+    /// Recounts [`Report::summary`] from the checks.
+    pub fn summarise(&mut self) {
+        let passed = self.checks.iter().filter(|c| c.passed()).count();
+        self.summary = Summary {
+            checks: self.checks.len(),
+            passed,
+            failed: self.checks.len() - passed,
+            findings: self.checks.iter().map(|c| c.findings.len()).sum(),
+        };
+    }
+
+    /// Whether every check passed.
+    pub fn passed(&self) -> bool {
+        self.checks.iter().all(Check::passed)
+    }
+}
+
+/// The laws against Mitsuba and the exact values.
+pub struct LawChecks(pub Laws);
+
+impl CheckKind for LawChecks {
+    fn name(&self) -> &'static str {
+        "laws against Mitsuba 3 and mpmath"
+    }
+
+    fn run(&self, context: &Context, report: &mut Report) -> Result<(), ReferenceError> {
+        let reference = MitsubaLaws::load(&context.reference_dir)?;
+        report.note_reference(&context.reference_dir, laws::FILE)?;
+        report.checks.extend(laws::check_all(&self.0, &reference));
+        report.fresnel_curves = fresnel_curves(&reference);
+        Ok(())
+    }
+}
+
+/// The exact law and Schlick beside Mitsuba's curves, per material.
+pub fn fresnel_curves(reference: &MitsubaLaws) -> Vec<FresnelCurve> {
+    use radiometry::fresnel;
+    reference
+        .curves
+        .iter()
+        .map(|curve| {
+            let f0 = fresnel::f0(curve.n, curve.kappa);
+            let exact = |c: f64| {
+                if curve.kappa == 0.0 {
+                    fresnel::dielectric(c, curve.n)
+                } else {
+                    fresnel::conductor(c, curve.n, curve.kappa)
+                }
+            };
+            FresnelCurve {
+                label: curve.label.clone(),
+                angle_deg: curve
+                    .cos_i
+                    .iter()
+                    .map(|c| c.abs().acos().to_degrees())
+                    .collect(),
+                exact: curve.cos_i.iter().map(|&c| exact(c)).collect(),
+                schlick: curve
+                    .cos_i
+                    .iter()
+                    .map(|&c| fresnel::schlick(c, f0))
+                    .collect(),
+                mitsuba: curve.mitsuba_f.clone(),
+            }
+        })
+        .collect()
+}
+
+/// The colorimetry against colour-science.
+pub struct ColourChecks(pub ColourLaws);
+
+impl CheckKind for ColourChecks {
+    fn name(&self) -> &'static str {
+        "colorimetry against colour-science"
+    }
+
+    fn run(&self, context: &Context, report: &mut Report) -> Result<(), ReferenceError> {
+        let reference = Colorimetry::load(&context.reference_dir)?;
+        report.note_reference(&context.reference_dir, colorimetry::FILE)?;
+        report
+            .checks
+            .extend(colorimetry::check_all(&self.0, &reference));
+        Ok(())
+    }
+}
+
+/// Metal colours: spectral against colour-science, shortcuts measured, speed timed.
+pub struct MetalChecks(pub MetalLaws);
+
+impl CheckKind for MetalChecks {
+    fn name(&self) -> &'static str {
+        "metal colours and their shortcuts"
+    }
+
+    fn run(&self, context: &Context, report: &mut Report) -> Result<(), ReferenceError> {
+        let reference = MetalsReference::load(&context.reference_dir)?;
+        report.note_reference(&context.reference_dir, metals::FILE)?;
+        report
+            .checks
+            .push(metals::check_spectral_colours(&self.0, &reference));
+        let rows = metals::shortcut_colours(&self.0, &reference);
+        report.metal_delta_e = metals::worst_delta_e(&rows)
+            .into_iter()
+            .map(|(metal, method, delta_e_2000, at_angle_deg)| WorstDeltaE {
+                metal,
+                method,
+                delta_e_2000,
+                at_angle_deg,
+            })
+            .collect();
+        report.metal_colours = rows;
+        let iterations = if context.quick { 20_000 } else { 200_000 };
+        if let Some(gold) = reference.metals.iter().find(|m| m.name == "gold") {
+            report.speed.extend(
+                speed::time_gold(&self.0, gold, iterations)
+                    .into_iter()
+                    .flatten(),
+            );
+        }
+        Ok(())
+    }
+}
+
+/// The kinds of check `optics validate` runs, with the radiometry crate's laws.
+pub fn standard_kinds() -> Vec<Box<dyn CheckKind>> {
+    vec![
+        Box::new(LawChecks(Laws::radiometry())),
+        Box::new(ColourChecks(ColourLaws::radiometry())),
+        Box::new(MetalChecks(MetalLaws::radiometry())),
+    ]
+}
+
+/// Runs `kinds` in order, calling `progress(i, name)` before each, and
+/// returns the summarised report.
+pub fn run(
+    kinds: &[Box<dyn CheckKind>],
+    context: &Context,
+    command: &str,
+    mut progress: impl FnMut(usize, &str),
+) -> Result<Report, ReferenceError> {
+    let mut report = Report::new(context.quick, command);
+    for (i, kind) in kinds.iter().enumerate() {
+        progress(i, kind.name());
+        kind.run(context, &mut report)?;
+    }
+    report.summarise();
+    Ok(report)
+}

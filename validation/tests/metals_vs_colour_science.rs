@@ -1,0 +1,68 @@
+//! Metal colours: the exact spectral colour against colour-science, and the
+//! colour error of the three-wavelength shortcuts, from the committed
+//! `validation/reference/metals.json` (regenerate with
+//! `.venv/bin/python python-checks/metals.py`). Run with `--nocapture` for
+//! the ΔE00 table.
+
+use validation::metals::{self, MetalLaws, MetalsReference};
+use validation::reference::committed_dir;
+
+fn reference() -> MetalsReference {
+    MetalsReference::load(&committed_dir()).expect("committed metals reference")
+}
+
+#[test]
+fn spectral_metal_colours_agree_with_colour_science() {
+    let check = metals::check_spectral_colours(&MetalLaws::radiometry(), &reference());
+    for m in &check.metrics {
+        println!("{:<45} {:>10.3e}  at {}", m.name, m.worst, m.at);
+    }
+    assert!(check.passed(), "{:#?}", check.failures);
+    assert_eq!(check.cases, 4 * 5, "four metals at five angles");
+}
+
+#[test]
+fn shortcut_colour_errors_are_measured_for_every_metal() {
+    let rows = metals::shortcut_colours(&MetalLaws::radiometry(), &reference());
+    println!("| metal | shortcut | worst ΔE00 | at |");
+    println!("|---|---|---|---|");
+    let worst = metals::worst_delta_e(&rows);
+    for (metal, method, de, angle) in &worst {
+        println!("| {metal} | {method} | {de:.2} | {angle}° |");
+    }
+    // Four shortcuts per metal, and the course's RGB for gold.
+    assert_eq!(worst.len(), 4 * 4 + 1);
+    assert!(worst.iter().all(|w| w.2.is_finite()));
+    // The spectral colour is its own reference.
+    assert!(rows
+        .iter()
+        .filter(|r| r.method == "spectral (exact)")
+        .all(|r| r.delta_e_2000 == 0.0));
+    // Schlick from the spectral F0 is exact at normal incidence, to rounding:
+    // Schlick(1, F0) = F0 = the exact reflectance.
+    let at_normal = rows
+        .iter()
+        .filter(|r| r.angle_deg == 0.0 && r.method == "Schlick, spectral F0");
+    for row in at_normal {
+        assert!(row.delta_e_2000 < 1e-9, "{row:?}");
+    }
+}
+
+#[test]
+fn a_broken_conductor_law_is_caught_in_colour() {
+    // κ ignored: a metal becomes a dielectric, grey and dull.
+    fn conductor_without_absorption(cos_i: f64, n: f64, _kappa: f64) -> f64 {
+        radiometry::fresnel::conductor(cos_i, n, 0.0)
+    }
+    let broken = MetalLaws {
+        conductor: conductor_without_absorption,
+        ..MetalLaws::radiometry()
+    };
+    let check = metals::check_spectral_colours(&broken, &reference());
+    assert!(!check.passed());
+    assert!(
+        check.failures.len() >= 20,
+        "every metal at every angle: {:#?}",
+        check.failures
+    );
+}
