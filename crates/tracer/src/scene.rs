@@ -14,6 +14,7 @@ use std::fmt;
 use glam::{DVec3, Vec3};
 use radiometry::domain::{self, DomainError};
 use serde::Deserialize;
+use serde_json::Value;
 
 use crate::camera::{Camera, LookAtView};
 use crate::geometry::{Object, Plane, Sphere, Tube};
@@ -125,11 +126,11 @@ pub struct ImageSpec {
 
 /// A camera, as written.
 #[derive(Clone, Copy, Debug, Deserialize)]
-#[serde(tag = "type", rename_all = "snake_case", deny_unknown_fields)]
+#[serde(rename_all = "snake_case", deny_unknown_fields)]
 pub enum CameraSpec {
     /// The course's pinhole (`000`): eye at (0, 0, −2), image plane z = 0,
     /// `ndc.x` scaled by the aspect ratio.
-    CoursePinhole,
+    CoursePinhole {},
     /// A look-at camera unprojected through the inverse view-projection
     /// matrix, near plane to far plane (`002`).
     LookAt {
@@ -150,7 +151,7 @@ pub enum CameraSpec {
 
 /// A material, as written. Colours are per-channel (R, G, B).
 #[derive(Clone, Copy, Debug, Deserialize)]
-#[serde(tag = "type", rename_all = "snake_case", deny_unknown_fields)]
+#[serde(rename_all = "snake_case", deny_unknown_fields)]
 pub enum MaterialSpec {
     /// Unlit: the pixel shows `radiance` (the course's first red sphere).
     Flat {
@@ -158,7 +159,7 @@ pub enum MaterialSpec {
         radiance: [f64; 3],
     },
     /// Unlit: the pixel shows the normal as a colour, `n / 2 + 1/2`.
-    NormalColour,
+    NormalColour {},
     /// The course's rough model: ambient, diffuse `kd` (1/sr, un-normalised),
     /// Blinn-Phong specular `ks` and shininess.
     CourseRough {
@@ -192,7 +193,7 @@ pub enum MaterialSpec {
 
 /// An object, as written.
 #[derive(Clone, Debug, Deserialize)]
-#[serde(tag = "type", rename_all = "snake_case", deny_unknown_fields)]
+#[serde(rename_all = "snake_case", deny_unknown_fields)]
 pub enum ObjectSpec {
     /// A sphere.
     Sphere {
@@ -230,7 +231,7 @@ pub enum ObjectSpec {
 
 /// A light, as written.
 #[derive(Clone, Copy, Debug, Deserialize)]
-#[serde(tag = "type", rename_all = "snake_case", deny_unknown_fields)]
+#[serde(rename_all = "snake_case", deny_unknown_fields)]
 pub enum LightSpec {
     /// Parallel light arriving from `towards` (the direction from the
     /// surface to the light).
@@ -428,22 +429,106 @@ pub fn load(path: &std::path::Path) -> Result<Scene, SceneError> {
 /// Parses and validates a scene from JSON text.
 pub fn parse(text: &str) -> Result<Scene, SceneError> {
     let de = &mut serde_json::Deserializer::from_str(text);
-    let file: SceneFile = serde_path_to_error::deserialize(de).map_err(|err| {
+    let mut value: Value = serde_path_to_error::deserialize(de).map_err(|err| {
         let path = err.path().to_string();
         let inner = err.into_inner();
         SceneError::Syntax {
             path,
-            message: inner
-                .to_string()
-                .split(" at line ")
-                .next()
-                .unwrap_or_default()
-                .to_owned(),
+            message: without_position(&inner),
             line: inner.line(),
             column: inner.column(),
         }
     })?;
+    retag(&mut value)?;
+    let file: SceneFile = serde_path_to_error::deserialize(value).map_err(|err| {
+        let path = json_path(err.path());
+        SceneError::Invalid {
+            path,
+            message: without_position(err.inner()),
+        }
+    })?;
     file.validate()
+}
+
+fn without_position(err: &serde_json::Error) -> String {
+    let text = err.to_string();
+    match text.find(" at line ") {
+        Some(i) => text[..i].to_owned(),
+        None => text,
+    }
+}
+
+/// The path of a value as the file spells it: variant names, which exist
+/// only after [`retag`], are left out.
+fn json_path(path: &serde_path_to_error::Path) -> String {
+    use serde_path_to_error::Segment;
+    let mut out = String::new();
+    for segment in path.iter() {
+        match segment {
+            Segment::Seq { index } => out.push_str(&format!("[{index}]")),
+            Segment::Map { key } => {
+                if !out.is_empty() {
+                    out.push('.');
+                }
+                out.push_str(key);
+            }
+            Segment::Enum { .. } | Segment::Unknown => {}
+        }
+    }
+    if out.is_empty() {
+        ".".to_owned()
+    } else {
+        out
+    }
+}
+
+/// Rewrites each `{"type": "sphere", ...}` as `{"sphere": {...}}`, serde's
+/// external tagging. Serde's internally tagged enums buffer their content
+/// and lose the path of an error inside it; externally tagged ones keep it.
+fn retag(scene: &mut Value) -> Result<(), SceneError> {
+    let Some(top) = scene.as_object_mut() else {
+        return Ok(()); // serde reports the wrong type with its path
+    };
+    let mut places: Vec<(String, &mut Value)> = Vec::new();
+    for (key, value) in top.iter_mut() {
+        match (key.as_str(), value) {
+            ("camera", v) => places.push(("camera".into(), v)),
+            ("materials", Value::Object(m)) => {
+                for (name, v) in m.iter_mut() {
+                    places.push((format!("materials.{name}"), v));
+                }
+            }
+            ("objects" | "lights", Value::Array(items)) => {
+                for (i, v) in items.iter_mut().enumerate() {
+                    places.push((format!("{key}[{i}]"), v));
+                }
+            }
+            _ => {}
+        }
+    }
+    for (path, value) in places {
+        let Value::Object(fields) = value else {
+            continue; // serde reports the wrong type with its path
+        };
+        let kind = match fields.remove("type") {
+            Some(Value::String(kind)) => kind,
+            Some(other) => {
+                return Err(SceneError::invalid(
+                    format!("{path}.type"),
+                    format!("must be a string naming the kind, got {other}"),
+                ))
+            }
+            None => {
+                return Err(SceneError::invalid(
+                    format!("{path}.type"),
+                    "missing: every camera, material, object and light names its \"type\"",
+                ))
+            }
+        };
+        let body = Value::Object(std::mem::take(fields));
+        *value = Value::Object(serde_json::Map::from_iter([(kind, body)]));
+    }
+    Ok(())
 }
 
 fn finite3(path: &str, v: [f64; 3]) -> Result<Vec3, DomainError> {
@@ -547,7 +632,7 @@ impl SceneFile {
             ));
         }
         let camera = match self.camera {
-            CameraSpec::CoursePinhole => Camera::course_pinhole(width, height),
+            CameraSpec::CoursePinhole {} => Camera::course_pinhole(width, height),
             CameraSpec::LookAt {
                 eye,
                 target,
@@ -725,7 +810,7 @@ fn validate_material(p: &str, spec: &MaterialSpec) -> Result<Material, SceneErro
         MaterialSpec::Flat { radiance } => Material::Flat {
             radiance: non_negative3(&format!("{p}.radiance"), radiance)?,
         },
-        MaterialSpec::NormalColour => Material::NormalColour,
+        MaterialSpec::NormalColour {} => Material::NormalColour,
         MaterialSpec::CourseRough {
             ambient,
             diffuse,

@@ -26,7 +26,9 @@ fn settings(integrator: IntegratorKind) -> Settings {
 
 fn render_with(scene: &Scene, settings: &Settings, threads: Option<usize>) -> Image {
     let machinery = needs::analyse(scene, settings).machinery(settings);
-    render(scene, settings, &machinery, threads, &|_| {}).unwrap().image
+    render(scene, settings, &machinery, threads, &|_| {})
+        .unwrap()
+        .image
 }
 
 fn radiance_along(scene: &Scene, settings: &Settings, ray: &Ray) -> Vec3 {
@@ -56,7 +58,11 @@ fn lambert_plane_under_a_directional_light_matches_kd_over_pi_e_cos_for_every_in
         "lights": [ { "type": "directional", "towards": [theta.sin(), theta.cos(), 0], "irradiance": [2, 2, 2] } ]
     }));
     let expected = Vec3::new(0.5, 0.25, 0.75) / std::f32::consts::PI * 2.0 * 0.5;
-    for integrator in [IntegratorKind::Local, IntegratorKind::Whitted, IntegratorKind::Path] {
+    for integrator in [
+        IntegratorKind::Local,
+        IntegratorKind::Whitted,
+        IntegratorKind::Path,
+    ] {
         let s = Settings {
             spp: 8,
             ..settings(integrator)
@@ -66,15 +72,22 @@ fn lambert_plane_under_a_directional_light_matches_kd_over_pi_e_cos_for_every_in
             // A dozen f32 roundings (normalising the light, the cosine, the
             // BRDF, the product): relative 2e-6 would do; 1e-5 is stated.
             let err = ((*p - expected).abs() / expected).max_element();
-            assert!(err < 1e-5, "{integrator}: pixel {i} is {p}, expected {expected}");
+            assert!(
+                err < 1e-5,
+                "{integrator}: pixel {i} is {p}, expected {expected}"
+            );
         }
     }
 }
 
 fn lit_floor(occluder: Option<([f64; 3], f64)>, light_height: f64) -> Scene {
-    let mut objects = vec![json!({ "type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "material": "floor" })];
+    let mut objects = vec![
+        json!({ "type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "material": "floor" }),
+    ];
     if let Some((center, radius)) = occluder {
-        objects.push(json!({ "type": "sphere", "center": center, "radius": radius, "material": "floor" }));
+        objects.push(
+            json!({ "type": "sphere", "center": center, "radius": radius, "material": "floor" }),
+        );
     }
     parse(json!({
         "version": 1,
@@ -88,7 +101,10 @@ fn lit_floor(occluder: Option<([f64; 3], f64)>, light_height: f64) -> Scene {
 
 /// The floor's origin seen along the diagonal from (3, 3, 0).
 fn to_origin() -> Ray {
-    Ray::new(Vec3::new(3.0, 3.0, 0.0), Vec3::new(-1.0, -1.0, 0.0).normalize())
+    Ray::new(
+        Vec3::new(3.0, 3.0, 0.0),
+        Vec3::new(-1.0, -1.0, 0.0).normalize(),
+    )
 }
 
 #[test]
@@ -98,7 +114,10 @@ fn point_light_falls_off_with_the_inverse_square_of_distance() {
     for height in [1.0, 2.0] {
         let l = radiance_along(&lit_floor(None, height), &s, &to_origin());
         let expected = 0.6 / std::f32::consts::PI * 10.0 / (height * height) as f32;
-        assert!((l.x - expected).abs() < 1e-5 * expected, "h = {height}: {l} vs {expected}");
+        assert!(
+            (l.x - expected).abs() < 1e-5 * expected,
+            "h = {height}: {l} vs {expected}"
+        );
     }
 }
 
@@ -107,10 +126,18 @@ fn shadow_ray_stops_at_the_point_light() {
     let s = settings(IntegratorKind::Whitted);
     let unshadowed = radiance_along(&lit_floor(None, 1.0), &s, &to_origin());
     // A sphere beyond the light, on the same line: it must not shadow.
-    let beyond = radiance_along(&lit_floor(Some(([0.0, 3.0, 0.0], 0.5)), 1.0), &s, &to_origin());
+    let beyond = radiance_along(
+        &lit_floor(Some(([0.0, 3.0, 0.0], 0.5)), 1.0),
+        &s,
+        &to_origin(),
+    );
     assert_eq!(beyond, unshadowed);
     // The same sphere between the floor and the light: full shadow.
-    let between = radiance_along(&lit_floor(Some(([0.0, 0.5, 0.0], 0.2)), 1.0), &s, &to_origin());
+    let between = radiance_along(
+        &lit_floor(Some(([0.0, 0.5, 0.0], 0.2)), 1.0),
+        &s,
+        &to_origin(),
+    );
     assert_eq!(between, Vec3::ZERO);
 }
 
@@ -145,7 +172,14 @@ fn path_converges_to_whitted_where_only_mirrors_and_glass_scatter() {
         throughput_cutoff: 0.0,
         ..Settings::default()
     };
-    let whitted = render_with(&scene, &Settings { integrator: IntegratorKind::Whitted, ..base }, Some(1));
+    let whitted = render_with(
+        &scene,
+        &Settings {
+            integrator: IntegratorKind::Whitted,
+            ..base
+        },
+        Some(1),
+    );
     let n = 256;
     let mut sum = vec![[0.0_f64; 3]; whitted.pixels.len()];
     let mut sum2 = sum.clone();
@@ -181,13 +215,21 @@ fn path_converges_to_whitted_where_only_mirrors_and_glass_scatter() {
             );
         }
     }
-    assert!(noisy > 50, "the glass must make some pixels random, got {noisy}");
+    assert!(
+        noisy > 50,
+        "the glass must make some pixels random, got {noisy}"
+    );
 }
 
 #[test]
 fn image_is_identical_for_any_thread_count() {
-    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../../validation/scenes/kaleidoscope_lit.json");
-    let scene = scene::load(std::path::Path::new(path)).unwrap().resized(32, 24);
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../validation/scenes/kaleidoscope_lit.json"
+    );
+    let scene = scene::load(std::path::Path::new(path))
+        .unwrap()
+        .resized(32, 24);
     for integrator in [IntegratorKind::Whitted, IntegratorKind::Path] {
         let s = Settings {
             spp: 3,
@@ -196,7 +238,10 @@ fn image_is_identical_for_any_thread_count() {
         };
         let one = render_with(&scene, &s, Some(1));
         for threads in [2, 3, 8] {
-            assert!(one == render_with(&scene, &s, Some(threads)), "{integrator} with {threads} threads");
+            assert!(
+                one == render_with(&scene, &s, Some(threads)),
+                "{integrator} with {threads} threads"
+            );
         }
     }
 }
@@ -235,10 +280,16 @@ fn fixed_epsilon_shadows_acne_far_from_the_origin_where_the_error_bound_offset_h
         for y in 0..scene.height {
             for x in 0..scene.width {
                 let ray = scene.camera.ray(x, y);
-                let Some(hit) = tracer.intersect(&ray) else { continue };
+                let Some(hit) = tracer.intersect(&ray) else {
+                    continue;
+                };
                 if hit.normal.dot(Vec3::new(0.3, 0.4, -1.0).normalize()) > 0.05 {
                     lit += 1;
-                    let l = tracer.radiance(&ray, &mut Pcg32::for_pixel(0, 0), &mut RayCounts::default());
+                    let l = tracer.radiance(
+                        &ray,
+                        &mut Pcg32::for_pixel(0, 0),
+                        &mut RayCounts::default(),
+                    );
                     if l == Vec3::ZERO {
                         dark += 1;
                     }
@@ -250,9 +301,14 @@ fn fixed_epsilon_shadows_acne_far_from_the_origin_where_the_error_bound_offset_h
     };
     let robust = dark_lit_pixels(RayOffset::Robust);
     let fixed = dark_lit_pixels(RayOffset::Fixed(0.001));
-    eprintln!("lit pixels shadowed by their own surface: robust {robust:.3}, fixed 1 mm {fixed:.3}");
+    eprintln!(
+        "lit pixels shadowed by their own surface: robust {robust:.3}, fixed 1 mm {fixed:.3}"
+    );
     assert_eq!(robust, 0.0, "error-bound offsets: no acne");
-    assert!(fixed > 0.2, "the course's fixed epsilon was expected to fail here: {fixed}");
+    assert!(
+        fixed > 0.2,
+        "the course's fixed epsilon was expected to fail here: {fixed}"
+    );
 }
 
 fn course_scenes() -> Vec<(String, Scene)> {
@@ -261,7 +317,12 @@ fn course_scenes() -> Vec<(String, Scene)> {
         .unwrap()
         .map(|e| e.unwrap().path())
         .filter(|p| p.extension().is_some_and(|e| e == "json"))
-        .map(|p| (p.display().to_string(), scene::load(&p).unwrap().resized(32, 24)))
+        .map(|p| {
+            (
+                p.display().to_string(),
+                scene::load(&p).unwrap().resized(32, 24),
+            )
+        })
         .collect();
     scenes.sort_by(|a, b| a.0.cmp(&b.0));
     scenes
@@ -275,24 +336,37 @@ fn every_course_scene_loads_and_renders() {
         let s = Settings::from_scene(&scene);
         let image = render_with(&scene, &s, None);
         assert!(image.pixels.iter().all(|p| p.is_finite()), "{name}");
-        assert!(image.pixels.iter().any(|p| p.max_element() > 0.0), "{name} is black");
+        assert!(
+            image.pixels.iter().any(|p| p.max_element() > 0.0),
+            "{name} is black"
+        );
     }
 }
 
 #[test]
 fn skipping_unused_machinery_leaves_the_image_unchanged() {
     for (name, scene) in course_scenes() {
-        for integrator in [IntegratorKind::Local, IntegratorKind::Whitted, IntegratorKind::Path] {
+        for integrator in [
+            IntegratorKind::Local,
+            IntegratorKind::Whitted,
+            IntegratorKind::Path,
+        ] {
             let s = Settings {
                 spp: 2,
-                ..Settings { integrator, ..Settings::from_scene(&scene) }
+                ..Settings {
+                    integrator,
+                    ..Settings::from_scene(&scene)
+                }
             };
             let lean = needs::analyse(&scene, &s).machinery(&s);
             let full = Machinery::everything(&scene, &s);
             let a = render(&scene, &s, &lean, None, &|_| {}).unwrap();
             let b = render(&scene, &s, &full, None, &|_| {}).unwrap();
             if lean.spp == full.spp {
-                assert!(a.image == b.image, "{name} {integrator}: skipping changed the image");
+                assert!(
+                    a.image == b.image,
+                    "{name} {integrator}: skipping changed the image"
+                );
             } else {
                 // Fewer samples of a deterministic path: the same value,
                 // up to the f64 mean's last rounding to f32.
@@ -312,7 +386,10 @@ fn a_single_convex_sphere_needs_no_shadow_rays_and_two_spheres_do() {
     assert!(!needs::analyse(find("/blinn_phong.json"), &s).shadows);
     assert!(needs::analyse(find("/shadow.json"), &s).shadows);
     let kaleidoscope = needs::analyse(find("/kaleidoscope.json"), &s);
-    assert_eq!(kaleidoscope.reflection_depth, needs::ReflectionDepth::UpToMaxDepth(s.max_depth));
+    assert_eq!(
+        kaleidoscope.reflection_depth,
+        needs::ReflectionDepth::UpToMaxDepth(s.max_depth)
+    );
     assert!(kaleidoscope.conductors && !kaleidoscope.refraction);
 }
 
@@ -338,11 +415,20 @@ fn course_integrator_uses_the_course_fresnel_and_whitted_the_exact_law() {
     assert!((course - Vec3::ONE).abs().max_element() < 1e-6, "{course}");
     let exact = radiance_along(&scene, &settings(IntegratorKind::Whitted), &head_on);
     let f0 = radiometry::fresnel::f0_rgb([0.17_f32, 0.35, 1.5], [3.1, 2.7, 1.9]);
-    assert!((exact - Vec3::from_array(f0)).abs().max_element() < 1e-6, "{exact}");
+    assert!(
+        (exact - Vec3::from_array(f0)).abs().max_element() < 1e-6,
+        "{exact}"
+    );
     let schlick = radiance_along(
         &scene,
-        &Settings { fresnel: FresnelModel::Schlick, ..settings(IntegratorKind::Whitted) },
+        &Settings {
+            fresnel: FresnelModel::Schlick,
+            ..settings(IntegratorKind::Whitted)
+        },
         &head_on,
     );
-    assert!((schlick - Vec3::from_array(f0)).abs().max_element() < 1e-6, "Schlick is exact head-on");
+    assert!(
+        (schlick - Vec3::from_array(f0)).abs().max_element() < 1e-6,
+        "Schlick is exact head-on"
+    );
 }

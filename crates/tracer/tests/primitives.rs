@@ -66,10 +66,16 @@ fn ray_starting_on_the_sphere_finds_only_the_far_side() {
     let s = sphere(Vec3::new(3.0, -2.0, 7.0), 1.5);
     let first = hit_sphere(&s, &Ray::new(Vec3::new(3.0, -2.0, 0.0), Vec3::Z)).unwrap();
     // Leaving outwards (reflection): nothing more to hit.
-    let out = Ray::new(spawn::origin(&first, first.normal, RayOffset::Robust), -Vec3::Z);
+    let out = Ray::new(
+        spawn::origin(&first, first.normal, RayOffset::Robust),
+        -Vec3::Z,
+    );
     assert!(hit_sphere(&s, &out).is_none());
     // Going in (refraction): the far side, one diameter on.
-    let inward = Ray::new(spawn::origin(&first, -first.normal, RayOffset::Robust), Vec3::Z);
+    let inward = Ray::new(
+        spawn::origin(&first, -first.normal, RayOffset::Robust),
+        Vec3::Z,
+    );
     let far = hit_sphere(&s, &inward).unwrap();
     assert!((far.t - 3.0).abs() < 1e-5, "t = {}", far.t);
 }
@@ -141,7 +147,9 @@ fn ray_leaving_a_plane_does_not_find_it_again() {
         material: 0,
     };
     let dir = Vec3::new(0.3, 0.2, 1.0).normalize();
-    let hit = plane.intersect(&Ray::new(Vec3::new(0.1, 0.2, -2.0), dir), 0.0).unwrap();
+    let hit = plane
+        .intersect(&Ray::new(Vec3::new(0.1, 0.2, -2.0), dir), 0.0)
+        .unwrap();
     let n = hit.shading_normal(dir);
     let back = Ray::new(
         spawn::origin(&hit, n, RayOffset::Robust),
@@ -171,7 +179,9 @@ fn tube_is_closed_around_its_axis_and_open_along_it() {
         assert!(hit.normal.dot(dir) > 0.0);
         assert!(radial.length() <= 2.5 + 1e-5);
     }
-    assert!(tube.intersect(&Ray::new(Vec3::ZERO, Vec3::Z), 0.0).is_none());
+    assert!(tube
+        .intersect(&Ray::new(Vec3::ZERO, Vec3::Z), 0.0)
+        .is_none());
 }
 
 #[test]
@@ -183,7 +193,10 @@ fn tube_seen_from_outside_is_hit_on_its_outer_face_and_missed_beside_it() {
         .intersect(&Ray::new(Vec3::new(-5.0, 0.25, 0.0), Vec3::X), 0.0)
         .unwrap();
     assert!((hit.t - 4.25).abs() < 1e-5, "t = {}", hit.t);
-    assert!(hit.normal.dot(Vec3::X) < 0.0, "the outer face, seen from outside");
+    assert!(
+        hit.normal.dot(Vec3::X) < 0.0,
+        "the outer face, seen from outside"
+    );
     assert!(tube
         .intersect(&Ray::new(Vec3::new(-5.0, 1.5, 0.0), Vec3::X), 0.0)
         .is_none());

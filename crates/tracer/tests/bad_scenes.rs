@@ -1,0 +1,195 @@
+//! Bad scene files: each is refused with an error that names the JSON path
+//! of the bad value and says what was expected; none panics.
+
+use serde_json::{json, Value};
+use tracer::scene::{self, SceneError};
+
+fn good() -> Value {
+    json!({
+        "version": 1,
+        "image": { "width": 32, "height": 24 },
+        "camera": { "type": "course_pinhole" },
+        "materials": {
+            "green": { "type": "lambert", "albedo": [0.1, 0.8, 0.3] },
+            "gold": { "type": "conductor", "n": [0.17, 0.35, 1.5], "kappa": [3.1, 2.7, 1.9] }
+        },
+        "objects": [
+            { "type": "sphere", "center": [1, 1, 4], "radius": 0.8, "material": "green" },
+            { "type": "mirror_tube", "axis_point": [0, 0, 0], "axis": [0, 0, 1], "sides": 3, "radius": 2.5, "material": "gold" }
+        ],
+        "lights": [ { "type": "directional", "towards": [1, 0.5, -1], "irradiance": [1, 1, 1] } ],
+        "render": { "spp": 4 }
+    })
+}
+
+fn with(pointer: &str, value: Value) -> String {
+    let mut scene = good();
+    let mut at = &mut scene;
+    for key in pointer.trim_start_matches('/').split('/') {
+        at = match key.parse::<usize>() {
+            Ok(i) if at.is_array() => &mut at[i],
+            _ => &mut at[key], // inserts a new field into an object
+        };
+    }
+    *at = value;
+    scene.to_string()
+}
+
+fn error(text: &str) -> String {
+    match scene::parse(text) {
+        Ok(_) => panic!("accepted a bad scene: {text}"),
+        Err(e) => e.to_string(),
+    }
+}
+
+#[test]
+fn the_good_scene_is_accepted() {
+    assert!(scene::parse(&good().to_string()).is_ok());
+}
+
+/// One case per line: the bad file, and what the message must contain.
+#[test]
+fn bad_scenes_are_refused_with_the_path_of_the_bad_value() {
+    let nan_text = good()
+        .to_string()
+        .replace("\"radius\":0.8", "\"radius\":NaN");
+    let cases: Vec<(&str, String, &[&str])> = vec![
+        (
+            "syntax error",
+            "{\"version\": 1, \"image\": {".to_string(),
+            &["line 1"],
+        ),
+        (
+            "trailing comma",
+            good().to_string().replacen('}', ",}", 1),
+            &["line 1"],
+        ),
+        (
+            "unknown field",
+            with("/camera/zoom", json!(2)),
+            &["camera", "unknown field `zoom`"],
+        ),
+        (
+            "unknown top-level field",
+            with("/lightz", json!([])),
+            &["unknown field `lightz`"],
+        ),
+        (
+            "wrong type",
+            with("/objects/0/radius", json!("big")),
+            &["objects[0].radius", "invalid type"],
+        ),
+        ("NaN literal", nan_text, &["line 1"]),
+        (
+            "overflowing number",
+            good()
+                .to_string()
+                .replace("\"radius\":0.8", "\"radius\":1e999"),
+            &["objects[0].radius"],
+        ),
+        (
+            "negative radius",
+            with("/objects/0/radius", json!(-0.8)),
+            &["objects[0].radius", "positive", "-0.8"],
+        ),
+        (
+            "zero radius",
+            with("/objects/0/radius", json!(0)),
+            &["objects[0].radius", "positive"],
+        ),
+        (
+            "zero-length light direction",
+            with("/lights/0/towards", json!([0, 0, 0])),
+            &["lights[0].towards", "non-zero direction"],
+        ),
+        (
+            "zero-length tube axis",
+            with("/objects/1/axis", json!([0, 0, 0])),
+            &["objects[1].axis", "non-zero direction"],
+        ),
+        (
+            "zero-sided tube",
+            with("/objects/1/sides", json!(0)),
+            &["objects[1].sides", "from 3 to 64", "got 0"],
+        ),
+        (
+            "two-sided tube",
+            with("/objects/1/sides", json!(2)),
+            &["objects[1].sides", "from 3"],
+        ),
+        (
+            "fractional sides",
+            with("/objects/1/sides", json!(3.5)),
+            &["objects[1].sides", "whole number"],
+        ),
+        (
+            "10^6 × 10^6 image",
+            with("/image", json!({ "width": 1_000_000, "height": 1_000_000 })),
+            &["image.width", "16384", "1000000"],
+        ),
+        (
+            "too many pixels",
+            with("/image", json!({ "width": 16384, "height": 16384 })),
+            &["image", "67108864"],
+        ),
+        (
+            "negative size",
+            with("/image/height", json!(-24)),
+            &["image.height", "-24"],
+        ),
+        (
+            "spp = 0",
+            with("/render/spp", json!(0)),
+            &["render.spp", "from 1"],
+        ),
+        (
+            "unknown material",
+            with("/objects/0/material", json!("blue")),
+            &["objects[0].material", "\"blue\""],
+        ),
+        (
+            "albedo above 1",
+            with("/materials/green/albedo", json!([0.1, 1.5, 0.3])),
+            &["materials.green.albedo[1]", "in [0, 1]"],
+        ),
+        (
+            "negative kappa",
+            with("/materials/gold/kappa", json!([3.1, -2.7, 1.9])),
+            &["materials.gold.kappa[1]", "non-negative"],
+        ),
+        (
+            "wrong version",
+            with("/version", json!(2)),
+            &["version", "version 1"],
+        ),
+        (
+            "glass plane",
+            with(
+                "/materials/gold",
+                json!({ "type": "dielectric", "eta": 1.5 }),
+            ),
+            &["objects[1].material", "dielectric"],
+        ),
+        (
+            "unknown object type",
+            with("/objects/0/type", json!("cube")),
+            &["objects[0]", "unknown variant `cube`"],
+        ),
+    ];
+    for (name, text, needles) in cases {
+        let message = error(&text);
+        for needle in needles {
+            assert!(
+                message.contains(needle),
+                "{name}: {message:?} lacks {needle:?}"
+            );
+        }
+    }
+}
+
+#[test]
+fn a_missing_file_is_named() {
+    let err = scene::load(std::path::Path::new("no/such/scene.json")).unwrap_err();
+    assert!(matches!(err, SceneError::Io { .. }));
+    assert!(err.to_string().contains("no/such/scene.json"));
+}
