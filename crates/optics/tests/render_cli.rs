@@ -1,0 +1,283 @@
+//! `optics render` and `optics inspect` through the binary: outputs, the
+//! JSON record, thread-count independence, and bad scene files refused with
+//! the JSON path, a non-zero exit, no panic and no file written.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+use serde_json::Value;
+
+fn optics(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_optics"))
+        .args(args)
+        .output()
+        .expect("the optics binary runs")
+}
+
+fn scene(name: &str) -> String {
+    format!(
+        "{}/../../validation/scenes/{name}.json",
+        env!("CARGO_MANIFEST_DIR")
+    )
+}
+
+fn text(bytes: &[u8]) -> String {
+    String::from_utf8_lossy(bytes).into_owned()
+}
+
+fn render_small(scene_path: &str, png: &Path, extra: &[&str]) -> Output {
+    let png = png.to_str().unwrap();
+    let mut args = vec![
+        "render", scene_path, "-o", png, "--width", "32", "--height", "24",
+    ];
+    args.extend_from_slice(extra);
+    optics(&args)
+}
+
+#[test]
+fn render_writes_a_png_and_a_pfm_and_prints_a_summary() {
+    let dir = tempfile::tempdir().unwrap();
+    let png = dir.path().join("gold.png");
+    let out = render_small(&scene("gold_spheres"), &png, &[]);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let bytes = std::fs::read(&png).unwrap();
+    assert_eq!(&bytes[..8], b"\x89PNG\r\n\x1a\n");
+    let pfm = std::fs::read(png.with_extension("pfm")).unwrap();
+    assert!(pfm.starts_with(b"PF\n32 24\n-1.0\n"));
+    assert_eq!(pfm.len(), "PF\n32 24\n-1.0\n".len() + 32 * 24 * 12);
+    let summary = text(&out.stdout);
+    assert!(
+        summary.contains("32×24 whitted") && summary.contains("rays/s"),
+        "{summary}"
+    );
+    // Only the two images are left in the directory: no temporary files.
+    assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 2);
+}
+
+#[test]
+fn render_json_record_has_the_documented_fields() {
+    let dir = tempfile::tempdir().unwrap();
+    let png = dir.path().join("k.png");
+    let png_arg = png.to_str().unwrap();
+    let out = optics(&[
+        "--json",
+        "render",
+        &scene("kaleidoscope_lit"),
+        "-o",
+        png_arg,
+        "--width",
+        "32",
+        "--height",
+        "24",
+        "--integrator",
+        "path",
+        "--spp",
+        "2",
+        "--seed",
+        "5",
+        "--max-depth",
+        "4",
+        "--fresnel",
+        "schlick",
+    ]);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let record: Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(record["command"], "render");
+    assert_eq!(record["inputs"]["settings"]["integrator"], "path");
+    assert_eq!(record["inputs"]["settings"]["fresnel"], "schlick");
+    assert_eq!(record["inputs"]["settings"]["spp"], 2);
+    assert_eq!(record["unit"], "rays/s");
+    assert!(record["answer"]["rays_total"].as_u64().unwrap() >= 32 * 24 * 2);
+    assert!(record["answer"]["rays_per_second"].as_f64().unwrap() > 0.0);
+    assert_eq!(record["answer"]["png"], png_arg);
+    assert!(record["steps"].is_array());
+}
+
+#[test]
+fn render_is_identical_for_one_and_two_threads() {
+    let dir = tempfile::tempdir().unwrap();
+    let (a, b) = (dir.path().join("a.png"), dir.path().join("b.png"));
+    let flags = |t: &'static str| ["--integrator", "path", "--spp", "3", "--threads", t];
+    assert!(render_small(&scene("webgl_seven_spheres"), &a, &flags("1"))
+        .status
+        .success());
+    assert!(render_small(&scene("webgl_seven_spheres"), &b, &flags("2"))
+        .status
+        .success());
+    assert_eq!(
+        std::fs::read(a.with_extension("pfm")).unwrap(),
+        std::fs::read(b.with_extension("pfm")).unwrap()
+    );
+}
+
+#[test]
+fn course_integrator_refuses_glass_with_the_material_path() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("glass.json");
+    std::fs::write(
+        &file,
+        r#"{"version": 1, "image": {"width": 8, "height": 8}, "camera": {"type": "course_pinhole"},
+            "materials": {"glass": {"type": "dielectric", "eta": 1.5}},
+            "objects": [{"type": "sphere", "center": [0, 0, 4], "radius": 1, "material": "glass"}]}"#,
+    )
+    .unwrap();
+    let png = dir.path().join("out.png");
+    let out = render_small(file.to_str().unwrap(), &png, &["--integrator", "course"]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(
+        text(&out.stderr).contains("materials.glass"),
+        "{}",
+        text(&out.stderr)
+    );
+    assert!(!png.exists());
+}
+
+fn bad_scene(name: &str, edit: impl Fn(&mut Value)) -> (String, PathBuf) {
+    let mut value: Value =
+        serde_json::from_str(&std::fs::read_to_string(scene("kaleidoscope")).unwrap()).unwrap();
+    edit(&mut value);
+    (name.to_owned(), PathBuf::from(value.to_string()))
+}
+
+/// One case per line: the bad scene and the path its error must name.
+#[test]
+fn bad_scene_files_exit_non_zero_naming_the_json_path_without_panic_or_output() {
+    let dir = tempfile::tempdir().unwrap();
+    let cases: Vec<((String, PathBuf), &str)> = vec![
+        (
+            ("syntax".into(), PathBuf::from("{\"version\": 1,")),
+            "line 1",
+        ),
+        (
+            bad_scene("unknown field", |v| v["camera"]["zoom"] = 2.into()),
+            "camera.zoom: unknown field `zoom`",
+        ),
+        (
+            bad_scene("negative radius", |v| {
+                v["objects"][0]["radius"] = (-0.8).into()
+            }),
+            "objects[0].radius",
+        ),
+        (
+            bad_scene("zero direction", |v| {
+                v["lights"][0]["towards"] = serde_json::json!([0, 0, 0])
+            }),
+            "lights[0].towards",
+        ),
+        (
+            bad_scene("zero-sided tube", |v| v["objects"][3]["sides"] = 0.into()),
+            "objects[3].sides",
+        ),
+        (
+            bad_scene("huge image", |v| {
+                v["image"] = serde_json::json!({"width": 1_000_000, "height": 1_000_000})
+            }),
+            "image.width",
+        ),
+        (
+            bad_scene("spp 0", |v| v["render"]["spp"] = 0.into()),
+            "render.spp",
+        ),
+        (
+            (
+                "NaN".into(),
+                PathBuf::from(
+                    std::fs::read_to_string(scene("kaleidoscope"))
+                        .unwrap()
+                        .replacen("0.8", "NaN", 1),
+                ),
+            ),
+            "line",
+        ),
+    ];
+    for ((name, contents), needle) in cases {
+        let file = dir.path().join(format!("{}.json", name.replace(' ', "_")));
+        std::fs::write(&file, contents.to_str().unwrap()).unwrap();
+        let png = dir.path().join(format!("{}.png", name.replace(' ', "_")));
+        let out = optics(&[
+            "render",
+            file.to_str().unwrap(),
+            "-o",
+            png.to_str().unwrap(),
+        ]);
+        let stderr = text(&out.stderr);
+        assert_eq!(out.status.code(), Some(1), "{name}: {stderr}");
+        assert!(
+            stderr.contains(needle),
+            "{name}: {stderr:?} lacks {needle:?}"
+        );
+        assert!(!stderr.contains("panicked"), "{name}: {stderr}");
+        assert!(
+            !png.exists() && !png.with_extension("pfm").exists(),
+            "{name} wrote an image"
+        );
+        // The same through inspect.
+        let out = optics(&["--json", "inspect", file.to_str().unwrap()]);
+        assert_eq!(out.status.code(), Some(1), "{name}");
+        let record: Value = serde_json::from_slice(&out.stdout).unwrap();
+        assert!(record["error"].as_str().unwrap().contains(needle), "{name}");
+    }
+}
+
+#[test]
+fn zero_samples_and_absurd_sizes_on_the_command_line_are_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let png = dir.path().join("x.png");
+    for (flag, value) in [
+        ("--spp", "0"),
+        ("--width", "1000000"),
+        ("--threads", "0"),
+        ("--max-depth", "-1"),
+    ] {
+        let arg = format!("{flag}={value}");
+        let out = optics(&[
+            "render",
+            &scene("normals"),
+            "-o",
+            png.to_str().unwrap(),
+            &arg,
+        ]);
+        assert_eq!(out.status.code(), Some(2), "{flag} {value}");
+        assert!(text(&out.stderr).contains(flag), "{}", text(&out.stderr));
+    }
+    assert!(!png.exists());
+}
+
+#[test]
+fn inspect_reports_needs_and_measures_the_skipped_shadow_rays() {
+    let out = optics(&[
+        "--json",
+        "inspect",
+        &scene("blinn_phong"),
+        "--width",
+        "32",
+        "--height",
+        "24",
+    ]);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let record: Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(record["command"], "inspect");
+    let needs = &record["answer"]["needs"];
+    assert_eq!(needs["shadows"], false);
+    assert_eq!(needs["reflection_depth"], "none");
+    let skipped = record["answer"]["skipped"].as_array().unwrap();
+    let shadow = skipped.iter().find(|s| s["part"] == "shadow_rays").unwrap();
+    // One shadow ray per lit pixel of the sphere would have been cast.
+    assert!(shadow["extra_rays"].as_i64().unwrap() > 0);
+    assert_eq!(shadow["image_identical"], true);
+
+    let out = optics(&[
+        "inspect",
+        &scene("kaleidoscope"),
+        "--width",
+        "32",
+        "--height",
+        "24",
+    ]);
+    let report = text(&out.stdout);
+    assert!(
+        report.contains("reflection depth reachable: up to 11"),
+        "{report}"
+    );
+    assert!(report.contains("shadows possible: true"), "{report}");
+}
