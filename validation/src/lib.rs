@@ -26,6 +26,7 @@ pub mod check;
 pub mod colorimetry;
 pub mod laws;
 pub mod metals;
+pub mod mpmath;
 pub mod reference;
 pub mod report;
 pub mod speed;

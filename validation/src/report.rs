@@ -144,8 +144,13 @@ pub fn to_html(report: &Report, figures: &[String]) -> String {
         if let [spectral, rgb] = report.speed.as_slice() {
             let _ = writeln!(
                 h,
-                "</table>\n<p>The spectrum costs {:.1}× the three wavelengths (wall clock, this machine, one run).</p>",
-                spectral.ns_per_colour / rgb.ns_per_colour
+                "</table>\n<p>The spectrum costs {:.1}× the three wavelengths (wall clock, this machine, one run{}).</p>",
+                spectral.ns_per_colour / rgb.ns_per_colour,
+                if spectral.optimised {
+                    ""
+                } else {
+                    "; an unoptimised build: <code>cargo run --release -p optics -- validate</code> gives representative times"
+                }
             );
         } else {
             h.push_str("</table>\n");

@@ -22,6 +22,9 @@ pub struct Timing {
     pub ns_per_colour: f64,
     /// How many colours were timed.
     pub iterations: u64,
+    /// Whether the code was compiled with optimisations (times from an
+    /// unoptimised build say little about the trade).
+    pub optimised: bool,
 }
 
 /// The CIELAB colour of a metal at `cos_i` from its full spectrum: 85
@@ -48,6 +51,7 @@ fn time(method: &str, iterations: u64, mut f: impl FnMut(f64) -> colour::Lab) ->
         method: method.to_owned(),
         ns_per_colour: start.elapsed().as_nanos() as f64 / iterations as f64,
         iterations,
+        optimised: !cfg!(debug_assertions),
     }
 }
 

@@ -15,6 +15,7 @@ use crate::check::Check;
 use crate::colorimetry::{self, Colorimetry, ColourLaws};
 use crate::laws::{self, Laws, MitsubaLaws};
 use crate::metals::{self, MetalColour, MetalLaws, MetalsReference};
+use crate::mpmath::{self, FresnelMpmath, Laws64};
 use crate::reference::ReferenceError;
 use crate::speed::{self, Timing};
 
@@ -167,8 +168,9 @@ impl Report {
     }
 }
 
-/// The laws against Mitsuba and the exact values.
-pub struct LawChecks(pub Laws);
+/// The laws against the 50-digit references, Mitsuba and the exact values:
+/// the `f32` laws and the `f64` ones.
+pub struct LawChecks(pub Laws, pub Laws64);
 
 impl CheckKind for LawChecks {
     fn name(&self) -> &'static str {
@@ -176,6 +178,14 @@ impl CheckKind for LawChecks {
     }
 
     fn run(&self, context: &Context, report: &mut Report) -> Result<(), ReferenceError> {
+        let exact = FresnelMpmath::load(&context.reference_dir)?;
+        report.note_reference(&context.reference_dir, mpmath::FILE)?;
+        report
+            .checks
+            .push(mpmath::check_dielectric(&self.0, &self.1, &exact));
+        report
+            .checks
+            .push(mpmath::check_conductor(&self.0, &self.1, &exact));
         let reference = MitsubaLaws::load(&context.reference_dir)?;
         report.note_reference(&context.reference_dir, laws::FILE)?;
         report.checks.extend(laws::check_all(&self.0, &reference));
@@ -276,7 +286,7 @@ impl CheckKind for MetalChecks {
 /// The kinds of check `optics validate` runs, with the radiometry crate's laws.
 pub fn standard_kinds() -> Vec<Box<dyn CheckKind>> {
     vec![
-        Box::new(LawChecks(Laws::radiometry())),
+        Box::new(LawChecks(Laws::radiometry(), Laws64::radiometry())),
         Box::new(ColourChecks(ColourLaws::radiometry())),
         Box::new(MetalChecks(MetalLaws::radiometry())),
     ]

@@ -114,3 +114,29 @@ fn the_unbroken_laws_pass_the_same_checks() {
     let checks = laws::check_all(&Laws::radiometry(), &reference());
     assert!(checks.iter().all(Check::passed));
 }
+
+/// Schlick's approximation in place of the exact law: the shortcut passed
+/// off as the law is caught by the 50-digit check in both tiers.
+#[test]
+fn schlick_passed_off_as_the_exact_law_is_caught_by_the_50_digit_check() {
+    use validation::mpmath::{self, FresnelMpmath, Laws64};
+    fn schlick_as_exact(cos_i: f64, eta: f64) -> DielectricFresnel<f64> {
+        let mut f = fresnel::dielectric_polarized(cos_i, eta);
+        let r = fresnel::schlick_dielectric(cos_i, eta);
+        (f.r_s, f.r_p, f.t_s, f.t_p) = (r, r, 1.0 - r, 1.0 - r);
+        f
+    }
+    let exact = FresnelMpmath::load(&committed_dir()).expect("committed mpmath reference");
+    let broken = Laws64 {
+        dielectric: schlick_as_exact,
+        ..Laws64::radiometry()
+    };
+    let check = mpmath::check_dielectric(&Laws::radiometry(), &broken, &exact);
+    failures_of(&check);
+    assert!(
+        check.failures.iter().all(|f| f.starts_with("f64")),
+        "the f32 tier is untouched"
+    );
+    let unbroken = mpmath::check_dielectric(&Laws::radiometry(), &Laws64::radiometry(), &exact);
+    assert!(unbroken.passed(), "{:#?}", unbroken.failures);
+}

@@ -1,0 +1,251 @@
+//! The exact Fresnel laws against 50-digit references, in both precision
+//! tiers.
+//!
+//! Reference: `validation/reference/fresnel_mpmath.json` (schema
+//! `fresnel-reference/1`), written by `python-checks/fresnel_mpmath.py`:
+//! extremes included (grazing `cos θ = 1e-300`, within 1e-12 rad of the
+//! critical angle, `η = 1 ± 1e-12`, `κ = 1e3`).
+//!
+//! Tolerance: [`BOUND_ULPS`] ulps of the exact value in the tier's own
+//! precision. Every input is exactly representable, so a correctly rounded
+//! law would be within 0.5 ulp; each quantity is a handful of roundings from
+//! that (a square root, a few products and quotients, a sum carried in twice
+//! the precision). This is the bound of the workspace test
+//! `tests/fresnel_reference.rs`, here as a harness check so that the report
+//! shows it and a broken law injected through [`Laws`] / [`Laws64`] fails it.
+
+use radiometry::fresnel::{self, ConductorFresnel, DielectricFresnel};
+use serde::Deserialize;
+
+use crate::check::{ulp_f32, Check};
+use crate::laws::Laws;
+
+/// The bound, in ulps of the tier.
+pub const BOUND_ULPS: f64 = 8.0;
+
+/// The file name of the reference.
+pub const FILE: &str = "fresnel_mpmath.json";
+/// Its schema.
+pub const SCHEMA: &str = "fresnel-reference/1";
+
+/// The `f64` laws under test (the `f32` ones are in [`Laws`]).
+#[derive(Clone, Copy)]
+pub struct Laws64 {
+    /// Exact dielectric Fresnel.
+    pub dielectric: fn(f64, f64) -> DielectricFresnel<f64>,
+    /// Exact conductor Fresnel.
+    pub conductor: fn(f64, f64, f64) -> ConductorFresnel<f64>,
+}
+
+impl Laws64 {
+    /// The radiometry crate's.
+    pub fn radiometry() -> Self {
+        Self {
+            dielectric: fresnel::dielectric_polarized,
+            conductor: fresnel::conductor_polarized,
+        }
+    }
+}
+
+/// A value carried as the unevaluated sum `hi + lo` of two doubles.
+#[derive(Clone, Copy, Debug, Deserialize)]
+pub struct Exact(pub f64, pub f64);
+
+/// `fresnel_mpmath.json`.
+#[derive(Clone, Debug, Deserialize)]
+pub struct FresnelMpmath {
+    /// mpmath's version.
+    pub mpmath_version: String,
+    /// Dielectric cases per tier.
+    pub dielectric: Tiers<DielectricCase>,
+    /// Conductor cases per tier.
+    pub conductor: Tiers<ConductorCase>,
+}
+
+/// Cases whose inputs are exact in `f64`, and in `f32`.
+#[derive(Clone, Debug, Deserialize)]
+pub struct Tiers<C> {
+    /// Inputs exact in `f64`.
+    pub f64: Vec<C>,
+    /// Inputs exact in `f32`.
+    pub f32: Vec<C>,
+}
+
+/// One dielectric case.
+#[derive(Clone, Debug, Deserialize)]
+pub struct DielectricCase {
+    /// Where on the grid.
+    pub label: String,
+    /// Signed cosine.
+    pub cos_i: f64,
+    /// `n_inside / n_outside`.
+    pub eta: f64,
+    /// Total internal reflection.
+    pub tir: bool,
+    /// Exact R_s.
+    pub r_s: Exact,
+    /// Exact R_p.
+    pub r_p: Exact,
+    /// Exact R.
+    pub r: Exact,
+    /// Exact T = 1 − R.
+    pub t: Exact,
+}
+
+/// One conductor case.
+#[derive(Clone, Debug, Deserialize)]
+pub struct ConductorCase {
+    /// Where on the grid.
+    pub label: String,
+    /// Cosine.
+    pub cos_i: f64,
+    /// Real index.
+    pub n: f64,
+    /// Extinction coefficient.
+    pub kappa: f64,
+    /// Exact R_s.
+    pub r_s: Exact,
+    /// Exact R_p.
+    pub r_p: Exact,
+    /// Exact R.
+    pub r: Exact,
+}
+
+impl FresnelMpmath {
+    /// Loads the reference from `dir`.
+    pub fn load(dir: &std::path::Path) -> Result<Self, crate::ReferenceError> {
+        crate::reference::load(dir, FILE, SCHEMA)
+    }
+}
+
+/// The spacing of doubles at `x`, down to the smallest subnormal. Built from
+/// bits: `2f64.powi(-1074)` would overflow `2^1074` on the way and give 0.
+fn ulp_f64(x: f64) -> f64 {
+    let biased = ((x.abs().to_bits() >> 52) & 0x7ff) as i64;
+    if biased > 52 {
+        f64::from_bits(((biased - 52) as u64) << 52)
+    } else {
+        // Subnormal spacing (or normal values whose spacing is subnormal).
+        f64::from_bits(1u64 << (biased - 1).max(0))
+    }
+}
+
+fn compare(check: &mut Check, tier: &str, quantity: &str, label: &str, got: f64, exact: Exact) {
+    let ulp = if tier == "f32" {
+        ulp_f32(exact.0)
+    } else {
+        ulp_f64(exact.0)
+    };
+    let err = ((got - exact.0) - exact.1).abs();
+    let ulps = if err.is_nan() {
+        f64::INFINITY
+    } else {
+        err / ulp
+    };
+    check.measure(&format!("{tier} {quantity} (ulps)"), ulps, label);
+    if !(ulps <= BOUND_ULPS) {
+        check.fail(format!(
+            "{tier} {quantity} at {label}: got {got:e}, exact {:e} ({ulps:.1} ulps)",
+            exact.0
+        ));
+    }
+}
+
+fn widen(f: DielectricFresnel<f32>) -> [f64; 4] {
+    [f.r_s, f.r_p, f.reflectance(), f.transmittance()].map(f64::from)
+}
+
+/// Dielectric R_s, R_p, R, T in both tiers against the 50-digit values.
+pub fn check_dielectric(laws: &Laws, laws64: &Laws64, reference: &FresnelMpmath) -> Check {
+    let mut check = Check::new(
+        "laws.mpmath.fresnel_dielectric",
+        "Dielectric Fresnel R_s, R_p, R, T in f64 and f32, extremes included",
+        &format!("mpmath {}, 50 digits", reference.mpmath_version),
+        &format!(
+            "within {BOUND_ULPS} ulps of the tier: a handful of roundings from correctly rounded"
+        ),
+    );
+    let tiers: [(&str, &Vec<DielectricCase>); 2] = [
+        ("f64", &reference.dielectric.f64),
+        ("f32", &reference.dielectric.f32),
+    ];
+    for (tier, cases) in tiers {
+        for case in cases {
+            check.cases += 1;
+            let (got, tir) = if tier == "f64" {
+                let f = (laws64.dielectric)(case.cos_i, case.eta);
+                (
+                    [f.r_s, f.r_p, f.reflectance(), f.transmittance()],
+                    f.is_total_internal_reflection(),
+                )
+            } else {
+                let f = (laws.dielectric)(case.cos_i as f32, case.eta as f32);
+                (widen(f), f.is_total_internal_reflection())
+            };
+            if tir != case.tir {
+                check.fail(format!(
+                    "{tier} at {}: total internal reflection {tir} but exactly {}",
+                    case.label, case.tir
+                ));
+            }
+            let exact = [case.r_s, case.r_p, case.r, case.t];
+            for ((name, g), e) in ["R_s", "R_p", "R", "T"].iter().zip(got).zip(exact) {
+                compare(&mut check, tier, name, &case.label, g, e);
+            }
+        }
+    }
+    check
+}
+
+/// Conductor R_s, R_p, R in both tiers against the 50-digit values.
+pub fn check_conductor(laws: &Laws, laws64: &Laws64, reference: &FresnelMpmath) -> Check {
+    let mut check = Check::new(
+        "laws.mpmath.fresnel_conductor",
+        "Conductor Fresnel R_s, R_p, R in f64 and f32, extremes included",
+        &format!("mpmath {}, 50 digits", reference.mpmath_version),
+        &format!("within {BOUND_ULPS} ulps of the tier"),
+    );
+    let tiers: [(&str, &Vec<ConductorCase>); 2] = [
+        ("f64", &reference.conductor.f64),
+        ("f32", &reference.conductor.f32),
+    ];
+    for (tier, cases) in tiers {
+        for case in cases {
+            check.cases += 1;
+            let got = if tier == "f64" {
+                let f = (laws64.conductor)(case.cos_i, case.n, case.kappa);
+                [f.r_s, f.r_p, f.reflectance()]
+            } else {
+                let f = (laws.conductor)(case.cos_i as f32, case.n as f32, case.kappa as f32);
+                [f.r_s, f.r_p, f.reflectance()].map(f64::from)
+            };
+            let exact = [case.r_s, case.r_p, case.r];
+            for ((name, g), e) in ["R_s", "R_p", "R"].iter().zip(got).zip(exact) {
+                compare(&mut check, tier, name, &case.label, g, e);
+            }
+        }
+    }
+    check
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ulp_f64_is_the_double_spacing() {
+        assert_eq!(ulp_f64(1.0), f64::EPSILON);
+        assert_eq!(ulp_f64(0.75), f64::EPSILON / 2.0);
+        assert_eq!(ulp_f64(0.0), f64::from_bits(1));
+        assert_eq!(ulp_f64(f64::MIN_POSITIVE), f64::from_bits(1));
+        assert_eq!(ulp_f64(1e-300), 1e-300f64.next_up() - 1e-300);
+        for x in [
+            f64::from_bits(1 << 52),
+            f64::from_bits(60 << 52),
+            5.8e-300,
+            0.04,
+        ] {
+            assert_eq!(ulp_f64(x), x.next_up() - x, "{x:e}");
+        }
+    }
+}
