@@ -31,7 +31,8 @@ formulas, directions from the vector form of the law of reflection and of
 Snell's law, both in mpmath at 50 digits, rounded once to double. Schlick's
 approximation ``F0 + (1 - F0)(1 - cos)^5`` is tabulated the same way (Mitsuba
 has no Python binding for it): it is the definition an implementation of the
-approximation must reproduce.
+approximation must reproduce. For the report's figures, Mitsuba's
+reflectance of nine materials is also tabulated every degree (``curves``).
 """
 import json
 import os
