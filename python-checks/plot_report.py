@@ -20,6 +20,15 @@ import matplotlib.pyplot as plt  # noqa: E402
 SCHEMA = "validation-report/1"
 
 
+def _save(fig, path):
+    """Saves under a temporary name and renames, so no partial PNG is left behind."""
+    tmp = path + ".tmp"
+    fig.savefig(tmp, dpi=90, format="png")
+    plt.close(fig)
+    os.replace(tmp, path)
+    return path
+
+
 def _grid(n):
     cols = 3
     return math.ceil(n / cols), cols
@@ -43,9 +52,7 @@ def fresnel_curves(report, out):
     axes.flat[0].legend(fontsize=8)
     fig.tight_layout()
     path = os.path.join(out, "fresnel_curves.png")
-    fig.savefig(path, dpi=90)
-    plt.close(fig)
-    return path
+    return _save(fig, path)
 
 
 def fresnel_errors(report, out):
@@ -67,9 +74,7 @@ def fresnel_errors(report, out):
     axes.flat[0].legend(fontsize=8)
     fig.tight_layout()
     path = os.path.join(out, "fresnel_errors.png")
-    fig.savefig(path, dpi=90)
-    plt.close(fig)
-    return path
+    return _save(fig, path)
 
 
 def metal_swatches(report, out):
@@ -98,9 +103,7 @@ def metal_swatches(report, out):
             side.set_visible(False)
     fig.subplots_adjust(left=0.3, right=0.98, top=0.95, bottom=0.04, hspace=0.45)
     path = os.path.join(out, "metal_swatches.png")
-    fig.savefig(path, dpi=90)
-    plt.close(fig)
-    return path
+    return _save(fig, path)
 
 
 def delta_e_table(report, out):
@@ -124,9 +127,7 @@ def delta_e_table(report, out):
     ax.legend(fontsize=7)
     fig.tight_layout()
     path = os.path.join(out, "metal_delta_e.png")
-    fig.savefig(path, dpi=90)
-    plt.close(fig)
-    return path
+    return _save(fig, path)
 
 
 def main(report_path, out):

@@ -17,7 +17,7 @@ use crate::Ui;
 
 #[derive(clap::Args, Debug)]
 #[command(after_help = "Examples:
-  optics validate                      regenerate every reference with the pinned tools, check, report
+  optics validate                      regenerate the references with the pinned tools, check
   optics validate --quick              the committed references, no regeneration (CI runs this)
   optics validate --quick --no-python  no Python at all: no set-up, no figures
   optics --json validate --quick --out /tmp/validation
@@ -186,6 +186,24 @@ pub fn run(args: &ValidateArgs, ui: &Ui) -> anyhow::Result<()> {
         for failure in check.failures.iter().take(5) {
             println!("      {failure}");
         }
+    }
+    if let [spectral, rgb] = report.speed.as_slice() {
+        println!(
+            "{}",
+            say!(
+                lang,
+                "gold's colour: {:.2} µs from 85 wavelengths, {:.2} µs from three ({:.1}×{})",
+                "az arany színe: {:.2} µs 85 hullámhosszból, {:.2} µs háromból ({:.1}×{})",
+                spectral.ns_per_colour / 1e3,
+                rgb.ns_per_colour / 1e3,
+                spectral.ns_per_colour / rgb.ns_per_colour,
+                if spectral.optimised {
+                    ""
+                } else {
+                    lang.pick(", unoptimised build", ", optimalizálatlan fordítás")
+                }
+            )
+        );
     }
     println!(
         "{}",
