@@ -65,6 +65,8 @@ pub enum Integrator {
 pub enum Fresnel {
     Exact,
     Schlick,
+    /// The course shader's reversed form, for measuring that erratum alone.
+    Course,
 }
 
 /// Loads the scene and settles the settings: flags over the scene's own.
@@ -102,6 +104,7 @@ pub fn run(args: &RenderArgs, ui: &Ui) -> anyhow::Result<()> {
         settings.fresnel = match f {
             Fresnel::Exact => FresnelModel::Exact,
             Fresnel::Schlick => FresnelModel::Schlick,
+            Fresnel::Course => FresnelModel::Course,
         };
     }
     settings.spp = args.spp.unwrap_or(settings.spp);

@@ -300,6 +300,10 @@ impl Tracer<'_> {
         Vec3::from_array(match self.settings.fresnel {
             FresnelModel::Exact => fresnel::conductor_rgb(cos_i, n, kappa),
             FresnelModel::Schlick => fresnel::schlick_rgb(cos_i, fresnel::f0_rgb(n, kappa)),
+            FresnelModel::Course => {
+                let f0 = fresnel::f0_rgb(n, kappa);
+                core::array::from_fn(|c| course::fresnel_000_glsl(f0[c], cos_i))
+            }
         })
     }
 
@@ -312,6 +316,11 @@ impl Tracer<'_> {
             ),
             FresnelModel::Schlick => {
                 let r = fresnel::schlick_dielectric(cos_i, eta);
+                (r, 1.0 - r)
+            }
+            // The course has no glass; its formula with the incident cosine.
+            FresnelModel::Course => {
+                let r = course::fresnel_000_glsl(fresnel::f0(eta, 0.0), cos_i.abs());
                 (r, 1.0 - r)
             }
         }

@@ -303,6 +303,10 @@ pub enum FresnelModel {
     Exact,
     /// Schlick's approximation (`radiometry::fresnel::schlick_rgb`, `schlick_dielectric`).
     Schlick,
+    /// The course shader's reversed form, `F0 + (1 − F0) cos⁵θ`
+    /// (`radiometry::course::fresnel_000_glsl`): isolates that one erratum
+    /// in an otherwise physical render.
+    Course,
 }
 
 /// How a secondary ray's origin is moved off the surface it leaves.
