@@ -1,0 +1,131 @@
+//! The harness end to end: every kind of check against the committed
+//! references, the report it writes, a broken law reported as a failed
+//! check, and broken reference files refused with the file and field named.
+
+use std::path::Path;
+
+use glam::Vec3;
+use radiometry::specular::{self, Refraction};
+use validation::colorimetry::ColourLaws;
+use validation::laws::Laws;
+use validation::metals::MetalLaws;
+use validation::mpmath::Laws64;
+use validation::reference::committed_dir;
+use validation::report::{to_html, to_json};
+use validation::suite::{self, CheckKind, ColourChecks, Context, LawChecks, MetalChecks};
+
+fn context(dir: &Path) -> Context {
+    Context {
+        reference_dir: dir.to_owned(),
+        quick: true,
+    }
+}
+
+fn kinds(laws: Laws) -> Vec<Box<dyn CheckKind>> {
+    vec![
+        Box::new(LawChecks(laws, Laws64::radiometry())),
+        Box::new(ColourChecks(ColourLaws::radiometry())),
+        Box::new(MetalChecks(MetalLaws::radiometry())),
+    ]
+}
+
+#[test]
+fn every_check_passes_against_the_committed_references() {
+    let mut seen = Vec::new();
+    let report = suite::run(
+        &suite::standard_kinds(),
+        &context(&committed_dir()),
+        "test",
+        |i, name| seen.push((i, name.to_owned())),
+    )
+    .expect("committed references load");
+    assert_eq!(seen.len(), 3, "one progress call per kind: {seen:?}");
+    assert!(report.passed(), "{:#?}", report.checks);
+    assert_eq!(report.summary.failed, 0);
+    assert_eq!(report.summary.checks, report.checks.len());
+    assert_eq!(report.references.len(), 4, "{:?}", report.references.keys());
+    assert_eq!(report.fresnel_curves.len(), 9);
+    assert!(report
+        .fresnel_curves
+        .iter()
+        .all(|c| c.exact.len() == 91 && c.mitsuba.len() == 91));
+    assert_eq!(report.speed.len(), 2);
+    // The report is JSON the figure script can read.
+    let json: serde_json::Value = serde_json::from_str(&to_json(&report)).unwrap();
+    assert_eq!(json["schema"], "validation-report/1");
+}
+
+fn refract_normal_flipped(wi: Vec3, n: Vec3, eta: f32) -> Option<Refraction<Vec3>> {
+    specular::refract(wi, -n, eta)
+}
+
+#[test]
+fn a_broken_law_fails_its_check_in_the_report() {
+    let broken = Laws {
+        refract: refract_normal_flipped,
+        ..Laws::radiometry()
+    };
+    let report = suite::run(
+        &kinds(broken),
+        &context(&committed_dir()),
+        "test",
+        |_, _| {},
+    )
+    .expect("committed references load");
+    assert!(!report.passed());
+    let failed: Vec<_> = report
+        .checks
+        .iter()
+        .filter(|c| !c.passed())
+        .map(|c| c.id.as_str())
+        .collect();
+    assert_eq!(failed, ["laws.mitsuba.directions"]);
+    assert_eq!(report.summary.failed, 1);
+    let html = to_html(&report, &[]);
+    assert!(
+        html.contains("FAIL") && html.contains("1 failed"),
+        "the page says so"
+    );
+}
+
+#[test]
+fn a_malformed_reference_is_refused_naming_the_file_and_field() {
+    let dir = tempfile::tempdir().unwrap();
+    for name in [
+        "fresnel_mpmath.json",
+        "mitsuba_laws.json",
+        "colorimetry.json",
+        "metals.json",
+    ] {
+        std::fs::copy(committed_dir().join(name), dir.path().join(name)).unwrap();
+    }
+    let path = dir.path().join("mitsuba_laws.json");
+    let text = std::fs::read_to_string(&path).unwrap();
+    let broken = text.replacen("\"f\": ", "\"f\": \"not a number\", \"was\": ", 1);
+    std::fs::write(&path, broken).unwrap();
+    let err = suite::run(
+        &suite::standard_kinds(),
+        &context(dir.path()),
+        "test",
+        |_, _| {},
+    )
+    .unwrap_err();
+    let message = err.to_string();
+    assert!(
+        message.contains("mitsuba_laws.json") && message.contains("dielectric[0].mitsuba.f"),
+        "{message}"
+    );
+}
+
+#[test]
+fn a_missing_reference_is_named() {
+    let dir = tempfile::tempdir().unwrap();
+    let err = suite::run(
+        &suite::standard_kinds(),
+        &context(dir.path()),
+        "test",
+        |_, _| {},
+    )
+    .unwrap_err();
+    assert!(err.to_string().contains("fresnel_mpmath.json"), "{err}");
+}
