@@ -50,6 +50,15 @@ fn render_writes_a_png_and_a_pfm_and_prints_a_summary() {
         summary.contains("32×24 whitted") && summary.contains("rays/s"),
         "{summary}"
     );
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt;
+        let mode = std::fs::metadata(&png).unwrap().permissions().mode() & 0o777;
+        assert_eq!(
+            mode, 0o644,
+            "an ordinary file, not the temporary file's 0600"
+        );
+    }
     // Only the two images are left in the directory: no temporary files.
     assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 2);
 }
