@@ -106,6 +106,27 @@ def metal_swatches(report, out):
     return _save(fig, path)
 
 
+def metal_spectra(report, out):
+    spectra = report["metal_spectra"]
+    metals = list(dict.fromkeys(s["metal"] for s in spectra))
+    rows, cols = math.ceil(len(metals) / 2), 2
+    fig, axes = plt.subplots(rows, cols, figsize=(11, 3.4 * rows), squeeze=False)
+    for ax, metal in zip(axes.flat, metals):
+        for i, s in enumerate(x for x in spectra if x["metal"] == metal):
+            colour = plt.cm.viridis(i / 5)
+            ax.plot(s["wavelength_nm"], s["exact"], "-", color=colour, label=f"{s['angle_deg']:g}° exact")
+            ax.plot(s["wavelength_nm"], s["schlick"], "--", color=colour, label=f"{s['angle_deg']:g}° Schlick")
+        ax.set_title(f"{metal}: reflectance spectrum", fontsize=10)
+        ax.set_xlabel("wavelength (nm)")
+        ax.set_ylabel("reflectance")
+        ax.set_xlim(360, 780)
+    for ax in list(axes.flat)[len(metals):]:
+        ax.axis("off")
+    axes.flat[0].legend(fontsize=6, ncol=2)
+    fig.tight_layout()
+    return _save(fig, os.path.join(out, "metal_spectra.png"))
+
+
 def delta_e_table(report, out):
     rows = report["metal_delta_e"]
     metals = list(dict.fromkeys(r["metal"] for r in rows))
@@ -139,6 +160,8 @@ def main(report_path, out):
     drawn = []
     if report["fresnel_curves"]:
         drawn += [fresnel_curves(report, out), fresnel_errors(report, out)]
+    if report.get("metal_spectra"):
+        drawn.append(metal_spectra(report, out))
     if report["metal_colours"]:
         drawn += [metal_swatches(report, out), delta_e_table(report, out)]
     for path in drawn:

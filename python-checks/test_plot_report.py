@@ -14,6 +14,8 @@ def tiny_report():
     return {"schema": "validation-report/1",
             "fresnel_curves": [{"label": "glass, from outside", "angle_deg": angles, "exact": [0.04, 0.05, 0.9],
                                 "schlick": [0.04, 0.045, 0.95], "mitsuba": [0.04, 0.05, 0.9]}],
+            "metal_spectra": [{"metal": "gold", "angle_deg": 0.0, "wavelength_nm": [400.0, 500.0, 600.0],
+                               "exact": [0.4, 0.5, 0.9], "schlick": [0.4, 0.5, 0.9]}],
             "metal_colours": [{"metal": "gold", "angle_deg": a, "method": m, "srgb": [1.0, 0.9, 0.6],
                                "lab": [90.0, 1.0, 38.0], "delta_e_2000": 0.0 if m.startswith("spectral") else 5.0}
                               for a in angles for m in ("spectral (exact)", "course RGB")],
@@ -25,7 +27,8 @@ def test_every_figure_is_drawn(tmp_path, capsys):
     report.write_text(json.dumps(tiny_report()))
     plot_report.main(str(report), str(tmp_path / "figures"))
     listed = capsys.readouterr().out.split()
-    assert listed == ["fresnel_curves.png", "fresnel_errors.png", "metal_swatches.png", "metal_delta_e.png"]
+    assert listed == ["fresnel_curves.png", "fresnel_errors.png", "metal_spectra.png", "metal_swatches.png",
+                      "metal_delta_e.png"]
     for name in listed:
         assert (tmp_path / "figures" / name).read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
 

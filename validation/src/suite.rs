@@ -18,6 +18,7 @@ use crate::metals::{self, MetalColour, MetalLaws, MetalsReference};
 use crate::mpmath::{self, FresnelMpmath, Laws64};
 use crate::reference::ReferenceError;
 use crate::speed::{self, Timing};
+use radiometry::spectrum::{self, SAMPLES};
 
 /// The schema of `report.json`.
 pub const REPORT_SCHEMA: &str = "validation-report/1";
@@ -57,6 +58,8 @@ pub struct Report {
     pub checks: Vec<Check>,
     /// Reflectance against angle per material: exact, Schlick, Mitsuba.
     pub fresnel_curves: Vec<FresnelCurve>,
+    /// Each metal's reflectance spectrum at each angle: exact and Schlick.
+    pub metal_spectra: Vec<MetalSpectrum>,
     /// Every metal colour by every method.
     pub metal_colours: Vec<MetalColour>,
     /// The worst CIEDE2000 of each shortcut per metal.
@@ -109,6 +112,21 @@ pub struct FresnelCurve {
     pub mitsuba: Vec<f64>,
 }
 
+/// One metal's reflectance spectrum at one angle, on the CIE grid.
+#[derive(Clone, Debug, Serialize)]
+pub struct MetalSpectrum {
+    /// The metal.
+    pub metal: String,
+    /// Angle of incidence, degrees.
+    pub angle_deg: f64,
+    /// Wavelengths, nm.
+    pub wavelength_nm: Vec<f64>,
+    /// The exact conductor law at the measured `n, κ`.
+    pub exact: Vec<f64>,
+    /// Schlick's approximation from the spectral F0.
+    pub schlick: Vec<f64>,
+}
+
 /// The worst colour error of one shortcut for one metal.
 #[derive(Clone, Debug, Serialize)]
 pub struct WorstDeltaE {
@@ -133,6 +151,7 @@ impl Report {
             references: BTreeMap::new(),
             checks: Vec::new(),
             fresnel_curves: Vec::new(),
+            metal_spectra: Vec::new(),
             metal_colours: Vec::new(),
             metal_delta_e: Vec::new(),
             speed: Vec::new(),
@@ -271,6 +290,7 @@ impl CheckKind for MetalChecks {
             })
             .collect();
         report.metal_colours = rows;
+        report.metal_spectra = metal_spectra(&self.0, &reference);
         let iterations = if context.quick { 20_000 } else { 200_000 };
         if let Some(gold) = reference.metals.iter().find(|m| m.name == "gold") {
             report.speed.extend(
@@ -281,6 +301,30 @@ impl CheckKind for MetalChecks {
         }
         Ok(())
     }
+}
+
+/// Every metal's exact and Schlick reflectance spectra at the reference angles.
+pub fn metal_spectra(laws: &MetalLaws, reference: &MetalsReference) -> Vec<MetalSpectrum> {
+    let wavelength_nm: Vec<f64> = (0..SAMPLES).map(spectrum::wavelength_nm).collect();
+    let mut out = Vec::new();
+    for metal in &reference.metals {
+        let Some(index) = metal.index_on_grid() else {
+            continue;
+        };
+        for angle in &metal.angles {
+            out.push(MetalSpectrum {
+                metal: metal.name.clone(),
+                angle_deg: angle.angle_deg,
+                wavelength_nm: wavelength_nm.clone(),
+                exact: laws.spectrum(&index, angle.cos_i).to_vec(),
+                schlick: index
+                    .iter()
+                    .map(|&(n, k)| (laws.schlick)(angle.cos_i, (laws.f0)(n, k)))
+                    .collect(),
+            });
+        }
+    }
+    out
 }
 
 /// The kinds of check `optics validate` runs, with the radiometry crate's laws.
