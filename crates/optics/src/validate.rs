@@ -69,7 +69,11 @@ pub fn run(args: &ValidateArgs, ui: &Ui) -> anyhow::Result<()> {
     }
     std::fs::create_dir_all(&out)
         .with_context(|| format!("--out {}: cannot create the directory", out.display()))?;
-    let command_line = std::env::args().collect::<Vec<_>>().join(" ");
+    // The command as typed, by the program's name rather than its build path.
+    let command_line = std::iter::once("optics".to_owned())
+        .chain(std::env::args().skip(1))
+        .collect::<Vec<_>>()
+        .join(" ");
 
     let python = if args.no_python {
         None
