@@ -59,7 +59,7 @@ pub fn run(args: &InspectArgs, ui: &Ui) -> anyhow::Result<()> {
 
     // Each skipped part switched back on alone, then all together.
     let mut parts: Vec<(&str, Machinery)> = Vec::new();
-    if !lean.shadow_rays {
+    if !lean.shadow_rays && needs.lights.iter().any(|l| l.used) {
         parts.push((
             "shadow_rays",
             Machinery {
@@ -90,6 +90,10 @@ pub fn run(args: &InspectArgs, ui: &Ui) -> anyhow::Result<()> {
         parts.push(("all", everything.clone()));
     }
     let lang = ui.lang;
+    let yes_no = |b: bool| {
+        lang.pick(if b { "yes" } else { "no" }, if b { "igen" } else { "nem" })
+            .to_owned()
+    };
     let mut costs = Vec::new();
     let mut lines = Vec::new();
     for (name, machinery) in &parts {
@@ -105,7 +109,7 @@ pub fn run(args: &InspectArgs, ui: &Ui) -> anyhow::Result<()> {
             extra_rays,
             100.0 * extra_rays as f64 / base.rays.total().max(1) as f64,
             extra_seconds,
-            identical
+            yes_no(identical)
         ));
         costs.push(json!({
             "part": name,
@@ -136,30 +140,39 @@ pub fn run(args: &InspectArgs, ui: &Ui) -> anyhow::Result<()> {
             "elérhető tükrözési mélység: {}",
             depth
         ),
-        say!(lang, "refraction: {}", "fénytörés: {}", needs.refraction),
+        say!(
+            lang,
+            "refraction: {}",
+            "fénytörés: {}",
+            yes_no(needs.refraction)
+        ),
         say!(
             lang,
             "conductors (complex Fresnel): {}",
             "fémek (komplex Fresnel): {}",
-            needs.conductors
+            yes_no(needs.conductors)
         ),
         say!(
             lang,
             "surfaces shaded from lights: {}",
             "fényforrásokkal árnyalt felületek: {}",
-            needs.rough_surfaces
+            yes_no(needs.rough_surfaces)
         ),
         say!(
             lang,
             "shadows possible: {}",
             "lehet árnyék: {}",
-            needs.shadows
+            yes_no(needs.shadows)
         ),
         say!(
             lang,
             "lights used: {}",
             "használt fények: {}",
-            lights.join(", ")
+            if lights.is_empty() {
+                lang.pick("none", "nincs").to_owned()
+            } else {
+                lights.join(", ")
+            }
         ),
         say!(
             lang,

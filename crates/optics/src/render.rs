@@ -124,6 +124,19 @@ pub fn run(args: &RenderArgs, ui: &Ui) -> anyhow::Result<()> {
         );
     }
 
+    // Refuse an unwritable destination before spending the render on it.
+    let dir = match png.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d,
+        _ => Path::new("."),
+    };
+    if !dir.is_dir() {
+        anyhow::bail!(
+            "--output {}: the directory {} does not exist",
+            png.display(),
+            dir.display()
+        );
+    }
+
     let bar = std::io::stderr().is_terminal().then(|| {
         let bar = indicatif::ProgressBar::new(scene.height as u64);
         bar.set_style(
@@ -206,11 +219,19 @@ pub(crate) fn steps(
 ) -> Vec<String> {
     let mut steps = Vec::new();
     if !machinery.shadow_rays {
-        steps.push(say!(
-            lang,
-            "shadow rays skipped: no object can block a light",
-            "árnyéksugarak kihagyva: semmi sem takarhatja el a fényt"
-        ));
+        steps.push(if needs.lights.iter().any(|l| l.used) {
+            say!(
+                lang,
+                "shadow rays skipped: no object can block a light",
+                "árnyéksugarak kihagyva: semmi sem takarhatja el a fényt"
+            )
+        } else {
+            say!(
+                lang,
+                "shadow rays skipped: no light is used",
+                "árnyéksugarak kihagyva: nincs használt fény"
+            )
+        });
     }
     for light in needs.lights.iter().filter(|l| !l.used) {
         steps.push(say!(

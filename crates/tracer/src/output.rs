@@ -90,7 +90,22 @@ pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), OutputError> {
         Some(d) if !d.as_os_str().is_empty() => d,
         _ => Path::new("."),
     };
-    let mut temp = tempfile::NamedTempFile::new_in(dir).map_err(io)?;
+    if !dir.is_dir() {
+        return Err(io(std::io::Error::new(
+            std::io::ErrorKind::NotFound,
+            format!("the directory {} does not exist", dir.display()),
+        )));
+    }
+    let mut temp = tempfile::NamedTempFile::new_in(dir).map_err(|e| {
+        io(std::io::Error::new(
+            e.kind(),
+            e.to_string()
+                .split(" at path ")
+                .next()
+                .unwrap_or_default()
+                .to_owned(),
+        ))
+    })?;
     // Temporary files are private (0600); an image is an ordinary file.
     #[cfg(unix)]
     {

@@ -432,3 +432,49 @@ fn course_integrator_uses_the_course_fresnel_and_whitted_the_exact_law() {
         "Schlick is exact head-on"
     );
 }
+
+/// A glass sphere in a uniform sky (a "white furnace"): it neither absorbs
+/// nor emits, so every pixel must show the sky. The path tracer's weights
+/// are exactly 1 per path (the Fresnel choice cancels R and T; `1/η²` in and
+/// `η²` out cancel), so it matches up to f32 rounding; Whitted's branches
+/// sum to the sky less what falls past `max_depth` or under the cutoff.
+#[test]
+fn glass_sphere_in_a_uniform_sky_is_invisible() {
+    let scene = parse(json!({
+        "version": 1,
+        "image": { "width": 24, "height": 18 },
+        "camera": { "type": "course_pinhole" },
+        "background": [0.5, 0.5, 0.5],
+        "materials": { "glass": { "type": "dielectric", "eta": 1.5 } },
+        "objects": [ { "type": "sphere", "center": [0, 0, 3], "radius": 1.2, "material": "glass" } ]
+    }));
+    for fresnel in [FresnelModel::Exact, FresnelModel::Schlick] {
+        let path = Settings {
+            spp: 4,
+            max_depth: 64,
+            fresnel,
+            ..settings(IntegratorKind::Path)
+        };
+        for p in render_with(&scene, &path, None).pixels {
+            // A few dozen f32 products along a path: relative 1e-5.
+            assert!(
+                (p - Vec3::splat(0.5)).abs().max_element() < 5e-6,
+                "{fresnel:?} path: {p}"
+            );
+        }
+        let whitted = Settings {
+            max_depth: 12,
+            throughput_cutoff: 1e-4,
+            fresnel,
+            ..settings(IntegratorKind::Whitted)
+        };
+        for p in render_with(&scene, &whitted, None).pixels {
+            // Lost: branches under 1e-4 of weight and past 12 bounces; a
+            // sphere traps no light, so well under 1 %.
+            assert!(
+                p.max_element() <= 0.5 + 5e-6 && p.min_element() > 0.495,
+                "{fresnel:?} whitted: {p}"
+            );
+        }
+    }
+}
