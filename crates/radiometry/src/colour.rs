@@ -245,6 +245,42 @@ mod tests {
         );
     }
 
+    use proptest::prelude::*;
+
+    /// CIELAB colours inside the region real surfaces reach.
+    fn lab_colours() -> impl Strategy<Value = Lab> {
+        (0.0..100.0f64, -128.0..128.0f64, -128.0..128.0f64).prop_map(|(l, a, b)| Lab::new(l, a, b))
+    }
+
+    proptest! {
+        // ΔE00 is a distance-like measure: non-negative, zero on the diagonal
+        // and symmetric (Sharma et al. 2005, §3: its hue-mean rules make it so).
+        // Symmetry holds to rounding: 1e-12 on values below ~200.
+        #[test]
+        fn delta_e_2000_is_symmetric_and_non_negative(p in lab_colours(), q in lab_colours()) {
+            let (pq, qp) = (delta_e_2000(p, q), delta_e_2000(q, p));
+            prop_assert!(pq >= 0.0 && pq.is_finite());
+            prop_assert!((pq - qp).abs() <= 1e-12 * pq.max(1.0), "{pq} vs {qp}");
+            prop_assert_eq!(delta_e_2000(p, p), 0.0);
+        }
+
+        // Lightness alone: with equal a*, b* the difference is the weighted ΔL, which
+        // grows with |ΔL| (S_L depends only on the mean lightness).
+        #[test]
+        fn delta_e_2000_grows_with_the_lightness_difference(l in 10.0..60.0f64, dl in 0.1..20.0f64) {
+            let base = Lab::new(l, 10.0, -5.0);
+            let near = delta_e_2000(base, Lab::new(l + dl, 10.0, -5.0));
+            let far = delta_e_2000(Lab::new(l - 1.0, 10.0, -5.0), Lab::new(l + dl + 1.0, 10.0, -5.0));
+            prop_assert!(far > near, "{far} <= {near}");
+        }
+
+        // The sRGB transfer function and its inverse undo each other to a few ulps.
+        #[test]
+        fn srgb_encoding_round_trips(x in 0.0..=1.0f64) {
+            prop_assert!((srgb_decode(srgb_encode(x)) - x).abs() <= 4.0 * f64::EPSILON);
+        }
+    }
+
     #[test]
     fn delta_e_2000_is_zero_for_equal_colours_and_symmetric() {
         let (p, q) = (
