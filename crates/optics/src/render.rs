@@ -243,13 +243,23 @@ pub(crate) fn steps(
             light.reason.unwrap_or_default()
         ));
     }
-    if settings.integrator == IntegratorKind::Path && machinery.spp < settings.spp {
-        steps.push(say!(
-            lang,
-            "{} samples per pixel reduced to 1: every path is deterministic",
-            "{} minta pixelenként 1-re csökkentve: minden út determinisztikus",
-            settings.spp
-        ));
+    if machinery.spp < settings.spp {
+        steps.push(if settings.integrator == IntegratorKind::Path {
+            say!(
+                lang,
+                "{} samples per pixel reduced to 1: every path is deterministic",
+                "{} minta pixelenként 1-re csökkentve: minden út determinisztikus",
+                settings.spp
+            )
+        } else {
+            say!(
+                lang,
+                "{} samples per pixel reduced to 1: the {} integrator is deterministic",
+                "{} minta pixelenként 1-re csökkentve: a(z) {} integrátor determinisztikus",
+                settings.spp,
+                settings.integrator
+            )
+        });
     }
     steps
 }

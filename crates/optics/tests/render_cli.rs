@@ -288,5 +288,13 @@ fn inspect_reports_needs_and_measures_the_skipped_shadow_rays() {
         report.contains("reflection depth reachable: up to 11"),
         "{report}"
     );
-    assert!(report.contains("shadows possible: yes"), "{report}");
+    assert!(report.contains("shadows possible: no"), "{report}");
+    assert!(
+        report.contains("light 0 (directional) skipped: the closed mirror tube around the camera"),
+        "{report}"
+    );
+    assert!(
+        report.contains("unused_lights: would cost") && report.contains("image identical: yes"),
+        "{report}"
+    );
 }

@@ -8,7 +8,7 @@
 
 use serde::Serialize;
 
-use crate::geometry::Object;
+use crate::geometry::{Object, Tube};
 use crate::integrator::{Machinery, Settings};
 use crate::scene::{IntegratorKind, Light, Material, Scene, SceneError};
 
@@ -84,6 +84,7 @@ pub fn analyse(scene: &Scene, settings: &Settings) -> Needs {
     } else {
         ReflectionDepth::UpToMaxDepth(settings.max_depth)
     };
+    let enclosing = enclosing_tube(scene);
     let lights: Vec<LightUse> = scene
         .lights
         .iter()
@@ -97,6 +98,8 @@ pub fn analyse(scene: &Scene, settings: &Settings) -> Needs {
                 Some("it emits nothing")
             } else if !rough {
                 Some("no surface is shaded from lights")
+            } else if enclosing.is_some_and(|tube| !reaches_inside(tube, light)) {
+                Some("the closed mirror tube around the camera keeps its light out")
             } else {
                 None
             };
@@ -125,6 +128,43 @@ pub fn analyse(scene: &Scene, settings: &Settings) -> Needs {
         shadows,
         lights,
         deterministic,
+    }
+}
+
+/// A mirror tube that contains every primary ray's origin. Infinite along
+/// its axis and closed around it, it keeps every ray that starts inside
+/// inside: the camera sees only what is in the tube, and light from outside
+/// reaches none of it (the course's "everything is always in shadow").
+fn enclosing_tube(scene: &Scene) -> Option<&Tube> {
+    let (w, h) = (scene.width - 1, scene.height - 1);
+    let origins = [(0, 0), (w, 0), (0, h), (w, h), (w / 2, h / 2)]
+        .map(|(x, y)| scene.camera.ray(x, y).origin);
+    scene.objects.iter().find_map(|o| match o {
+        // Strictly inside every side, by more than the rounding of the
+        // origins: a camera on a mirror is not enclosed.
+        Object::Tube(tube)
+            if origins.iter().all(|p| {
+                tube.faces
+                    .iter()
+                    .all(|f| (*p - f.point).dot(f.normal) < -1e-4 * (1.0 + p.abs().max_element()))
+            }) =>
+        {
+            Some(tube)
+        }
+        _ => None,
+    })
+}
+
+/// Whether a light can shine into a tube: a point light inside it, or a
+/// directional light along its axis (a ray parallel to the sides never
+/// meets them).
+fn reaches_inside(tube: &Tube, light: &Light) -> bool {
+    match *light {
+        Light::Point { position, .. } => tube
+            .faces
+            .iter()
+            .all(|f| (position - f.point).dot(f.normal) < 0.0),
+        Light::Directional { towards, .. } => towards.cross(tube.axis).length() == 0.0,
     }
 }
 

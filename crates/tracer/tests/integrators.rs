@@ -391,6 +391,14 @@ fn a_single_convex_sphere_needs_no_shadow_rays_and_two_spheres_do() {
         needs::ReflectionDepth::UpToMaxDepth(s.max_depth)
     );
     assert!(kaleidoscope.conductors && !kaleidoscope.refraction);
+    // The course's light is outside the closed tube around the camera: it
+    // cannot light anything, and no shadow ray is needed to find that out.
+    assert!(!kaleidoscope.lights[0].used && !kaleidoscope.shadows);
+    let lit = needs::analyse(find("/kaleidoscope_lit.json"), &s);
+    assert!(
+        lit.lights[0].used && lit.shadows,
+        "a point light inside the tube"
+    );
 }
 
 /// The course's Fresnel (`pow(cos θ, 5)` for `pow(1 − cos θ, 5)`) makes a
