@@ -24,6 +24,7 @@
 
 pub mod check;
 pub mod colorimetry;
+pub mod exchange;
 pub mod laws;
 pub mod metals;
 pub mod mpmath;

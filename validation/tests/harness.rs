@@ -7,6 +7,7 @@ use std::path::Path;
 use glam::Vec3;
 use radiometry::specular::{self, Refraction};
 use validation::colorimetry::ColourLaws;
+use validation::exchange::{self, LawCase, LawResult};
 use validation::laws::Laws;
 use validation::metals::MetalLaws;
 use validation::mpmath::Laws64;
@@ -128,4 +129,87 @@ fn a_missing_reference_is_named() {
     )
     .unwrap_err();
     assert!(err.to_string().contains("fresnel_mpmath.json"), "{err}");
+}
+
+/// Results for exported cases as a perfect evaluator would give them: the
+/// radiometry crate's f64 laws in place of Mitsuba.
+fn f64_results(cases: &exchange::CasesFile) -> exchange::ResultsFile {
+    use glam::DVec3;
+    use radiometry::fresnel;
+    let results = cases
+        .cases
+        .iter()
+        .map(|case| match *case {
+            LawCase::Fresnel { cos_i, eta } => {
+                let f = fresnel::dielectric_polarized(cos_i, eta);
+                LawResult {
+                    f: Some(f.reflectance()),
+                    cos_t: Some(f.cos_t.unwrap_or(0.0)),
+                    ..LawResult::default()
+                }
+            }
+            LawCase::FresnelConductor { cos_i, n, kappa } => LawResult {
+                f: Some(fresnel::conductor(cos_i, n, kappa)),
+                ..LawResult::default()
+            },
+            LawCase::Directions { wi, n, eta } => {
+                let (wi, n) = (DVec3::from_array(wi), DVec3::from_array(n));
+                let t = specular::refract(wi, n, eta);
+                LawResult {
+                    f: None,
+                    cos_t: Some(t.map_or(0.0, |t| t.cos_t)),
+                    reflect: Some(specular::reflect(wi, n).to_array()),
+                    refract: Some(t.map_or([0.0; 3], |t| t.direction.to_array())),
+                }
+            }
+        })
+        .collect();
+    exchange::ResultsFile {
+        schema: exchange::RESULTS_SCHEMA.to_owned(),
+        evaluator: "the radiometry crate in f64".to_owned(),
+        results,
+    }
+}
+
+#[test]
+fn exported_cases_round_trip_and_pass_against_a_perfect_evaluator() {
+    let cases = exchange::random_cases(2005, 400);
+    let text = serde_json::to_string(&cases).unwrap();
+    let back: exchange::CasesFile = serde_json::from_str(&text).unwrap();
+    assert_eq!(back.cases, cases.cases, "every number crosses exactly");
+    let check = exchange::check_random(
+        &Laws::radiometry(),
+        &Laws64::radiometry(),
+        &cases,
+        &f64_results(&cases),
+    );
+    assert!(check.passed(), "{:#?}", check.failures);
+    assert_eq!(check.cases, 1200);
+}
+
+#[test]
+fn a_broken_law_is_caught_at_random_inputs() {
+    let cases = exchange::random_cases(2005, 400);
+    let broken = Laws {
+        refract: refract_normal_flipped,
+        ..Laws::radiometry()
+    };
+    let check =
+        exchange::check_random(&broken, &Laws64::radiometry(), &cases, &f64_results(&cases));
+    assert!(!check.passed());
+    assert!(
+        check.failures.iter().all(|f| f.contains("directions")),
+        "{:#?}",
+        check.failures
+    );
+}
+
+#[test]
+fn results_that_do_not_match_the_cases_fail() {
+    let cases = exchange::random_cases(1, 10);
+    let mut results = f64_results(&cases);
+    results.results.pop();
+    let check =
+        exchange::check_random(&Laws::radiometry(), &Laws64::radiometry(), &cases, &results);
+    assert!(!check.passed() && check.failures[0].contains("30 cases but 29 results"));
 }

@@ -8,6 +8,9 @@ use std::process::Command;
 
 use anyhow::{bail, Context as _};
 use serde_json::json;
+use validation::exchange;
+use validation::laws::Laws;
+use validation::mpmath::Laws64;
 use validation::report::{to_html, to_json, write_atomically};
 use validation::suite::{self, Context};
 use validation::Check;
@@ -45,6 +48,9 @@ pub struct ValidateArgs {
     /// Use no Python: check against the committed references, draw no figures.
     #[arg(long)]
     pub no_python: bool,
+    /// Seed of the random cases evaluated by Mitsuba.
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
 }
 
 /// The reference generators and the files each writes, in the order the
@@ -130,6 +136,19 @@ pub fn run(args: &ValidateArgs, ui: &Ui) -> anyhow::Result<()> {
     })?;
     if let Some(bar) = &bar {
         bar.finish_and_clear();
+    }
+    if let Some(python) = &python {
+        let count = if args.quick { 300 } else { 3000 };
+        note(
+            ui,
+            &say!(
+                lang,
+                "evaluating {} random cases with Mitsuba",
+                "{} véletlen eset kiértékelése a Mitsubával",
+                3 * count
+            ),
+        );
+        extra_checks.push(random_cases(python, &scripts, &out, args.seed, count)?);
     }
     report.checks.splice(0..0, extra_checks);
     report.summarise();
@@ -359,6 +378,40 @@ fn regenerate(python: &Path, scripts: &Path, fresh: &Path) -> anyhow::Result<Che
         }
     }
     Ok(check)
+}
+
+/// Exports `count` random cases of each law, has Mitsuba evaluate them, and
+/// compares (`validation::exchange`).
+fn random_cases(
+    python: &Path,
+    scripts: &Path,
+    out: &Path,
+    seed: u64,
+    count: usize,
+) -> anyhow::Result<Check> {
+    let dir = out.join("exchange");
+    std::fs::create_dir_all(&dir).with_context(|| format!("cannot create {}", dir.display()))?;
+    let cases = exchange::random_cases(seed, count);
+    write_atomically(
+        &dir,
+        "cases.json",
+        serde_json::to_string(&cases)?.as_bytes(),
+    )
+    .with_context(|| format!("writing {}", dir.join("cases.json").display()))?;
+    let mut command = Command::new(python);
+    command
+        .arg(scripts.join("mitsuba_eval.py"))
+        .arg(dir.join("cases.json"))
+        .arg(dir.join("results.json"));
+    run_tool(command, "python-checks/mitsuba_eval.py")?;
+    let results: exchange::ResultsFile =
+        validation::reference::load(&dir, "results.json", exchange::RESULTS_SCHEMA)?;
+    Ok(exchange::check_random(
+        &Laws::radiometry(),
+        &Laws64::radiometry(),
+        &cases,
+        &results,
+    ))
 }
 
 /// Runs the figure script on `out/report.json`; the figure file names,
