@@ -22,7 +22,7 @@
 //! The RGB shortcuts treat their three reflectances as linear sRGB directly,
 //! as a three-wavelength renderer does.
 
-use radiometry::colour::{self, Lab};
+use radiometry::colour;
 use radiometry::fresnel;
 use radiometry::spectrum::{self, SAMPLES};
 use serde::{Deserialize, Serialize};
@@ -312,9 +312,4 @@ pub fn worst_delta_e(rows: &[MetalColour]) -> Vec<(String, String, f64, f64)> {
         }
     }
     out
-}
-
-/// The Lab of a colour row.
-pub fn row_lab(row: &MetalColour) -> Lab {
-    lab(row.lab)
 }
