@@ -205,14 +205,16 @@ impl Tracer<'_> {
             .zip(&self.machinery.lights)
             .filter(|(_, on)| **on)
         {
-            let (wi, irradiance, distance) = match *light {
+            // The direction to the light, the irradiance it delivers, and
+            // where a shadow ray must stop (a point light's position).
+            let (wi, irradiance, stop_at) = match *light {
                 Light::Directional {
                     towards,
                     irradiance,
                 } => (
                     towards,
                     rgb(|c| radiance::directional_irradiance(irradiance[c], n, towards)),
-                    f32::INFINITY,
+                    None,
                 ),
                 Light::Point {
                     position,
@@ -228,7 +230,7 @@ impl Tracer<'_> {
                             radiance::point_irradiance(intensity[c], position, hit.point, n)
                                 .map_or(0.0, |s| s.irradiance)
                         }),
-                        sample.distance,
+                        Some(position),
                     )
                 }
             };
@@ -242,14 +244,9 @@ impl Tracer<'_> {
             if self.machinery.shadow_rays {
                 let origin = spawn::origin(hit, n, self.settings.ray_offset);
                 let mut shadow = Ray::new(origin, wi);
-                if distance.is_finite() {
+                if let Some(position) = stop_at {
                     // Aimed at the light from the moved origin, and stopped there.
-                    let to_light = match *light {
-                        Light::Point { position, .. } => position - origin,
-                        Light::Directional { .. } => {
-                            unreachable!("directional lights are infinitely far")
-                        }
-                    };
+                    let to_light = position - origin;
                     shadow.t_max = to_light.length();
                     shadow.direction = to_light / shadow.t_max;
                 }

@@ -26,6 +26,20 @@
 //! assert_eq!(out.image.get(16, 12).to_array(), [0.0, 0.0, 0.0]);
 //! ```
 //!
+//! # Modules
+//!
+//! | module | what |
+//! |---|---|
+//! | [`scene`] | the JSON scene schema, parsing and validation (`docs/scene-schema.md`) |
+//! | [`geometry`] | rays, spheres, two-sided planes, the kaleidoscope's mirror tube |
+//! | [`camera`] | the course's pinhole and the look-at camera unprojected through the inverse view-projection |
+//! | [`spawn`] | where secondary rays start: the hit's error bound, or the course's fixed epsilon |
+//! | [`integrator`] | `local`, `whitted`, `path` and the course shader's loop |
+//! | [`needs`] | what a scene needs, so the renderer runs only that |
+//! | [`render`] | the image, in parallel, identical for any thread count |
+//! | [`rng`] | PCG32 streams, one per pixel |
+//! | [`output`] | PNG (sRGB, stated tone mapping) and PFM, written atomically |
+//!
 //! # Precision
 //!
 //! The tracer computes in `f32`, the precision of the course's shaders and
