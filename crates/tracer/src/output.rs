@@ -182,3 +182,57 @@ pub fn read_pfm(bytes: &[u8]) -> Option<Image> {
         pixels,
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::Vec3;
+
+    #[test]
+    fn srgb_encoding_matches_iec_61966_2_1() {
+        // The standard's breakpoint and known values: 0.5 linear is 0.7354
+        // encoded (188 of 255), 0.2140 linear is 0.5 encoded.
+        assert_eq!(to_srgb8(0.0), 0);
+        assert_eq!(to_srgb8(1.0), 255);
+        assert_eq!(to_srgb8(0.5), 188);
+        assert!((srgb_encode(0.214_041_14) - 0.5).abs() < 1e-6);
+        assert!((srgb_encode(0.003_130_8) - 0.040_45).abs() < 1e-6);
+    }
+
+    #[test]
+    fn tone_mapping_clamps_to_the_display_range() {
+        assert_eq!(to_srgb8(7.5), 255);
+        assert_eq!(to_srgb8(-0.1), 0);
+        assert_eq!(to_srgb8(f32::NAN), 0);
+    }
+
+    #[test]
+    fn pfm_round_trips_exactly_with_rows_bottom_up() {
+        let image = Image {
+            width: 3,
+            height: 2,
+            pixels: (0..6)
+                .map(|i| Vec3::new(i as f32, 0.5, -1e-7 * i as f32))
+                .collect(),
+        };
+        let bytes = pfm_bytes(&image);
+        assert!(bytes.starts_with(b"PF\n3 2\n-1.0\n"));
+        // The first stored pixel is the bottom-left one: (0, 1), value 3.
+        let first = f32::from_le_bytes(bytes[12..16].try_into().unwrap());
+        assert_eq!(first, 3.0);
+        assert_eq!(read_pfm(&bytes), Some(image));
+    }
+
+    #[test]
+    fn atomic_write_replaces_the_file_whole_and_leaves_no_temporary() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("out.pfm");
+        std::fs::write(&path, b"old").unwrap();
+        write_atomically(&path, b"new contents").unwrap();
+        assert_eq!(std::fs::read(&path).unwrap(), b"new contents");
+        assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 1);
+        let missing = dir.path().join("no/such/dir/out.png");
+        let err = write_atomically(&missing, b"x").unwrap_err().to_string();
+        assert!(err.contains("does not exist"), "{err}");
+    }
+}

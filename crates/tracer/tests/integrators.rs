@@ -486,3 +486,28 @@ fn glass_sphere_in_a_uniform_sky_is_invisible() {
         }
     }
 }
+
+#[test]
+fn path_tracer_is_deterministic_per_seed() {
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../validation/scenes/webgl_seven_spheres.json"
+    );
+    let scene = scene::load(std::path::Path::new(path))
+        .unwrap()
+        .resized(24, 18);
+    let with_seed = |seed| Settings {
+        spp: 2,
+        seed,
+        ..settings(IntegratorKind::Path)
+    };
+    let a = render_with(&scene, &with_seed(1), None);
+    assert!(
+        a == render_with(&scene, &with_seed(1), None),
+        "same seed, same image"
+    );
+    assert!(
+        a != render_with(&scene, &with_seed(2), None),
+        "another seed, other noise"
+    );
+}
