@@ -155,6 +155,12 @@ pub fn run(args: &InspectArgs, ui: &Ui) -> anyhow::Result<()> {
         ),
         say!(
             lang,
+            "deepest bounce taken in this render: {}",
+            "a legmélyebb visszaverődés ebben a képben: {}",
+            base.rays.deepest
+        ),
+        say!(
+            lang,
             "refraction: {}",
             "fénytörés: {}",
             yes_no(needs.refraction)

@@ -33,6 +33,8 @@ pub struct RayCounts {
     pub shadow: u64,
     /// The path tracer's diffuse bounces.
     pub diffuse: u64,
+    /// The most bounces any path took after its primary hit.
+    pub deepest: u32,
 }
 
 impl RayCounts {
@@ -48,6 +50,11 @@ impl RayCounts {
         self.refraction += other.refraction;
         self.shadow += other.shadow;
         self.diffuse += other.diffuse;
+        self.deepest = self.deepest.max(other.deepest);
+    }
+
+    fn bounced(&mut self, depth: u32) {
+        self.deepest = self.deepest.max(depth);
     }
 }
 
@@ -381,6 +388,7 @@ impl Tracer<'_> {
                     return Vec3::ZERO;
                 }
                 counts.reflection += 1;
+                counts.bounced(depth + 1);
                 let r = Ray::new(
                     spawn::origin(&hit, facing, self.settings.ray_offset),
                     specular::reflect(wo, facing),
@@ -397,6 +405,7 @@ impl Tracer<'_> {
                 let mut sum = Vec3::ZERO;
                 if throughput.max_element() * reflectance >= self.settings.throughput_cutoff {
                     counts.reflection += 1;
+                    counts.bounced(depth + 1);
                     let r = Ray::new(
                         spawn::origin(&hit, outward, self.settings.ray_offset),
                         specular::reflect(wo, n),
@@ -408,6 +417,7 @@ impl Tracer<'_> {
                     let weight = radiance::across_interface(transmittance, t.eta);
                     if throughput.max_element() * weight >= self.settings.throughput_cutoff {
                         counts.refraction += 1;
+                        counts.bounced(depth + 1);
                         let r = Ray::new(
                             spawn::origin(&hit, -outward, self.settings.ray_offset),
                             t.direction,
@@ -506,6 +516,7 @@ impl Tracer<'_> {
                 _ => counts.refraction += 1,
             }
             depth += 1;
+            counts.bounced(depth);
             let peak = beta.max_element();
             if peak <= 0.0 {
                 return sum;
@@ -537,7 +548,7 @@ impl Tracer<'_> {
         let mut ray = *primary;
         let mut weight = Vec3::ONE;
         let mut sum = Vec3::ZERO;
-        for _ in 0..=self.settings.max_depth {
+        for bounce in 0..=self.settings.max_depth {
             let Some(hit) = self.intersect_with(&ray, true) else {
                 break;
             };
