@@ -563,6 +563,7 @@ impl Tracer<'_> {
                     let cos = (-ray.direction).dot(n);
                     weight *= rgb(|c| course::fresnel_000_glsl(f0[c], cos));
                     counts.reflection += 1;
+                    counts.bounced(bounce + 1);
                     ray = Ray::new(
                         hit.point + n * EPSILON,
                         specular::reflect(-ray.direction, n),
