@@ -511,3 +511,43 @@ fn path_tracer_is_deterministic_per_seed() {
         "another seed, other noise"
     );
 }
+
+/// The depth `needs` allows is a bound the renders respect, and a tight one
+/// where mirrors face each other.
+#[test]
+fn measured_bounce_depth_stays_within_the_reachable_depth() {
+    for (name, scene) in course_scenes() {
+        for integrator in [
+            IntegratorKind::Whitted,
+            IntegratorKind::Path,
+            IntegratorKind::Course,
+        ] {
+            let s = Settings {
+                integrator,
+                max_depth: 4,
+                ..Settings::from_scene(&scene)
+            };
+            let machinery = needs::analyse(&scene, &s).machinery(&s);
+            let deepest = render(&scene, &s, &machinery, None, &|_| {})
+                .unwrap()
+                .rays
+                .deepest;
+            let bound = match needs::analyse(&scene, &s).reflection_depth {
+                needs::ReflectionDepth::None => 0,
+                needs::ReflectionDepth::One => 1,
+                needs::ReflectionDepth::UpToMaxDepth(d) => d,
+            };
+            let diffuse_bounces =
+                integrator == IntegratorKind::Path && needs::analyse(&scene, &s).rough_surfaces;
+            if !diffuse_bounces {
+                assert!(deepest <= bound, "{name} {integrator}: {deepest} > {bound}");
+            }
+            if name.ends_with("/kaleidoscope_lit.json") && integrator == IntegratorKind::Whitted {
+                assert_eq!(
+                    deepest, 4,
+                    "mirrors facing each other use every bounce allowed"
+                );
+            }
+        }
+    }
+}
