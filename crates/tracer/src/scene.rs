@@ -436,20 +436,26 @@ pub fn parse(text: &str) -> Result<Scene, SceneError> {
     let mut value: Value = serde_path_to_error::deserialize(de).map_err(|err| {
         let path = err.path().to_string();
         let inner = err.into_inner();
+        let mut message = without_position(&inner);
+        if message == "expected value" {
+            message.push_str(" (JSON numbers are finite: NaN and Infinity are not numbers)");
+        }
         SceneError::Syntax {
             path,
-            message: without_position(&inner),
+            message,
             line: inner.line(),
             column: inner.column(),
         }
     })?;
     retag(&mut value)?;
     let file: SceneFile = serde_path_to_error::deserialize(value).map_err(|err| {
-        let path = json_path(err.path());
-        SceneError::Invalid {
-            path,
-            message: without_position(err.inner()),
+        let mut path = json_path(err.path());
+        let message = without_position(err.inner());
+        if message.starts_with("unknown variant") {
+            // The kind was the object's "type" before retagging.
+            path.push_str(".type");
         }
+        SceneError::Invalid { path, message }
     })?;
     file.validate()
 }

@@ -79,7 +79,15 @@ fn bad_scenes_are_refused_with_the_path_of_the_bad_value() {
             with("/objects/0/radius", json!("big")),
             &["objects[0].radius", "invalid type"],
         ),
-        ("NaN literal", nan_text, &["line 1"]),
+        (
+            "NaN literal",
+            nan_text,
+            &[
+                "objects[0].radius",
+                "NaN and Infinity are not numbers",
+                "line 1",
+            ],
+        ),
         (
             "overflowing number",
             good()
@@ -173,7 +181,7 @@ fn bad_scenes_are_refused_with_the_path_of_the_bad_value() {
         (
             "unknown object type",
             with("/objects/0/type", json!("cube")),
-            &["objects[0]", "unknown variant `cube`"],
+            &["objects[0].type", "unknown variant `cube`"],
         ),
     ];
     for (name, text, needles) in cases {
