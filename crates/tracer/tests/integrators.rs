@@ -551,3 +551,49 @@ fn measured_bounce_depth_stays_within_the_reachable_depth() {
         }
     }
 }
+
+/// A Lambert sphere under a uniform sky of radiance L (a white furnace): a
+/// convex surface sees only sky, so it reflects `albedo · L`. The path
+/// tracer finds this by sampling (each cosine-sampled bounce carries exactly
+/// `π · albedo/π`, so there is no noise); `local` and `whitted` get it from
+/// the ambient term when the ambient radiance is that same sky.
+#[test]
+fn lambert_sphere_in_a_uniform_sky_reflects_albedo_times_the_sky() {
+    let scene = parse(json!({
+        "version": 1,
+        "image": { "width": 24, "height": 18 },
+        "camera": { "type": "course_pinhole" },
+        "background": [0.4, 0.4, 0.4],
+        "ambient": [0.4, 0.4, 0.4],
+        "materials": { "clay": { "type": "lambert", "albedo": [0.9, 0.5, 0.1] } },
+        "objects": [ { "type": "sphere", "center": [0, 0, 3], "radius": 1.2, "material": "clay" } ]
+    }));
+    let expected = Vec3::new(0.9, 0.5, 0.1) * 0.4;
+    for integrator in [
+        IntegratorKind::Local,
+        IntegratorKind::Whitted,
+        IntegratorKind::Path,
+    ] {
+        let s = Settings {
+            spp: 4,
+            ..settings(integrator)
+        };
+        let image = render_with(&scene, &s, None);
+        let on_sphere: Vec<Vec3> = image
+            .pixels
+            .into_iter()
+            .filter(|p| *p != Vec3::splat(0.4))
+            .collect();
+        assert!(
+            on_sphere.len() > 50,
+            "{integrator}: the sphere covers the image's centre"
+        );
+        for p in on_sphere {
+            // π · (albedo/π) and a product: a few f32 roundings.
+            assert!(
+                (p - expected).abs().max_element() < 1e-6,
+                "{integrator}: {p} vs {expected}"
+            );
+        }
+    }
+}
