@@ -114,6 +114,14 @@ pub fn run(args: &InspectArgs, ui: &Ui) -> anyhow::Result<()> {
         let extra_rays = full.rays.total() as i64 - base.rays.total() as i64;
         let extra_seconds = full.elapsed.as_secs_f64() - base.elapsed.as_secs_f64();
         let identical = full.image == base.image;
+        let changed = full
+            .image
+            .pixels
+            .iter()
+            .zip(&base.image.pixels)
+            .filter(|(p, q)| p != q)
+            .count();
+        let (_, max_difference) = full.image.difference(&base.image);
         lines.push(say!(
             lang,
             "{}: would cost {} more rays ({:+.1} %), {:+.4} s; image identical: {}",
@@ -122,13 +130,25 @@ pub fn run(args: &InspectArgs, ui: &Ui) -> anyhow::Result<()> {
             extra_rays,
             100.0 * extra_rays as f64 / base.rays.total().max(1) as f64,
             extra_seconds,
-            yes_no(identical)
+            if identical {
+                yes_no(true)
+            } else {
+                say!(
+                    lang,
+                    "no, {} pixels differ by up to {:.3}",
+                    "nem, {} pixel tér el, legfeljebb {:.3}-mal",
+                    changed,
+                    max_difference
+                )
+            }
         ));
         costs.push(json!({
             "part": name,
             "extra_rays": extra_rays,
             "extra_seconds": extra_seconds,
             "image_identical": identical,
+            "pixels_changed": changed,
+            "max_difference": max_difference,
         }));
     }
     let depth = match needs.reflection_depth {

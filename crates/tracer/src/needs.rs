@@ -2,9 +2,15 @@
 //! only that machinery (`optics inspect` reports it, and measures what the
 //! rest would have cost).
 //!
-//! Each rule is conservative: it switches a part off only where it provably
-//! cannot change the image. The test `skipping_unused_machinery_leaves_the_image_unchanged`
-//! renders every course scene both ways and requires identical pixels.
+//! Each rule switches a part off only where the laws say it cannot change
+//! the image, and the test `skipping_unused_machinery_leaves_the_image_unchanged`
+//! renders every course scene both ways and requires identical pixels. One
+//! rule also removes rounding artefacts: a light outside the closed mirror
+//! tube around the camera lights nothing, but with it on, a shadow ray that
+//! starts within rounding of where a sphere or the far wall meets a mirror
+//! can slip out (1 pixel of 76 800 in the course kaleidoscope, path traced
+//! at 320 × 240 with 16 samples); skipping the light leaves that pixel dark,
+//! as the law has it.
 
 use serde::Serialize;
 
