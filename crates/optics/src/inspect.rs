@@ -7,7 +7,6 @@ use serde_json::json;
 use tracer::integrator::Machinery;
 use tracer::needs::{self, ReflectionDepth};
 use tracer::render;
-use tracer::scene::IntegratorKind;
 
 use crate::lang::say;
 use crate::render::{prepare, Integrator};
@@ -42,12 +41,7 @@ pub struct InspectArgs {
 pub fn run(args: &InspectArgs, ui: &Ui) -> anyhow::Result<()> {
     let (scene, mut settings) = prepare(&args.scene, args.width, args.height)?;
     if let Some(i) = args.integrator {
-        settings.integrator = match i {
-            Integrator::Local => IntegratorKind::Local,
-            Integrator::Whitted => IntegratorKind::Whitted,
-            Integrator::Path => IntegratorKind::Path,
-            Integrator::Course => IntegratorKind::Course,
-        };
+        settings.integrator = i.into();
     }
     settings.spp = args.spp.unwrap_or(settings.spp);
     needs::check_integrator(&scene, &settings)?;

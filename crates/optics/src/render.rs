@@ -61,6 +61,17 @@ pub enum Integrator {
     Course,
 }
 
+impl From<Integrator> for IntegratorKind {
+    fn from(integrator: Integrator) -> Self {
+        match integrator {
+            Integrator::Local => IntegratorKind::Local,
+            Integrator::Whitted => IntegratorKind::Whitted,
+            Integrator::Path => IntegratorKind::Path,
+            Integrator::Course => IntegratorKind::Course,
+        }
+    }
+}
+
 #[derive(clap::ValueEnum, Clone, Copy, Debug)]
 pub enum Fresnel {
     Exact,
@@ -93,12 +104,7 @@ pub(crate) fn prepare(
 pub fn run(args: &RenderArgs, ui: &Ui) -> anyhow::Result<()> {
     let (scene, mut settings) = prepare(&args.scene, args.width, args.height)?;
     if let Some(i) = args.integrator {
-        settings.integrator = match i {
-            Integrator::Local => IntegratorKind::Local,
-            Integrator::Whitted => IntegratorKind::Whitted,
-            Integrator::Path => IntegratorKind::Path,
-            Integrator::Course => IntegratorKind::Course,
-        };
+        settings.integrator = i.into();
     }
     if let Some(f) = args.fresnel {
         settings.fresnel = match f {
