@@ -159,48 +159,32 @@ fn quiz_list_names_every_solver_with_an_example() {
 
 #[test]
 fn quiz_solvers_match_the_seed_answers() {
-    let f0 = json(&["quiz", "f0", "--n", "1.4"]);
-    assert!((number(&f0["answer"]) - 1.0 / 36.0).abs() < 1e-12);
-    let lambert = json(&[
-        "quiz",
-        "lambert",
-        "--normal",
-        "0,0,1",
-        "--light-dir",
-        "0,3,4",
-        "--view-dir",
-        "1,2,3",
-        "--radiance",
-        "5",
-        "--kd",
-        "0.6",
-    ]);
-    assert!((number(&lambert["answer"]) - 2.4).abs() < 1e-12);
+    // The quiz's exercises with the flags of ROUND_TRIP below; the last
+    // passes ks = 1.41421356, √2 to 9 digits, so its 2.5 holds to 1e-8.
+    let expected = [
+        ("f0", 1.0 / 36.0, 1e-12),
+        ("lambert", 2.4, 1e-12),
+        ("critical_angle", 0.1f64.asin().to_degrees(), 1e-12),
+        ("blinn_phong", 2.5, 1e-8),
+    ];
+    for (law, value, tolerance) in expected {
+        let (_, args) = ROUND_TRIP
+            .iter()
+            .find(|(request, _)| request.contains(&format!("\"{law}\"")))
+            .expect("a request for every quiz law");
+        let record = json(args);
+        assert_eq!(record["law"], law);
+        assert!(
+            (number(&record["answer"]) - value).abs() < tolerance,
+            "{law}: {record}"
+        );
+    }
+    let lambert = json(ROUND_TRIP[5].1);
     let steps = lambert["steps"].to_string();
     assert!(
         steps.contains("light_dir has length 5: normalised to (0, 0.6, 0.8)"),
         "{steps}"
     );
-    let critical = json(&["quiz", "critical-angle", "--n", "10"]);
-    assert!((number(&critical["answer"]) - 5.739170477266787).abs() < 1e-12);
-    // The example passes ks = 1.41421356, √2 to 9 digits: 2.5 to 1e-8.
-    let blinn = json(&[
-        "quiz",
-        "blinn-phong",
-        "--normal",
-        "0,0,1",
-        "--light-dir",
-        "0,3,4",
-        "--view-dir",
-        "0,4,3",
-        "--radiance",
-        "5",
-        "--ks",
-        "1.41421356",
-        "--shine",
-        "3",
-    ]);
-    assert!((number(&blinn["answer"]) - 2.5).abs() < 1e-8);
 }
 
 #[test]
