@@ -29,8 +29,10 @@ pub mod laws;
 pub mod metals;
 pub mod mpmath;
 pub mod reference;
+pub mod renders;
 pub mod report;
 pub mod speed;
+pub mod statistics;
 pub mod suite;
 
 pub use check::{Check, Metric};

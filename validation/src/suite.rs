@@ -17,6 +17,7 @@ use crate::laws::{self, Laws, MitsubaLaws};
 use crate::metals::{self, MetalColour, MetalLaws, MetalsReference};
 use crate::mpmath::{self, FresnelMpmath, Laws64};
 use crate::reference::ReferenceError;
+use crate::renders::{self, MitsubaRenders, RenderChecks, RenderFigure};
 use crate::speed::{self, Timing};
 use radiometry::spectrum::{self, SAMPLES};
 
@@ -66,6 +67,10 @@ pub struct Report {
     pub metal_delta_e: Vec<WorstDeltaE>,
     /// Time per metal colour by method.
     pub speed: Vec<Timing>,
+    /// The render triptychs (ours | Mitsuba | difference), written as PNG
+    /// by the command beside the report; not part of `report.json`.
+    #[serde(skip)]
+    pub render_figures: Vec<RenderFigure>,
 }
 
 /// Counts over the checks.
@@ -155,6 +160,7 @@ impl Report {
             metal_colours: Vec::new(),
             metal_delta_e: Vec::new(),
             speed: Vec::new(),
+            render_figures: Vec::new(),
         }
     }
 
@@ -327,12 +333,32 @@ pub fn metal_spectra(laws: &MetalLaws, reference: &MetalsReference) -> Vec<Metal
     out
 }
 
+/// The tracer's renders against Mitsuba's, scene by scene.
+impl CheckKind for RenderChecks {
+    fn name(&self) -> &'static str {
+        "renders against Mitsuba 3"
+    }
+
+    fn run(&self, context: &Context, report: &mut Report) -> Result<(), ReferenceError> {
+        let reference = MitsubaRenders::load(&context.reference_dir)?;
+        report.note_reference(&context.reference_dir, renders::FILE)?;
+        self.run_all(
+            &context.reference_dir.join(renders::FILE),
+            &reference,
+            context.quick,
+            &mut report.checks,
+            &mut report.render_figures,
+        )
+    }
+}
+
 /// The kinds of check `optics validate` runs, with the radiometry crate's laws.
 pub fn standard_kinds() -> Vec<Box<dyn CheckKind>> {
     vec![
         Box::new(LawChecks(Laws::radiometry(), Laws64::radiometry())),
         Box::new(ColourChecks(ColourLaws::radiometry())),
         Box::new(MetalChecks(MetalLaws::radiometry())),
+        Box::new(RenderChecks::tracer()),
     ]
 }
 

@@ -1,0 +1,622 @@
+"""The course scenes rendered by Mitsuba 3: a Whitted integrator written on
+Mitsuba's own primitives, and Mitsuba's ``path`` integrator.
+
+Regenerate (from the repository root; the output is byte-for-byte stable):
+
+    .venv/bin/python python-checks/mitsuba_render.py
+
+writes ``validation/reference/mitsuba_renders.json`` (schema
+``mitsuba-renders/1``, described in ``validation/README.md``). It takes about
+two minutes on a 2-core machine (Mitsuba's ``scalar_rgb`` variant, one ray at a
+time from Python).
+
+One scene, one place: each Mitsuba scene is built here from the suite's own
+scene file in ``validation/scenes/``, whose text the reference embeds, so the
+harness renders exactly the scene Mitsuba saw and refuses a stale reference.
+
+How the suite's scene maps to Mitsuba's (each checked by the render
+comparison itself, and by ``test_mitsuba_render.py``):
+
+- ``course_pinhole``: eye at (0, 0, -2) looking along +z, the image plane
+  z = 0 spanning y in [-1, 1], so a ``perspective`` sensor with
+  ``fov_axis = "y"`` and ``fov = 2 atan(1/2)``. The course's camera keeps +x on
+  the right while looking along +z with +y up: a left-handed view. Mitsuba's
+  ``look_at`` builds a right-handed one (its camera's x axis is
+  ``cross(up, dir)``, which points to the image's left), so the course's
+  camera is Mitsuba's ``look_at`` followed by a mirror of camera x.
+- ``look_at``: the OpenGL view of ``002`` is right-handed, Mitsuba's too; the
+  same ``eye``, ``target``, ``up``, ``fov_y_deg`` (``fov_axis = "y"``) and
+  ``near``/``far`` clip planes, no mirror.
+- Rays pass through pixel centres: rays come from the sensor's own
+  ``sample_ray`` at position ``((x + 0.5) / w, (y + 0.5) / h)``; Mitsuba's film
+  would jitter them over the pixel, which the suite's tracer does not.
+- ``directional`` light: ``towards`` is the direction to the light, Mitsuba's
+  ``direction`` the one the light travels, so its negative; the suite's
+  ``irradiance`` (W/m^2 on a surface facing the light) is Mitsuba's
+  ``irradiance``.
+- ``point`` light: ``intensity`` in W/sr is Mitsuba's ``intensity``.
+- ``background``: the radiance of escaping rays, Mitsuba's ``constant``
+  emitter (which also lights the scene in the path tracer, as the suite's
+  background does).
+- ``conductor``: Mitsuba's smooth ``conductor`` with ``eta`` = n and ``k`` =
+  kappa per channel, made ``twosided`` (the kaleidoscope's strips are seen from
+  inside).
+- ``course_rough``: the course's Blinn-Phong BRDF ``kd + ks (cos+ delta)^s /
+  cos theta_i`` (1/sr, delta from the half vector) has no Mitsuba plugin; it is
+  registered here as a two-sided Python BSDF, ``CourseBlinnPhong``, sampled by
+  the cosine. Its ``ka L_ambient`` term exists only in the Whitted model.
+- ``lambert``: Mitsuba's ``diffuse`` with ``reflectance`` = albedo, two-sided.
+- ``flat``: an ``area`` emitter of that radiance on a black ``diffuse``
+  surface: it emits and reflects nothing.
+- ``plane``: Mitsuba has no infinite plane; a square ``rectangle`` of side
+  2 * 10^4 m centred on ``point`` (the horizon moves by under 10^-3 rad, on the
+  silhouette the comparison masks).
+- ``mirror_tube``: one long ``rectangle`` per strip, the corners placed as
+  ``tracer::geometry::Tube`` places them.
+
+The Whitted integrator (``whitted``) follows the suite's model
+(``crates/tracer/src/integrator.rs``, ``docs/scene-schema.md``) using only
+Mitsuba's machinery for the geometry and the optics: ``scene.ray_intersect``
+and ``ray_test`` for hits and shadows (secondary rays offset as ``spawn``
+explains), ``mi.fresnel_conductor``, ``mi.fresnel``,
+``mi.reflect``, ``mi.refract``. The course's Blinn-Phong BRDF and the
+irradiance of the two lights are the textbook definitions, written here
+from ``003`` independently of the radiometry crate.
+
+Monte Carlo: Mitsuba's ``path`` integrator (``integrator.sample``) at the
+pixel centres, ``PATH_SAMPLES`` independent samples per pixel, the per-pixel
+mean and the unbiased sample variance of one sample. Mitsuba's ``max_depth``
+counts the segments of a path (1: emitters seen directly, 2: direct light);
+the suite's counts bounces after the primary hit and adds the direct light at
+the last vertex, so the suite's ``max_depth`` D is Mitsuba's D + 2.
+
+Images are float32, little-endian, rows top to bottom, RGB interleaved, in
+base64 (``*_f32le``); the edge mask is one byte per pixel (1: masked). A pixel
+is an edge when one of its eight neighbours follows a different Whitted
+path: another object at any vertex of the specular chain, or another light
+blocked at a rough vertex.
+"""
+import base64
+import json
+import math
+import os
+import struct
+import sys
+
+import drjit as dr  # noqa: F401  (Mitsuba's array library, imported first)
+import mitsuba as mi
+
+VARIANT = "scalar_rgb"
+mi.set_variant(VARIANT)
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+DEFAULT_PATH = os.path.join(ROOT, "validation", "reference", "mitsuba_renders.json")
+REGENERATE = ".venv/bin/python python-checks/mitsuba_render.py"
+SCHEMA = "mitsuba-renders/1"
+
+WIDTH, HEIGHT = 64, 48
+# Samples per pixel of Mitsuba's path tracer: enough for a per-pixel variance
+# with a Student t of about 500 degrees of freedom, in about a minute.
+PATH_SAMPLES = 512
+# Bounces of the path tracer after the primary hit (the suite's count). The
+# two sides truncate differently only at the last vertex (the background is
+# reached there by Mitsuba's light sampling, not by the suite's), which 16
+# bounces make negligible.
+PATH_MAX_DEPTH = 16
+PLANE_HALF_SIDE = 1.0e4
+TUBE_HALF_LENGTH = 100.0
+# Mitsuba's rectangle is two triangles, whose hit points lose precision in
+# proportion to the triangle's size; 1 m pieces keep them within a few ε₃₂.
+TUBE_SEGMENT_HALF_LENGTH = 0.5
+# Secondary rays start this far (relative to the hit's largest coordinate)
+# off the surface: 4 float32 ulps of that coordinate, clear of the hit
+# point's rounding (see `spawn`).
+SPAWN_OFFSET = 2.0 ** -21
+
+# Which scenes are physically based, and why the others are not compared.
+SCENES = [
+    ("first_red_sphere", True),  # an emitter: tests the camera and the silhouette
+    ("diffuse", True),
+    ("blinn_phong", True),
+    ("shadow", True),
+    ("gold_spheres", True),
+    ("kaleidoscope", False),  # its only light is outside the closed tube: the path render is black
+    ("kaleidoscope_lit", True),
+    ("webgl_seven_spheres", True),
+]
+EXCLUDED = {
+    "normals": "shows the normal as a colour: not a radiance, nothing to compare",
+}
+PATH_SKIPPED = {
+    "kaleidoscope": "the directional light cannot enter the closed mirror tube: without the ambient term the path render is black everywhere, a comparison that could not fail",
+}
+
+# The schema's defaults (docs/scene-schema.md).
+DEFAULT_MAX_DEPTH = 11
+DEFAULT_CUTOFF = 1e-3
+
+
+class SceneError(ValueError):
+    """A scene this generator cannot express in Mitsuba, naming the field."""
+
+
+def normalize(v):
+    length = math.sqrt(sum(c * c for c in v))
+    if not length > 0.0:
+        raise SceneError(f"zero-length direction {v}")
+    return [c / length for c in v]
+
+
+def cross(a, b):
+    return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+
+
+def dot(a, b):
+    return sum(x * y for x, y in zip(a, b))
+
+
+def frame_matrix(x, y, z, origin):
+    """A 4x4 transform whose columns are x, y, z and origin."""
+    return mi.ScalarTransform4f(
+        [[x[i], y[i], z[i], origin[i]] for i in range(3)] + [[0, 0, 0, 1]]
+    )
+
+
+def any_perpendicular(n):
+    reference = [1.0, 0.0, 0.0] if abs(n[0]) < 0.9 else [0.0, 1.0, 0.0]
+    return normalize(cross(n, reference))
+
+
+class CourseBlinnPhong(mi.BSDF):
+    """The course's Blinn-Phong BRDF, ``kd + ks (n.h)^s / cos theta_i`` per
+    channel (1/sr), zero unless both directions are on one side; two-sided,
+    sampled by the cosine. Mitsuba's ``si.wi`` is the direction to the viewer
+    and the BSDF's ``wo`` the one to the light."""
+
+    def __init__(self, props):
+        mi.BSDF.__init__(self, props)
+        self.kd = [props["kd_r"], props["kd_g"], props["kd_b"]]
+        self.ks = [props["ks_r"], props["ks_g"], props["ks_b"]]
+        self.shine = props["shininess"]
+        flags = mi.BSDFFlags.DiffuseReflection | mi.BSDFFlags.FrontSide | mi.BSDFFlags.BackSide
+        self.m_flags = flags
+        self.m_components = [flags]
+
+    def _f_cos(self, wi, wo):
+        """``f_r cos theta`` toward ``wo``, in the frame flipped to the viewer."""
+        sign = 1.0 if wi.z >= 0.0 else -1.0
+        cos_v, cos_l = wi.z * sign, wo.z * sign
+        if not (cos_v > 0.0 and cos_l > 0.0):
+            return mi.Color3f(0.0)
+        h = dr.normalize(wi + wo)
+        cos_h = max(h.z * sign, 0.0)
+        lobe = cos_h ** self.shine
+        return mi.Color3f([self.kd[c] * cos_l + self.ks[c] * lobe for c in range(3)])
+
+    def _pdf(self, wi, wo):
+        sign = 1.0 if wi.z >= 0.0 else -1.0
+        return max(wo.z * sign, 0.0) / math.pi
+
+    def sample(self, ctx, si, sample1, sample2, active=True):
+        bs = mi.BSDFSample3f()
+        wo = mi.warp.square_to_cosine_hemisphere(sample2)
+        if si.wi.z < 0.0:
+            wo = mi.Vector3f(wo.x, wo.y, -wo.z)
+        bs.wo = wo
+        bs.pdf = self._pdf(si.wi, wo)
+        bs.eta = 1.0
+        bs.sampled_type = int(mi.BSDFFlags.DiffuseReflection)
+        bs.sampled_component = 0
+        if not bs.pdf > 0.0:
+            return bs, mi.Color3f(0.0)
+        return bs, self._f_cos(si.wi, wo) / bs.pdf
+
+    def eval(self, ctx, si, wo, active=True):
+        return self._f_cos(si.wi, wo)
+
+    def pdf(self, ctx, si, wo, active=True):
+        return self._pdf(si.wi, wo)
+
+    def eval_pdf(self, ctx, si, wo, active=True):
+        return self._f_cos(si.wi, wo), self._pdf(si.wi, wo)
+
+    def to_string(self):
+        return f"CourseBlinnPhong[kd={self.kd}, ks={self.ks}, shininess={self.shine}]"
+
+
+mi.register_bsdf("course_blinn_phong", lambda props: CourseBlinnPhong(props))
+
+
+def rgb(value):
+    return {"type": "rgb", "value": [float(c) for c in value]}
+
+
+def mitsuba_bsdf(name, material):
+    kind = material.get("type")
+    if kind == "course_rough":
+        d, s = material["diffuse"], material["specular"]
+        return {
+            "type": "course_blinn_phong",
+            "kd_r": float(d[0]), "kd_g": float(d[1]), "kd_b": float(d[2]),
+            "ks_r": float(s[0]), "ks_g": float(s[1]), "ks_b": float(s[2]),
+            "shininess": float(material["shininess"]),
+        }
+    if kind == "lambert":
+        return {"type": "twosided", "bsdf": {"type": "diffuse", "reflectance": rgb(material["albedo"])}}
+    if kind == "conductor":
+        return {"type": "twosided", "bsdf": {"type": "conductor", "eta": rgb(material["n"]), "k": rgb(material["kappa"])}}
+    if kind == "dielectric":
+        return {"type": "dielectric", "int_ior": float(material["eta"]), "ext_ior": 1.0}
+    if kind == "flat":
+        return {"type": "diffuse", "reflectance": rgb([0, 0, 0])}
+    raise SceneError(f"materials.{name}.type: {kind!r} has no physical counterpart in Mitsuba")
+
+
+def mitsuba_sensor(camera, width, height):
+    kind = camera.get("type")
+    film = {"type": "hdrfilm", "width": width, "height": height, "pixel_format": "rgb"}
+    if kind == "course_pinhole":
+        to_world = mi.ScalarTransform4f().look_at(origin=[0, 0, -2], target=[0, 0, 0], up=[0, 1, 0])
+        # Mitsuba's camera x points to the image's left; the course's to its right.
+        to_world = to_world @ mi.ScalarTransform4f().scale([-1, 1, 1])
+        return {"type": "perspective", "fov_axis": "y", "fov": math.degrees(2 * math.atan(0.5)),
+                "near_clip": 1e-3, "far_clip": 1e5, "to_world": to_world, "film": film}
+    if kind == "look_at":
+        to_world = mi.ScalarTransform4f().look_at(origin=camera["eye"], target=camera["target"], up=camera["up"])
+        return {"type": "perspective", "fov_axis": "y", "fov": float(camera["fov_y_deg"]),
+                "near_clip": float(camera["near"]), "far_clip": float(camera["far"]),
+                "to_world": to_world, "film": film}
+    raise SceneError(f"camera.type: unknown camera {kind!r}")
+
+
+def mitsuba_scene(scene, width, height, path_max_depth):
+    """The Mitsuba scene dictionary of one of the suite's scenes."""
+    out = {"type": "scene",
+           "sensor": mitsuba_sensor(scene["camera"], width, height),
+           "integrator": {"type": "path", "max_depth": path_max_depth + 2, "hide_emitters": False}}
+    materials = scene["materials"]
+    for i, obj in enumerate(scene["objects"]):
+        name = obj["material"]
+        if name not in materials:
+            raise SceneError(f"objects[{i}].material: no material named {name!r}")
+        material = materials[name]
+        bsdf = mitsuba_bsdf(name, material)
+        kind = obj["type"]
+        if kind == "sphere":
+            shape = {"type": "sphere", "center": obj["center"], "radius": float(obj["radius"]), "bsdf": bsdf}
+            if material["type"] == "flat":
+                shape["emitter"] = {"type": "area", "radiance": rgb(material["radiance"])}
+            out[f"obj{i}"] = shape
+        elif kind == "plane":
+            n = normalize(obj["normal"])
+            u = any_perpendicular(n)
+            v = cross(n, u)
+            s = PLANE_HALF_SIDE
+            shape = {"type": "disk", "bsdf": bsdf,
+                     "to_world": frame_matrix([c * s for c in u], [c * s for c in v], n, obj["point"])}
+            if material["type"] == "flat":
+                shape["emitter"] = {"type": "area", "radiance": rgb(material["radiance"])}
+            out[f"obj{i}"] = shape
+        elif kind == "mirror_tube":
+            axis = normalize(obj["axis"])
+            reference = [1.0, 0.0, 0.0] if abs(axis[0]) < 0.9 else [0.0, 1.0, 0.0]
+            u = normalize([r - a * dot(reference, axis) for r, a in zip(reference, axis)])
+            v = cross(axis, u)
+            sides, radius, p0 = obj["sides"], obj["radius"], obj["axis_point"]
+
+            def corner(k):
+                a = 2 * math.pi * k / sides
+                return [p0[j] + (u[j] * math.cos(a) + v[j] * math.sin(a)) * radius for j in range(3)]
+
+            segments = round(TUBE_HALF_LENGTH / TUBE_SEGMENT_HALF_LENGTH)
+            for k in range(sides):
+                p1, p2 = corner(k), corner(k + 1)
+                half = [(b - a) / 2 for a, b in zip(p1, p2)]
+                mid = [(a + b) / 2 for a, b in zip(p1, p2)]
+                outward = normalize(cross(half, axis))
+                along = [c * TUBE_SEGMENT_HALF_LENGTH for c in axis]
+                for j in range(-segments, segments):
+                    centre = [m + a * (2 * j + 1) for m, a in zip(mid, along)]
+                    out[f"obj{i}_side{k}_part{j + segments}"] = {
+                        "type": "rectangle", "bsdf": bsdf,
+                        "to_world": frame_matrix(half, along, outward, centre)}
+        else:
+            raise SceneError(f"objects[{i}].type: unknown object {kind!r}")
+    for i, light in enumerate(scene.get("lights", [])):
+        if light["type"] == "directional":
+            towards = normalize(light["towards"])
+            out[f"light{i}"] = {"type": "directional", "direction": [-c for c in towards],
+                                "irradiance": rgb(light["irradiance"])}
+        elif light["type"] == "point":
+            out[f"light{i}"] = {"type": "point", "position": light["position"],
+                                "intensity": rgb(light["intensity"])}
+        else:
+            raise SceneError(f"lights[{i}].type: unknown light {light['type']!r}")
+    background = scene.get("background", [0, 0, 0])
+    if any(c > 0 for c in background):
+        out["background"] = {"type": "constant", "radiance": rgb(background)}
+    return out
+
+
+def object_index(shape):
+    """The suite's object index of a Mitsuba shape, from its id ``obj{i}[_side{k}]``."""
+    return int(shape.id()[3:].split("_")[0])
+
+
+def spawn(si, direction):
+    """A ray leaving the hit ``si`` along ``direction``, its origin moved off
+    the surface by ``SPAWN_OFFSET (1 + max |p_i|)`` along the normal on the
+    side it leaves by. Mitsuba's own ``si.spawn_ray`` moves it by
+    ``RayEpsilon (1 + max |p_i|)``, ``RayEpsilon`` = 1500 ε₃₂ ≈ 1.8e-4: on the
+    kaleidoscope's chains of four or five mirrors that shifts the final hit by
+    about a millimetre and the course's s = 100 highlight there by up to 2 %,
+    a difference of offsets, not of the laws compared. With this offset the
+    same pixel agrees with an exact float64 trace to 3e-6."""
+    n = si.n if dr.dot(si.n, direction) >= 0.0 else -si.n
+    scale = 1.0 + max(abs(si.p.x), abs(si.p.y), abs(si.p.z))
+    return mi.Ray3f(si.p + n * (SPAWN_OFFSET * scale), direction)
+
+
+def spawn_to(si, target):
+    """A shadow ray from ``si`` that stops just short of ``target``."""
+    offset = target - si.p
+    distance = dr.norm(offset)
+    ray = spawn(si, offset / distance)
+    ray.maxt = dr.norm(target - ray.o) * (1.0 - SPAWN_OFFSET)
+    return ray
+
+
+class Whitted:
+    """The suite's Whitted model on Mitsuba's primitives (see the module doc)."""
+
+    def __init__(self, scene, mitsuba, max_depth, cutoff):
+        self.scene = scene
+        self.mi_scene = mitsuba
+        self.max_depth = max_depth
+        self.cutoff = cutoff
+        self.background = mi.Color3f(scene.get("background", [0, 0, 0]))
+        self.ambient = mi.Color3f(scene.get("ambient", [0, 0, 0]))
+        self.materials = [scene["materials"][o["material"]] for o in scene["objects"]]
+        self.lights = scene.get("lights", [])
+
+    def radiance(self, ray, depth, throughput, signature):
+        """Radiance along ``ray``; appends what the path met to ``signature``."""
+        si = self.mi_scene.ray_intersect(ray)
+        if not si.is_valid():
+            signature.append(-1)
+            return self.background
+        index = object_index(si.shape)
+        signature.append(index)
+        material = self.materials[index]
+        kind = material["type"]
+        if kind == "flat":
+            return mi.Color3f(material["radiance"])
+        if kind == "normal_colour":
+            raise SceneError(f"objects[{index}]: normal_colour is not a radiance")
+        wo = -ray.d
+        n = si.n
+        if kind in ("course_rough", "lambert"):
+            if dr.dot(n, ray.d) > 0.0 and self.scene["objects"][index]["type"] != "sphere":
+                n = -n  # two-sided planes are shaded on the viewer's side
+            return self.ambient_term(material) + self.direct(si, n, wo, material, signature)
+        if kind == "conductor":
+            facing = -n if dr.dot(n, wo) < 0.0 else n
+            cos_i = dr.dot(facing, wo)
+            f = mi.Color3f([mi.fresnel_conductor(cos_i, mi.Complex2f(material["n"][c], material["kappa"][c]))
+                            for c in range(3)])
+            following = throughput * f
+            if depth >= self.max_depth or max(following) < self.cutoff:
+                return mi.Color3f(0.0)
+            reflected = spawn(si, mi.reflect(wo, facing))
+            return f * self.radiance(reflected, depth + 1, following, signature)
+        if kind == "dielectric":
+            if depth >= self.max_depth:
+                return mi.Color3f(0.0)
+            cos_o = dr.dot(n, wo)
+            r, cos_t, eta_it, eta_ti = mi.fresnel(cos_o, material["eta"])
+            total = mi.Color3f(0.0)
+            if max(throughput) * r >= self.cutoff:
+                reflected = spawn(si, mi.reflect(wo, n))
+                total += r * self.radiance(reflected, depth + 1, throughput * r, signature)
+            if cos_t != 0.0:
+                weight = (1.0 - r) / (eta_it * eta_it)
+                if max(throughput) * weight >= self.cutoff:
+                    refracted = spawn(si, mi.refract(wo, n, cos_t, eta_ti))
+                    total += weight * self.radiance(refracted, depth + 1, throughput * weight, signature)
+            return total
+        raise SceneError(f"objects[{index}]: unknown material type {kind!r}")
+
+    def ambient_term(self, material):
+        if material["type"] == "course_rough":
+            return mi.Color3f(material["ambient"]) * self.ambient
+        return mi.Color3f(material["albedo"]) * self.ambient
+
+    def brdf(self, material, n, wi, wo):
+        """The BRDF (1/sr) per channel, zero unless both directions are above."""
+        cos_i, cos_o = dr.dot(n, wi), dr.dot(n, wo)
+        if not (cos_i > 0.0 and cos_o > 0.0):
+            return mi.Color3f(0.0)
+        if material["type"] == "lambert":
+            return mi.Color3f(material["albedo"]) / math.pi
+        h = dr.normalize(wi + wo)
+        lobe = max(dr.dot(n, h), 0.0) ** material["shininess"]
+        return mi.Color3f([material["diffuse"][c] + material["specular"][c] * lobe / cos_i for c in range(3)])
+
+    def direct(self, si, n, wo, material, signature):
+        total = mi.Color3f(0.0)
+        for light in self.lights:
+            if light["type"] == "directional":
+                wi = mi.Vector3f(normalize(light["towards"]))
+                irradiance = mi.Color3f(light["irradiance"]) * max(dr.dot(n, wi), 0.0)
+                shadow = spawn(si, wi)
+            else:
+                position = mi.Point3f(light["position"])
+                offset = position - si.p
+                r2 = dr.dot(offset, offset)
+                wi = offset / math.sqrt(r2)
+                irradiance = mi.Color3f(light["intensity"]) * (max(dr.dot(n, wi), 0.0) / r2)
+                shadow = spawn_to(si, position)
+            if not max(irradiance) > 0.0:
+                signature.append(-2)
+                continue
+            f = self.brdf(material, n, wi, wo)
+            if not max(f) > 0.0:
+                signature.append(-2)
+                continue
+            if self.mi_scene.ray_test(shadow):
+                signature.append(-3)
+                continue
+            signature.append(-4)
+            total += f * irradiance
+        return total
+
+
+def pixel_ray(sensor, x, y, width, height):
+    """The sensor's ray through the centre of pixel (x, y), unclipped: the
+    suite's far plane only gives the direction of a ray, it does not end it."""
+    ray, _ = sensor.sample_ray(0.0, 0.5, mi.Point2f((x + 0.5) / width, (y + 0.5) / height), mi.Point2f(0.5, 0.5))
+    return mi.Ray3f(ray.o, ray.d)
+
+
+def render_whitted(scene, mitsuba, width, height):
+    """The Whitted image (row-major RGB list) and each pixel's path signature."""
+    settings = scene.get("render", {})
+    integrator = Whitted(scene, mitsuba, settings.get("max_depth", DEFAULT_MAX_DEPTH),
+                         settings.get("throughput_cutoff", DEFAULT_CUTOFF))
+    sensor = mitsuba.sensors()[0]
+    image, signatures = [], []
+    for y in range(height):
+        for x in range(width):
+            signature = []
+            value = integrator.radiance(pixel_ray(sensor, x, y, width, height), 0, mi.Color3f(1.0), signature)
+            image.extend(float(c) for c in value)
+            signatures.append(tuple(signature))
+    return image, signatures
+
+
+def edge_mask(signatures, width, height):
+    """1 where a neighbour (8-connected) follows a different path."""
+    mask = []
+    for y in range(height):
+        for x in range(width):
+            own = signatures[y * width + x]
+            edge = any(
+                signatures[j * width + i] != own
+                for j in range(max(y - 1, 0), min(y + 2, height))
+                for i in range(max(x - 1, 0), min(x + 2, width))
+            )
+            mask.append(1 if edge else 0)
+    return mask
+
+
+def render_path(mitsuba, width, height, samples):
+    """Per-pixel mean and unbiased variance of one sample of Mitsuba's path tracer."""
+    sensor = mitsuba.sensors()[0]
+    integrator = mitsuba.integrator()
+    sampler = mi.load_dict({"type": "independent"})
+    mean, variance = [], []
+    for y in range(height):
+        for x in range(width):
+            ray = pixel_ray(sensor, x, y, width, height)
+            sampler.seed(y * width + x)
+            # Welford's running mean and sum of squared deviations: no
+            # cancellation when every sample is the same.
+            count, running, squares = 0, [0.0] * 3, [0.0] * 3
+            for _ in range(samples):
+                value, _, _ = integrator.sample(mitsuba, sampler, mi.RayDifferential3f(ray))
+                count += 1
+                for c in range(3):
+                    v = float(value[c])
+                    delta = v - running[c]
+                    running[c] += delta / count
+                    squares[c] += delta * (v - running[c])
+                sampler.advance()
+            mean.extend(running)
+            variance.extend(q / (samples - 1) for q in squares)
+    return mean, variance
+
+
+def f32_base64(values):
+    return base64.b64encode(struct.pack(f"<{len(values)}f", *values)).decode("ascii")
+
+
+def u8_base64(values):
+    return base64.b64encode(bytes(values)).decode("ascii")
+
+
+def render_scene(name, path_too, width=WIDTH, height=HEIGHT, samples=PATH_SAMPLES):
+    relative = f"validation/scenes/{name}.json"
+    with open(os.path.join(ROOT, relative), encoding="utf-8") as f:
+        text = f.read()
+    scene = json.loads(text)
+    # optimize=False keeps every shape apart (Mitsuba merges meshes sharing a
+    # BSDF otherwise), so a hit names the suite's object.
+    mitsuba = mi.load_dict(mitsuba_scene(scene, width, height, PATH_MAX_DEPTH), optimize=False)
+    image, signatures = render_whitted(scene, mitsuba, width, height)
+    settings = scene.get("render", {})
+    entry = {
+        "name": name,
+        "scene_file": relative,
+        "scene_text": text,
+        "width": width,
+        "height": height,
+        "whitted": {
+            "max_depth": settings.get("max_depth", DEFAULT_MAX_DEPTH),
+            "throughput_cutoff": settings.get("throughput_cutoff", DEFAULT_CUTOFF),
+            "radiance_f32le": f32_base64(image),
+        },
+        "edges_u8": u8_base64(edge_mask(signatures, width, height)),
+    }
+    if path_too:
+        mean, variance = render_path(mitsuba, width, height, samples)
+        entry["path"] = {
+            "max_depth": PATH_MAX_DEPTH,
+            "mitsuba_max_depth": PATH_MAX_DEPTH + 2,
+            "samples": samples,
+            "mean_f32le": f32_base64(mean),
+            "variance_f32le": f32_base64(variance),
+        }
+    else:
+        entry["path_skipped"] = PATH_SKIPPED[name]
+    return entry
+
+
+def build(scenes=SCENES):
+    return {
+        "schema": SCHEMA,
+        "generator": "python-checks/mitsuba_render.py",
+        "regenerate": REGENERATE,
+        "description": (
+            f"The suite's physically based course scenes at {WIDTH}x{HEIGHT}, rendered by Mitsuba {mi.__version__} "
+            f"({VARIANT}, float32): a Whitted integrator on Mitsuba's ray_intersect, fresnel_conductor, fresnel, "
+            f"reflect, refract, with each pixel's edge mask; Mitsuba's path integrator, {PATH_SAMPLES} samples "
+            "per pixel centre, mean and variance per pixel"
+        ),
+        "mitsuba": {"version": mi.__version__, "variant": VARIANT},
+        "excluded": EXCLUDED,
+        "scenes": [render_scene(name, path_too) for name, path_too in scenes],
+    }
+
+
+def write(document, path):
+    text = json.dumps(document, indent=1, sort_keys=False) + "\n"
+    directory = os.path.dirname(os.path.abspath(path))
+    temporary = os.path.join(directory, f".{os.path.basename(path)}.tmp")
+    with open(temporary, "w", encoding="utf-8") as f:
+        f.write(text)
+    os.replace(temporary, path)
+
+
+def main(argv):
+    path = argv[1] if len(argv) > 1 else DEFAULT_PATH
+    try:
+        document = build()
+    except SceneError as error:
+        print(f"mitsuba_render.py: {error}", file=sys.stderr)
+        return 1
+    write(document, path)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))

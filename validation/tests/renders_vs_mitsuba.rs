@@ -1,0 +1,112 @@
+//! The tracer's renders against Mitsuba 3's (`mitsuba_renders.json`): every
+//! physically based course scene agrees, Whitted per pixel and path by the
+//! per-pixel t-test; a doubled light and a mirrored camera are caught; a
+//! damaged reference is refused with its field named.
+
+use tracer::integrator::Settings;
+use tracer::render::Image;
+use tracer::scene::{Light, Scene};
+use validation::reference::{committed_dir, ReferenceError};
+use validation::renders::{self, MitsubaRenders, RenderChecks, Renderer};
+use validation::Check;
+
+fn run(render: Renderer) -> Vec<Check> {
+    let reference = MitsubaRenders::load(&committed_dir()).expect("committed reference");
+    let mut checks = Vec::new();
+    let mut figures = Vec::new();
+    RenderChecks { render }
+        .run_all(
+            &committed_dir().join(renders::FILE),
+            &reference,
+            true,
+            &mut checks,
+            &mut figures,
+        )
+        .expect("reference decodes");
+    assert_eq!(checks.len(), figures.len(), "one figure per check");
+    checks
+}
+
+fn print(checks: &[Check]) {
+    for c in checks {
+        println!("{} cases={} passed={}", c.id, c.cases, c.passed());
+        for m in &c.metrics {
+            println!("    {} = {:.4e} at {}", m.name, m.worst, m.at);
+        }
+        for f in c.failures.iter().take(3) {
+            println!("    FAIL {f}");
+        }
+    }
+}
+
+#[test]
+fn tracer_renders_agree_with_mitsuba() {
+    let checks = run(renders::tracer_render);
+    print(&checks);
+    // Eight scenes by Whitted (the normals scene shows no radiance), seven by
+    // path (the kaleidoscope's only light cannot reach into its tube).
+    assert_eq!(
+        checks.iter().filter(|c| c.id.ends_with(".whitted")).count(),
+        8
+    );
+    assert_eq!(checks.iter().filter(|c| c.id.ends_with(".path")).count(), 7);
+    for c in &checks {
+        assert!(c.passed(), "{}: {:#?}", c.id, c.failures);
+    }
+}
+
+/// The tracer with every light's power doubled.
+fn doubled_lights(scene: &Scene, settings: &Settings) -> Result<Image, String> {
+    let mut scene = scene.clone();
+    for light in &mut scene.lights {
+        match light {
+            Light::Directional { irradiance, .. } => *irradiance *= 2.0,
+            Light::Point { intensity, .. } => *intensity *= 2.0,
+        }
+    }
+    renders::tracer_render(&scene, settings)
+}
+
+/// The tracer's image mirrored left to right: the camera's x axis flipped.
+fn mirrored_camera(scene: &Scene, settings: &Settings) -> Result<Image, String> {
+    let mut image = renders::tracer_render(scene, settings)?;
+    for row in image.pixels.chunks_mut(image.width as usize) {
+        row.reverse();
+    }
+    Ok(image)
+}
+
+#[test]
+fn doubled_light_is_caught_in_every_lit_scene() {
+    let checks = run(doubled_lights);
+    // The emitting sphere has no light to double; every other scene fails
+    // both comparisons.
+    for c in &checks {
+        let unlit = c.id.contains("first_red_sphere");
+        assert_eq!(c.passed(), unlit, "{}", c.id);
+    }
+}
+
+#[test]
+fn mirrored_camera_is_caught_in_every_scene() {
+    let checks = run(mirrored_camera);
+    for c in &checks {
+        assert!(!c.passed(), "{}: a mirrored image passed", c.id);
+    }
+}
+
+#[test]
+fn truncated_image_is_refused_naming_the_field() {
+    let mut reference = MitsubaRenders::load(&committed_dir()).unwrap();
+    let s = &mut reference.scenes[2];
+    let cut = s.whitted.radiance_f32le.len() - 8;
+    s.whitted.radiance_f32le.truncate(cut);
+    let error = renders::decode(std::path::Path::new("mitsuba_renders.json"), 2, s).unwrap_err();
+    match error {
+        ReferenceError::Malformed { field, message, .. } => {
+            assert_eq!(field, "scenes[2].whitted.radiance_f32le");
+            assert!(message.contains("bytes"), "{message}");
+        }
+        other => panic!("{other}"),
+    }
+}
