@@ -70,6 +70,14 @@ counts the segments of a path (1: emitters seen directly, 2: direct light);
 the suite's counts bounces after the primary hit and adds the direct light at
 the last vertex, so the suite's ``max_depth`` D is Mitsuba's D + 2.
 
+Mitsuba's path integrator starts its secondary rays ``RayEpsilon (1 + max
+|p_i|)`` off the surface (see ``spawn``); the suite's tracer much closer. Where
+a pixel's light comes through a chain of mirrors onto a sharp highlight, that
+alone moves the pixel. Its size is measured per pixel, as the difference of
+the Whitted render with Mitsuba's ``si.spawn_ray`` and with ``spawn``
+(``offset_sensitivity``); the harness allows a path mean to differ by that
+much and reports it as a finding about the reference.
+
 Images are float32, little-endian, rows top to bottom, RGB interleaved, in
 base64 (``*_f32le``); the edge mask is one byte per pixel (1: masked). A pixel
 is an edge when one of its eight neighbours follows a different Whitted
@@ -369,8 +377,12 @@ def spawn_to(si, target):
 class Whitted:
     """The suite's Whitted model on Mitsuba's primitives (see the module doc)."""
 
-    def __init__(self, scene, mitsuba, max_depth, cutoff):
+    def __init__(self, scene, mitsuba, max_depth, cutoff, mitsuba_offsets=False):
         self.scene = scene
+        # Mitsuba's own si.spawn_ray offsets instead of `spawn`'s: to measure
+        # how much its path integrator's offsets move each pixel.
+        self.spawn = (lambda si, d: si.spawn_ray(d)) if mitsuba_offsets else spawn
+        self.spawn_to = (lambda si, p: si.spawn_ray_to(p)) if mitsuba_offsets else spawn_to
         self.mi_scene = mitsuba
         self.max_depth = max_depth
         self.cutoff = cutoff
@@ -407,7 +419,7 @@ class Whitted:
             following = throughput * f
             if depth >= self.max_depth or max(following) < self.cutoff:
                 return mi.Color3f(0.0)
-            reflected = spawn(si, mi.reflect(wo, facing))
+            reflected = self.spawn(si, mi.reflect(wo, facing))
             return f * self.radiance(reflected, depth + 1, following, signature)
         if kind == "dielectric":
             if depth >= self.max_depth:
@@ -416,12 +428,12 @@ class Whitted:
             r, cos_t, eta_it, eta_ti = mi.fresnel(cos_o, material["eta"])
             total = mi.Color3f(0.0)
             if max(throughput) * r >= self.cutoff:
-                reflected = spawn(si, mi.reflect(wo, n))
+                reflected = self.spawn(si, mi.reflect(wo, n))
                 total += r * self.radiance(reflected, depth + 1, throughput * r, signature)
             if cos_t != 0.0:
                 weight = (1.0 - r) / (eta_it * eta_it)
                 if max(throughput) * weight >= self.cutoff:
-                    refracted = spawn(si, mi.refract(wo, n, cos_t, eta_ti))
+                    refracted = self.spawn(si, mi.refract(wo, n, cos_t, eta_ti))
                     total += weight * self.radiance(refracted, depth + 1, throughput * weight, signature)
             return total
         raise SceneError(f"objects[{index}]: unknown material type {kind!r}")
@@ -448,14 +460,14 @@ class Whitted:
             if light["type"] == "directional":
                 wi = mi.Vector3f(normalize(light["towards"]))
                 irradiance = mi.Color3f(light["irradiance"]) * max(dr.dot(n, wi), 0.0)
-                shadow = spawn(si, wi)
+                shadow = self.spawn(si, wi)
             else:
                 position = mi.Point3f(light["position"])
                 offset = position - si.p
                 r2 = dr.dot(offset, offset)
                 wi = offset / math.sqrt(r2)
                 irradiance = mi.Color3f(light["intensity"]) * (max(dr.dot(n, wi), 0.0) / r2)
-                shadow = spawn_to(si, position)
+                shadow = self.spawn_to(si, position)
             if not max(irradiance) > 0.0:
                 signature.append(-2)
                 continue
@@ -478,11 +490,11 @@ def pixel_ray(sensor, x, y, width, height):
     return mi.Ray3f(ray.o, ray.d)
 
 
-def render_whitted(scene, mitsuba, width, height):
+def render_whitted(scene, mitsuba, width, height, mitsuba_offsets=False):
     """The Whitted image (row-major RGB list) and each pixel's path signature."""
     settings = scene.get("render", {})
     integrator = Whitted(scene, mitsuba, settings.get("max_depth", DEFAULT_MAX_DEPTH),
-                         settings.get("throughput_cutoff", DEFAULT_CUTOFF))
+                         settings.get("throughput_cutoff", DEFAULT_CUTOFF), mitsuba_offsets)
     sensor = mitsuba.sensors()[0]
     image, signatures = [], []
     for y in range(height):
@@ -569,12 +581,14 @@ def render_scene(name, path_too, width=WIDTH, height=HEIGHT, samples=PATH_SAMPLE
     }
     if path_too:
         mean, variance = render_path(mitsuba, width, height, samples)
+        moved, _ = render_whitted(scene, mitsuba, width, height, mitsuba_offsets=True)
         entry["path"] = {
             "max_depth": PATH_MAX_DEPTH,
             "mitsuba_max_depth": PATH_MAX_DEPTH + 2,
             "samples": samples,
             "mean_f32le": f32_base64(mean),
             "variance_f32le": f32_base64(variance),
+            "offset_sensitivity_f32le": f32_base64([abs(a - b) for a, b in zip(moved, image)]),
         }
     else:
         entry["path_skipped"] = PATH_SKIPPED[name]
