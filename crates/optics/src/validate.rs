@@ -55,11 +55,12 @@ pub struct ValidateArgs {
 
 /// The reference generators and the files each writes, in the order the
 /// full run regenerates them.
-const GENERATORS: [(&str, &[&str]); 4] = [
+const GENERATORS: [(&str, &[&str]); 5] = [
     ("fresnel_mpmath.py", &["fresnel_mpmath.json"]),
     ("mitsuba_laws.py", &["mitsuba_laws.json"]),
     ("colorimetry.py", &["colorimetry.json", "cie_tables.rs"]),
     ("metals.py", &["metals.json"]),
+    ("mitsuba_render.py", &["mitsuba_renders.json"]),
 ];
 
 pub fn run(args: &ValidateArgs, ui: &Ui) -> anyhow::Result<()> {
@@ -178,6 +179,8 @@ pub fn run(args: &ValidateArgs, ui: &Ui) -> anyhow::Result<()> {
         }
         None => Vec::new(),
     };
+    let mut figures = figures;
+    figures.extend(write_render_figures(&out, &report)?);
     write_atomically(&out, "report.html", to_html(&report, &figures).as_bytes())
         .with_context(|| format!("writing {}", out.join("report.html").display()))?;
 
@@ -412,6 +415,21 @@ fn random_cases(
         &cases,
         &results,
     ))
+}
+
+/// Writes the render triptychs (ours | Mitsuba | difference) as PNG under
+/// `out/figures/`; their names, relative to `out`.
+fn write_render_figures(out: &Path, report: &suite::Report) -> anyhow::Result<Vec<String>> {
+    let dir = out.join("figures");
+    std::fs::create_dir_all(&dir).with_context(|| format!("cannot create {}", dir.display()))?;
+    let mut names = Vec::new();
+    for figure in &report.render_figures {
+        let path = dir.join(&figure.file);
+        tracer::output::write_png(&path, &figure.image)
+            .with_context(|| format!("writing {}", path.display()))?;
+        names.push(format!("figures/{}", figure.file));
+    }
+    Ok(names)
 }
 
 /// Runs the figure script on `out/report.json`; the figure file names,
