@@ -1,0 +1,126 @@
+"""The mapping of the suite's scenes onto Mitsuba's, against textbook values:
+the course camera keeps +x on the right, the look-at camera looks at its
+target, the two lights deliver the irradiance their units promise, the
+course's Blinn-Phong BSDF is its definition; and the committed reference
+regenerates byte for byte."""
+import math
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import mitsuba_render as mr  # noqa: E402
+
+import mitsuba as mi  # noqa: E402
+
+# Mitsuba computes in float32: a handful of roundings of order-one values.
+F32_TOLERANCE = 1e-5
+
+
+def scene(camera, lights, material, objects=None, width=8, height=6):
+    return {
+        "version": 1,
+        "image": {"width": width, "height": height},
+        "camera": camera,
+        "materials": {"m": material},
+        "objects": objects or [{"type": "plane", "point": [0, 0, 4], "normal": [0, 0, -1], "material": "m"}],
+        "lights": lights,
+        "render": {"max_depth": 0},
+    }
+
+
+def load(s):
+    return mi.load_dict(mr.mitsuba_scene(s, s["image"]["width"], s["image"]["height"], 1), optimize=False)
+
+
+def test_course_camera_keeps_x_on_the_right_as_the_course_does():
+    # The course's getRay: eye (0, 0, -2), the pixel's point (ndc.x * aspect, ndc.y, 0).
+    width, height = 64, 48
+    sensor = load(scene({"type": "course_pinhole"}, [], {"type": "lambert", "albedo": [1, 1, 1]},
+                        width=width, height=height)).sensors()[0]
+    for x, y in [(0, 0), (63, 0), (40, 16), (10, 40)]:
+        nx = (x + 0.5) / width * 2 - 1
+        ny = 1 - (y + 0.5) / height * 2
+        expected = mr.normalize([nx * width / height, ny, 2.0])
+        d = mr.pixel_ray(sensor, x, y, width, height).d
+        assert all(abs(d[i] - expected[i]) < F32_TOLERANCE for i in range(3)), (x, y, d, expected)
+
+
+def test_look_at_camera_looks_at_its_target_with_up_on_top():
+    camera = {"type": "look_at", "eye": [0, 7, 14], "target": [0, 1.5, 0], "up": [0, 1, 0],
+              "fov_y_deg": 45, "near": 0.1, "far": 100}
+    sensor = load(scene(camera, [], {"type": "lambert", "albedo": [1, 1, 1]})).sensors()[0]
+    ray, _ = sensor.sample_ray(0.0, 0.5, mi.Point2f(0.5, 0.5), mi.Point2f(0.5, 0.5))
+    expected = mr.normalize([0, 1.5 - 7, -14])
+    assert all(abs(ray.d[i] - expected[i]) < F32_TOLERANCE for i in range(3))
+    # The top edge of the image is fov_y / 2 above the axis; right is +x (right-handed, looking along -z).
+    top, _ = sensor.sample_ray(0.0, 0.5, mi.Point2f(0.5, 0.0), mi.Point2f(0.5, 0.5))
+    right, _ = sensor.sample_ray(0.0, 0.5, mi.Point2f(1.0, 0.5), mi.Point2f(0.5, 0.5))
+    assert abs(math.degrees(math.acos(mr.dot(top.d, expected))) - 22.5) < 1e-3
+    assert right.d[0] > 0.0
+
+
+def lambert_plane_radiance(lights):
+    """The Whitted radiance and Mitsuba's path estimate at the image centre
+    of a white Lambert plane at z = 4 facing the course camera."""
+    s = scene({"type": "course_pinhole"}, lights, {"type": "lambert", "albedo": [0.5, 0.5, 0.5]}, width=9, height=9)
+    m = load(s)
+    sensor = m.sensors()[0]
+    ray = mr.pixel_ray(sensor, 4, 4, 9, 9)
+    whitted = mr.Whitted(s, m, 0, 0.0).radiance(ray, 0, mi.Color3f(1.0), [])
+    sampler = mi.load_dict({"type": "independent"})
+    sampler.seed(0)
+    path, _, _ = m.integrator().sample(m, sampler, mi.RayDifferential3f(ray))
+    return whitted[0], path[0]
+
+
+def test_directional_irradiance_is_mitsubas_irradiance():
+    # L = albedo / pi * E_perp cos(theta); light 60 degrees off the normal (-z).
+    towards = [math.sin(math.pi / 3), 0, -math.cos(math.pi / 3)]
+    whitted, path = lambert_plane_radiance([{"type": "directional", "towards": towards, "irradiance": [2, 2, 2]}])
+    expected = 0.5 / math.pi * 2 * 0.5
+    assert abs(whitted - expected) < F32_TOLERANCE
+    assert abs(path - expected) < F32_TOLERANCE  # one delta light: Mitsuba's estimate is exact
+
+
+def test_point_intensity_is_mitsubas_intensity():
+    # A light 2 m in front of the plane's centre pixel point: E = I / r^2 head-on.
+    whitted, path = lambert_plane_radiance([{"type": "point", "position": [0, 0, 2], "intensity": [8, 8, 8]}])
+    expected = 0.5 / math.pi * 8 / 4
+    assert abs(whitted - expected) < F32_TOLERANCE
+    assert abs(path - expected) < F32_TOLERANCE
+
+
+def test_course_blinn_phong_bsdf_is_its_definition():
+    props = mi.Properties("course_blinn_phong")
+    for key, value in [("kd_r", 0.1), ("kd_g", 0.8), ("kd_b", 0.3), ("ks_r", 1.0), ("ks_g", 0.5), ("ks_b", 0.5),
+                       ("shininess", 100.0)]:
+        props[key] = value
+    bsdf = mr.CourseBlinnPhong(props)
+    wi = mi.Vector3f(mr.normalize([0.3, 0.0, 1.0]))  # to the viewer
+    wo = mi.Vector3f(mr.normalize([-0.25, 0.05, 1.0]))  # to the light
+    h = mr.normalize([wi[i] + wo[i] for i in range(3)])
+    for c, (kd, ks) in enumerate([(0.1, 1.0), (0.8, 0.5), (0.3, 0.5)]):
+        # kd + ks cos^s(delta) / cos(theta_i), times cos(theta_i).
+        expected = (kd + ks * h[2] ** 100 / wo[2]) * wo[2]
+        assert abs(bsdf._f_cos(wi, wo)[c] - expected) < F32_TOLERANCE * max(1.0, expected)
+    # Two-sided: the same seen from below; nothing when the light is on the other side.
+    flip = lambda v: mi.Vector3f(v[0], v[1], -v[2])  # noqa: E731
+    assert abs(bsdf._f_cos(flip(wi), flip(wo))[1] - bsdf._f_cos(wi, wo)[1]) < 1e-7
+    assert bsdf._f_cos(wi, flip(wo))[1] == 0.0
+
+
+def test_unphysical_material_is_refused_naming_it():
+    s = scene({"type": "course_pinhole"}, [], {"type": "normal_colour"})
+    try:
+        mr.mitsuba_scene(s, 8, 6, 1)
+    except mr.SceneError as error:
+        assert "materials.m.type" in str(error)
+    else:
+        raise AssertionError("normal_colour accepted")
+
+
+def test_committed_reference_is_up_to_date(tmp_path):
+    fresh = tmp_path / "mitsuba_renders.json"
+    assert mr.main(["mitsuba_render.py", str(fresh)]) == 0
+    with open(mr.DEFAULT_PATH, "rb") as a, open(fresh, "rb") as b:
+        assert a.read() == b.read(), f"regenerate with: {mr.REGENERATE}"
