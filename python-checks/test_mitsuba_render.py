@@ -124,3 +124,22 @@ def test_committed_reference_is_up_to_date(tmp_path):
     assert mr.main(["mitsuba_render.py", str(fresh)]) == 0
     with open(mr.DEFAULT_PATH, "rb") as a, open(fresh, "rb") as b:
         assert a.read() == b.read(), f"regenerate with: {mr.REGENERATE}"
+
+
+def test_glass_in_a_uniform_sky_is_invisible():
+    # White furnace: inside a uniform radiance L a lossless glass sphere shows
+    # L, if reflection, refraction (mi.fresnel, mi.refract) and the radiance's
+    # 1/eta^2 across each interface are right; a wrong scaling shows 2.25 L or
+    # L / 2.25. Branches cut below 1e-4 of the throughput lose some 1e-4 here.
+    s = scene({"type": "course_pinhole"}, [], {"type": "dielectric", "eta": 1.5},
+              objects=[{"type": "sphere", "center": [0, 0, 4], "radius": 1, "material": "m"}], width=9, height=9)
+    s["background"] = [1, 1, 1]
+    m = load(s)
+    whitted = mr.Whitted(s, m, 40, 1e-4)
+    hits = 0
+    for x in range(9):
+        signature = []
+        value = whitted.radiance(mr.pixel_ray(m.sensors()[0], x, 4, 9, 9), 0, mi.Color3f(1.0), signature)
+        assert abs(value[0] - 1.0) < 1e-3, (x, value)
+        hits += 0 in signature
+    assert hits >= 3, "the centre row crosses the sphere"
