@@ -355,10 +355,11 @@ def spawn(si, direction):
     """A ray leaving the hit ``si`` along ``direction``, its origin moved off
     the surface by ``SPAWN_OFFSET (1 + max |p_i|)`` along the normal on the
     side it leaves by. Mitsuba's own ``si.spawn_ray`` moves it by
-    ``RayEpsilon (1 + max |p_i|)``, ``RayEpsilon`` = 1500 ε₃₂ ≈ 1.8e-4: on the
-    kaleidoscope's chains of four or five mirrors that shifts the final hit by
-    about a millimetre and the course's s = 100 highlight there by up to 2 %,
-    a difference of offsets, not of the laws compared. With this offset the
+    ``RayEpsilon (1 + max |p_i|)``, ``mi.math.RayEpsilon`` = 1500 * 2^-24
+    (about 8.9e-5): on the kaleidoscope's chains of four or five mirrors that
+    shifts the final hit by a fraction of a millimetre and the course's
+    s = 100 highlight there by up to 5 %, a difference of offsets, not of the
+    laws compared. With this offset the
     same pixel agrees with an exact float64 trace to 3e-6."""
     n = si.n if dr.dot(si.n, direction) >= 0.0 else -si.n
     scale = 1.0 + max(abs(si.p.x), abs(si.p.y), abs(si.p.z))

@@ -528,7 +528,7 @@ pub fn compare_path(
     if let Some(example) = offset_example {
         check.find(format!(
             "{offset_findings} pixel-channels differ significantly from Mitsuba's path integrator, each by \
-             less than Mitsuba's own ray offsets (RayEpsilon ≈ 1.8e-4 relative) move it; e.g. {example}"
+             less than Mitsuba's own ray offsets (RayEpsilon ≈ 8.9e-5 relative) move it; e.g. {example}"
         ));
     }
     summarise_failures(&mut check);
