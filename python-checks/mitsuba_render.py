@@ -48,11 +48,17 @@ comparison itself, and by ``test_mitsuba_render.py``):
 - ``lambert``: Mitsuba's ``diffuse`` with ``reflectance`` = albedo, two-sided.
 - ``flat``: an ``area`` emitter of that radiance on a black ``diffuse``
   surface: it emits and reflects nothing.
-- ``plane``: Mitsuba has no infinite plane; a square ``rectangle`` of side
-  2 * 10^4 m centred on ``point`` (the horizon moves by under 10^-3 rad, on the
-  silhouette the comparison masks).
-- ``mirror_tube``: one long ``rectangle`` per strip, the corners placed as
-  ``tracer::geometry::Tube`` places them.
+- ``plane``: Mitsuba has no infinite plane; a ``disk`` of radius 10^4 m
+  centred on ``point`` (the horizon moves by under 10^-3 rad, on the
+  silhouette the comparison masks). The disk's intersection is analytic; a
+  ``rectangle`` is two triangles, whose hit points lose precision in
+  proportion to their size (millimetres at 10^4 m).
+- ``mirror_tube``: each strip as 1 m ``rectangle`` pieces over 100 m either
+  side of ``axis_point``, the corners placed as
+  ``tracer::geometry::Tube`` places them. A ray that runs past the pieces
+  escapes to the background in Mitsuba and bounces on to the depth limit
+  (black) in the tracer: the same where the background is black, as in both
+  kaleidoscopes, whose objects all lie within 20 m of the axis point.
 
 The Whitted integrator (``whitted``) follows the suite's model
 (``crates/tracer/src/integrator.rs``, ``docs/scene-schema.md``) using only
