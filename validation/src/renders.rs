@@ -501,7 +501,12 @@ pub fn compare_path(
         .map_or(String::new(), |(i, _)| pixel_label(scene.width, *i));
     check.cases = compared / 3;
     // Smaller p is worse: recorded as −log10 p beside the threshold's.
-    check.measure("−log10 smallest p", 0.0 - smallest.log10(), &p_at);
+    // A p-value that underflows to 0 is shown as 10⁻³⁰⁰.
+    check.measure(
+        "−log10 smallest p",
+        0.0 - smallest.max(1e-300).log10(),
+        &p_at,
+    );
     check.measure("−log10 (α/m), the threshold", -threshold.log10(), "");
     check.measure("pixel-channel t-tests m", tests.len() as f64, "");
     check.measure("tests rejected", rejected as f64, "");

@@ -1,11 +1,12 @@
 //! The tracer's renders against Mitsuba 3's (`mitsuba_renders.json`): every
 //! physically based course scene agrees, Whitted per pixel and path by the
-//! per-pixel t-test; a doubled light and a mirrored camera are caught; a
-//! damaged reference is refused with its field named.
+//! per-pixel t-test; a doubled light, a mirrored camera and a path tracer
+//! stopped after one bounce are caught; a damaged reference is refused with
+//! its field named.
 
 use tracer::integrator::Settings;
 use tracer::render::Image;
-use tracer::scene::{Light, Scene};
+use tracer::scene::{IntegratorKind, Light, Scene};
 use validation::reference::{committed_dir, ReferenceError};
 use validation::renders::{self, MitsubaRenders, RenderChecks, Renderer};
 use validation::Check;
@@ -110,4 +111,36 @@ fn truncated_image_is_refused_naming_the_field() {
         }
         other => panic!("{other}"),
     }
+}
+
+/// The tracer with its path tracer stopped after one bounce: indirect light
+/// beyond the first bounce lost, everything else intact.
+fn one_bounce_path(scene: &Scene, settings: &Settings) -> Result<Image, String> {
+    let mut settings = *settings;
+    if settings.integrator == IntegratorKind::Path {
+        settings.max_depth = 1;
+    }
+    renders::tracer_render(scene, &settings)
+}
+
+#[test]
+fn missing_multiple_bounces_are_caught_by_the_t_test() {
+    let checks = run(one_bounce_path);
+    let failed: Vec<&str> = checks
+        .iter()
+        .filter(|c| !c.passed())
+        .map(|c| c.id.as_str())
+        .collect();
+    // The path renders that receive light after two or more bounces: the
+    // background in the gold mirrors' scene, the lit kaleidoscope's mirror
+    // chains, the seven spheres over their ground. (In `shadow` light that
+    // bounces twice between the two spheres is below what 256 samples see.)
+    assert_eq!(
+        failed,
+        [
+            "renders.mitsuba.gold_spheres.path",
+            "renders.mitsuba.kaleidoscope_lit.path",
+            "renders.mitsuba.webgl_seven_spheres.path"
+        ]
+    );
 }
