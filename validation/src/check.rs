@@ -102,6 +102,18 @@ pub fn ulp_f32(x: f64) -> f64 {
     2f64.powi((exponent - 23).max(-149))
 }
 
+/// The spacing of doubles at `x`, down to the smallest subnormal. Built from
+/// bits: `2f64.powi(-1074)` would overflow `2^1074` on the way and give 0.
+pub fn ulp_f64(x: f64) -> f64 {
+    let biased = ((x.abs().to_bits() >> 52) & 0x7ff) as i64;
+    if biased > 52 {
+        f64::from_bits(((biased - 52) as u64) << 52)
+    } else {
+        // Subnormal spacing (or normal values whose spacing is subnormal).
+        f64::from_bits(1u64 << (biased - 1).max(0))
+    }
+}
+
 /// `|computed − exact|` in `f32` ulps of `exact`; infinite if `computed` is NaN.
 pub fn ulps_f32(computed: f64, exact: f64) -> f64 {
     let err = (computed - exact).abs();
