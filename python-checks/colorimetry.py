@@ -31,6 +31,7 @@ import sys
 
 import numpy as np
 import colour
+from atomic_write import write_text
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 DEFAULT_JSON = os.path.join(ROOT, "validation", "reference", "colorimetry.json")
@@ -172,17 +173,9 @@ pub const D65: [f64; SAMPLES] = [
 """
 
 
-def write(path, text):
-    os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
-    tmp = path + ".tmp"
-    with open(tmp, "w", encoding="utf-8", newline="\n") as fh:
-        fh.write(text)
-    os.replace(tmp, path)
-
-
 def main(json_path=DEFAULT_JSON, rust_path=DEFAULT_RUST):
-    write(json_path, json.dumps(build_reference(), indent=1, allow_nan=False) + "\n")
-    write(rust_path, rust_tables())
+    write_text(json_path, json.dumps(build_reference(), indent=1, allow_nan=False) + "\n")
+    write_text(rust_path, rust_tables())
 
 
 if __name__ == "__main__":

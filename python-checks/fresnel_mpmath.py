@@ -48,6 +48,7 @@ import sys
 
 import mpmath
 from mpmath import mp, mpc, mpf
+from atomic_write import write_text
 
 DPS = 90
 DIGITS = 50
@@ -248,10 +249,7 @@ def build_reference():
 
 
 def main(path=DEFAULT_PATH):
-    os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
-    with open(path, "w", encoding="utf-8", newline="\n") as fh:
-        json.dump(build_reference(), fh, indent=1, allow_nan=False)
-        fh.write("\n")
+    write_text(path, json.dumps(build_reference(), indent=1, allow_nan=False) + "\n")
 
 
 if __name__ == "__main__":

@@ -27,7 +27,8 @@ import numpy as np
 from mpmath import mp
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import colorimetry  # noqa: E402
+import colorimetry
+from atomic_write import write_text  # noqa: E402
 import fresnel_mpmath as fm  # noqa: E402
 
 import mitsuba  # noqa: E402
@@ -88,7 +89,7 @@ def build_reference():
 
 
 def main(path=DEFAULT_PATH):
-    colorimetry.write(path, json.dumps(build_reference(), indent=1, allow_nan=False) + "\n")
+    write_text(path, json.dumps(build_reference(), indent=1, allow_nan=False) + "\n")
 
 
 if __name__ == "__main__":

@@ -16,6 +16,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import mitsuba_laws as ml  # noqa: E402
+from atomic_write import write_text
 
 CASES_SCHEMA, RESULTS_SCHEMA = "law-cases/1", "law-results/1"
 
@@ -46,10 +47,7 @@ def main(cases_path, results_path):
     out = {"schema": RESULTS_SCHEMA,
            "evaluator": f"Mitsuba {ml.mi.__version__} ({ml.VARIANT}, float32)",
            "results": results}
-    tmp = results_path + ".tmp"
-    with open(tmp, "w", encoding="utf-8", newline="\n") as fh:
-        json.dump(out, fh, allow_nan=False)
-    os.replace(tmp, results_path)
+    write_text(results_path, json.dumps(out, allow_nan=False))
 
 
 if __name__ == "__main__":

@@ -47,6 +47,7 @@ import fresnel_mpmath as fm  # noqa: E402
 
 import drjit as dr  # noqa: E402
 import mitsuba as mi  # noqa: E402
+from atomic_write import write_text
 
 VARIANT = "scalar_rgb"
 mi.set_variant(VARIANT)
@@ -230,12 +231,7 @@ def build_reference():
 
 
 def main(path=DEFAULT_PATH):
-    os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
-    text = json.dumps(build_reference(), indent=1, allow_nan=False) + "\n"
-    tmp = path + ".tmp"
-    with open(tmp, "w", encoding="utf-8", newline="\n") as fh:
-        fh.write(text)
-    os.replace(tmp, path)
+    write_text(path, json.dumps(build_reference(), indent=1, allow_nan=False) + "\n")
 
 
 if __name__ == "__main__":

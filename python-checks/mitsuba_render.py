@@ -99,6 +99,7 @@ import sys
 
 import drjit as dr  # noqa: F401  (Mitsuba's array library, imported first)
 import mitsuba as mi
+from atomic_write import write_text
 
 VARIANT = "scalar_rgb"
 mi.set_variant(VARIANT)
@@ -620,12 +621,7 @@ def build(scenes=SCENES):
 
 
 def write(document, path):
-    text = json.dumps(document, indent=1, sort_keys=False) + "\n"
-    directory = os.path.dirname(os.path.abspath(path))
-    temporary = os.path.join(directory, f".{os.path.basename(path)}.tmp")
-    with open(temporary, "w", encoding="utf-8") as f:
-        f.write(text)
-    os.replace(temporary, path)
+    write_text(path, json.dumps(document, indent=1, sort_keys=False) + "\n")
 
 
 def main(argv):

@@ -44,18 +44,24 @@ pub const DIRECTION_ABS: f64 = 8.0 * f32::EPSILON as f64;
 /// off by up to about 2 ε₃₂; the transmitted direction
 /// `t = −wi/η + (cos θ_i/η − cos θ_t) n` moves with it at the rate
 /// `|1/η − cos θ_i / (η² cos θ_t)|`, which grows without bound as
-/// `cos θ_t → 0`. `cos_i = |n·wi|`, `eta` the effective `n_t / n_i`, `cos_t`
-/// the exact transmitted cosine.
+/// `cos θ_t → 0`. There the square root caps it instead: the discriminant
+/// `η²cos²θ_t = η² − sin²θ_i` moves by at most `2 cos θ_i · 2ε₃₂ ≤ 4ε₃₂`, so
+/// `cos θ_t` moves by at most `2√ε₃₂ / η`, and the other terms by `2ε₃₂ / η`.
+/// The allowance is the smaller of the two bounds. `cos_i = |n·wi|`, `eta`
+/// the effective `n_t / n_i`, `cos_t` the exact transmitted cosine.
 pub fn refraction_allowance(cos_i: f64, eta: f64, cos_t: f64) -> f64 {
-    2.0 * f64::from(f32::EPSILON) * (1.0 / eta - cos_i / (eta * eta * cos_t)).abs()
+    let eps = f64::from(f32::EPSILON);
+    let linear = 2.0 * eps * (1.0 / eta - cos_i / (eta * eta * cos_t)).abs();
+    let root = (2.0 * eps.sqrt() + 2.0 * eps) / eta;
+    linear.min(root)
 }
 
 /// [`refraction_allowance`] from the input and the exact refracted direction.
 pub fn refraction_allowance_at(wi: [f64; 3], n: [f64; 3], eta: f64, refracted: [f64; 3]) -> f64 {
     let dot = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
     let cos_i = dot(wi, n);
-    let eta_eff = if cos_i >= 0.0 { eta } else { 1.0 / eta };
-    refraction_allowance(cos_i.abs(), eta_eff, dot(refracted, n).abs())
+    let eta_path = radiometry::snell::Incidence::resolve(cos_i, eta).eta();
+    refraction_allowance(cos_i.abs(), eta_path, dot(refracted, n).abs())
 }
 
 /// Mitsuba's float32 textbook evaluation against the exact value, absolute.

@@ -186,10 +186,32 @@ pub fn decode(
         field: format!("scenes[{index}].{field}"),
         message,
     };
+    // The reference images are small (64 × 48); anything beyond the tracer's
+    // own cap is a malformed file, refused before any allocation.
+    let side = 1..=tracer::scene::MAX_IMAGE_SIDE;
+    if !side.contains(&s.width) || !side.contains(&s.height) {
+        return Err(malformed(
+            "width",
+            format!(
+                "image {} × {} outside 1..={} per side",
+                s.width,
+                s.height,
+                tracer::scene::MAX_IMAGE_SIDE
+            ),
+        ));
+    }
+    if let Some(p) = &s.path {
+        if p.samples < 2 {
+            return Err(malformed(
+                "path.samples",
+                format!("a variance needs at least 2 samples, got {}", p.samples),
+            ));
+        }
+    }
     let scene = tracer::scene::parse(&s.scene_text)
         .map_err(|e| malformed("scene_text", e.to_string()))?
         .resized(s.width, s.height);
-    let pixels = (s.width * s.height) as usize;
+    let pixels = s.width as usize * s.height as usize;
     let floats = |field: &str, text: &str| {
         let bytes = base64_decode(text).map_err(|m| malformed(field, m))?;
         if bytes.len() != 12 * pixels {
@@ -326,6 +348,13 @@ pub fn compare_whitted(name: &str, reference: &Decoded, ours: &Image) -> Compare
         ),
     );
     let ours = flatten(ours);
+    if ours.len() != reference.whitted.len() {
+        check.fail(format!(
+            "the render has {} values, the reference {}",
+            ours.len(),
+            reference.whitted.len()
+        ));
+    }
     let mut heat = vec![f64::NAN; ours.len()];
     let (mut sum, mut compared) = (0.0, 0usize);
     let masked = reference.edges.iter().filter(|&&e| e).count();

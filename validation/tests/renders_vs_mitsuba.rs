@@ -113,6 +113,30 @@ fn truncated_image_is_refused_naming_the_field() {
     }
 }
 
+#[test]
+fn absurd_image_size_and_too_few_samples_are_refused_before_any_allocation() {
+    let reference = MitsubaRenders::load(&committed_dir()).unwrap();
+    let file = std::path::Path::new("mitsuba_renders.json");
+    let field_of = |error: ReferenceError| match error {
+        ReferenceError::Malformed { field, .. } => field,
+        other => panic!("{other}"),
+    };
+    let mut huge = reference.scenes[2].clone();
+    huge.width = 65_536;
+    huge.height = 65_536;
+    let error = renders::decode(file, 2, &huge).unwrap_err();
+    assert_eq!(field_of(error), "scenes[2].width");
+    let index = reference
+        .scenes
+        .iter()
+        .position(|s| s.path.is_some())
+        .unwrap();
+    let mut one = reference.scenes[index].clone();
+    one.path.as_mut().unwrap().samples = 1;
+    let error = renders::decode(file, index, &one).unwrap_err();
+    assert_eq!(field_of(error), format!("scenes[{index}].path.samples"));
+}
+
 /// The tracer with its path tracer stopped after one bounce: indirect light
 /// beyond the first bounce lost, everything else intact.
 fn one_bounce_path(scene: &Scene, settings: &Settings) -> Result<Image, String> {

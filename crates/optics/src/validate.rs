@@ -371,7 +371,11 @@ fn regenerate(python: &Path, scripts: &Path, fresh: &Path) -> anyhow::Result<Che
             } else {
                 committed.join(name)
             };
-            let same = std::fs::read(&old).ok() == std::fs::read(fresh.join(name)).ok();
+            // Both must exist: two missing files are not a reproduction.
+            let same = match (std::fs::read(&old), std::fs::read(fresh.join(name))) {
+                (Ok(committed), Ok(regenerated)) => committed == regenerated,
+                _ => false,
+            };
             if !same {
                 check.fail(format!(
                     "{} differs from what python-checks/{script} writes now: regenerate and commit it",
