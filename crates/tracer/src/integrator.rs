@@ -314,10 +314,10 @@ impl Tracer<'_> {
     /// Dielectric reflectance and transmittance at signed `cos_i`.
     fn dielectric_fresnel(&self, cos_i: f32, eta: f32) -> (f32, f32) {
         match self.settings.fresnel {
-            FresnelModel::Exact => (
-                fresnel::dielectric(cos_i, eta),
-                fresnel::dielectric_transmittance(cos_i, eta),
-            ),
+            FresnelModel::Exact => {
+                let f = fresnel::dielectric_polarized(cos_i, eta);
+                (f.reflectance(), f.transmittance())
+            }
             FresnelModel::Schlick => {
                 let r = fresnel::schlick_dielectric(cos_i, eta);
                 (r, 1.0 - r)
@@ -482,8 +482,14 @@ impl Tracer<'_> {
                     let outward = if cos_o >= 0.0 { n } else { -n };
                     let (reflectance, transmittance) = self.dielectric_fresnel(cos_o, eta);
                     let refraction = specular::refract(wo, n, eta);
-                    // Choose a branch with probability R (1 under total
-                    // internal reflection): the Fresnel weight cancels.
+                    // Choose a branch with probability R: the Fresnel
+                    // weight cancels. Under total internal reflection the
+                    // mirror branch is certain and carries the law's R
+                    // itself (1 for the exact law and Schlick; the course's
+                    // formula gives less).
+                    if refraction.is_none() {
+                        beta *= reflectance;
+                    }
                     match refraction {
                         Some(t) if rng.next_f32() >= reflectance => {
                             beta *= radiance::across_interface(transmittance, t.eta)

@@ -38,15 +38,6 @@ pub enum OutputError {
     },
 }
 
-/// The sRGB encoding of a linear value in `[0, 1]` (IEC 61966-2-1).
-pub fn srgb_encode(linear: f32) -> f32 {
-    if linear <= 0.003_130_8 {
-        12.92 * linear
-    } else {
-        1.055 * linear.powf(1.0 / 2.4) - 0.055
-    }
-}
-
 /// One channel of a pixel as an 8-bit sRGB value (NaN shows as black).
 pub fn to_srgb8(radiance: f32) -> u8 {
     let clamped = if radiance.is_nan() {
@@ -54,7 +45,7 @@ pub fn to_srgb8(radiance: f32) -> u8 {
     } else {
         radiance.clamp(0.0, 1.0)
     };
-    (srgb_encode(clamped) * 255.0).round() as u8
+    (radiometry::colour::srgb_encode(f64::from(clamped)) * 255.0).round() as u8
 }
 
 /// The image as 8-bit sRGB bytes, rows top to bottom.
@@ -190,13 +181,13 @@ mod tests {
 
     #[test]
     fn srgb_encoding_matches_iec_61966_2_1() {
-        // The standard's breakpoint and known values: 0.5 linear is 0.7354
-        // encoded (188 of 255), 0.2140 linear is 0.5 encoded.
+        // Known values (the transfer function itself is tested in
+        // radiometry::colour): 0.5 linear is 0.7354 encoded (188 of 255),
+        // 0.2140 linear is 0.5 encoded (128: 127.5 rounds up).
         assert_eq!(to_srgb8(0.0), 0);
         assert_eq!(to_srgb8(1.0), 255);
         assert_eq!(to_srgb8(0.5), 188);
-        assert!((srgb_encode(0.214_041_14) - 0.5).abs() < 1e-6);
-        assert!((srgb_encode(0.003_130_8) - 0.040_45).abs() < 1e-6);
+        assert_eq!(to_srgb8(0.214_1), 128);
     }
 
     #[test]

@@ -541,16 +541,34 @@ fn retag(scene: &mut Value) -> Result<(), SceneError> {
     Ok(())
 }
 
+/// The tracer computes in f32: a finite f64 beyond f32's range (3.4e38)
+/// would become infinite there, so it is refused by name like a NaN.
+fn within_f32(name: String, c: f64) -> Result<(), DomainError> {
+    if (c as f32).is_finite() {
+        Ok(())
+    } else {
+        Err(DomainError::OutOfRange {
+            name,
+            value: c,
+            expected: "within f32 range (|x| < 3.4e38)",
+        })
+    }
+}
+
 fn finite3(path: &str, v: [f64; 3]) -> Result<Vec3, DomainError> {
     for (axis, c) in ["[0]", "[1]", "[2]"].into_iter().zip(v) {
-        domain::finite(&format!("{path}{axis}"), c)?;
+        let name = format!("{path}{axis}");
+        domain::finite(&name, c)?;
+        within_f32(name, c)?;
     }
     Ok(DVec3::from_array(v).as_vec3())
 }
 
 fn non_negative3(path: &str, v: [f64; 3]) -> Result<Vec3, DomainError> {
     for (axis, c) in ["[0]", "[1]", "[2]"].into_iter().zip(v) {
-        domain::non_negative(&format!("{path}{axis}"), c)?;
+        let name = format!("{path}{axis}");
+        domain::non_negative(&name, c)?;
+        within_f32(name, c)?;
     }
     Ok(DVec3::from_array(v).as_vec3())
 }

@@ -96,6 +96,11 @@ fn bad_scenes_are_refused_with_the_path_of_the_bad_value() {
             &["objects[0].radius"],
         ),
         (
+            "centre beyond f32",
+            with("/objects/0/center", json!([0, 1e39, 4])),
+            &["objects[0].center[1]", "within f32 range"],
+        ),
+        (
             "negative radius",
             with("/objects/0/radius", json!(-0.8)),
             &["objects[0].radius", "positive", "-0.8"],

@@ -6,7 +6,6 @@ use glam::Vec3;
 use serde_json::json;
 use tracer::geometry::Ray;
 use tracer::integrator::{Machinery, RayCounts, Settings, Tracer};
-use tracer::needs;
 use tracer::render::render;
 use tracer::rng::Pcg32;
 use tracer::scene::{self, IntegratorKind, Scene};
@@ -138,11 +137,32 @@ fn directional_light_cannot_reach_inside_the_closed_kaleidoscope() {
     let mut scene = course_scene("kaleidoscope");
     scene.ambient = Vec3::ZERO;
     let settings = Settings::from_scene(&scene);
-    let machinery = needs::analyse(&scene, &settings).machinery(&settings);
+    // Everything switched on, the light and its shadow rays included: the
+    // scene analysis would skip the light for exactly this reason, which is
+    // what is under test here, so it must not decide.
+    let machinery = Machinery::everything(&scene, &settings);
     let image = render(&scene, &settings, &machinery, None, &|_| {})
         .unwrap()
         .image;
     assert!(image.pixels.iter().all(|p| *p == Vec3::ZERO));
+    // And the light is really there: without the tube's walls shadowing,
+    // the spheres inside are lit.
+    let mut open = scene.clone();
+    open.objects
+        .retain(|o| !matches!(o, tracer::geometry::Object::Tube(_)));
+    let lit = render(
+        &open,
+        &settings,
+        &Machinery::everything(&open, &settings),
+        None,
+        &|_| {},
+    )
+    .unwrap()
+    .image;
+    assert!(
+        lit.pixels.iter().any(|p| p.max_element() > 0.0),
+        "the light reaches nothing even without the tube"
+    );
 }
 
 /// The far wall's normal (0, 0, 1) points away from the camera; the course

@@ -172,8 +172,56 @@ fn path_converges_to_whitted_where_only_mirrors_and_glass_scatter() {
         throughput_cutoff: 0.0,
         ..Settings::default()
     };
+    let noisy = path_mean_within_five_standard_errors_of_whitted(&scene, base);
+    assert!(
+        noisy > 50,
+        "the glass must make some pixels random, got {noisy}"
+    );
+}
+
+/// The same convergence where light is totally reflected inside glass, with
+/// the course's Fresnel formula, which (unlike the exact law) gives R < 1
+/// there: the camera sits inside a large glass sphere, near its wall, and
+/// sees the wall beyond the critical angle over much of the image. The path
+/// tracer's certain mirror branch must carry R, as Whitted's does.
+#[test]
+fn path_converges_to_whitted_under_total_internal_reflection_with_the_course_fresnel() {
+    let scene = parse(json!({
+        "version": 1,
+        "image": { "width": 24, "height": 18 },
+        "camera": { "type": "course_pinhole" },
+        "background": [0.2, 0.3, 0.5],
+        "materials": {
+            "gold": { "type": "conductor", "n": [0.17, 0.35, 1.5], "kappa": [3.1, 2.7, 1.9] },
+            "glass": { "type": "dielectric", "eta": 1.5 },
+            "panel": { "type": "flat", "radiance": [1.0, 0.9, 0.7] }
+        },
+        "objects": [
+            { "type": "sphere", "center": [0, 10, 4], "radius": 12, "material": "glass" },
+            { "type": "sphere", "center": [0.5, -0.4, 4], "radius": 0.5, "material": "gold" },
+            { "type": "plane", "point": [0, -1, 0], "normal": [0, 1, 0], "material": "panel" }
+        ],
+        "lights": []
+    }));
+    let base = Settings {
+        max_depth: 6,
+        throughput_cutoff: 0.0,
+        fresnel: FresnelModel::Course,
+        ..Settings::default()
+    };
+    // Check that the scene does what it is for: somewhere the course's R
+    // under total internal reflection is below 1.
+    let tir_r = radiometry::course::fresnel_000_glsl(radiometry::fresnel::f0(1.5f32, 0.0), 0.3);
+    assert!(tir_r < 0.9, "{tir_r}");
+    path_mean_within_five_standard_errors_of_whitted(&scene, base);
+}
+
+/// Renders Whitted once and the path tracer with 256 seeds, and asserts the
+/// path mean within 5 standard errors (plus f32 rounding) of Whitted at every
+/// pixel and channel. Returns how many values were random at all.
+fn path_mean_within_five_standard_errors_of_whitted(scene: &Scene, base: Settings) -> usize {
     let whitted = render_with(
-        &scene,
+        scene,
         &Settings {
             integrator: IntegratorKind::Whitted,
             ..base
@@ -189,7 +237,7 @@ fn path_converges_to_whitted_where_only_mirrors_and_glass_scatter() {
             seed,
             ..base
         };
-        let image = render_with(&scene, &s, None);
+        let image = render_with(scene, &s, None);
         for (i, p) in image.pixels.iter().enumerate() {
             for c in 0..3 {
                 sum[i][c] += p[c] as f64;
@@ -215,10 +263,7 @@ fn path_converges_to_whitted_where_only_mirrors_and_glass_scatter() {
             );
         }
     }
-    assert!(
-        noisy > 50,
-        "the glass must make some pixels random, got {noisy}"
-    );
+    noisy
 }
 
 #[test]

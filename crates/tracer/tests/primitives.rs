@@ -280,6 +280,7 @@ fn look_at_edge_rays_span_the_field_of_view() {
 #[test]
 fn error_bound_offset_never_restarts_on_its_own_sphere_at_any_scale() {
     let mut rng = tracer::rng::Pcg32::new(1, 2);
+    let mut hits = 0usize;
     for distance in [0.0_f32, 1.0, 1e2, 1e4, 1e6] {
         for radius in [1e-3_f32, 1.0, 1e3] {
             if radius < 1e-3 * distance {
@@ -301,6 +302,7 @@ fn error_bound_offset_never_restarts_on_its_own_sphere_at_any_scale() {
                 let Some(hit) = hit_sphere(&s, &Ray::new(origin, -dir)) else {
                     continue;
                 };
+                hits += 1;
                 let out = Ray::new(spawn::origin(&hit, hit.normal, RayOffset::Robust), dir);
                 assert!(
                     hit_sphere(&s, &out).is_none(),
@@ -324,4 +326,6 @@ fn error_bound_offset_never_restarts_on_its_own_sphere_at_any_scale() {
             }
         }
     }
+    // Every ray is aimed at its sphere from outside: nearly all must hit.
+    assert!(hits > 10_000, "only {hits} hits");
 }
