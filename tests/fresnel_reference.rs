@@ -33,12 +33,22 @@ fn fresnel_matches_50_digit_reference_within_8_ulps() {
             mpmath::check_conductor(&laws, &laws64, &reference),
         ),
     ];
-    println!("| law | tier and quantity | worst | at |");
-    println!("|---|---|---|---|");
+    println!("| law | tier and quantity | worst (ulps) | at | worst (relative) | at |");
+    println!("|---|---|---|---|---|---|");
     for (law, check) in &checks {
-        for metric in &check.metrics {
-            let at = metric.at.replace('|', "\\|");
-            println!("| {law} | {} | {:.2} | {at} |", metric.name, metric.worst);
+        for metric in check.metrics.iter().filter(|m| m.name.ends_with(" (ulps)")) {
+            let quantity = metric.name.trim_end_matches(" (ulps)");
+            let relative = check
+                .worst(&format!("{quantity} (relative)"))
+                .expect("each quantity is measured in both units");
+            let cell = |at: &str| at.replace('|', "\\|");
+            println!(
+                "| {law} | {quantity} | {:.2} | {} | {:.1e} | {} |",
+                metric.worst,
+                cell(&metric.at),
+                relative.worst,
+                cell(&relative.at)
+            );
         }
     }
     for (law, check) in &checks {

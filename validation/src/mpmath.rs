@@ -13,6 +13,10 @@
 //! the precision). The bound is just above the worst error measured (6.2
 //! ulps, conductor R_p in f64), so that a regression costing one digit fails;
 //! where the exact value is subnormal the ulps are those of the smallest
+//! subnormal, and an exact value just below a power of two is measured in
+//! the spacing of its own binade. Each quantity's worst relative error
+//! `|ours − exact| / exact` is reported beside its ulps; the bound is on the
+//! ulps, which say the same everywhere but where the exact value is
 //! subnormal. The workspace test `tests/fresnel_reference.rs` runs this
 //! check on the radiometry crate's laws and prints its table; a broken law
 //! injected through [`Laws`] / [`Laws64`] fails it.
@@ -124,22 +128,44 @@ impl FresnelMpmath {
     }
 }
 
+impl Exact {
+    /// The spacing of the tier's numbers at the exact value `hi + lo`. When
+    /// `hi` is a power of two and `lo < 0`, the value lies in the binade
+    /// below, whose spacing is half that at `hi`.
+    fn ulp(self, tier: &str) -> f64 {
+        let at = |x: f64| if tier == "f32" { ulp_f32(x) } else { ulp_f64(x) };
+        let power_of_two = self.0 != 0.0 && self.0.to_bits() & ((1 << 52) - 1) == 0;
+        let below = power_of_two && self.1 < 0.0;
+        if below {
+            at(self.0.abs() * 0.75) // any value of the binade below
+        } else {
+            at(self.0)
+        }
+    }
+}
+
+/// Measures `got` against `exact` in ulps of the tier (the bound) and
+/// relative to the exact value (reported beside it; 0 when both are 0,
+/// infinite when only the exact value is).
 fn compare(check: &mut Check, tier: &str, quantity: &str, label: &str, got: f64, exact: Exact) {
-    let ulp = if tier == "f32" {
-        ulp_f32(exact.0)
-    } else {
-        ulp_f64(exact.0)
-    };
+    // `got − hi` is exact (Sterbenz) when the two are close, so the error
+    // resolves below one ulp of the tier.
     let err = ((got - exact.0) - exact.1).abs();
     let ulps = if err.is_nan() {
         f64::INFINITY
     } else {
-        err / ulp
+        err / exact.ulp(tier)
+    };
+    let relative = if err == 0.0 {
+        0.0
+    } else {
+        err / (exact.0 + exact.1).abs()
     };
     check.measure(&format!("{tier} {quantity} (ulps)"), ulps, label);
+    check.measure(&format!("{tier} {quantity} (relative)"), relative, label);
     if !(ulps <= BOUND_ULPS) {
         check.fail(format!(
-            "{tier} {quantity} at {label}: got {got:e}, exact {:e} ({ulps:.1} ulps)",
+            "{tier} {quantity} at {label}: got {got:e}, exact {:e} ({ulps:.1} ulps, relative {relative:.1e})",
             exact.0
         ));
     }
@@ -241,5 +267,21 @@ mod tests {
         ] {
             assert_eq!(ulp_f64(x), x.next_up() - x, "{x:e}");
         }
+    }
+
+    /// An exact value just below a power of two is measured in the spacing
+    /// of the binade it lies in, not in the coarser one of its rounded `hi`.
+    #[test]
+    fn ulps_are_those_of_the_exact_value_at_a_power_of_two() {
+        let just_below = Exact(1.0, -f64::EPSILON / 8.0);
+        assert_eq!(just_below.ulp("f64"), f64::EPSILON / 2.0);
+        assert_eq!(just_below.ulp("f32"), f32::EPSILON as f64 / 2.0);
+        assert_eq!(Exact(1.0, f64::EPSILON / 8.0).ulp("f64"), f64::EPSILON);
+        assert_eq!(Exact(0.75, -1e-20).ulp("f64"), f64::EPSILON / 2.0);
+        let mut check = Check::new("t", "t", "t", "t");
+        compare(&mut check, "f64", "R", "one below", 1.0, Exact(1.0, -f64::EPSILON / 4.0));
+        assert_eq!(check.worst("f64 R (ulps)").unwrap().worst, 0.5);
+        let relative = check.worst("f64 R (relative)").unwrap().worst;
+        assert!((relative - f64::EPSILON / 4.0).abs() < 1e-30, "{relative:e}");
     }
 }

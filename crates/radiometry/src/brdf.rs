@@ -8,7 +8,8 @@
 //! - **Energy conservation**, the directional albedo
 //!   `ρ(wo) = ∫ f_r(wi, wo) cos θ_i dω_i ≤ 1`: [`directional_albedo`].
 //!
-//! The models, with the course's names (`003`, "Rücskös felületek"):
+//! The models: the course's (`003`, "Rücskös felületek", whose specular
+//! model is Phong-Blinn), and classic Phong beside them for comparison:
 //!
 //! | model | `f_r` | reciprocal | conserves energy |
 //! |---|---|---|---|
@@ -18,7 +19,8 @@
 //! | [`BlinnPhong`] | `kd + ks (cos⁺δ)^shine / cos θ_i`, δ from the half vector (course form) | no | no |
 //! | [`BlinnPhongReciprocal`] | `kd + ks (cos⁺δ)^shine / ‖wi + wo‖²` (the course's fix) | yes | not in general |
 //!
-//! All return 0 when either direction is at or below the surface.
+//! All return 0 when either direction is at or below the surface, and NaN
+//! for a NaN direction.
 
 #[allow(unused_imports)]
 use num_traits::{Float, FloatConst, One, Zero};
@@ -34,11 +36,25 @@ pub trait Brdf<T: Real> {
     fn eval<V: Vector3<Scalar = T>>(&self, n: V, wi: V, wo: V) -> T;
 }
 
-/// The cosines of both directions if both are strictly above the surface.
+/// `lobe(cos θ_i, cos θ_o)` where both directions are strictly above the
+/// surface, 0 where either is at or below it, and NaN for a NaN direction
+/// (crate conventions: NaN in, NaN out).
 #[inline]
-fn above<V: Vector3>(n: V, wi: V, wo: V) -> Option<(V::Scalar, V::Scalar)> {
+fn above<V: Vector3>(
+    n: V,
+    wi: V,
+    wo: V,
+    lobe: impl FnOnce(V::Scalar, V::Scalar) -> V::Scalar,
+) -> V::Scalar {
     let (cos_i, cos_o) = (n.dot(wi), n.dot(wo));
-    (cos_i > V::Scalar::zero() && cos_o > V::Scalar::zero()).then_some((cos_i, cos_o))
+    let zero = V::Scalar::zero();
+    if cos_i > zero && cos_o > zero {
+        lobe(cos_i, cos_o)
+    } else if cos_i.is_nan() || cos_o.is_nan() {
+        V::Scalar::nan()
+    } else {
+        zero
+    }
 }
 
 /// The physically normalised Lambertian (ideal diffuse) BRDF,
@@ -61,7 +77,7 @@ pub struct Lambert<T> {
 impl<T: Real> Brdf<T> for Lambert<T> {
     #[inline]
     fn eval<V: Vector3<Scalar = T>>(&self, n: V, wi: V, wo: V) -> T {
-        above(n, wi, wo).map_or(T::zero(), |_| self.albedo * T::FRAC_1_PI())
+        above(n, wi, wo, |_, _| self.albedo * T::FRAC_1_PI())
     }
 }
 
@@ -78,11 +94,13 @@ pub struct CourseLambert<T> {
 impl<T: Real> Brdf<T> for CourseLambert<T> {
     #[inline]
     fn eval<V: Vector3<Scalar = T>>(&self, n: V, wi: V, wo: V) -> T {
-        above(n, wi, wo).map_or(T::zero(), |_| self.kd)
+        above(n, wi, wo, |_, _| self.kd)
     }
 }
 
-/// Phong's model as a BRDF in the course's shape: a diffuse `kd` plus a lobe
+/// Phong's original model (B. T. Phong, "Illumination for computer generated
+/// pictures", CACM 18(6), 1975), which the course replaces by Phong-Blinn,
+/// written as a BRDF in the course's shape: a diffuse `kd` plus a lobe
 /// around the mirror direction, divided by `cos θ_i` so that the reflected
 /// radiance is `L_in (kd cos θ_i + ks (cos⁺α)^shine)`, with `cos α` between
 /// the mirror image of `wi` and `wo`.
@@ -101,7 +119,7 @@ pub struct Phong<T> {
 impl<T: Real> Brdf<T> for Phong<T> {
     #[inline]
     fn eval<V: Vector3<Scalar = T>>(&self, n: V, wi: V, wo: V) -> T {
-        above(n, wi, wo).map_or(T::zero(), |(cos_i, _)| {
+        above(n, wi, wo, |cos_i, _| {
             let cos_alpha = cos_plus(reflect(wi, n).dot(wo));
             self.kd + self.ks * cos_alpha.powf(self.shine) / cos_i
         })
@@ -128,7 +146,7 @@ pub struct BlinnPhong<T> {
 impl<T: Real> Brdf<T> for BlinnPhong<T> {
     #[inline]
     fn eval<V: Vector3<Scalar = T>>(&self, n: V, wi: V, wo: V) -> T {
-        above(n, wi, wo).map_or(T::zero(), |(cos_i, _)| {
+        above(n, wi, wo, |cos_i, _| {
             self.kd + self.ks * half_vector_lobe(n, wi, wo, self.shine) / cos_i
         })
     }
@@ -150,7 +168,7 @@ pub struct BlinnPhongReciprocal<T> {
 impl<T: Real> Brdf<T> for BlinnPhongReciprocal<T> {
     #[inline]
     fn eval<V: Vector3<Scalar = T>>(&self, n: V, wi: V, wo: V) -> T {
-        above(n, wi, wo).map_or(T::zero(), |_| {
+        above(n, wi, wo, |_, _| {
             let sum = wi + wo;
             self.kd + self.ks * half_vector_lobe(n, wi, wo, self.shine) / sum.dot(sum)
         })

@@ -100,8 +100,9 @@ pub fn schlick<T: Real>(cos_i: T, f0: T) -> T {
 ///
 /// Schlick (1994) states the approximation in terms of the angle in the
 /// rarer medium; applied with `cos θ_i` from inside glass it misses total
-/// internal reflection entirely. This is the form pbrt-v3 and most
-/// production renderers use when they use Schlick at all.
+/// internal reflection entirely (by up to 0.975 for water, measured by
+/// `cargo run --release -p radiometry --example schlick_error`), while with
+/// `cos θ_t` it is as close as from the outside.
 #[inline]
 pub fn schlick_dielectric<T: Real>(cos_i: T, eta: T) -> T {
     if !(eta > T::zero() && eta.is_finite()) || cos_i.is_nan() {
@@ -204,8 +205,9 @@ pub fn dielectric_polarized<T: Real>(cos_i: T, eta: T) -> DielectricFresnel<T> {
     }
     let s = d.sqrt();
     let a = n_i * c; // n_i cos θ_i
-                     // T = 4 a s / w² is evaluated as 4c · (n_i s / w²): at grazing incidence
-                     // a = n_i c, or the product 4 a s, would underflow before the division.
+
+    // T = 4 a s / w² is evaluated as 4c · (n_i s / w²): at grazing incidence
+    // a = n_i c, or the product 4 a s, would underflow before the division.
     let four_c = T::lit(4.0) * c;
 
     // (a + s)² as a² + 2as + s² with s² = d exactly as computed: at grazing

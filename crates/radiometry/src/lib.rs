@@ -51,7 +51,11 @@
 //!   this is `n_t / n_i`; from the inside the laws use `1 / eta`. Glass in air
 //!   has `eta = 1.5`. A conductor's index is complex, `n + i·kappa`, with
 //!   `kappa ≥ 0` the extinction coefficient (absorption), and light is assumed
-//!   to arrive from the outside (the dielectric side).
+//!   to arrive from the outside (the dielectric side). The functions of
+//!   unsigned angles in [`snell`] (`transmitted_angle`, `critical_angle`,
+//!   `brewster_angle`) have no sign to read the side from; they take the
+//!   index along the path, named `eta_path = n_t / n_i`, and every
+//!   [`specular::Refraction`] reports the `eta_path` it took.
 //! - **Angles are in radians**, measured from the normal.
 //! - **SI units**: radiance in W/(sr·m²), irradiance in W/m², radiant
 //!   intensity in W/sr, BRDFs in 1/sr, lengths in metres. Reflectances and
@@ -59,8 +63,10 @@
 //! - **Precision**: every law is generic over [`Real`] (`f32` and `f64`). `f64`
 //!   is the reference; `f32` is what a tracer uses, and the test suite
 //!   measures the difference against 50-digit references.
-//! - **Out-of-domain input** never panics: a NaN argument gives NaN, a
-//!   non-positive `eta` gives NaN, and a cosine slightly outside `[-1, 1]` (as
+//! - **Out-of-domain input** never panics. A NaN argument, or an index that
+//!   is not positive and finite, gives NaN where the law returns a number and
+//!   `None` where it returns an optional outcome (a refracted direction, a
+//!   transmitted cosine, an angle). A cosine slightly outside `[-1, 1]` (as
 //!   rounding produces from a dot product) is clamped into it. Callers that
 //!   take user input validate it first with [`domain`].
 //!

@@ -2,11 +2,16 @@
 //! the critical angle of total internal reflection and Brewster's angle.
 //! Angles in radians; indices of refraction are unitless.
 //!
-//! Functions on angles take the relative index along the path,
-//! `eta = n_t / n_i` (light goes from medium i into medium t). Functions on
-//! signed cosines follow the crate convention: `eta = n_inside / n_outside`
-//! and the sign of `cos_i` says which side the light comes from; they resolve
-//! the side once, through [`Incidence::resolve`].
+//! Functions on signed cosines follow the crate convention,
+//! `eta = n_inside / n_outside`, and read the side from the sign of `cos_i`;
+//! they resolve it once, through [`Incidence::resolve`]. Functions on angles
+//! in `[0, π/2]` have no side to read and take the index along the path,
+//! `eta_path = n_t / n_i` (light goes from medium i into medium t), as the
+//! crate conventions state.
+//!
+//! Sources: Snell's law as the course states it (`003`, "Snellius-Descartes
+//! törvény"; `001`, `n₁ sin θ₁ = n₂ sin θ₂`); Born & Wolf, *Principles of
+//! Optics*, §1.5 (refraction, total internal reflection, Brewster's angle).
 //!
 //! ```
 //! use radiometry::snell;
@@ -93,8 +98,9 @@ impl<T: Real> Incidence<T> {
 }
 
 /// `cos θ_t ≥ 0` for light with signed cosine `cos_i` at an interface of
-/// relative index `eta = n_inside / n_outside`, or `None` under total internal
-/// reflection.
+/// relative index `eta = n_inside / n_outside`, or `None` when no refracted
+/// ray exists: under total internal reflection, and for input that describes
+/// no interface (a NaN cosine, `eta` not positive and finite).
 ///
 /// Accurate to a few ulps also within 1e-12 rad of the critical angle, where
 /// `1 − sin²θ_t` cancels: the discriminant is summed in twice the precision.
@@ -109,51 +115,66 @@ impl<T: Real> Incidence<T> {
 /// ```
 #[inline]
 pub fn cos_transmitted<T: Real>(cos_i: T, eta: T) -> Option<T> {
+    if cos_i.is_nan() || !(eta > T::zero() && eta.is_finite()) {
+        return None;
+    }
     Incidence::resolve(cos_i, eta).cos_transmitted()
 }
 
-/// The angle of refraction `θ_t` for light meeting the interface at `θ_i`
-/// (in `[0, π/2]`), with `eta = n_t / n_i`; `None` under total internal
-/// reflection.
+/// The angle of refraction `θ_t` for light meeting the interface at
+/// `theta_i` in `[0, π/2]`, with `eta_path = n_t / n_i`: Snell's law
+/// `sin θ_i = eta_path · sin θ_t`. `None` under total internal reflection,
+/// and for input that describes no refraction (`theta_i` outside
+/// `[0, π/2]` or NaN, `eta_path` not positive and finite).
+///
+/// Total internal reflection is decided as everywhere in the crate, by
+/// [`Incidence::cos_transmitted`]; the angle is `atan2(sin θ_t, cos θ_t)`,
+/// accurate also where `asin` of a sine near 1 is not.
 ///
 /// ```
 /// use radiometry::snell::transmitted_angle;
 /// let theta_t = transmitted_angle(30f64.to_radians(), 1.5).unwrap();
 /// assert!((theta_t.sin() * 1.5 - 0.5).abs() < 1e-15);
+/// // Leaving glass at 60°, beyond its critical angle: no refraction.
+/// assert_eq!(transmitted_angle(60f64.to_radians(), 1.0 / 1.5), None);
 /// ```
 #[inline]
-pub fn transmitted_angle<T: Real>(theta_i: T, eta: T) -> Option<T> {
-    if !(eta > T::zero()) {
+pub fn transmitted_angle<T: Real>(theta_i: T, eta_path: T) -> Option<T> {
+    let in_range = theta_i >= T::zero() && theta_i <= T::FRAC_PI_2();
+    if !(in_range && eta_path > T::zero() && eta_path.is_finite()) {
         return None;
     }
-    let sin_t = theta_i.sin() / eta;
-    (sin_t <= T::one()).then(|| sin_t.asin())
+    // From the outside of an interface of relative index eta_path: n_i = 1, n_t = eta_path.
+    let cos_t = Incidence::resolve(theta_i.cos(), eta_path).cos_transmitted()?;
+    Some((theta_i.sin() / eta_path).atan2(cos_t))
 }
 
-/// The critical angle `θ_c = asin(eta)` beyond which light from the denser
-/// side is totally reflected, with `eta = n_t / n_i`; `None` when `eta ≥ 1`
-/// (no critical angle going into a denser medium) or `eta` is not positive.
+/// The critical angle `θ_c = asin(eta_path)` beyond which light from the
+/// denser side is totally reflected, with `eta_path = n_t / n_i`; `None` when
+/// `eta_path ≥ 1` (no critical angle going into a denser medium) or it is not
+/// positive.
 #[inline]
-pub fn critical_angle<T: Real>(eta: T) -> Option<T> {
-    if !(eta > T::zero() && eta < T::one()) {
+pub fn critical_angle<T: Real>(eta_path: T) -> Option<T> {
+    if !(eta_path > T::zero() && eta_path < T::one()) {
         return None;
     }
     // atan2(eta, cos θ_c) keeps full precision as eta → 1, where asin is
     // ill-conditioned; (1 − eta)(1 + eta) avoids the cancellation in 1 − eta².
-    let cos_c = ((T::one() - eta) * (T::one() + eta)).sqrt();
-    Some(eta.atan2(cos_c))
+    let cos_c = ((T::one() - eta_path) * (T::one() + eta_path)).sqrt();
+    Some(eta_path.atan2(cos_c))
 }
 
-/// Brewster's angle `θ_B = atan(eta)`, with `eta = n_t / n_i`, at which the
-/// p-polarised reflectance vanishes; `None` for a non-positive `eta`.
+/// Brewster's angle `θ_B = atan(eta_path)`, with `eta_path = n_t / n_i`, at
+/// which the p-polarised reflectance vanishes; `None` for an `eta_path` that
+/// is not positive.
 ///
 /// ```
 /// let theta_b = radiometry::snell::brewster_angle(1.5_f64).unwrap();
 /// assert!((theta_b.to_degrees() - 56.31).abs() < 1e-2);
 /// ```
 #[inline]
-pub fn brewster_angle<T: Real>(eta: T) -> Option<T> {
-    (eta > T::zero()).then(|| eta.atan())
+pub fn brewster_angle<T: Real>(eta_path: T) -> Option<T> {
+    (eta_path > T::zero()).then(|| eta_path.atan())
 }
 
 /// Clamps into `[-1, 1]`, keeping NaN (unlike `Float::max`/`min`, which drop it).

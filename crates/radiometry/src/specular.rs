@@ -12,7 +12,9 @@ use crate::Vector3;
 /// The mirror direction of `w` about the normal `n`: `2 (w·n) n − w`.
 ///
 /// Both `w` and the result point away from the surface, on the same side;
-/// the sign of `n` does not matter. Reflecting twice gives `w` back.
+/// the sign of `n` does not matter. Reflecting twice gives `w` back. The law
+/// of reflection, `θ_r = θ_i` in the plane of incidence, as the course
+/// states it (`003`, "Visszaverődés"; `001`); Born & Wolf §1.5.1.
 ///
 /// The course's GLSL `reflect(I, N) = I − 2 (N·I) N` takes the incident ray's
 /// direction of travel `I = −w`; it returns the same vector.
@@ -35,8 +37,11 @@ pub struct Refraction<V: Vector3> {
     /// surface on the side opposite to the incident light.
     pub direction: V,
     /// The effective relative index along the path, `n_t / n_i`: `eta` when
-    /// the light arrived from the outside, `1 / eta` from the inside. Radiance
-    /// crossing the interface scales by `1 / eta²`.
+    /// `wi` lies on the outside, `1 / eta` when it lies on the inside.
+    /// Radiance arriving along `−direction` and leaving along `wi`, as a
+    /// camera path traced through `wi` carries it back, scales by
+    /// `1 / eta²` ([`crate::radiance::across_interface`]); light travelling
+    /// the other way, from `wi`'s side into `direction`, gains `eta²`.
     pub eta: V::Scalar,
     /// `cos θ_t ≥ 0`, the cosine between the transmitted direction and the
     /// normal on its side.

@@ -8,10 +8,11 @@
 
 use glam::{DVec3, Vec3};
 use proptest::prelude::*;
+use radiometry::brdf::{BlinnPhong, BlinnPhongReciprocal, Brdf, Lambert};
 use radiometry::fresnel::{
     conductor, conductor_polarized, dielectric, dielectric_polarized, f0, schlick,
 };
-use radiometry::snell::{cos_transmitted, critical_angle};
+use radiometry::snell::{cos_transmitted, critical_angle, transmitted_angle};
 use radiometry::specular::refract;
 
 const EPS: f64 = f64::EPSILON;
@@ -145,33 +146,45 @@ fn kappa_1e3_is_an_almost_perfect_mirror() {
     }
 }
 
-/// Within 1e-12 rad of the critical angle of glass, from the inside: just
-/// below it the light still refracts (barely), just above it nothing does.
-/// R must approach 1 continuously from below, and 1 − R be a tiny positive
-/// number of order √(1e-12), computed directly rather than as 1 − R.
+/// Within 1e-12 rad of the critical angle, on both code paths that have
+/// one: from inside glass (`n_i = eta`, `n_t = 1`) and from the outside of an
+/// interface with `eta < 1` (an air bubble in glass: `n_i = 1`, `n_t = eta`).
+/// Just below the angle the light still refracts, barely: R < 1 and
+/// T = 1 − R > 0 of order √(2 tan θ_c · 1e-12) (T ∝ cos θ_t near the critical
+/// angle, and cos²θ_t ≈ 2 tan θ_c δ there), so between 1e-7 and 1e-4; just
+/// above it nothing refracts and R = 1 exactly. `refract`, `cos_transmitted`
+/// and the Fresnel law agree on which side each input lies.
 #[test]
 fn within_1e_minus_12_rad_of_the_critical_angle_from_both_sides() {
-    let theta_c = critical_angle(1.0 / GLASS).unwrap();
-    let below = -(theta_c - 1e-12).cos();
-    let above = -(theta_c + 1e-12).cos();
-    assert!(refract(
-        DVec3::new((theta_c - 1e-12).sin(), 0.0, below),
-        DVec3::Z,
-        GLASS
-    )
-    .is_some());
-    assert!(refract(
-        DVec3::new((theta_c + 1e-12).sin(), 0.0, above),
-        DVec3::Z,
-        GLASS
-    )
-    .is_none());
-    assert_eq!(dielectric(above, GLASS), 1.0);
-    let t = dielectric_polarized(below, GLASS).transmittance();
-    assert!(t > 1e-7 && t < 1e-4, "T just below the critical angle: {t}");
-    // And from the outside, light meeting glass at the matching angle of
-    // refraction (grazing) is nowhere near a discontinuity.
-    assert!(cos_transmitted(1e-12, GLASS).is_some());
+    // (eta, the sign of cos θ_i): inside glass, and outside a bubble.
+    for (eta, sign) in [(GLASS, -1.0), (1.0 / GLASS, 1.0)] {
+        let theta_c = critical_angle(1.0 / GLASS).unwrap();
+        let at = |theta: f64| {
+            let cos_i = sign * theta.cos();
+            let wi = DVec3::new(theta.sin(), 0.0, cos_i);
+            (cos_i, refract(wi, DVec3::Z, eta))
+        };
+        let (below, refracted) = at(theta_c - 1e-12);
+        let (above, reflected) = at(theta_c + 1e-12);
+        assert!(
+            refracted.is_some() && cos_transmitted(below, eta).is_some(),
+            "eta {eta}"
+        );
+        assert!(
+            reflected.is_none() && cos_transmitted(above, eta).is_none(),
+            "eta {eta}"
+        );
+        let f = dielectric_polarized(below, eta);
+        let (r, t) = (f.reflectance(), f.transmittance());
+        assert!(r < 1.0 && t > 1e-7 && t < 1e-4, "eta {eta}: R {r}, T {t}");
+        assert!(
+            (r + t - 1.0).abs() <= 2.0 * EPS,
+            "eta {eta}: R + T = {}",
+            r + t
+        );
+        assert_eq!(dielectric(above, eta), 1.0);
+        assert_eq!(dielectric_polarized(above, eta).transmittance(), 0.0);
+    }
 }
 
 #[test]
@@ -187,14 +200,51 @@ fn nan_input_gives_nan_and_no_direction() {
     assert!(cos_transmitted(nan, GLASS).is_none());
     assert!(refract(DVec3::new(nan, 0.0, 1.0), DVec3::Z, GLASS).is_none());
     assert!(refract(DVec3::Z, DVec3::Z, nan).is_none());
+    let nan_dir = DVec3::new(nan, 0.0, 1.0);
+    let brdfs: [&dyn Fn(DVec3, DVec3) -> f64; 3] = [
+        &|wi, wo| Lambert { albedo: 0.5 }.eval(DVec3::Z, wi, wo),
+        &|wi, wo| {
+            BlinnPhong {
+                kd: 0.1,
+                ks: 0.5,
+                shine: 8.0,
+            }
+            .eval(DVec3::Z, wi, wo)
+        },
+        &|wi, wo| {
+            BlinnPhongReciprocal {
+                kd: 0.1,
+                ks: 0.5,
+                shine: 8.0,
+            }
+            .eval(DVec3::Z, wi, wo)
+        },
+    ];
+    for brdf in brdfs {
+        assert!(brdf(nan_dir, DVec3::Z).is_nan() && brdf(DVec3::Z, nan_dir).is_nan());
+        assert_eq!(
+            brdf(-DVec3::Z, DVec3::Z),
+            0.0,
+            "light from below reflects nothing"
+        );
+    }
 }
 
 #[test]
-fn non_physical_indices_give_nan() {
-    for bad in [0.0, -1.5, f64::INFINITY, -f64::INFINITY] {
+fn non_physical_indices_give_nan_or_no_outcome() {
+    for bad in [0.0, -1.5, f64::INFINITY, -f64::INFINITY, f64::NAN] {
         assert!(dielectric(0.5, bad).is_nan(), "eta {bad}");
         assert!(conductor(0.5, bad, 1.0).is_nan(), "n {bad}");
         assert!(refract(DVec3::Z, DVec3::Z, bad).is_none());
+        for cos_i in [0.5, -0.5, 1.0] {
+            assert_eq!(cos_transmitted(cos_i, bad), None, "eta {bad}, cos {cos_i}");
+        }
+        assert_eq!(transmitted_angle(0.3, bad), None, "eta_path {bad}");
+        assert_eq!(critical_angle(bad), None, "eta_path {bad}");
+    }
+    // Angles of incidence outside [0, π/2] describe no incidence.
+    for theta in [-0.1, 1.6, f64::NAN] {
+        assert_eq!(transmitted_angle(theta, GLASS), None, "θ {theta}");
     }
     assert!(conductor(0.5_f64, 0.17, -3.1).is_nan());
     assert!(f0(0.0_f64, 1.0).is_nan() && f0(1.5_f64, -1.0).is_nan());
