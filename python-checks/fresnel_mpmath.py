@@ -91,6 +91,13 @@ def conductor(cos_i, n, kappa):
     return R_s, R_p, (R_s + R_p) / 2
 
 
+def conductor_tir(cos_i, n, kappa):
+    """Total internal reflection in the conductor law: kappa = 0, n < 1, beyond the
+    critical angle (1 - c^2 > n^2). There R_s = R_p = R = 1 exactly."""
+    c, n = abs(mpf(cos_i)), mpf(n)
+    return kappa == 0 and 1 - c * c > n * n
+
+
 def _log_sensitivities(f, args, regime=None):
     """|x_i * df/dx_i| for each input (0 where x_i == 0), by central differences.
 
@@ -141,7 +148,8 @@ def dielectric_case(label, cos_i, eta):
 def conductor_case(label, cos_i, n, kappa):
     with mp.workdps(working_dps(cos_i)):
         R_s, R_p, R = conductor(cos_i, n, kappa)
-        sens = _log_sensitivities(lambda c, a, b: conductor(c, a, b)[2], (cos_i, n, kappa))
+        sens = _log_sensitivities(  # R == 0 (index matched): cond 0, the guard is moot there
+            lambda c, a, b: conductor(c, a, b)[2], (cos_i, n, kappa), regime=None if R == 0 else conductor_tir)
         return {"label": label, "cos_i": cos_i, "n": n, "kappa": kappa,
                 "r_s": _pair(R_s), "r_p": _pair(R_p), "r": _pair(R),
                 "r_digits": mp.nstr(R, DIGITS), "cond_r": _cond(sens, R)}
@@ -173,6 +181,43 @@ CONDUCTORS = [("gold R", 0.17, 3.1), ("gold G", 0.35, 2.7), ("gold B", 1.5, 1.9)
               ("index matched via conductor", 1.0, 0.0)]
 TINY_KAPPA = {"f64": ("tiny absorption kappa=1e-12", 1.5, 1e-12),
               "f32": ("tiny absorption kappa=1e-7", 1.5, 1e-7)}
+CONDUCTOR_EXTREMES = {  # (name, n, kappa) on the conductor cos grid (1, 1e-300 / 1e-38 and 0 included)
+    "f64": [("n=1e3 kappa=0", 1e3, 0.0), ("n=1e3 kappa=1", 1e3, 1.0),
+            ("n=1+1e-12 kappa=0", 1 + 1e-12, 0.0), ("n=1+1e-12 kappa=1e-12", 1 + 1e-12, 1e-12),
+            ("n=1-1e-12 kappa=0", 1 - 1e-12, 0.0), ("n=1-1e-12 kappa=1e-12", 1 - 1e-12, 1e-12)],
+    "f32": [("n=1e3 kappa=0", 1e3, 0.0), ("n=1e3 kappa=1", 1e3, 1.0),
+            ("n=1+2^-23 kappa=0", 1 + 2.0 ** -23, 0.0), ("n=1+2^-23 kappa=1e-12", 1 + 2.0 ** -23, 1e-12),
+            ("n=1-2^-24 kappa=0", 1 - 2.0 ** -24, 0.0), ("n=1-2^-24 kappa=1e-12", 1 - 2.0 ** -24, 1e-12)]}
+
+# Critical angles, on every path that has one (beyond it: total internal reflection).
+# Light from inside with eta > 1 (cos_i < 0; glass is above, in dielectric_inputs) ...
+CRITICAL_INSIDE = {
+    "f64": [("water", 1.333), ("diamond", 2.42), ("eta=1.0001", 1.0001), ("eta=1e3", 1e3),
+            ("eta=1+1e-12", 1 + 1e-12)],
+    "f32": [("water", 1.333), ("diamond", 2.42), ("eta=1.0001", 1.0001), ("eta=1e3", 1e3),
+            ("eta=1+2^-23", 1 + 2.0 ** -23)]}
+# ... and light from outside with eta < 1 (cos_i > 0), ...
+CRITICAL_OUTSIDE = {
+    "f64": [("eta=1/1.5", 1 / 1.5), ("eta=1/1.333", 1 / 1.333), ("eta=1e-3", 1e-3),
+            ("eta=1-1e-12", 1 - 1e-12)],
+    "f32": [("eta=1/1.5", 1 / 1.5), ("eta=1/1.333", 1 / 1.333), ("eta=1e-3", 1e-3),
+            ("eta=1-2^-24", 1 - 2.0 ** -24)]}
+# ... and the conductor law with kappa = 0 and n < 1 (the dielectric one, light from outside).
+CRITICAL_CONDUCTOR = {
+    "f64": [("dielectric below 1 via conductor n=0.5", 0.5), ("n=1e-3 kappa=0", 1e-3),
+            ("n=1-1e-12 kappa=0", 1 - 1e-12)],
+    "f32": [("dielectric below 1 via conductor n=0.5", 0.5), ("n=1e-3 kappa=0", 1e-3),
+            ("n=1-2^-24 kappa=0", 1 - 2.0 ** -24)]}
+# f64 angle offsets (radians) from the critical angle theta_c. 1e-12 rad everywhere. Where
+# theta_c is ~1e-3 rad from normal (eta = 1e3 inside, eta = 1e-3 outside) 1e-12 rad is only
+# ~9 doubles of cos_i (d cos = sin(theta_c) d theta), so the +-1 ulp cases below matter too.
+# Where eta = 1 +- 1e-12, cos(theta_c) = sqrt(1 - 1/eta^2) or sqrt(1 - eta^2) ~ sqrt(2e-12):
+# theta_c is only ~1.414e-6 rad from grazing. 1e-12 rad is then ~7e-7 of the way to grazing
+# (still ~5e9 doubles of cos_i), and 1e-9 and 1e-7 rad (0.07 % and 7 % of it) are added; the
+# 1e-6 rad used for glass would put the TIR side ~0.4e-6 rad from grazing, so it is not used.
+CRIT_RAD = ("-1e-12", "+1e-12")
+CRIT_RAD_NEAR_ONE = ("-1e-7", "-1e-9", "-1e-12", "+1e-12", "+1e-9", "+1e-7")
+CRIT_F32_ULPS = range(-4, 5)  # f32: 1e-12 rad is far below f32 resolution; +-4 f32 ulps instead
 
 
 def _near(name, offsets, exact_cos, side):
@@ -180,6 +225,64 @@ def _near(name, offsets, exact_cos, side):
     angle offsets d (decimal strings, radians) about theta = acos(exact_cos)."""
     theta, where = mp.acos(exact_cos), ("outside" if side > 0 else "inside")
     return [(f"{name} {where} {lab}", float(side * mp.cos(theta + mpf(d)))) for lab, d in offsets]
+
+
+def _near_within(offsets, exact_cos, side):
+    """[(offset label, cos_i)] like ``_near``, but each |cos_i| is cos(theta + d) rounded
+    towards the critical cosine ``exact_cos`` (not to nearest), so that the angle of the
+    stored double is on d's side of theta and at most |d| from it: "within |d| rad" holds
+    exactly (checked)."""
+    theta = mp.acos(exact_cos)
+    out = []
+    for d in offsets:
+        target = mp.cos(theta + mpf(d))
+        x = float(target)
+        if mpf(d) > 0 and x < target:  # angle beyond theta + d: one step towards theta
+            x = math.nextafter(x, math.inf)
+        elif mpf(d) < 0 and x > target:
+            x = math.nextafter(x, -math.inf)
+        assert 0 < (mp.acos(mpf(x)) - theta) / mpf(d) <= 1, (exact_cos, d)
+        out.append((f"critical{d}rad", side * x))
+    return out
+
+
+def _f32_nearest(x):
+    """The float32 nearest the real x (a normal float32 here), as the exact Python float."""
+    y = float(mp.fadd(x, 0, prec=24, rounding="n"))
+    assert f32(y) == y
+    return y
+
+
+def _critical_cases(prefix, exact_cos, side, tier, offsets):
+    """[(label, cos_i)] about the critical cosine ``exact_cos`` on one side (the sign of
+    cos_i). f64: the angle offsets (``_near_within``), the nearest double and the doubles
+    1 ulp either side of it; f32: the nearest float32 and CRIT_F32_ULPS float32 steps."""
+    if tier == "f64":
+        x = float(exact_cos)
+        out = _near_within(offsets, exact_cos, side) + [
+            ("critical nearest double", side * x),
+            ("critical |cos|+1ulp", side * math.nextafter(x, math.inf)),
+            ("critical |cos|-1ulp", side * math.nextafter(x, -math.inf))]
+    else:
+        x = _f32_nearest(exact_cos)
+        out = [(f"critical f32 |cos|{k:+d}ulp" if k else "critical f32 nearest", side * f32_step(x, k))
+               for k in CRIT_F32_ULPS]
+    return [(f"{prefix} {lab}", c) for lab, c in out]
+
+
+def critical_dielectric_inputs(tier):
+    """[(label, cos_i, eta)] near the critical angle on both paths that have one, beyond
+    the glass cases of ``dielectric_inputs`` (water's +-1e-12 rad are there too)."""
+    rnd = f32 if tier == "f32" else float
+    out = []
+    for paths, side in ((CRITICAL_INSIDE, -1), (CRITICAL_OUTSIDE, 1)):
+        for name, eta in paths[tier]:
+            eta = rnd(eta)
+            exact = mp.sqrt(1 - 1 / mpf(eta) ** 2) if side < 0 else mp.sqrt(1 - mpf(eta) ** 2)
+            offs = () if name == "water" else CRIT_RAD_NEAR_ONE if "1e-12" in name else CRIT_RAD
+            prefix = f"{name} {'outside' if side > 0 else 'inside'}"
+            out += [(lab, c, eta) for lab, c in _critical_cases(prefix, exact, side, tier, offs)]
+    return out
 
 
 def dielectric_inputs(tier):
@@ -213,7 +316,7 @@ def dielectric_inputs(tier):
                  f32_step(x, k), glass) for k in range(-4, 5)]
         out += [(f"glass outside brewster f32 {k:+d}ulp" if k else "glass outside brewster f32 nearest",
                  f32_step(b, k), glass) for k in range(-2, 3)]
-    return out
+    return out + critical_dielectric_inputs(tier)
 
 
 def conductor_inputs(tier):
@@ -221,8 +324,13 @@ def conductor_inputs(tier):
     rnd = f32 if tier == "f32" else float
     cos_grid = [(lab, rnd(x)) for lab, x in COS if lab != "0.9999999"]
     cos_grid += [(lab, rnd(x)) for lab, x in TINY_COS[tier] if lab != "2^-149"] + [("0", 0.0)]
-    return [(f"{name} cos={lab}", c, rnd(n), rnd(k))
-            for name, n, k in CONDUCTORS + [TINY_KAPPA[tier]] for lab, c in cos_grid]
+    out = [(f"{name} cos={lab}", c, rnd(n), rnd(k))
+           for name, n, k in CONDUCTORS + [TINY_KAPPA[tier]] + CONDUCTOR_EXTREMES[tier] for lab, c in cos_grid]
+    for name, n in CRITICAL_CONDUCTOR[tier]:  # kappa = 0, n < 1: TIR for |cos_i| < sqrt(1 - n^2)
+        n = rnd(n)
+        offs = CRIT_RAD_NEAR_ONE if "1e-12" in name else CRIT_RAD
+        out += [(lab, c, n, 0.0) for lab, c in _critical_cases(name, mp.sqrt(1 - mpf(n) ** 2), 1, tier, offs)]
+    return out
 
 
 def build_reference():

@@ -3,15 +3,16 @@
 //!
 //! Reference: `validation/reference/fresnel_mpmath.json` (schema
 //! `fresnel-reference/1`), written by `python-checks/fresnel_mpmath.py`:
-//! extremes included (grazing `cos θ = 1e-300`, within 1e-12 rad of the
-//! critical angle, `η = 1 ± 1e-12`, `κ = 1e3`).
+//! extremes included (grazing `cos θ = 1e-300`, within 1e-12 rad and one ulp
+//! of the critical angle on every path that has one, `η = 1 ± 1e-12`,
+//! `η = 1e-3` and `1e3`, `n = 1e3`, `κ = 1e3`).
 //!
 //! Tolerance: [`BOUND_ULPS`] ulps of the exact value in the tier's own
 //! precision. Every input is exactly representable, so a correctly rounded
 //! law would be within 0.5 ulp; each quantity is a handful of roundings from
 //! that (a square root, a few products and quotients, a sum carried in twice
-//! the precision). The bound is just above the worst error measured (6.2
-//! ulps, conductor R_p in f64), so that a regression costing one digit fails;
+//! the precision). The bound is just above the worst error measured (6.6
+//! ulps, conductor R_p in f32), so that a regression costing one digit fails;
 //! where the exact value is subnormal the ulps are those of the smallest
 //! subnormal, and an exact value just below a power of two is measured in
 //! the spacing of its own binade. Each quantity's worst relative error

@@ -310,7 +310,12 @@ pub fn conductor_polarized<T: Real>(cos_i: T, n: T, kappa: T) -> ConductorFresne
     // s = η cos θ_t = √(η² − 1 + c²), principal branch (Re s ≥ 0).
     let d = Complex::new(compensated::snell_discriminant(n, kappa, one, c), two_nk);
     let s = principal_sqrt(d);
-    let eta2 = Complex::new(eta2_m1.re + one, two_nk);
+    // η² itself, summed afresh rather than as (η² − 1) + 1, which would lose
+    // the digits of a small η² (n = 1e-3: all but six).
+    let eta2 = Complex::new(
+        compensated::index_contrast(n, kappa, T::zero()),
+        two_nk,
+    );
     let brewster = Complex::new(
         compensated::brewster_factor(n, kappa, one, c),
         c * c * two_nk,
