@@ -1,6 +1,7 @@
 """CIE 1931 colorimetry tables and colour-science reference values.
 
-Regenerate (from the repository root; the output is byte-for-byte stable):
+Regenerate (from the repository root; the Rust tables are byte-for-byte stable,
+the JSON up to the last bits of BLAS rounding, see ``reproduce.py``):
 
     .venv/bin/python python-checks/colorimetry.py
 

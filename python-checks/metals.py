@@ -1,6 +1,7 @@
 """Measured spectral n, kappa of four metals (from Mitsuba 3) and their colours (colour-science).
 
-Regenerate (from the repository root; the output is byte-for-byte stable):
+Regenerate (from the repository root; the output is stable up to the last bits
+of BLAS rounding, see ``reproduce.py``):
 
     .venv/bin/python python-checks/metals.py
 

@@ -134,7 +134,13 @@ impl Exact {
     /// `hi` is a power of two and `lo < 0`, the value lies in the binade
     /// below, whose spacing is half that at `hi`.
     fn ulp(self, tier: &str) -> f64 {
-        let at = |x: f64| if tier == "f32" { ulp_f32(x) } else { ulp_f64(x) };
+        let at = |x: f64| {
+            if tier == "f32" {
+                ulp_f32(x)
+            } else {
+                ulp_f64(x)
+            }
+        };
         let power_of_two = self.0 != 0.0 && self.0.to_bits() & ((1 << 52) - 1) == 0;
         let below = power_of_two && self.1 < 0.0;
         if below {
@@ -280,9 +286,19 @@ mod tests {
         assert_eq!(Exact(1.0, f64::EPSILON / 8.0).ulp("f64"), f64::EPSILON);
         assert_eq!(Exact(0.75, -1e-20).ulp("f64"), f64::EPSILON / 2.0);
         let mut check = Check::new("t", "t", "t", "t");
-        compare(&mut check, "f64", "R", "one below", 1.0, Exact(1.0, -f64::EPSILON / 4.0));
+        compare(
+            &mut check,
+            "f64",
+            "R",
+            "one below",
+            1.0,
+            Exact(1.0, -f64::EPSILON / 4.0),
+        );
         assert_eq!(check.worst("f64 R (ulps)").unwrap().worst, 0.5);
         let relative = check.worst("f64 R (relative)").unwrap().worst;
-        assert!((relative - f64::EPSILON / 4.0).abs() < 1e-30, "{relative:e}");
+        assert!(
+            (relative - f64::EPSILON / 4.0).abs() < 1e-30,
+            "{relative:e}"
+        );
     }
 }

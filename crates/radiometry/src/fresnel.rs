@@ -312,10 +312,7 @@ pub fn conductor_polarized<T: Real>(cos_i: T, n: T, kappa: T) -> ConductorFresne
     let s = principal_sqrt(d);
     // η² itself, summed afresh rather than as (η² − 1) + 1, which would lose
     // the digits of a small η² (n = 1e-3: all but six).
-    let eta2 = Complex::new(
-        compensated::index_contrast(n, kappa, T::zero()),
-        two_nk,
-    );
+    let eta2 = Complex::new(compensated::index_contrast(n, kappa, T::zero()), two_nk);
     let brewster = Complex::new(
         compensated::brewster_factor(n, kappa, one, c),
         c * c * two_nk,
