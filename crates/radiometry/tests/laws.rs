@@ -81,8 +81,8 @@ proptest! {
     /// sin θ_t > 1. The decision is shared by `refract`, `snell` and
     /// `fresnel`; compared here with sin θ_t from the cross product, outside a
     /// band of 1e-12 around 1 where that independent sine's own rounding
-    /// could decide either way. (The exact boundary, to the last double, is
-    /// checked against 50-digit references in `tests/fresnel_reference.rs`.)
+    /// could decide either way. (The exact boundary, to the last double and
+    /// float, is checked in exact integer arithmetic in `tests/tir_boundary.rs`.)
     #[test]
     fn total_internal_reflection_happens_exactly_when_sin_t_exceeds_one(wi in unit_direction(), eta in relative_index()) {
         let n = DVec3::Z;
