@@ -127,9 +127,12 @@ pub fn cos_transmitted<T: Real>(cos_i: T, eta: T) -> Option<T> {
 /// and for input that describes no refraction (`theta_i` outside
 /// `[0, π/2]` or NaN, `eta_path` not positive and finite).
 ///
-/// Total internal reflection is decided as everywhere in the crate, by
-/// [`Incidence::cos_transmitted`]; the angle is `atan2(sin θ_t, cos θ_t)`,
-/// accurate also where `asin` of a sine near 1 is not.
+/// Snell's discriminant `η² cos²θ_t = η² − sin²θ_i` is summed as if in twice
+/// the precision (as [`Incidence::cos_transmitted`] sums it from a cosine,
+/// here from the sine the angle gives), so total internal reflection is
+/// decided by the sign of an accurate value and `cos θ_t` keeps its digits
+/// near the critical angle; the angle is `atan2(sin θ_t, cos θ_t)`, accurate
+/// also where `asin` of a sine near 1 is not.
 ///
 /// ```
 /// use radiometry::snell::transmitted_angle;
@@ -144,9 +147,13 @@ pub fn transmitted_angle<T: Real>(theta_i: T, eta_path: T) -> Option<T> {
     if !(in_range && eta_path > T::zero() && eta_path.is_finite()) {
         return None;
     }
-    // From the outside of an interface of relative index eta_path: n_i = 1, n_t = eta_path.
-    let cos_t = Incidence::resolve(theta_i.cos(), eta_path).cos_transmitted()?;
-    Some((theta_i.sin() / eta_path).atan2(cos_t))
+    let sin_i = theta_i.sin();
+    // n_t² − n_i² sin²θ_i with n_i = 1, n_t = eta_path: x² − y² − n² with y = 0.
+    let discriminant = compensated::index_contrast(eta_path, T::zero(), sin_i);
+    if !(discriminant >= T::zero()) {
+        return None;
+    }
+    Some((sin_i / eta_path).atan2(discriminant.sqrt() / eta_path))
 }
 
 /// The critical angle `θ_c = asin(eta_path)` beyond which light from the
