@@ -60,7 +60,7 @@ pub fn refraction_allowance(cos_i: f64, eta: f64, cos_t: f64) -> f64 {
 pub fn refraction_allowance_at(wi: [f64; 3], n: [f64; 3], eta: f64, refracted: [f64; 3]) -> f64 {
     let dot = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
     let cos_i = dot(wi, n);
-    let eta_path = radiometry::snell::Incidence::resolve(cos_i, eta).eta();
+    let eta_path = radiometry::snell::Incidence::resolve(cos_i, eta).eta_path();
     refraction_allowance(cos_i.abs(), eta_path, dot(refracted, n).abs())
 }
 
@@ -394,10 +394,10 @@ pub fn check_dielectric(laws: &Laws, reference: &MitsubaLaws) -> Check {
             case.exact.r_p,
         );
         // The effective index along the path is a convention, not a rounding.
-        if (f64::from(ours.eta) - m.eta_it).abs() > 1e-6 * m.eta_it {
+        if (f64::from(ours.eta_path) - m.eta_it).abs() > 1e-6 * m.eta_it {
             check.fail(format!(
                 "{label}: eta along the path {} but Mitsuba's eta_it is {}",
-                ours.eta, m.eta_it
+                ours.eta_path, m.eta_it
             ));
         }
     }

@@ -341,14 +341,14 @@ impl RefractArgs {
                 lang,
                 "from inside: the normal is flipped to the incident side and η' = 1/η = {}",
                 "belülről: a normálist a beesés oldalára fordítjuk, η' = 1/η = {}",
-                number(incidence.eta())
+                number(incidence.eta_path())
             )
         } else {
             say!(
                 lang,
                 "from outside: η' = η = {}",
                 "kívülről: η' = η = {}",
-                number(incidence.eta())
+                number(incidence.eta_path())
             )
         });
         match refract(wi.unit, n.unit, eta) {
@@ -367,7 +367,7 @@ impl RefractArgs {
                 record.answer = Answer::Vector(t.direction.to_array());
                 record
                     .detail("outcome", "refracted")
-                    .detail("eta_path", t.eta)
+                    .detail("eta_path", t.eta_path)
                     .detail("cos_t", t.cos_t);
             }
             None => {
@@ -381,7 +381,7 @@ impl RefractArgs {
                 record.answer = Answer::None;
                 record
                     .detail("outcome", "total_internal_reflection")
-                    .detail("eta_path", incidence.eta())
+                    .detail("eta_path", incidence.eta_path())
                     .detail("reflected", mirror.to_array());
             }
         }

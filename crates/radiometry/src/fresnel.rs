@@ -136,7 +136,7 @@ pub struct DielectricFresnel<T> {
     /// `cos θ_t ≥ 0`, or `None` under total internal reflection.
     pub cos_t: Option<T>,
     /// The effective relative index along the path, `n_t / n_i`.
-    pub eta: T,
+    pub eta_path: T,
 }
 
 impl<T: Real> DielectricFresnel<T> {
@@ -158,7 +158,7 @@ impl<T: Real> DielectricFresnel<T> {
         self.cos_t.is_none()
     }
 
-    fn all(value: T, cos_t: Option<T>, eta: T) -> Self {
+    fn all(value: T, cos_t: Option<T>, eta_path: T) -> Self {
         let other = T::one() - value;
         Self {
             r_s: value,
@@ -166,7 +166,7 @@ impl<T: Real> DielectricFresnel<T> {
             t_s: other,
             t_p: other,
             cos_t,
-            eta,
+            eta_path,
         }
     }
 }
@@ -197,11 +197,11 @@ pub fn dielectric_polarized<T: Real>(cos_i: T, eta: T) -> DielectricFresnel<T> {
     let (c, n_i, n_t) = (incidence.cos_i, incidence.n_i, incidence.n_t);
     let contrast = compensated::index_contrast(n_t, T::zero(), n_i); // n_t² − n_i²
     if contrast == T::zero() {
-        return DielectricFresnel::all(T::zero(), Some(c), incidence.eta());
+        return DielectricFresnel::all(T::zero(), Some(c), incidence.eta_path());
     }
     let d = incidence.discriminant(); // s² with s = n_t cos θ_t
     if d < T::zero() {
-        return DielectricFresnel::all(T::one(), None, incidence.eta());
+        return DielectricFresnel::all(T::one(), None, incidence.eta_path());
     }
     let s = d.sqrt();
     let a = n_i * c; // n_i cos θ_i
@@ -230,7 +230,7 @@ pub fn dielectric_polarized<T: Real>(cos_i: T, eta: T) -> DielectricFresnel<T> {
         t_s: fraction(t_s),
         t_p: fraction(t_p),
         cos_t: Some(clamp_unit(s / n_t)),
-        eta: incidence.eta(),
+        eta_path: incidence.eta_path(),
     }
 }
 

@@ -81,7 +81,7 @@
 //! // Into glass: the refracted direction points away on the inside, and the
 //! // effective eta along the path is n_t / n_i = 1.5.
 //! let t = refract(wi, n, 1.5).expect("no total internal reflection entering glass");
-//! assert!(t.direction.z < 0.0 && t.eta == 1.5);
+//! assert!(t.direction.z < 0.0 && t.eta_path == 1.5);
 //!
 //! // Out of glass at a steep angle: total internal reflection is `None`.
 //! let from_inside = DVec3::new(0.8, 0.0, -0.6);

@@ -72,7 +72,7 @@ impl<T: Real> Incidence<T> {
 
     /// The relative index along the path, `n_t / n_i` (rounded once).
     #[inline]
-    pub fn eta(&self) -> T {
+    pub fn eta_path(&self) -> T {
         self.n_t / self.n_i
     }
 

@@ -42,7 +42,7 @@ pub struct Refraction<V: Vector3> {
     /// camera path traced through `wi` carries it back, scales by
     /// `1 / eta²` ([`crate::radiance::across_interface`]); light travelling
     /// the other way, from `wi`'s side into `direction`, gains `eta²`.
-    pub eta: V::Scalar,
+    pub eta_path: V::Scalar,
     /// `cos θ_t ≥ 0`, the cosine between the transmitted direction and the
     /// normal on its side.
     pub cos_t: V::Scalar,
@@ -67,7 +67,7 @@ pub struct Refraction<V: Vector3> {
 /// use radiometry::specular::refract;
 /// // Straight through at normal incidence, from either side.
 /// assert_eq!(refract(DVec3::Z, DVec3::Z, 1.5).unwrap().direction, -DVec3::Z);
-/// assert_eq!(refract(-DVec3::Z, DVec3::Z, 1.5).unwrap().eta, 1.0 / 1.5);
+/// assert_eq!(refract(-DVec3::Z, DVec3::Z, 1.5).unwrap().eta_path, 1.0 / 1.5);
 /// ```
 #[inline]
 pub fn refract<V: Vector3>(wi: V, n: V, eta: V::Scalar) -> Option<Refraction<V>> {
@@ -88,7 +88,7 @@ pub fn refract<V: Vector3>(wi: V, n: V, eta: V::Scalar) -> Option<Refraction<V>>
     let direction = tangential - n_facing * cos_t;
     Some(Refraction {
         direction,
-        eta: incidence.eta(),
+        eta_path: incidence.eta_path(),
         cos_t,
     })
 }

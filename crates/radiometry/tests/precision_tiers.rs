@@ -188,7 +188,8 @@ fn f32_directions_are_within_rounding_of_f64() {
             );
             if let (Some(t32), Some(t64)) = (t32, t64) {
                 let err = diff(t32.direction, t64.direction);
-                let bound = (8.0 * (1.0 + 1.0 / t64.eta) + 2.0 / t64.cos_t).min(2.0 / EPS.sqrt());
+                let bound =
+                    (8.0 * (1.0 + 1.0 / t64.eta_path) + 2.0 / t64.cos_t).min(2.0 / EPS.sqrt());
                 let at = || format!("w {w}, n {n}, eta {eta}, cos_t {:e}", t64.cos_t);
                 bent.record(err, at);
                 bent_vs_bound.record(err / bound, at);

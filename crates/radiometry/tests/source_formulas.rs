@@ -426,7 +426,7 @@ fn course_003_refracted_radiance_misses_the_eta_squared_of_solid_angle_compressi
         let (theta, phi) = (f64::to_radians(deg), 0.3);
         let wi = w(theta, phi);
         let refracted = refract(wi, n, eta).unwrap();
-        let eta_light = refracted.eta;
+        let eta_light = refracted.eta_path;
         let d_omega_ratio =
             solid_angle_ratio(|w| refract(w, n, eta).unwrap().direction, w, theta, phi, h);
         let (cos_i, cos_t) = (wi.z.abs(), refracted.direction.z.abs());
@@ -438,7 +438,7 @@ fn course_003_refracted_radiance_misses_the_eta_squared_of_solid_angle_compressi
             (camera.direction - wi).length() < 1e-14,
             "the camera path retraces the light"
         );
-        let crate_law = across_interface(t * l_in, camera.eta);
+        let crate_law = across_interface(t * l_in, camera.eta_path);
         assert!(
             (l_t / crate_law - 1.0).abs() <= tol,
             "{eta} {from_inside} {deg}°: {l_t} vs {crate_law}"

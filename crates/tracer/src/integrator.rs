@@ -414,7 +414,7 @@ impl Tracer<'_> {
                         reflectance * self.whitted(&r, depth + 1, throughput * reflectance, counts);
                 }
                 if let Some(t) = specular::refract(wo, n, eta) {
-                    let weight = radiance::across_interface(transmittance, t.eta);
+                    let weight = radiance::across_interface(transmittance, t.eta_path);
                     if throughput.max_element() * weight >= self.settings.throughput_cutoff {
                         counts.refraction += 1;
                         counts.bounced(depth + 1);
@@ -492,7 +492,7 @@ impl Tracer<'_> {
                     }
                     match refraction {
                         Some(t) if rng.next_f32() >= reflectance => {
-                            beta *= radiance::across_interface(transmittance, t.eta)
+                            beta *= radiance::across_interface(transmittance, t.eta_path)
                                 / (1.0 - reflectance);
                             (
                                 Ray::new(
