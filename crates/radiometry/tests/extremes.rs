@@ -4,7 +4,11 @@
 //!
 //! Exact values at these extremes, to the last bit, are checked against
 //! 50-digit references in the workspace test `fresnel_reference`; here the
-//! checks are the limits the laws must reach.
+//! checks are the limits the laws must reach. Where a limit has a closed
+//! form, the tolerance is 4ε to 8ε relative (ε = `f64::EPSILON`): the handful
+//! of roundings between the law and that closed form, each at most ε/2, with
+//! room for the closed form's own. Tolerances of another kind say why beside
+//! them.
 
 use glam::{DVec3, Vec3};
 use proptest::prelude::*;

@@ -80,8 +80,9 @@ proptest! {
     /// Total internal reflection happens exactly when Snell's law would need
     /// sin θ_t > 1. The decision is shared by `refract`, `snell` and
     /// `fresnel`; compared here with sin θ_t from the cross product, outside a
-    /// band of 1e-12 around 1 where that independent sine's own rounding
-    /// could decide either way. (The exact boundary, to the last double and
+    /// band of 16ε around 1 where that independent sine's own rounding could
+    /// decide either way (the cross product, its length and the division by
+    /// η each round once, and the sampled direction is unit only to 2ε). (The exact boundary, to the last double and
     /// float, is checked in exact integer arithmetic in `tests/tir_boundary.rs`.)
     #[test]
     fn total_internal_reflection_happens_exactly_when_sin_t_exceeds_one(wi in unit_direction(), eta in relative_index()) {
@@ -92,8 +93,8 @@ proptest! {
         let tir = refract(wi, n, eta).is_none();
         prop_assert_eq!(tir, snell::cos_transmitted(cos_i, eta).is_none());
         prop_assert_eq!(tir, dielectric_polarized(cos_i, eta).is_total_internal_reflection());
-        if sin_t > 1.0 + 1e-12 { prop_assert!(tir, "sin_t = {sin_t} but refracted"); }
-        if sin_t < 1.0 - 1e-12 { prop_assert!(!tir, "sin_t = {sin_t} but reflected totally"); }
+        if sin_t > 1.0 + 16.0 * EPS { prop_assert!(tir, "sin_t = {sin_t} but refracted"); }
+        if sin_t < 1.0 - 16.0 * EPS { prop_assert!(!tir, "sin_t = {sin_t} but reflected totally"); }
         if tir { prop_assert_eq!(dielectric(cos_i, eta), 1.0); }
     }
 
@@ -148,8 +149,8 @@ proptest! {
 
     /// The conductor equations with κ = 0 are the dielectric equations (light
     /// from outside). The two are separate code paths, complex and real.
-    /// Tolerance 16 ulps of the result: complex division and a square root
-    /// of a complex number add a few roundings over the real path.
+    /// Tolerance 16 ulps of the result: complex magnitudes (`hypot`) and a
+    /// complex square root add a few roundings over the real path.
     #[test]
     fn conductor_with_zero_kappa_equals_dielectric(cos_i in 0.0..=1.0f64, eta in relative_index()) {
         let (c, d) = (conductor(cos_i, eta, 0.0), dielectric(cos_i, eta));
@@ -231,13 +232,16 @@ proptest! {
 /// `cargo run --release -p radiometry --example schlick_error` (rounded up in
 /// the last digit), per material, at every angle; and used as the course
 /// uses it, with `cos θ_i` from inside a dielectric, it misses total internal
-/// reflection by up to 0.96.
+/// reflection: by 0.9753 (water), 0.9590 (glass) and 0.8276 (diamond), the
+/// same program's numbers, required here within ±0.001 (this test samples
+/// 20 001 angles, the program 90 001; the worst sits just past the critical
+/// angle, where Schlick's curve is flat to that precision).
 #[test]
 fn schlick_stays_within_measured_bound() {
     let dielectrics = [
-        ("water", 1.333, 0.060),
-        ("glass", 1.5, 0.036),
-        ("diamond", 2.42, 0.076),
+        ("water", 1.333, 0.060, 0.9753),
+        ("glass", 1.5, 0.036, 0.9590),
+        ("diamond", 2.42, 0.076, 0.8276),
     ];
     let metals = [
         ("gold R", 0.17, 3.1, 0.015),
@@ -248,7 +252,7 @@ fn schlick_stays_within_measured_bound() {
         ("aluminium", 1.2, 7.0, 0.109),
     ];
     let angles = || (0..=20_000).map(|k| (std::f64::consts::FRAC_PI_2 * k as f64 / 20_000.0).cos());
-    for (name, eta, bound) in dielectrics {
+    for (name, eta, bound, course_miss) in dielectrics {
         let f0 = f0(eta, 0.0);
         for c in angles() {
             let outside = (schlick(c, f0) - dielectric(c, eta)).abs();
@@ -262,8 +266,8 @@ fn schlick_stays_within_measured_bound() {
             .map(|c| (schlick(c, f0) - dielectric(-c, eta)).abs())
             .fold(0.0, f64::max);
         assert!(
-            course_inside > 0.8,
-            "{name}: course Schlick from inside errs by only {course_inside}"
+            (course_inside - course_miss).abs() <= 1e-3,
+            "{name}: course Schlick from inside errs by {course_inside}, measured {course_miss}"
         );
     }
     for (name, n, kappa, bound) in metals {
@@ -396,6 +400,8 @@ mod brdfs {
             shine: 10.0,
         };
         let ratio = brdf.eval(n, a, b) / brdf.eval(n, b, a);
+        // 1e-12 relative: two evaluations of a power of 10 and two cosines,
+        // each good to a few ε, far below that; a missing cos would be off by O(1).
         assert!(
             (ratio - b.z / a.z).abs() <= 1e-12 * ratio,
             "{ratio} vs {}",
@@ -419,6 +425,7 @@ mod brdfs {
             DVec3::new(0.0, 0.8, 0.6),
         );
         let radiance = 5.0 * brdf.eval(n, l, v) * l.dot(n);
+        // 1e-14: a dozen roundings of numbers of order 1 (ε = 2.2e-16 each).
         assert!((radiance - 2.5).abs() < 1e-14, "{radiance}");
     }
 }
