@@ -19,10 +19,12 @@ use std::cmp::Ordering;
 
 use glam::{DVec3, Vec3};
 use num_bigint::BigInt;
+use num_traits::{Float, One, Zero};
 use proptest::prelude::*;
 use radiometry::fresnel::dielectric_polarized;
 use radiometry::snell::cos_transmitted;
 use radiometry::specular::refract;
+use radiometry::Vector3;
 
 /// `x = m · 2^e` exactly, for a finite `x`.
 fn dyadic(x: f64) -> (BigInt, i32) {
@@ -80,33 +82,33 @@ fn exactly_tir(cos_i: f64, eta: f64) -> bool {
     exact_sign(&[(1, &[n_t, n_t]), (-1, &[n_i, n_i]), (1, &[n_i, n_i, c, c])]) == Ordering::Less
 }
 
-/// The crate's three decisions, in f64, for light with signed cosine
+/// The crate's three decisions, in either tier, for light with signed cosine
 /// `cos_i` (the direction `(√(1 − c²), 0, cos_i)` has exactly that dot
 /// product with +z); they must agree with each other.
-fn crate_tir_f64(cos_i: f64, eta: f64) -> bool {
-    let wi = DVec3::new((1.0 - cos_i * cos_i).max(0.0).sqrt(), 0.0, cos_i);
-    let by_refract = refract(wi, DVec3::Z, eta).is_none();
+fn crate_tir<V: Vector3>(cos_i: V::Scalar, eta: V::Scalar) -> bool {
+    let one = V::Scalar::one();
+    let sin_i = (one - cos_i * cos_i).max(V::Scalar::zero()).sqrt();
+    let (wi, n) = (
+        V::new(sin_i, V::Scalar::zero(), cos_i),
+        V::new(V::Scalar::zero(), V::Scalar::zero(), one),
+    );
+    let by_refract = refract(wi, n, eta).is_none();
     let by_snell = cos_transmitted(cos_i, eta).is_none();
     let by_fresnel = dielectric_polarized(cos_i, eta).is_total_internal_reflection();
     assert_eq!(
         (by_refract, by_snell),
         (by_fresnel, by_fresnel),
-        "cos {cos_i:e}, eta {eta}"
+        "cos {cos_i:?}, eta {eta}"
     );
     by_fresnel
 }
 
+fn crate_tir_f64(cos_i: f64, eta: f64) -> bool {
+    crate_tir::<DVec3>(cos_i, eta)
+}
+
 fn crate_tir_f32(cos_i: f32, eta: f32) -> bool {
-    let wi = Vec3::new((1.0 - cos_i * cos_i).max(0.0).sqrt(), 0.0, cos_i);
-    let by_refract = refract(wi, Vec3::Z, eta).is_none();
-    let by_snell = cos_transmitted(cos_i, eta).is_none();
-    let by_fresnel = dielectric_polarized(cos_i, eta).is_total_internal_reflection();
-    assert_eq!(
-        (by_refract, by_snell),
-        (by_fresnel, by_fresnel),
-        "cos {cos_i:e}, eta {eta}"
-    );
-    by_fresnel
+    crate_tir::<Vec3>(cos_i, eta)
 }
 
 /// `x` moved by `k` steps of its own type (away from zero for k > 0).
