@@ -47,10 +47,12 @@ pub const DIRECTION_ABS: f64 = 8.0 * f32::EPSILON as f64;
 /// `cos θ_t → 0`. There the square root caps it instead: the discriminant
 /// `η²cos²θ_t = η² − sin²θ_i` moves by at most `2 cos θ_i · 2ε₃₂ ≤ 4ε₃₂`, so
 /// `cos θ_t` moves by at most `2√ε₃₂ / η`, and the other terms by `2ε₃₂ / η`.
-/// The allowance is the smaller of the two bounds. `cos_i = |n·wi|`, `eta`
-/// the effective `n_t / n_i`, `cos_t` the exact transmitted cosine.
-pub fn refraction_allowance(cos_i: f64, eta: f64, cos_t: f64) -> f64 {
+/// The allowance is the smaller of the two bounds. `cos_i = |n·wi|`,
+/// `eta_path` the effective `n_t / n_i` (written η above), `cos_t` the exact
+/// transmitted cosine.
+pub fn refraction_allowance(cos_i: f64, eta_path: f64, cos_t: f64) -> f64 {
     let eps = f64::from(f32::EPSILON);
+    let eta = eta_path;
     let linear = 2.0 * eps * (1.0 / eta - cos_i / (eta * eta * cos_t)).abs();
     let root = (2.0 * eps.sqrt() + 2.0 * eps) / eta;
     linear.min(root)
@@ -60,7 +62,8 @@ pub fn refraction_allowance(cos_i: f64, eta: f64, cos_t: f64) -> f64 {
 pub fn refraction_allowance_at(wi: [f64; 3], n: [f64; 3], eta: f64, refracted: [f64; 3]) -> f64 {
     let dot = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
     let cos_i = dot(wi, n);
-    let eta_path = radiometry::snell::Incidence::resolve(cos_i, eta).eta_path();
+    let eta_path =
+        radiometry::snell::Incidence::resolve(cos_i, eta).map_or(f64::NAN, |i| i.eta_path());
     refraction_allowance(cos_i.abs(), eta_path, dot(refracted, n).abs())
 }
 

@@ -132,7 +132,8 @@ impl FresnelArgs {
         };
         record.input("model", self.model.name());
 
-        let incidence = Incidence::resolve(cos_i, eta);
+        let incidence = Incidence::resolve(cos_i, eta)
+            .expect("cos_i and eta were validated by radiometry::domain above");
         let theta_deg = incidence.cos_i.acos().to_degrees();
         if kappa > 0.0 {
             record.step(say!(
@@ -334,7 +335,8 @@ impl RefractArgs {
         note_normalized(&mut record, lang, "wi", &wi);
         note_normalized(&mut record, lang, "normal", &n);
         let cos_i = wi.unit.dot(n.unit);
-        let incidence = Incidence::resolve(cos_i, eta);
+        let incidence = Incidence::resolve(cos_i, eta)
+            .expect("wi, normal and eta were validated by radiometry::domain above");
         record.step(format!("cos θi = n · ωi = {}", number(cos_i)));
         record.step(if incidence.from_inside {
             say!(

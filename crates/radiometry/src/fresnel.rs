@@ -105,10 +105,9 @@ pub fn schlick<T: Real>(cos_i: T, f0: T) -> T {
 /// `cos θ_t` it is as close as from the outside.
 #[inline]
 pub fn schlick_dielectric<T: Real>(cos_i: T, eta: T) -> T {
-    if !(eta > T::zero() && eta.is_finite()) || cos_i.is_nan() {
+    let Some(incidence) = Incidence::resolve(cos_i, eta) else {
         return T::nan();
-    }
-    let incidence = Incidence::resolve(cos_i, eta);
+    };
     // F0 is the same from both sides: ((η−1)/(η+1))² = ((1/η−1)/(1/η+1))².
     let f0 = f0(eta, T::zero());
     if incidence.n_t >= incidence.n_i {
@@ -190,10 +189,9 @@ impl<T: Real> DielectricFresnel<T> {
 /// assert!(dielectric_polarized(-0.5_f64, 1.5).is_total_internal_reflection());
 /// ```
 pub fn dielectric_polarized<T: Real>(cos_i: T, eta: T) -> DielectricFresnel<T> {
-    if cos_i.is_nan() || !(eta > T::zero() && eta.is_finite()) {
+    let Some(incidence) = Incidence::resolve(cos_i, eta) else {
         return DielectricFresnel::all(T::nan(), None, T::nan());
-    }
-    let incidence = Incidence::resolve(cos_i, eta);
+    };
     let (c, n_i, n_t) = (incidence.cos_i, incidence.n_i, incidence.n_t);
     let contrast = compensated::index_contrast(n_t, T::zero(), n_i); // n_t² − n_i²
     if contrast == T::zero() {
@@ -311,7 +309,7 @@ pub fn conductor_polarized<T: Real>(cos_i: T, n: T, kappa: T) -> ConductorFresne
     let d = Complex::new(compensated::snell_discriminant(n, kappa, one, c), two_nk);
     let s = principal_sqrt(d);
     // η² itself, summed afresh rather than as (η² − 1) + 1, which would lose
-    // the digits of a small η² (n = 1e-3: all but six).
+    // the digits of a small η² (n = 1e-3: six of its sixteen).
     let eta2 = Complex::new(compensated::index_contrast(n, kappa, T::zero()), two_nk);
     let brewster = Complex::new(
         compensated::brewster_factor(n, kappa, one, c),

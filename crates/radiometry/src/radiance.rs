@@ -138,9 +138,9 @@ pub fn reflected_radiance<T: Real>(brdf: T, irradiance: T) -> T {
 
 /// Radiance carried across a smooth interface: `L_t = τ L / η²`, where `τ`
 /// is the transmitted fraction of power (the Fresnel transmittance) and
-/// `η = n_t / n_i` the effective relative index along the direction the
-/// *radiance is traced* (the [`crate::specular::Refraction::eta`] of a
-/// camera path). Radiance divided by `n²` is invariant along a ray across
+/// `η = eta_path = n_t / n_i` the effective relative index along the
+/// direction the *radiance is traced* (the
+/// [`crate::specular::Refraction::eta_path`] of a camera path). Radiance divided by `n²` is invariant along a ray across
 /// refractions (the beam's solid angle is compressed by `n_i² / n_t²`;
 /// Nicodemus 1963; Veach's thesis §5.2; pbrt-v4 §9.5.2), so the factor
 /// cancels over a path that enters and leaves the same medium.
@@ -153,6 +153,6 @@ pub fn reflected_radiance<T: Real>(brdf: T, irradiance: T) -> T {
 /// assert!((across_interface(inside, 1.0 / 1.5) - 1.0).abs() < 1e-15);
 /// ```
 #[inline]
-pub fn across_interface<T: Real>(transmitted: T, eta: T) -> T {
-    transmitted / (eta * eta)
+pub fn across_interface<T: Real>(transmitted: T, eta_path: T) -> T {
+    transmitted / (eta_path * eta_path)
 }

@@ -50,24 +50,37 @@ pub struct Incidence<T> {
 
 impl<T: Real> Incidence<T> {
     /// Resolves the side from the sign of `cos_i`, for an interface of
-    /// relative index `eta = n_inside / n_outside`.
+    /// relative index `eta = n_inside / n_outside`; `None` for input that
+    /// describes no interface: a NaN cosine, or an `eta` that is not positive
+    /// and finite. This is the one place the laws of signed cosines check
+    /// their input.
     ///
     /// `cos_i` is clamped into `[-1, 1]`, absorbing the rounding of a dot
-    /// product of unit vectors; NaN stays NaN.
+    /// product of unit vectors.
+    ///
+    /// ```
+    /// use radiometry::snell::Incidence;
+    /// let inside = Incidence::resolve(-0.5_f64, 1.5).unwrap();
+    /// assert!(inside.from_inside && (inside.n_i, inside.n_t) == (1.5, 1.0));
+    /// assert_eq!(Incidence::resolve(0.5_f64, -1.5), None);
+    /// ```
     #[inline]
-    pub fn resolve(cos_i: T, eta: T) -> Self {
+    pub fn resolve(cos_i: T, eta: T) -> Option<Self> {
+        if cos_i.is_nan() || !(eta > T::zero() && eta.is_finite()) {
+            return None;
+        }
         let from_inside = cos_i < T::zero();
         let (n_i, n_t) = if from_inside {
             (eta, T::one())
         } else {
             (T::one(), eta)
         };
-        Self {
+        Some(Self {
             cos_i: clamp_unit(cos_i.abs()),
             n_i,
             n_t,
             from_inside,
-        }
+        })
     }
 
     /// The relative index along the path, `n_t / n_i` (rounded once).
@@ -115,10 +128,7 @@ impl<T: Real> Incidence<T> {
 /// ```
 #[inline]
 pub fn cos_transmitted<T: Real>(cos_i: T, eta: T) -> Option<T> {
-    if cos_i.is_nan() || !(eta > T::zero() && eta.is_finite()) {
-        return None;
-    }
-    Incidence::resolve(cos_i, eta).cos_transmitted()
+    Incidence::resolve(cos_i, eta)?.cos_transmitted()
 }
 
 /// The angle of refraction `θ_t` for light meeting the interface at
@@ -173,7 +183,7 @@ pub fn critical_angle<T: Real>(eta_path: T) -> Option<T> {
 
 /// Brewster's angle `θ_B = atan(eta_path)`, with `eta_path = n_t / n_i`, at
 /// which the p-polarised reflectance vanishes; `None` for an `eta_path` that
-/// is not positive.
+/// is not positive and finite.
 ///
 /// ```
 /// let theta_b = radiometry::snell::brewster_angle(1.5_f64).unwrap();
@@ -181,7 +191,7 @@ pub fn critical_angle<T: Real>(eta_path: T) -> Option<T> {
 /// ```
 #[inline]
 pub fn brewster_angle<T: Real>(eta_path: T) -> Option<T> {
-    (eta_path > T::zero()).then(|| eta_path.atan())
+    (eta_path > T::zero() && eta_path.is_finite()).then(|| eta_path.atan())
 }
 
 /// Clamps into `[-1, 1]`, keeping NaN (unlike `Float::max`/`min`, which drop it).

@@ -71,11 +71,7 @@ pub struct Refraction<V: Vector3> {
 /// ```
 #[inline]
 pub fn refract<V: Vector3>(wi: V, n: V, eta: V::Scalar) -> Option<Refraction<V>> {
-    if !(eta > V::Scalar::zero() && eta.is_finite()) {
-        return None;
-    }
-    let cos_signed = n.dot(wi);
-    let incidence = Incidence::resolve(cos_signed, eta);
+    let incidence = Incidence::resolve(n.dot(wi), eta)?;
     let cos_t = incidence.cos_transmitted()?;
     let n_facing = if incidence.from_inside { -n } else { n };
     // The tangential part scales by n_i / n_t; one of the two is exactly 1.

@@ -388,7 +388,7 @@ fn solid_angle_ratio(
 /// is measured by central differences, and power conservation
 /// `L_t cos θ_t dω_t = T L_i cos θ_i dω_i` (`T` the exact Fresnel
 /// transmittance) gives `L_t`. That `L_t` is `across_interface(T L_i, η_cam)`,
-/// `η_cam` the `Refraction::eta` of the reversed (camera) path, and it is
+/// `η_cam` the `Refraction::eta_path` of the reversed (camera) path, and it is
 /// the course's `L_in (1 − F)` times `η²`, `η = n_t/n_i` along the light:
 /// the course's radiance is 2.25 times too small entering glass and 2.25
 /// times too large leaving it. The reflected beam keeps its solid angle.
