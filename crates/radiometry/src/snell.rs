@@ -137,12 +137,14 @@ pub fn cos_transmitted<T: Real>(cos_i: T, eta: T) -> Option<T> {
 /// and for input that describes no refraction (`theta_i` outside
 /// `[0, π/2]` or NaN, `eta_path` not positive and finite).
 ///
-/// Snell's discriminant `η² cos²θ_t = η² − sin²θ_i` is summed as if in twice
-/// the precision (as [`Incidence::cos_transmitted`] sums it from a cosine,
-/// here from the sine the angle gives), so total internal reflection is
-/// decided by the sign of an accurate value and `cos θ_t` keeps its digits
-/// near the critical angle; the angle is `atan2(sin θ_t, cos θ_t)`, accurate
-/// also where `asin` of a sine near 1 is not.
+/// Snell's discriminant `η² cos²θ_t = η² − sin²θ_i = η² − 1 + cos²θ_i` is
+/// summed as if in twice the precision, from whichever of `sin θ_i` and
+/// `cos θ_i` the angle determines better (the sine below π/4, the cosine
+/// above, where the sine is flat and one of its ulps spans many of θ's), so
+/// total internal reflection is decided by the sign of an accurate value, as
+/// [`Incidence::cos_transmitted`] decides it from a given cosine. The angle is
+/// `atan2(η sin θ_t, η cos θ_t)`, accurate also where `asin` of a sine near 1
+/// is not.
 ///
 /// ```
 /// use radiometry::snell::transmitted_angle;
@@ -157,13 +159,17 @@ pub fn transmitted_angle<T: Real>(theta_i: T, eta_path: T) -> Option<T> {
     if !(in_range && eta_path > T::zero() && eta_path.is_finite()) {
         return None;
     }
-    let sin_i = theta_i.sin();
-    // n_t² − n_i² sin²θ_i with n_i = 1, n_t = eta_path: x² − y² − n² with y = 0.
-    let discriminant = compensated::index_contrast(eta_path, T::zero(), sin_i);
+    let (sin_i, cos_i) = theta_i.sin_cos();
+    // From the outside of an interface of index eta_path: n_i = 1, n_t = eta_path.
+    let discriminant = if theta_i <= T::FRAC_PI_4() {
+        compensated::index_contrast(eta_path, T::zero(), sin_i) // η² − sin²θ_i
+    } else {
+        compensated::snell_discriminant(eta_path, T::zero(), T::one(), cos_i) // η² − 1 + cos²θ_i
+    };
     if !(discriminant >= T::zero()) {
         return None;
     }
-    Some((sin_i / eta_path).atan2(discriminant.sqrt() / eta_path))
+    Some(sin_i.atan2(discriminant.sqrt()))
 }
 
 /// The critical angle `θ_c = asin(eta_path)` beyond which light from the

@@ -16,7 +16,9 @@ use radiometry::brdf::{BlinnPhong, BlinnPhongReciprocal, Brdf, Lambert};
 use radiometry::fresnel::{
     conductor, conductor_polarized, dielectric, dielectric_polarized, f0, schlick,
 };
-use radiometry::snell::{cos_transmitted, critical_angle, transmitted_angle};
+use radiometry::snell::{
+    brewster_angle, cos_transmitted, critical_angle, transmitted_angle, Incidence,
+};
 use radiometry::specular::refract;
 
 const EPS: f64 = f64::EPSILON;
@@ -245,6 +247,8 @@ fn non_physical_indices_give_nan_or_no_outcome() {
         }
         assert_eq!(transmitted_angle(0.3, bad), None, "eta_path {bad}");
         assert_eq!(critical_angle(bad), None, "eta_path {bad}");
+        assert_eq!(brewster_angle(bad), None, "eta_path {bad}");
+        assert_eq!(Incidence::resolve(0.5, bad), None, "eta {bad}");
     }
     // Angles of incidence outside [0, π/2] describe no incidence.
     for theta in [-0.1, 1.6, f64::NAN] {

@@ -154,11 +154,13 @@ proptest! {
     /// `n₁ sin θ₁ = n₂ sin θ₂`): Snell's law where light refracts, NaN
     /// where it is totally reflected (there is no guard). Tolerance
     /// `4ε + (1 + 1/n²) ε / cos θ_t` against `snell::transmitted_angle`:
-    /// both are `atan2(x, c)` with `x = sin θin / n` rounded once, and
-    /// `√(c² + d)` moves by at most `|d|/c`. The formula's `c² = 1 − x²`
-    /// (inside `arcsin`) inherits at most ε from the rounded `x`; the
-    /// crate's `cos²θ_t = 1 − (1 − cos²θin)/n²` inherits `ε cos²θin / n²`
-    /// from the rounded `cos θin`. 4ε covers the library calls. Near the
+    /// both are `atan2(x, c)` in effect, with `x = sin θin / n` and
+    /// `c = cos θ_t`, and `√(c² + d)` moves by at most `|d|/(2c)`. The
+    /// formula's `c² = 1 − x²` (inside `arcsin`) inherits at most 2ε from the
+    /// rounded `x`; the crate's `c² = d / n²`, with the discriminant `d`
+    /// summed exactly from one rounded `sin θin` or `cos θin` (whichever the
+    /// angle determines better), inherits at most `2ε / n²` from it. 4ε
+    /// covers the library calls. Near the
     /// critical angle both are right but ill-conditioned. `n sin θ = sin θin`
     /// within 4ε, three roundings of numbers ≤ 1. The two may disagree on
     /// whether light refracts only where `x` is within 2ε of 1.

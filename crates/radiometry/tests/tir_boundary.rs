@@ -215,3 +215,30 @@ fn the_exact_reference_knows_the_textbook_cases() {
         Ordering::Equal
     );
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(200))]
+
+    /// The angle form, `snell::transmitted_angle(θ_i, eta_path)`: walking θ_i
+    /// double by double across the critical angle `asin(eta_path)` (from
+    /// `snell::critical_angle`, within an ulp or two), it refracts below and
+    /// reflects totally above. The few doubles around the critical angle
+    /// itself are skipped: there the answer depends on how `sin`, `cos` and
+    /// `critical_angle` round, not on the law. Near grazing (eta_path → 1)
+    /// one ulp of `sin θ` spans thousands of ulps of θ, which is why the law
+    /// reads the cosine there.
+    #[test]
+    fn transmitted_angle_refracts_below_and_reflects_above_the_critical_angle(eta in relative_index()) {
+        use radiometry::snell::{critical_angle, transmitted_angle};
+        let eta_path = if eta < 1.0 { eta } else { 1.0 / eta };
+        let theta_c = critical_angle(eta_path).expect("eta_path < 1 has a critical angle");
+        for k in (-2000..=2000_i64).filter(|k| k.abs() > 4) {
+            let theta = step_f64(theta_c, k);
+            if theta > std::f64::consts::FRAC_PI_2 {
+                continue;
+            }
+            let refracts = transmitted_angle(theta, eta_path).is_some();
+            prop_assert_eq!(refracts, k < 0, "θ {:e} ({} ulps from θ_c), eta_path {}", theta, k, eta_path);
+        }
+    }
+}
