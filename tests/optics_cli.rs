@@ -443,6 +443,14 @@ fn bad_input_is_refused_by_name_without_a_panic() {
             "--kappa must be a non-negative",
         ),
         (
+            &["fresnel", "--eta", "1e60", "--cos-i", "0.3"],
+            "--eta must be a refractive index from 1e-50 to 1e50, got 1e60",
+        ),
+        (
+            &["fresnel", "--eta", "1.5", "--kappa", "1e-300", "--cos-i", "0.3"],
+            "--kappa must be an extinction coefficient of 0 or from 1e-50 to 1e50",
+        ),
+        (
             &["fresnel", "--eta", "1.5", "--cos-i", "1.0001"],
             "--cos-i must be in [-1, 1]",
         ),

@@ -52,12 +52,19 @@ pub fn error_message(error: &anyhow::Error, lang: Lang) -> String {
                 "in [-1, 1]" => "a [-1, 1] tartományba kell esnie",
                 "in [0, 1]" => "a [0, 1] tartományba kell esnie",
                 "a positive refractive index" => "pozitív törésmutatónak kell lennie",
+                "a refractive index from 1e-50 to 1e50" => {
+                    "1e-50 és 1e50 közötti törésmutatónak kell lennie"
+                }
+                "an extinction coefficient of 0 or from 1e-50 to 1e50" => {
+                    "0 vagy 1e-50 és 1e50 közötti kioltási tényezőnek kell lennie"
+                }
                 "a non-negative extinction coefficient" => {
                     "nemnegatív kioltási tényezőnek kell lennie"
                 }
                 "non-negative" => "nemnegatívnak kell lennie",
                 other => other,
             };
+            let value = radiometry::domain::shown(*value);
             format!("{name}: {expected}, kapott érték: {value}")
         }
         (Lang::Hu, Some(DomainError::ZeroVector { name, x, y, z })) => {

@@ -26,7 +26,7 @@ pub enum DomainError {
         value: f64,
     },
     /// Finite, but outside the allowed range.
-    #[error("{name} must be {expected}, got {value}")]
+    #[error("{name} must be {expected}, got {}", shown(*.value))]
     OutOfRange {
         /// The input's name as the user wrote it.
         name: String,
@@ -48,6 +48,18 @@ pub enum DomainError {
         /// The components given.
         z: f64,
     },
+}
+
+/// A number as an error message shows it: as Rust prints it, but in
+/// scientific notation where that would run to more than a few digits
+/// (`1e60`, not sixty-one of them).
+pub fn shown(value: f64) -> String {
+    let magnitude = value.abs();
+    if magnitude != 0.0 && !(1e-5..1e16).contains(&magnitude) {
+        format!("{value:e}")
+    } else {
+        format!("{value}")
+    }
 }
 
 /// A finite number.
@@ -80,18 +92,36 @@ pub fn cosine(name: &str, value: f64) -> Result<f64, DomainError> {
     in_range(name, value, (-1.0..=1.0).contains(&value), "in [-1, 1]")
 }
 
-/// A real refractive index or relative index `eta`: positive.
+/// The range of indices and extinction coefficients the laws are valid on
+/// in `f64` (crate conventions): they form fourth powers of them, which must
+/// stay finite and normal. No material comes near either end.
+pub const INDEX_RANGE: core::ops::RangeInclusive<f64> = 1e-50..=1e50;
+
+/// A real refractive index or relative index `eta`: positive, and within
+/// [`INDEX_RANGE`].
 pub fn refractive_index(name: &str, value: f64) -> Result<f64, DomainError> {
-    in_range(name, value, value > 0.0, "a positive refractive index")
+    in_range(name, value, value > 0.0, "a positive refractive index")?;
+    in_range(
+        name,
+        value,
+        INDEX_RANGE.contains(&value),
+        "a refractive index from 1e-50 to 1e50",
+    )
 }
 
-/// An extinction coefficient `kappa`: non-negative.
+/// An extinction coefficient `kappa`: zero, or within [`INDEX_RANGE`].
 pub fn extinction(name: &str, value: f64) -> Result<f64, DomainError> {
     in_range(
         name,
         value,
         value >= 0.0,
         "a non-negative extinction coefficient",
+    )?;
+    in_range(
+        name,
+        value,
+        value == 0.0 || INDEX_RANGE.contains(&value),
+        "an extinction coefficient of 0 or from 1e-50 to 1e50",
     )
 }
 
@@ -156,7 +186,7 @@ mod tests {
 
     #[test]
     fn errors_name_the_input_and_the_expectation() {
-        let cases: [(Result<f64, DomainError>, &str); 6] = [
+        let cases: [(Result<f64, DomainError>, &str); 8] = [
             (cosine("cos_i", 1.5), "cos_i must be in [-1, 1], got 1.5"),
             (
                 cosine("cos_i", f64::NAN),
@@ -171,6 +201,14 @@ mod tests {
                 "eta must be a positive refractive index, got 0",
             ),
             (fraction("kd", 1.2), "kd must be in [0, 1], got 1.2"),
+            (
+                refractive_index("--eta", 1e60),
+                "--eta must be a refractive index from 1e-50 to 1e50, got 1e60",
+            ),
+            (
+                extinction("--kappa", 1e-60),
+                "--kappa must be an extinction coefficient of 0 or from 1e-50 to 1e50, got 1e-60",
+            ),
             (
                 finite("radiance", f64::INFINITY),
                 "radiance must be a finite number, got inf",

@@ -63,6 +63,12 @@
 //! - **Precision**: every law is generic over [`Real`] (`f32` and `f64`). `f64`
 //!   is the reference; `f32` is what a tracer uses, and the test suite
 //!   measures the difference against 50-digit references.
+//! - **Indices** (`eta`, `eta_path`, `n`, `kappa > 0`) are valid from 1e-50
+//!   to 1e50 in `f64` and from 1e-9 to 1e9 in `f32`: the laws form fourth
+//!   powers of them, which must stay finite and normal. Within that range no
+//!   law gives NaN or infinity for a valid input (the test
+//!   `valid_input_never_gives_nan_or_infinity`); [`domain::INDEX_RANGE`]
+//!   refuses what lies beyond it in user input.
 //! - **Out-of-domain input** never panics. A NaN argument, or an index that
 //!   is not positive and finite, gives NaN where the law returns a number and
 //!   `None` where it returns an optional outcome (a refracted direction, a
