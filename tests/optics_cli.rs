@@ -447,7 +447,9 @@ fn bad_input_is_refused_by_name_without_a_panic() {
             "--eta must be a refractive index from 1e-50 to 1e50, got 1e60",
         ),
         (
-            &["fresnel", "--eta", "1.5", "--kappa", "1e-300", "--cos-i", "0.3"],
+            &[
+                "fresnel", "--eta", "1.5", "--kappa", "1e-300", "--cos-i", "0.3",
+            ],
             "--kappa must be an extinction coefficient of 0 or from 1e-50 to 1e50",
         ),
         (

@@ -97,6 +97,10 @@ pub fn cosine(name: &str, value: f64) -> Result<f64, DomainError> {
 /// stay finite and normal. No material comes near either end.
 pub const INDEX_RANGE: core::ops::RangeInclusive<f64> = 1e-50..=1e50;
 
+/// [`INDEX_RANGE`] for the `f32` tier: the same fourth powers must stay
+/// finite and normal in `f32`.
+pub const INDEX_RANGE_F32: core::ops::RangeInclusive<f64> = 1e-9..=1e9;
+
 /// A real refractive index or relative index `eta`: positive, and within
 /// [`INDEX_RANGE`].
 pub fn refractive_index(name: &str, value: f64) -> Result<f64, DomainError> {

@@ -586,6 +586,26 @@ fn direction(path: &str, v: [f64; 3]) -> Result<Vec3, SceneError> {
     Ok(unit)
 }
 
+/// An index of refraction or extinction coefficient for the `f32` laws:
+/// within `domain::INDEX_RANGE_F32` (or 0, where `zero` allows it).
+fn index(path: &str, value: f64, zero: bool) -> Result<f32, SceneError> {
+    domain::finite(path, value)?;
+    let ok = (zero && value == 0.0) || domain::INDEX_RANGE_F32.contains(&value);
+    if !ok {
+        return Err(DomainError::OutOfRange {
+            name: path.to_owned(),
+            value,
+            expected: if zero {
+                "0 or from 1e-9 to 1e9 (the range of the f32 laws)"
+            } else {
+                "from 1e-9 to 1e9 (the range of the f32 laws)"
+            },
+        }
+        .into());
+    }
+    Ok(value as f32)
+}
+
 fn positive(path: &str, value: f64) -> Result<f32, SceneError> {
     domain::finite(path, value)?;
     if !(value > 0.0) || (value as f32) == 0.0 || !(value as f32).is_finite() {
@@ -863,8 +883,8 @@ fn validate_material(p: &str, spec: &MaterialSpec) -> Result<Material, SceneErro
                 .into_iter()
                 .zip(n.into_iter().zip(kappa))
             {
-                positive(&format!("{p}.n{axis}"), n)?;
-                domain::extinction(&format!("{p}.kappa{axis}"), k)?;
+                index(&format!("{p}.n{axis}"), n, false)?;
+                index(&format!("{p}.kappa{axis}"), k, true)?;
             }
             Material::Conductor {
                 n: n.map(|x| x as f32),
@@ -872,7 +892,7 @@ fn validate_material(p: &str, spec: &MaterialSpec) -> Result<Material, SceneErro
             }
         }
         MaterialSpec::Dielectric { eta } => Material::Dielectric {
-            eta: positive(&format!("{p}.eta"), eta)?,
+            eta: index(&format!("{p}.eta"), eta, false)?,
         },
     })
 }

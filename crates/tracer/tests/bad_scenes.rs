@@ -168,7 +168,16 @@ fn bad_scenes_are_refused_with_the_path_of_the_bad_value() {
         (
             "negative kappa",
             with("/materials/gold/kappa", json!([3.1, -2.7, 1.9])),
-            &["materials.gold.kappa[1]", "non-negative"],
+            &["materials.gold.kappa[1]", "0 or from 1e-9 to 1e9", "-2.7"],
+        ),
+        (
+            "index beyond the f32 laws",
+            with("/materials/gold/n", json!([0.17, 1e12, 1.5])),
+            &[
+                "materials.gold.n[1]",
+                "from 1e-9 to 1e9",
+                "got 1000000000000",
+            ],
         ),
         (
             "wrong version",
