@@ -38,9 +38,9 @@ def test_gold_is_yellow_and_silver_is_neutral():
     assert silver["name"] == "silver" and abs(silver["angles"][0]["lab"][1]) < 2
 
 
-def _reproduces(committed, fresh, float_tolerance):
+def _reproduces(committed, fresh):
     with open(committed, "rb") as a, open(fresh, "rb") as b:
-        return reproduce.differences(a.read(), b.read(), float_tolerance)
+        return reproduce.differences(a.read(), b.read(), reproduce.tolerance_for(committed))
 
 
 def test_committed_colorimetry_reference_and_tables_are_up_to_date(tmp_path):
@@ -48,29 +48,49 @@ def test_committed_colorimetry_reference_and_tables_are_up_to_date(tmp_path):
     # are the CIE data as published, byte for byte (reproduce.py says why).
     fresh_json, fresh_rust = tmp_path / "c.json", tmp_path / "c.rs"
     colorimetry.main(str(fresh_json), str(fresh_rust))
-    for committed, fresh, tolerance in ((colorimetry.DEFAULT_JSON, fresh_json, reproduce.BLAS_TOLERANCE),
-                                        (colorimetry.DEFAULT_RUST, fresh_rust, 0.0)):
-        assert not _reproduces(committed, fresh, tolerance), f"regenerate with: {colorimetry.REGENERATE}"
+    for committed, fresh in ((colorimetry.DEFAULT_JSON, fresh_json), (colorimetry.DEFAULT_RUST, fresh_rust)):
+        assert not _reproduces(committed, fresh), f"regenerate with: {colorimetry.REGENERATE}"
 
 
 def test_committed_metals_reference_is_up_to_date(tmp_path):
     fresh = tmp_path / "metals.json"
     metals.main(str(fresh))
-    assert not _reproduces(metals.DEFAULT_PATH, fresh, reproduce.BLAS_TOLERANCE), \
-        f"regenerate with: {metals.REGENERATE}"
+    assert not _reproduces(metals.DEFAULT_PATH, fresh), f"regenerate with: {metals.REGENERATE}"
+
+
+def test_only_the_colour_science_files_are_compared_with_a_tolerance():
+    assert reproduce.tolerance_for(colorimetry.DEFAULT_JSON) == reproduce.BLAS_TOLERANCE
+    assert reproduce.tolerance_for(metals.DEFAULT_PATH) == reproduce.BLAS_TOLERANCE
+    for exact in (colorimetry.DEFAULT_RUST, "validation/reference/fresnel_mpmath.json",
+                  "mitsuba_laws.json", "mitsuba_renders.json"):
+        assert reproduce.tolerance_for(exact) == 0.0, exact
 
 
 def test_reproduction_tolerates_blas_rounding_and_nothing_else():
     doc = {"schema": "x/1", "n": 3, "values": [0.1, -16.299011627332910, 1e-300]}
     committed = json.dumps(doc).encode()
     blas = dict(doc, values=[0.1 + 2.8e-17, -16.299011627332966, 1e-300])
-    assert reproduce.differences(committed, json.dumps(blas).encode(), reproduce.BLAS_TOLERANCE) == []
+    tolerance = reproduce.BLAS_TOLERANCE
+    assert reproduce.differences(committed, json.dumps(blas).encode(), tolerance) == []
     assert reproduce.differences(committed, json.dumps(blas).encode()) == ["the bytes differ"]
+    assert reproduce.spread(committed, json.dumps(blas).encode())[0] == 2
     for changed in (dict(doc, values=[0.1 + 1e-9, doc["values"][1], 1e-300]),  # a real change
+                    dict(doc, values=[0.1, doc["values"][1], float("nan")]),  # NaN
                     dict(doc, values=[0.1, doc["values"][1]]),  # an element lost
                     dict(doc, n=4),  # an integer
                     dict(doc, schema="x/2"),  # a string
                     dict(doc, values=[0.1, doc["values"][1], "1e-300"]),  # a type
                     {k: doc[k] for k in ("n", "schema", "values")}):  # key order
-        found = reproduce.differences(committed, json.dumps(changed).encode(), reproduce.BLAS_TOLERANCE)
+        found = reproduce.differences(committed, json.dumps(changed).encode(), tolerance)
         assert found, changed
+    assert reproduce.differences(committed, b"{", tolerance)
+
+
+def test_the_command_line_exits_1_where_a_file_does_not_reproduce(tmp_path):
+    a, b = tmp_path / "metals.json", tmp_path / "fresh.json"
+    a.write_text(json.dumps({"x": [1.0, 2.0]}))
+    b.write_text(json.dumps({"x": [1.0, 2.0 + 1e-14]}))
+    assert reproduce.main([str(a), str(b)]) == 0
+    b.write_text(json.dumps({"x": [1.0, 2.1]}))
+    assert reproduce.main([str(a), str(b)]) == 1
+    assert reproduce.main([str(a), str(b), "--as", "fresnel_mpmath.json"]) == 1

@@ -11,8 +11,6 @@ use serde_json::json;
 use validation::exchange;
 use validation::laws::Laws;
 use validation::mpmath::Laws64;
-use validation::reference::Reproduction::{self, Exact, UpToBlasRounding};
-use validation::reference::{departures, BLAS_TOLERANCE};
 use validation::report::{to_html, to_json, write_atomically};
 use validation::suite::{self, Context};
 use validation::Check;
@@ -57,19 +55,13 @@ pub struct ValidateArgs {
 
 /// The reference generators and the files each writes, in the order the
 /// full run regenerates them.
-/// Each generator, its outputs, and how closely each must reproduce.
-const GENERATORS: [(&str, &[(&str, Reproduction)]); 5] = [
-    ("fresnel_mpmath.py", &[("fresnel_mpmath.json", Exact)]),
-    ("mitsuba_laws.py", &[("mitsuba_laws.json", Exact)]),
-    (
-        "colorimetry.py",
-        &[
-            ("colorimetry.json", UpToBlasRounding),
-            ("cie_tables.rs", Exact),
-        ],
-    ),
-    ("metals.py", &[("metals.json", UpToBlasRounding)]),
-    ("mitsuba_render.py", &[("mitsuba_renders.json", Exact)]),
+/// Each generator and its outputs.
+const GENERATORS: [(&str, &[&str]); 5] = [
+    ("fresnel_mpmath.py", &["fresnel_mpmath.json"]),
+    ("mitsuba_laws.py", &["mitsuba_laws.json"]),
+    ("colorimetry.py", &["colorimetry.json", "cie_tables.rs"]),
+    ("metals.py", &["metals.json"]),
+    ("mitsuba_render.py", &["mitsuba_renders.json"]),
 ];
 
 pub fn run(args: &ValidateArgs, ui: &Ui) -> anyhow::Result<()> {
@@ -356,9 +348,8 @@ fn pins_satisfied(interpreter: &Path, requirements: &Path) -> anyhow::Result<boo
 }
 
 /// Regenerates every reference into `fresh` and checks that each reproduces
-/// the committed one: byte for byte, or up to BLAS rounding where the
-/// generator's numbers go through numpy's BLAS
-/// ([`validation::reference::Reproduction`]).
+/// the committed one, by the rule of `python-checks/reproduce.py` (byte for
+/// byte, but for the files written through colour-science's BLAS products).
 fn regenerate(python: &Path, scripts: &Path, fresh: &Path) -> anyhow::Result<Check> {
     let committed = validation::reference::committed_dir();
     let tables = validation::repo_root().join("crates/radiometry/src/cie_tables.rs");
@@ -366,20 +357,18 @@ fn regenerate(python: &Path, scripts: &Path, fresh: &Path) -> anyhow::Result<Che
         "references.regenerated",
         "Every committed reference regenerates with the pinned tools",
         "python-checks/ generators in the pinned environment",
-        &format!(
-            "byte-identical, except the two written through colour-science's BLAS products \
-             (colorimetry.json, metals.json): there every number within {BLAS_TOLERANCE:e} · max(1, |value|) \
-             and all else identical"
-        ),
+        "python-checks/reproduce.py: byte-identical, except the two written through \
+         colour-science's BLAS products (colorimetry.json, metals.json), where every number \
+         must agree within 1e-12 · max(1, |value|) and all else be identical",
     );
     for (script, outputs) in GENERATORS {
         let mut command = Command::new(python);
         command.arg("-W").arg("ignore").arg(scripts.join(script));
-        for (name, _) in outputs {
+        for name in outputs {
             command.arg(fresh.join(name));
         }
         run_tool(command, &format!("python-checks/{script}"))?;
-        for &(name, how) in outputs {
+        for name in outputs {
             check.cases += 1;
             let old = if name.ends_with(".rs") {
                 tables.clone()
@@ -387,16 +376,30 @@ fn regenerate(python: &Path, scripts: &Path, fresh: &Path) -> anyhow::Result<Che
                 committed.join(name)
             };
             // Both must exist: two missing files are not a reproduction.
-            let departures = match (std::fs::read(&old), std::fs::read(fresh.join(name))) {
-                (Ok(committed), Ok(regenerated)) => departures(&committed, &regenerated, how, 3),
-                (Err(e), _) | (_, Err(e)) => vec![e.to_string()],
-            };
-            if !departures.is_empty() {
-                check.fail(format!(
-                    "{} differs from what python-checks/{script} writes now ({}): regenerate and commit it",
-                    old.display(),
-                    departures.join("; ")
-                ));
+            if !(old.is_file() && fresh.join(name).is_file()) {
+                check.fail(format!("{} or its regeneration is missing", old.display()));
+                continue;
+            }
+            let output = Command::new(python)
+                .arg(scripts.join("reproduce.py"))
+                .arg(&old)
+                .arg(fresh.join(name))
+                .output()
+                .context("python-checks/reproduce.py: cannot run it")?;
+            let said = String::from_utf8_lossy(&output.stdout)
+                .trim()
+                .replace('\n', "; ");
+            match output.status.code() {
+                Some(0) => {}
+                Some(1) => check.fail(format!(
+                    "{} differs from what python-checks/{script} writes now ({said}): regenerate and commit it",
+                    old.display()
+                )),
+                _ => bail!(
+                    "python-checks/reproduce.py failed ({}): {}",
+                    output.status,
+                    String::from_utf8_lossy(&output.stderr).trim()
+                ),
             }
         }
     }
