@@ -3,7 +3,7 @@
 //!
 //! Reference: `validation/reference/fresnel_mpmath.json` (schema
 //! `fresnel-reference/1`), written by `python-checks/fresnel_mpmath.py`:
-//! extremes included (grazing `cos θ = 1e-300`, within 1e-12 rad and one ulp
+//! extremes included (grazing `cos θ = 1e-300`, 1e-12 rad and one ulp either side
 //! of the critical angle on every path that has one, `η = 1 ± 1e-12`,
 //! `η = 1e-3` and `1e3`, `n = 1e3`, `κ = 1e3`).
 //!
@@ -131,8 +131,8 @@ impl FresnelMpmath {
 
 impl Exact {
     /// The spacing of the tier's numbers at the exact value `hi + lo`. When
-    /// `hi` is a power of two and `lo < 0`, the value lies in the binade
-    /// below, whose spacing is half that at `hi`.
+    /// `hi` is a power of two and `lo` points towards zero, the value lies in
+    /// the binade below, whose spacing is half that at `hi`.
     fn ulp(self, tier: &str) -> f64 {
         let at = |x: f64| {
             if tier == "f32" {
@@ -142,7 +142,8 @@ impl Exact {
             }
         };
         let power_of_two = self.0 != 0.0 && self.0.to_bits() & ((1 << 52) - 1) == 0;
-        let below = power_of_two && self.1 < 0.0;
+        // `lo` pointing towards zero puts the exact value inside |hi|'s binade below.
+        let below = power_of_two && self.1 != 0.0 && self.1.signum() != self.0.signum();
         if below {
             at(self.0.abs() * 0.75) // any value of the binade below
         } else {
@@ -285,6 +286,11 @@ mod tests {
         assert_eq!(just_below.ulp("f32"), f32::EPSILON as f64 / 2.0);
         assert_eq!(Exact(1.0, f64::EPSILON / 8.0).ulp("f64"), f64::EPSILON);
         assert_eq!(Exact(0.75, -1e-20).ulp("f64"), f64::EPSILON / 2.0);
+        assert_eq!(
+            Exact(-1.0, f64::EPSILON / 8.0).ulp("f64"),
+            f64::EPSILON / 2.0
+        );
+        assert_eq!(Exact(-1.0, -f64::EPSILON / 8.0).ulp("f64"), f64::EPSILON);
         let mut check = Check::new("t", "t", "t", "t");
         compare(
             &mut check,

@@ -59,6 +59,8 @@ pub fn reflect_003_code<V: Vector3>(v: V, n: V) -> V {
 /// eye).
 ///
 /// Correct: the law of reflection, [`crate::specular::reflect`]`(−I, N)`.
+/// The same expression as [`reflect_003_code`], its factors in another
+/// order; kept apart because each transcribes its own source.
 #[inline]
 pub fn reflect_001<V: Vector3>(i: V, n: V) -> V {
     let two = V::Scalar::one() + V::Scalar::one();

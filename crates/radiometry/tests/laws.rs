@@ -233,9 +233,10 @@ proptest! {
 /// the last digit), per material, at every angle; and used as the course
 /// uses it, with `cos θ_i` from inside a dielectric, it misses total internal
 /// reflection: by 0.9753 (water), 0.9590 (glass) and 0.8276 (diamond), the
-/// same program's numbers, required here within ±0.001 (this test samples
-/// 20 001 angles, the program 90 001; the worst sits just past the critical
-/// angle, where Schlick's curve is flat to that precision).
+/// same program's numbers, required here within ±1e-4, the rounding of its
+/// four printed decimals (this test samples 20 001 angles, the program
+/// 90 001; the worst sits just past the critical angle, where the grids'
+/// spacing moves Schlick's value by about 1e-5).
 #[test]
 fn schlick_stays_within_measured_bound() {
     let dielectrics = [
@@ -266,7 +267,7 @@ fn schlick_stays_within_measured_bound() {
             .map(|c| (schlick(c, f0) - dielectric(-c, eta)).abs())
             .fold(0.0, f64::max);
         assert!(
-            (course_inside - course_miss).abs() <= 1e-3,
+            (course_inside - course_miss).abs() <= 1e-4,
             "{name}: course Schlick from inside errs by {course_inside}, measured {course_miss}"
         );
     }
