@@ -333,6 +333,71 @@ def conductor_inputs(tier):
     return out
 
 
+# The angle laws (snell.rs), on the index along the path eta_path = n_t / n_i -------
+
+ANGLE_INDICES = {
+    "f64": [("glass in", 1.5), ("glass out", 1 / 1.5), ("water out", 1 / 1.333), ("diamond out", 1 / 2.42),
+            ("eta=4", 4.0), ("eta=0.25", 0.25), ("eta=1e3", 1e3), ("eta=1e-3", 1e-3),
+            ("eta=1+1e-12", 1 + 1e-12), ("eta=1-1e-12", 1 - 1e-12)],
+    "f32": [("glass in", 1.5), ("glass out", 1 / 1.5), ("water out", 1 / 1.333), ("diamond out", 1 / 2.42),
+            ("eta=4", 4.0), ("eta=0.25", 0.25), ("eta=1e3", 1e3), ("eta=1e-3", 1e-3),
+            ("eta=1+2^-23", 1 + 2.0 ** -23), ("eta=1-2^-24", 1 - 2.0 ** -24)]}
+ANGLES = [("0", 0.0), ("1e-8", 1e-8), ("0.1", 0.1), ("0.5", 0.5), ("1", 1.0), ("1.2", 1.2), ("1.5", 1.5)]
+# From the critical angle, where there is one: in f32 1e-9 rad is below the spacing of angles
+# (6e-8 near 0.73), so its offsets are 1e-6 and 1e-5 (16 and 160 float32 steps there).
+CRIT_ANGLE_RAD = {"f64": ("-1e-6", "-1e-9", "+1e-9", "+1e-6"), "f32": ("-1e-5", "-1e-6", "+1e-6", "+1e-5")}
+
+
+def _angle_pair(x):
+    return None if x is None else _pair(x)
+
+
+def transmitted(theta_i, eta_path):
+    """theta_t = asin(sin theta_i / eta_path), or None under total internal reflection."""
+    x = mp.sin(mpf(theta_i)) / mpf(eta_path)
+    return None if x > 1 else mp.asin(x)
+
+
+def _cond_angle(f, args, q):
+    """Relative condition number of q = f(*args) over its inputs (0 where q == 0)."""
+    if q is None or q == 0:
+        return 0.0
+    return _cond(_log_sensitivities(lambda *a: f(*a), args), q)
+
+
+def angle_cases(tier):
+    """The angle laws at exactly representable inputs of one tier."""
+    rnd = f32 if tier == "f32" else float
+    out = []
+    quarter = [("pi/4-1ulp", math.nextafter(math.pi / 4, 0)), ("pi/4+1ulp", math.nextafter(math.pi / 4, 4))]
+    if tier == "f32":
+        quarter = [("pi/4-1ulp", f32_step(f32(math.pi / 4), -1)), ("pi/4+1ulp", f32_step(f32(math.pi / 4), 1))]
+    half_pi = f32(math.pi / 2) if tier == "f32" else math.pi / 2
+    if half_pi > math.pi / 2:  # the float32 of pi/2 rounds up: the largest angle the law accepts is below it
+        half_pi = f32_step(half_pi, -1)
+    for name, eta in ANGLE_INDICES[tier]:
+        eta = rnd(eta)
+        grid = [(lab, rnd(t)) for lab, t in ANGLES] + quarter + [("pi/2", half_pi)]
+        if eta < 1:
+            theta_c = mp.asin(mpf(eta))
+            grid += [(f"critical{d}rad", rnd(float(theta_c + mpf(d)))) for d in CRIT_ANGLE_RAD[tier]]
+        for lab, theta in grid:
+            if not 0 <= theta <= math.pi / 2:
+                continue
+            theta_t = transmitted(theta, eta)
+            out.append({"label": f"{name} transmitted theta_i={lab}", "law": "transmitted_angle",
+                        "theta_i": theta, "eta_path": eta, "value": _angle_pair(theta_t),
+                        "cond": 0.0 if theta_t is None else _cond_angle(transmitted, (theta, eta), theta_t)})
+        critical = mp.asin(mpf(eta)) if eta < 1 else None
+        out.append({"label": f"{name} critical", "law": "critical_angle", "theta_i": 0.0, "eta_path": eta,
+                    "value": _angle_pair(critical),
+                    "cond": _cond_angle(lambda e: mp.asin(e), (eta,), critical) if critical else 0.0})
+        brewster = mp.atan(mpf(eta))
+        out.append({"label": f"{name} brewster", "law": "brewster_angle", "theta_i": 0.0, "eta_path": eta,
+                    "value": _angle_pair(brewster), "cond": _cond_angle(lambda e: mp.atan(e), (eta,), brewster)})
+    return out
+
+
 def build_reference():
     """The whole reference document as a JSON-ready dict (deterministic)."""
     doc = {"schema": "fresnel-reference/1",
@@ -343,13 +408,15 @@ def build_reference():
            "mpmath_version": mpmath.__version__,
            "significant_digits": DIGITS,
            "conventions": "eta = n_inside / n_outside; cos_i > 0: light from outside; "
-                          "conductor index n + i kappa, light from outside",
+                          "conductor index n + i kappa, light from outside; angles in radians, "
+                          "their index eta_path = n_t / n_i",
            "dielectric": {}, "conductor": {}}
     with mp.workdps(DPS):
         for tier in ("f64", "f32"):
             doc["dielectric"][tier] = [dielectric_case(*a) for a in dielectric_inputs(tier)]
             doc["conductor"][tier] = [conductor_case(*a) for a in conductor_inputs(tier)]
-    for kind in ("dielectric", "conductor"):
+        doc["angles"] = {tier: angle_cases(tier) for tier in ("f64", "f32")}
+    for kind in ("dielectric", "conductor", "angles"):
         for tier, cases in doc[kind].items():
             labels = [c["label"] for c in cases]
             assert len(set(labels)) == len(labels), f"duplicate labels in {kind}/{tier}"

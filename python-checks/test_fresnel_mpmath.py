@@ -183,3 +183,24 @@ def test_conductor_tir_is_exactly_one():
             assert fm.conductor_tir(cos_i, n, 0.0)
             assert fm.conductor(cos_i, n, 0.0) == (1, 1, 1)
         assert not fm.conductor_tir(0.5, 0.5, 1e-12)
+
+
+@pytest.mark.parametrize("tier", ["f64", "f32"])
+def test_angle_laws_cover_every_index_and_straddle_the_critical_angle(doc, tier):
+    cases = doc["angles"][tier]
+    for name, eta in fm.ANGLE_INDICES[tier]:
+        mine = {c["label"]: c for c in cases if c["label"].startswith(name + " ")}
+        assert f"{name} critical" in mine and f"{name} brewster" in mine, name
+        assert (mine[f"{name} critical"]["value"] is None) == (fm.f32(eta) >= 1 if tier == "f32" else eta >= 1)
+        if mine[f"{name} critical"]["value"] is not None:
+            for d in fm.CRIT_ANGLE_RAD[tier]:
+                case = mine[f"{name} transmitted theta_i=critical{d}rad"]
+                assert (case["value"] is None) == d.startswith("+"), case["label"]
+
+
+def test_angles_agree_with_snell_and_the_textbook():
+    with mp.workdps(fm.DPS):
+        t = fm.transmitted(0.5, 1.5)
+        assert close(mp.sin(t) * mpf(1.5), mp.sin(mpf(0.5)))
+        assert fm.transmitted(1.0, 1 / 1.5) is None  # 57° out of glass: beyond 41.8°
+        assert close(mp.asin(mpf(1) / 2), mp.pi / 6)

@@ -32,6 +32,7 @@ fn fresnel_matches_50_digit_reference_within_8_ulps() {
             "conductor",
             mpmath::check_conductor(&laws, &laws64, &reference),
         ),
+        ("angles", mpmath::check_angles(&laws, &laws64, &reference)),
     ];
     println!("| law | tier and quantity | worst (ulps) | at | worst (relative) | at |");
     println!("|---|---|---|---|---|---|");
@@ -49,6 +50,13 @@ fn fresnel_matches_50_digit_reference_within_8_ulps() {
                 relative.worst,
                 cell(&relative.at)
             );
+            if let Some(conditioned) = check.worst(&format!("{quantity} (ulps / (1 + cond))")) {
+                println!(
+                    "| {law} | {quantity}, ulps / (1 + cond) | {:.2} | {} | | |",
+                    conditioned.worst,
+                    cell(&conditioned.at)
+                );
+            }
         }
     }
     for (law, check) in &checks {

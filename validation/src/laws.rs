@@ -28,6 +28,7 @@
 
 use glam::Vec3;
 use radiometry::fresnel::{self, ConductorFresnel, DielectricFresnel};
+use radiometry::snell;
 use radiometry::specular::{self, Refraction};
 use serde::Deserialize;
 
@@ -92,6 +93,12 @@ pub struct Laws {
     pub refract: fn(Vec3, Vec3, f32) -> Option<Refraction<Vec3>>,
     /// Schlick's approximation, `(cos_i, f0)`.
     pub schlick: fn(f32, f32) -> f32,
+    /// Snell's law for angles, `(theta_i, eta_path)`; `None` under TIR.
+    pub transmitted_angle: fn(f32, f32) -> Option<f32>,
+    /// The critical angle, `eta_path`.
+    pub critical_angle: fn(f32) -> Option<f32>,
+    /// Brewster's angle, `eta_path`.
+    pub brewster_angle: fn(f32) -> Option<f32>,
 }
 
 impl Laws {
@@ -103,6 +110,9 @@ impl Laws {
             reflect: specular::reflect,
             refract: specular::refract,
             schlick: fresnel::schlick,
+            transmitted_angle: snell::transmitted_angle,
+            critical_angle: snell::critical_angle,
+            brewster_angle: snell::brewster_angle,
         }
     }
 }

@@ -1,5 +1,5 @@
-//! The exact Fresnel laws against 50-digit references, in both precision
-//! tiers.
+//! The exact Fresnel laws, and the angle laws of `snell`, against 50-digit
+//! references, in both precision tiers.
 //!
 //! Reference: `validation/reference/fresnel_mpmath.json` (schema
 //! `fresnel-reference/1`), written by `python-checks/fresnel_mpmath.py`:
@@ -23,6 +23,7 @@
 //! injected through [`Laws`] / [`Laws64`] fails it.
 
 use radiometry::fresnel::{self, ConductorFresnel, DielectricFresnel};
+use radiometry::snell;
 use serde::Deserialize;
 
 use crate::check::{ulp_f32, ulp_f64, Check};
@@ -43,6 +44,12 @@ pub struct Laws64 {
     pub dielectric: fn(f64, f64) -> DielectricFresnel<f64>,
     /// Exact conductor Fresnel.
     pub conductor: fn(f64, f64, f64) -> ConductorFresnel<f64>,
+    /// Snell's law for angles, `(theta_i, eta_path)`.
+    pub transmitted_angle: fn(f64, f64) -> Option<f64>,
+    /// The critical angle, `eta_path`.
+    pub critical_angle: fn(f64) -> Option<f64>,
+    /// Brewster's angle, `eta_path`.
+    pub brewster_angle: fn(f64) -> Option<f64>,
 }
 
 impl Laws64 {
@@ -51,6 +58,9 @@ impl Laws64 {
         Self {
             dielectric: fresnel::dielectric_polarized,
             conductor: fresnel::conductor_polarized,
+            transmitted_angle: snell::transmitted_angle,
+            critical_angle: snell::critical_angle,
+            brewster_angle: snell::brewster_angle,
         }
     }
 }
@@ -68,6 +78,8 @@ pub struct FresnelMpmath {
     pub dielectric: Tiers<DielectricCase>,
     /// Conductor cases per tier.
     pub conductor: Tiers<ConductorCase>,
+    /// The angle laws per tier.
+    pub angles: Tiers<AngleCase>,
 }
 
 /// Cases whose inputs are exact in `f64`, and in `f32`.
@@ -101,6 +113,24 @@ pub struct DielectricCase {
     /// The condition number of T at this input: how much a relative change
     /// of the inputs is amplified in T (large where `1 − R` cancels).
     pub cond_t: f64,
+}
+
+/// One case of an angle law.
+#[derive(Clone, Debug, Deserialize)]
+pub struct AngleCase {
+    /// Where on the grid.
+    pub label: String,
+    /// `transmitted_angle`, `critical_angle` or `brewster_angle`.
+    pub law: String,
+    /// The angle of incidence (radians; `transmitted_angle` only).
+    pub theta_i: f64,
+    /// The index along the path, `n_t / n_i`.
+    pub eta_path: f64,
+    /// The exact angle, or `None` where the law has none (total internal
+    /// reflection, no critical angle).
+    pub value: Option<Exact>,
+    /// The relative condition number of the angle over the inputs.
+    pub cond: f64,
 }
 
 /// One conductor case.
@@ -152,10 +182,17 @@ impl Exact {
     }
 }
 
-/// Measures `got` against `exact` in ulps of the tier (the bound) and
-/// relative to the exact value (reported beside it; 0 when both are 0,
-/// infinite when only the exact value is).
-fn compare(check: &mut Check, tier: &str, quantity: &str, label: &str, got: f64, exact: Exact) {
+/// Records `got` against `exact` in ulps of the tier and relative to the
+/// exact value (0 when both are 0, infinite when only the exact value is),
+/// and returns the ulps.
+fn measure(
+    check: &mut Check,
+    tier: &str,
+    quantity: &str,
+    label: &str,
+    got: f64,
+    exact: Exact,
+) -> f64 {
     // `got − hi` is exact (Sterbenz) when the two are close, so the error
     // resolves below one ulp of the tier.
     let err = ((got - exact.0) - exact.1).abs();
@@ -171,9 +208,15 @@ fn compare(check: &mut Check, tier: &str, quantity: &str, label: &str, got: f64,
     };
     check.measure(&format!("{tier} {quantity} (ulps)"), ulps, label);
     check.measure(&format!("{tier} {quantity} (relative)"), relative, label);
+    ulps
+}
+
+/// [`measure`], failing above [`BOUND_ULPS`].
+fn compare(check: &mut Check, tier: &str, quantity: &str, label: &str, got: f64, exact: Exact) {
+    let ulps = measure(check, tier, quantity, label, got, exact);
     if !(ulps <= BOUND_ULPS) {
         check.fail(format!(
-            "{tier} {quantity} at {label}: got {got:e}, exact {:e} ({ulps:.1} ulps, relative {relative:.1e})",
+            "{tier} {quantity} at {label}: got {got:e}, exact {:e} ({ulps:.1} ulps)",
             exact.0
         ));
     }
@@ -250,6 +293,85 @@ pub fn check_conductor(laws: &Laws, laws64: &Laws64, reference: &FresnelMpmath) 
             let exact = [case.r_s, case.r_p, case.r];
             for ((name, g), e) in ["R_s", "R_p", "R"].iter().zip(got).zip(exact) {
                 compare(&mut check, tier, name, &case.label, g, e);
+            }
+        }
+    }
+    check
+}
+
+/// The bound on an angle law, in ulps of the tier: [`BOUND_ULPS`] plus the
+/// condition number `cond`. The laws read `sin θ_i` or `cos θ_i`, each
+/// rounded once (half an ulp, relative), and the angle inherits that as a
+/// relative perturbation of the input, amplified by at most 1.3 `cond`
+/// (`transmitted_angle` reads whichever of the two the angle determines
+/// better; the other would be amplified without bound near 0 or π/2): at most
+/// 0.65 `cond` ulps. Near the critical angle `cond` grows without bound, and
+/// so may the error: the input itself is exact, but the trig value the law
+/// needs is not. Measured: at most 0.48 (1 + `cond`) ulps in either tier.
+pub fn angle_bound_ulps(cond: f64) -> f64 {
+    BOUND_ULPS + cond
+}
+
+/// Snell's law for angles, the critical and Brewster angles, in both tiers,
+/// against the 50-digit values.
+pub fn check_angles(laws: &Laws, laws64: &Laws64, reference: &FresnelMpmath) -> Check {
+    let mut check = Check::new(
+        "laws.mpmath.angles",
+        "Snell's law for angles, the critical and Brewster angles, in f64 and f32",
+        &format!("mpmath {}, 50 digits", reference.mpmath_version),
+        &format!(
+            "within {BOUND_ULPS} + cond ulps of the tier, cond the angle's condition number \
+             (the laws read a rounded sine or cosine of the exact input); the same decision on \
+             total internal reflection"
+        ),
+    );
+    let tiers: [(&str, &Vec<AngleCase>); 2] = [
+        ("f64", &reference.angles.f64),
+        ("f32", &reference.angles.f32),
+    ];
+    for (tier, cases) in tiers {
+        for case in cases {
+            check.cases += 1;
+            let (theta, eta) = (case.theta_i, case.eta_path);
+            let got = if tier == "f64" {
+                match case.law.as_str() {
+                    "transmitted_angle" => (laws64.transmitted_angle)(theta, eta),
+                    "critical_angle" => (laws64.critical_angle)(eta),
+                    _ => (laws64.brewster_angle)(eta),
+                }
+            } else {
+                let (theta, eta) = (theta as f32, eta as f32);
+                match case.law.as_str() {
+                    "transmitted_angle" => (laws.transmitted_angle)(theta, eta),
+                    "critical_angle" => (laws.critical_angle)(eta),
+                    _ => (laws.brewster_angle)(eta),
+                }
+                .map(f64::from)
+            };
+            match (got, case.value) {
+                (Some(got), Some(exact)) => {
+                    let bound = angle_bound_ulps(case.cond);
+                    let ulps = measure(&mut check, tier, &case.law, &case.label, got, exact);
+                    let conditioned = ulps / (1.0 + case.cond);
+                    check.measure(
+                        &format!("{tier} {} (ulps / (1 + cond))", case.law),
+                        conditioned,
+                        &case.label,
+                    );
+                    if !(ulps <= bound) {
+                        check.fail(format!(
+                            "{tier} {} at {}: got {got:e}, exact {:e} ({ulps:.1} ulps, bound {bound:.1})",
+                            case.law, case.label, exact.0
+                        ));
+                    }
+                }
+                (None, None) => {}
+                (got, exact) => check.fail(format!(
+                    "{tier} {} at {}: got {got:?}, exactly {:?}",
+                    case.law,
+                    case.label,
+                    exact.map(|e| e.0)
+                )),
             }
         }
     }

@@ -211,6 +211,9 @@ impl CheckKind for LawChecks {
         report
             .checks
             .push(mpmath::check_conductor(&self.0, &self.1, &exact));
+        report
+            .checks
+            .push(mpmath::check_angles(&self.0, &self.1, &exact));
         let reference = MitsubaLaws::load(&context.reference_dir)?;
         report.note_reference(&context.reference_dir, laws::FILE)?;
         report.checks.extend(laws::check_all(&self.0, &reference));

@@ -140,3 +140,42 @@ fn schlick_passed_off_as_the_exact_law_is_caught_by_the_50_digit_check() {
     let unbroken = mpmath::check_dielectric(&Laws::radiometry(), &Laws64::radiometry(), &exact);
     assert!(unbroken.passed(), "{:#?}", unbroken.failures);
 }
+
+/// Snell's law for angles as `asin(sin θ_i · η)`, the index read the wrong way
+/// round, and a critical angle off by one f32 ulp's worth of relative error
+/// in f64 (`asin(η (1 + 1e-7))`): each is caught by the 50-digit angle check,
+/// in the tier it breaks.
+#[test]
+fn broken_angle_laws_are_caught_by_the_50_digit_check() {
+    use radiometry::snell;
+    use validation::mpmath::{self, FresnelMpmath, Laws64};
+    fn inverted(theta_i: f32, eta_path: f32) -> Option<f32> {
+        snell::transmitted_angle(theta_i, 1.0 / eta_path)
+    }
+    fn critical_off(eta_path: f64) -> Option<f64> {
+        snell::critical_angle(eta_path * (1.0 + 1e-7))
+    }
+    let exact = FresnelMpmath::load(&committed_dir()).expect("committed mpmath reference");
+    let broken = Laws {
+        transmitted_angle: inverted,
+        ..Laws::radiometry()
+    };
+    let check = mpmath::check_angles(&broken, &Laws64::radiometry(), &exact);
+    failures_of(&check);
+    assert!(check
+        .failures
+        .iter()
+        .all(|f| f.starts_with("f32 transmitted_angle")));
+    let broken64 = Laws64 {
+        critical_angle: critical_off,
+        ..Laws64::radiometry()
+    };
+    let check = mpmath::check_angles(&Laws::radiometry(), &broken64, &exact);
+    failures_of(&check);
+    assert!(check
+        .failures
+        .iter()
+        .all(|f| f.starts_with("f64 critical_angle")));
+    let unbroken = mpmath::check_angles(&Laws::radiometry(), &Laws64::radiometry(), &exact);
+    assert!(unbroken.passed(), "{:#?}", unbroken.failures);
+}
