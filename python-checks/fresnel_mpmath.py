@@ -345,7 +345,10 @@ ANGLE_INDICES = {
 ANGLES = [("0", 0.0), ("1e-8", 1e-8), ("0.1", 0.1), ("0.5", 0.5), ("1", 1.0), ("1.2", 1.2), ("1.5", 1.5)]
 # From the critical angle, where there is one: in f32 1e-9 rad is below the spacing of angles
 # (6e-8 near 0.73), so its offsets are 1e-6 and 1e-5 (16 and 160 float32 steps there).
-CRIT_ANGLE_RAD = {"f64": ("-1e-6", "-1e-9", "+1e-9", "+1e-6"), "f32": ("-1e-5", "-1e-6", "+1e-6", "+1e-5")}
+# In f64 also 1e-12 and 1e-13 rad: near a grazing critical angle (eta_path = 1 - 1e-12) one ulp of
+# sin(theta) spans about 8e-11 rad, so only a law that reads cos(theta) there decides them right.
+CRIT_ANGLE_RAD = {"f64": ("-1e-6", "-1e-9", "-1e-12", "-1e-13", "+1e-13", "+1e-12", "+1e-9", "+1e-6"),
+                  "f32": ("-1e-5", "-1e-6", "+1e-6", "+1e-5")}
 
 
 def _angle_pair(x):
@@ -358,11 +361,14 @@ def transmitted(theta_i, eta_path):
     return None if x > 1 else mp.asin(x)
 
 
-def _cond_angle(f, args, q):
-    """Relative condition number of q = f(*args) over its inputs (0 where q == 0)."""
-    if q is None or q == 0:
+def _cond_theta(theta_i, eta_path, theta_t):
+    """Relative condition number of theta_t over theta_i alone, |theta_i dtheta_t/dtheta_i| / theta_t
+    (0 where theta_t == 0 or there is none): the law's only rounded input is sin or cos of theta_i;
+    eta_path reaches it exact."""
+    if theta_t is None or theta_t == 0:
         return 0.0
-    return _cond(_log_sensitivities(lambda *a: f(*a), args), q)
+    sens = _log_sensitivities(lambda t: transmitted(t, eta_path), (theta_i,))
+    return _cond(sens, theta_t)
 
 
 def angle_cases(tier):
@@ -387,14 +393,13 @@ def angle_cases(tier):
             theta_t = transmitted(theta, eta)
             out.append({"label": f"{name} transmitted theta_i={lab}", "law": "transmitted_angle",
                         "theta_i": theta, "eta_path": eta, "value": _angle_pair(theta_t),
-                        "cond": 0.0 if theta_t is None else _cond_angle(transmitted, (theta, eta), theta_t)})
+                        "cond_theta": _cond_theta(theta, eta, theta_t)})
         critical = mp.asin(mpf(eta)) if eta < 1 else None
         out.append({"label": f"{name} critical", "law": "critical_angle", "theta_i": 0.0, "eta_path": eta,
-                    "value": _angle_pair(critical),
-                    "cond": _cond_angle(lambda e: mp.asin(e), (eta,), critical) if critical else 0.0})
+                    "value": _angle_pair(critical), "cond_theta": 0.0})
         brewster = mp.atan(mpf(eta))
         out.append({"label": f"{name} brewster", "law": "brewster_angle", "theta_i": 0.0, "eta_path": eta,
-                    "value": _angle_pair(brewster), "cond": _cond_angle(lambda e: mp.atan(e), (eta,), brewster)})
+                    "value": _angle_pair(brewster), "cond_theta": 0.0})
     return out
 
 

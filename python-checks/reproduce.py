@@ -24,9 +24,12 @@ same way gives 93 numbers, at most 5.6e-14. The tolerance, 1e-12, is eighteen
 times the larger.
 
 Usage: ``reproduce.py COMMITTED FRESH [--as NAME]`` prints where FRESH departs
-from COMMITTED, and the spread of their numbers, and exits 1 if it does not
-reproduce. The rule is chosen by NAME (default: COMMITTED's file name).
+from COMMITTED, and the spread of their numbers. It exits 0 if FRESH
+reproduces COMMITTED, 1 if it does not, and 2 if it cannot tell (a file that
+cannot be read, bad arguments). The rule is chosen by NAME (default:
+COMMITTED's file name).
 """
+import argparse
 import json
 import math
 import os
@@ -68,58 +71,55 @@ def spread(committed, fresh):
     return len(diffs), max(diffs, default=0.0)
 
 
-def _is_number(x):
-    return isinstance(x, (int, float)) and not isinstance(x, bool)
-
-
 def _walk(a, b, path, tolerance, found, diffs=None):
     here = path or "."
-    if isinstance(a, float) or isinstance(b, float):
-        if not (_is_number(a) and _is_number(b)):
-            found.append(f"{here}: committed {a!r}, regenerated {b!r}")
-            return
+    if type(a) is not type(b):  # 1 against 1.0 too: the writers never change a number's type
+        found.append(f"{here}: committed {a!r}, regenerated {b!r}")
+    elif isinstance(a, float):
         scaled = abs(a - b) / max(1.0, abs(a), abs(b))
         if diffs is not None and a != b:
             diffs.append(scaled if not math.isnan(scaled) else math.inf)
-        if not scaled <= tolerance:  # also NaN
+        if not scaled <= tolerance:  # a NaN is never within it
             found.append(f"{here}: committed {a!r}, regenerated {b!r}")
-    elif isinstance(a, dict) and isinstance(b, dict):
+    elif isinstance(a, dict):
         if list(a) != list(b):
             found.append(f"{here}: keys {list(a)} against {list(b)}")
             return
         for key in a:
             _walk(a[key], b[key], f"{path}.{key}", tolerance, found, diffs)
-    elif isinstance(a, list) and isinstance(b, list):
+    elif isinstance(a, list):
         if len(a) != len(b):
             found.append(f"{here}: {len(a)} elements against {len(b)}")
             return
         for i, (x, y) in enumerate(zip(a, b)):
             _walk(x, y, f"{path}[{i}]", tolerance, found, diffs)
-    elif type(a) is not type(b) or a != b:
+    elif a != b:
         found.append(f"{here}: committed {a!r}, regenerated {b!r}")
 
 
 def main(argv):
-    args = list(argv)
-    name = None
-    if "--as" in args:
-        i = args.index("--as")
-        name = args[i + 1]
-        del args[i:i + 2]
-    if len(args) != 2:
-        print(__doc__.strip().splitlines()[-3], file=sys.stderr)
+    parser = argparse.ArgumentParser(description="Whether FRESH reproduces the committed reference.")
+    parser.add_argument("committed")
+    parser.add_argument("fresh")
+    parser.add_argument("--as", dest="name", help="the reference's file name, which chooses the rule")
+    try:
+        args = parser.parse_args(argv)
+    except SystemExit as e:  # argparse's own exit: bad arguments
+        return 2 if e.code else 0
+    try:
+        with open(args.committed, "rb") as f:
+            committed = f.read()
+        with open(args.fresh, "rb") as f:
+            fresh = f.read()
+        tolerance = tolerance_for(args.name or args.committed)
+        found = differences(committed, fresh, tolerance)
+        if tolerance and committed != fresh and not found:
+            count, worst = spread(committed, fresh)
+            print(f"{count} numbers differ, by at most {worst:.2g} of max(1, |value|)"
+                  f" (tolerance {tolerance:g})")
+    except Exception as e:  # noqa: BLE001 - any failure here means "cannot tell", not "differs"
+        print(f"reproduce.py: {type(e).__name__}: {e}", file=sys.stderr)
         return 2
-    committed_path, fresh_path = args
-    with open(committed_path, "rb") as f:
-        committed = f.read()
-    with open(fresh_path, "rb") as f:
-        fresh = f.read()
-    tolerance = tolerance_for(name or committed_path)
-    found = differences(committed, fresh, tolerance)
-    if tolerance and committed != fresh and not found:
-        count, worst = spread(committed, fresh)
-        print(f"{count} numbers differ, by at most {worst:.2g} of max(1, |value|)"
-              f" (tolerance {tolerance:g})")
     for line in found:
         print(line)
     return 1 if found else 0

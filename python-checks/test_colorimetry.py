@@ -80,10 +80,27 @@ def test_reproduction_tolerates_blas_rounding_and_nothing_else():
                     dict(doc, n=4),  # an integer
                     dict(doc, schema="x/2"),  # a string
                     dict(doc, values=[0.1, doc["values"][1], "1e-300"]),  # a type
+                    dict(doc, n=3.0),  # an integer turned float
                     {k: doc[k] for k in ("n", "schema", "values")}):  # key order
         found = reproduce.differences(committed, json.dumps(changed).encode(), tolerance)
         assert found, changed
     assert reproduce.differences(committed, b"{", tolerance)
+
+
+def test_the_command_line_exits_0_1_or_2_as_a_process(tmp_path):
+    import subprocess
+    a, b = tmp_path / "metals.json", tmp_path / "fresh.json"
+    a.write_text(json.dumps({"x": [1.0, 2.0]}))
+    b.write_text(json.dumps({"x": [1.0, 2.0 + 1e-14]}))
+    run = lambda *args: subprocess.run([sys.executable, reproduce.__file__, *map(str, args)],
+                                       capture_output=True, text=True)
+    assert run(a, b).returncode == 0
+    b.write_text(json.dumps({"x": [1.0, 2.1]}))
+    differs = run(a, b)
+    assert differs.returncode == 1 and ".x[1]" in differs.stdout
+    assert run(a, tmp_path / "missing.json").returncode == 2
+    assert run(a, b, "--as").returncode == 2
+    assert run(a).returncode == 2
 
 
 def test_the_command_line_exits_1_where_a_file_does_not_reproduce(tmp_path):

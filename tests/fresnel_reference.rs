@@ -50,9 +50,9 @@ fn fresnel_matches_50_digit_reference_within_8_ulps() {
                 relative.worst,
                 cell(&relative.at)
             );
-            if let Some(conditioned) = check.worst(&format!("{quantity} (ulps / (1 + cond))")) {
+            if let Some(conditioned) = check.worst(&format!("{quantity} (ulps / (1 + cond_θ))")) {
                 println!(
-                    "| {law} | {quantity}, ulps / (1 + cond) | {:.2} | {} | | |",
+                    "| {law} | {quantity}, ulps / (1 + cond_θ) | {:.2} | {} | | |",
                     conditioned.worst,
                     cell(&conditioned.at)
                 );

@@ -141,16 +141,29 @@ fn schlick_passed_off_as_the_exact_law_is_caught_by_the_50_digit_check() {
     assert!(unbroken.passed(), "{:#?}", unbroken.failures);
 }
 
-/// Snell's law for angles as `asin(sin θ_i · η)`, the index read the wrong way
-/// round, and a critical angle off by one f32 ulp's worth of relative error
-/// in f64 (`asin(η (1 + 1e-7))`): each is caught by the 50-digit angle check,
-/// in the tier it breaks.
+/// Broken angle laws are caught by the 50-digit angle check, each in the
+/// tier it breaks: Snell's law with the index read the wrong way round; the
+/// textbook `asin(sin θ_i / η)` and a discriminant summed exactly but from
+/// the sine alone, both of which misjudge total internal reflection within
+/// 1e-12 rad of a grazing critical angle (one ulp of `sin θ` spans 8e-11 rad
+/// there); a critical angle off by a relative 1e-7.
 #[test]
 fn broken_angle_laws_are_caught_by_the_50_digit_check() {
     use radiometry::snell;
     use validation::mpmath::{self, FresnelMpmath, Laws64};
     fn inverted(theta_i: f32, eta_path: f32) -> Option<f32> {
         snell::transmitted_angle(theta_i, 1.0 / eta_path)
+    }
+    fn textbook(theta_i: f64, eta_path: f64) -> Option<f64> {
+        let x = theta_i.sin() / eta_path;
+        (x <= 1.0).then(|| x.asin())
+    }
+    fn from_the_sine_alone(theta_i: f64, eta_path: f64) -> Option<f64> {
+        // η² − sin²θ_i with the square split exactly (fma), summed in f64.
+        let s = theta_i.sin();
+        let (e2, s2) = (eta_path * eta_path, s * s);
+        let d = (e2 - s2) + (eta_path.mul_add(eta_path, -e2) - s.mul_add(s, -s2));
+        (d >= 0.0).then(|| s.atan2(d.sqrt()))
     }
     fn critical_off(eta_path: f64) -> Option<f64> {
         snell::critical_angle(eta_path * (1.0 + 1e-7))
@@ -166,6 +179,25 @@ fn broken_angle_laws_are_caught_by_the_50_digit_check() {
         .failures
         .iter()
         .all(|f| f.starts_with("f32 transmitted_angle")));
+    for (name, law) in [
+        ("textbook", textbook as fn(f64, f64) -> Option<f64>),
+        ("from the sine alone", from_the_sine_alone),
+    ] {
+        let broken64 = Laws64 {
+            transmitted_angle: law,
+            ..Laws64::radiometry()
+        };
+        let check = mpmath::check_angles(&Laws::radiometry(), &broken64, &exact);
+        failures_of(&check);
+        assert!(
+            check
+                .failures
+                .iter()
+                .any(|f| f.contains("eta=1-1e-12") && f.contains("critical")),
+            "{name}: {:#?}",
+            check.failures
+        );
+    }
     let broken64 = Laws64 {
         critical_angle: critical_off,
         ..Laws64::radiometry()

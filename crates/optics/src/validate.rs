@@ -357,9 +357,9 @@ fn regenerate(python: &Path, scripts: &Path, fresh: &Path) -> anyhow::Result<Che
         "references.regenerated",
         "Every committed reference regenerates with the pinned tools",
         "python-checks/ generators in the pinned environment",
-        "python-checks/reproduce.py: byte-identical, except the two written through \
-         colour-science's BLAS products (colorimetry.json, metals.json), where every number \
-         must agree within 1e-12 · max(1, |value|) and all else be identical",
+        "the rule of python-checks/reproduce.py: byte-identical, but for the files written \
+         through colour-science's BLAS products, whose numbers may move within its stated \
+         tolerance",
     );
     for (script, outputs) in GENERATORS {
         let mut command = Command::new(python);
@@ -389,6 +389,7 @@ fn regenerate(python: &Path, scripts: &Path, fresh: &Path) -> anyhow::Result<Che
             let said = String::from_utf8_lossy(&output.stdout)
                 .trim()
                 .replace('\n', "; ");
+            // 0: reproduces; 1: differs (stdout says where); anything else: it could not tell.
             match output.status.code() {
                 Some(0) => {}
                 Some(1) => check.fail(format!(
@@ -396,7 +397,8 @@ fn regenerate(python: &Path, scripts: &Path, fresh: &Path) -> anyhow::Result<Che
                     old.display()
                 )),
                 _ => bail!(
-                    "python-checks/reproduce.py failed ({}): {}",
+                    "python-checks/reproduce.py could not compare {} ({}): {}",
+                    old.display(),
                     output.status,
                     String::from_utf8_lossy(&output.stderr).trim()
                 ),

@@ -66,7 +66,8 @@
 //! - **Indices** (`eta`, `eta_path`, `n`, `kappa > 0`) are valid from 1e-50
 //!   to 1e50 in `f64` and from 1e-9 to 1e9 in `f32`: the laws form fourth
 //!   powers of them, which must stay finite and normal. Within that range no
-//!   law gives NaN or infinity for a valid input (the test
+//!   law of an index (Fresnel, Schlick, refraction, the angles, radiance
+//!   across an interface) gives NaN or infinity for a valid input (the test
 //!   `valid_input_never_gives_nan_or_infinity`); [`domain::INDEX_RANGE`]
 //!   refuses what lies beyond it in user input.
 //! - **Out-of-domain input** never panics. A NaN argument, or an index that

@@ -160,11 +160,12 @@ pub fn transmitted_angle<T: Real>(theta_i: T, eta_path: T) -> Option<T> {
         return None;
     }
     let (sin_i, cos_i) = theta_i.sin_cos();
-    // From the outside of an interface of index eta_path: n_i = 1, n_t = eta_path.
     let discriminant = if theta_i <= T::FRAC_PI_4() {
-        compensated::index_contrast(eta_path, T::zero(), sin_i) // η² − sin²θ_i
+        // η² − sin²θ_i: the same discriminant, from the sine.
+        compensated::index_contrast(eta_path, T::zero(), sin_i)
     } else {
-        compensated::snell_discriminant(eta_path, T::zero(), T::one(), cos_i) // η² − 1 + cos²θ_i
+        // From the outside of an interface of index eta_path: n_i = 1, n_t = eta_path.
+        Incidence::resolve(cos_i, eta_path)?.discriminant()
     };
     if !(discriminant >= T::zero()) {
         return None;

@@ -11,12 +11,13 @@
 //! them.
 
 use glam::{DVec3, Vec3};
-use num_traits::{Float, One, Zero};
+use num_traits::{Float, FloatConst, One, Zero};
 use proptest::prelude::*;
 use radiometry::brdf::{BlinnPhong, BlinnPhongReciprocal, Brdf, Lambert};
 use radiometry::fresnel::{
     conductor, conductor_polarized, dielectric, dielectric_polarized, f0, schlick,
 };
+use radiometry::radiance::across_interface;
 use radiometry::snell::{
     brewster_angle, cos_transmitted, critical_angle, transmitted_angle, Incidence,
 };
@@ -301,7 +302,8 @@ fn f32_extremes_stay_finite_and_in_range() {
 }
 
 /// Every law of a signed cosine and an index, in one tier, at one input: each
-/// result a finite fraction, each refracted direction finite.
+/// result a finite fraction, each refracted direction and carried radiance
+/// finite, each angle in [0, π/2].
 fn all_finite<V: Vector3>(
     cos_i: V::Scalar,
     eta: V::Scalar,
@@ -331,7 +333,25 @@ fn all_finite<V: Vector3>(
     if let Some(t) = refract(wi, n, eta) {
         let finite = t.direction.to_array().iter().all(|x| x.is_finite());
         finite.then_some(()).ok_or(format!("refracted {t:?}"))?;
+        let carried = across_interface(one, t.eta_path);
+        (carried.is_finite() && carried > V::Scalar::zero())
+            .then_some(())
+            .ok_or(format!("radiance across the interface {carried:?}"))?;
     }
+    if let Some(c) = cos_transmitted(cos_i, eta) {
+        fraction("cos θ_t", c)?;
+    }
+    // The angle laws, at the angle of this cosine and eta as the index along the path.
+    let theta = cos_i.abs().min(one).acos();
+    let angle = |name: &str, a: Option<V::Scalar>| match a {
+        Some(a) if !(a >= V::Scalar::zero() && a <= V::Scalar::FRAC_PI_2()) => {
+            Err(format!("{name} = {a:?}"))
+        }
+        _ => Ok(()),
+    };
+    angle("θ_t", transmitted_angle(theta, eta))?;
+    angle("θ_c", critical_angle(eta))?;
+    angle("θ_B", brewster_angle(eta))?;
     Ok(())
 }
 

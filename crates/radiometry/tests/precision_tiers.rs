@@ -272,7 +272,7 @@ fn f32_brdfs_and_lights_are_within_rounding_of_f64() {
             for &b in dirs.iter().skip(i % 7).step_by(7) {
                 let v64 = white64.eval(DVec3::Z, a.as_dvec3(), b.as_dvec3());
                 let err = (f64::from(white.eval(n, a, b)) - v64).abs() / v64;
-                lambert.record(err / EPS, || format!("albedo {albedo}, wi {a}, wo {b}"));
+                lambert.record(err / EPS, || format!("albedo {albedo} (any directions)"));
             }
         }
     }
