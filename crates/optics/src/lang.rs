@@ -58,11 +58,11 @@ pub fn error_message(error: &anyhow::Error, lang: Lang) -> String {
                 "an extinction coefficient of 0 or from 1e-50 to 1e50" => {
                     "0 vagy 1e-50 és 1e50 közötti kioltási tényezőnek kell lennie"
                 }
-                "from 1e-9 to 1e9 (the range of the f32 laws)" => {
-                    "1e-9 és 1e9 között kell lennie (az f32 törvények tartománya)"
+                "a refractive index from 1e-9 to 1e9 (the range of the f32 laws)" => {
+                    "1e-9 és 1e9 közötti törésmutatónak kell lennie (az f32 törvények tartománya)"
                 }
-                "0 or from 1e-9 to 1e9 (the range of the f32 laws)" => {
-                    "0 vagy 1e-9 és 1e9 között kell lennie (az f32 törvények tartománya)"
+                "an extinction coefficient of 0 or from 1e-9 to 1e9 (the range of the f32 laws)" => {
+                    "0 vagy 1e-9 és 1e9 közötti kioltási tényezőnek kell lennie (az f32 törvények tartománya)"
                 }
                 "a non-negative extinction coefficient" => {
                     "nemnegatív kioltási tényezőnek kell lennie"

@@ -92,41 +92,62 @@ pub fn cosine(name: &str, value: f64) -> Result<f64, DomainError> {
     in_range(name, value, (-1.0..=1.0).contains(&value), "in [-1, 1]")
 }
 
-/// The range of indices and extinction coefficients the laws are valid on
-/// in `f64` (crate conventions): they form fourth powers of them, which must
-/// stay finite and normal. No material comes near either end.
-pub const INDEX_RANGE: core::ops::RangeInclusive<f64> = 1e-50..=1e50;
-
-/// [`INDEX_RANGE`] for the `f32` tier: the same fourth powers must stay
-/// finite and normal in `f32`.
-pub const INDEX_RANGE_F32: core::ops::RangeInclusive<f64> = 1e-9..=1e9;
-
-/// A real refractive index or relative index `eta`: positive, and within
-/// [`INDEX_RANGE`].
-pub fn refractive_index(name: &str, value: f64) -> Result<f64, DomainError> {
-    in_range(name, value, value > 0.0, "a positive refractive index")?;
-    in_range(
-        name,
-        value,
-        INDEX_RANGE.contains(&value),
-        "a refractive index from 1e-50 to 1e50",
-    )
+/// The indices and extinction coefficients the laws are valid on in one
+/// precision tier (crate conventions): they form fourth powers of them, which
+/// must stay finite and normal. No material comes near either end.
+#[derive(Clone, Debug, PartialEq)]
+pub struct IndexRange {
+    /// The valid indices, and positive extinction coefficients.
+    pub range: core::ops::RangeInclusive<f64>,
+    index: &'static str,
+    extinction: &'static str,
 }
 
-/// An extinction coefficient `kappa`: zero, or within [`INDEX_RANGE`].
+/// The `f64` tier's: from 1e-50 to 1e50.
+pub const INDEX_RANGE: IndexRange = IndexRange {
+    range: 1e-50..=1e50,
+    index: "a refractive index from 1e-50 to 1e50",
+    extinction: "an extinction coefficient of 0 or from 1e-50 to 1e50",
+};
+
+/// The `f32` tier's: from 1e-9 to 1e9.
+pub const INDEX_RANGE_F32: IndexRange = IndexRange {
+    range: 1e-9..=1e9,
+    index: "a refractive index from 1e-9 to 1e9 (the range of the f32 laws)",
+    extinction: "an extinction coefficient of 0 or from 1e-9 to 1e9 (the range of the f32 laws)",
+};
+
+impl IndexRange {
+    /// A real refractive index or relative index `eta`: positive, and in
+    /// the range.
+    pub fn refractive_index(&self, name: &str, value: f64) -> Result<f64, DomainError> {
+        in_range(name, value, value > 0.0, "a positive refractive index")?;
+        in_range(name, value, self.range.contains(&value), self.index)
+    }
+
+    /// An extinction coefficient `kappa`: zero, or in the range.
+    pub fn extinction(&self, name: &str, value: f64) -> Result<f64, DomainError> {
+        in_range(
+            name,
+            value,
+            value >= 0.0,
+            "a non-negative extinction coefficient",
+        )?;
+        let ok = value == 0.0 || self.range.contains(&value);
+        in_range(name, value, ok, self.extinction)
+    }
+}
+
+/// A real refractive index or relative index `eta` for the `f64` laws:
+/// positive, and within [`INDEX_RANGE`].
+pub fn refractive_index(name: &str, value: f64) -> Result<f64, DomainError> {
+    INDEX_RANGE.refractive_index(name, value)
+}
+
+/// An extinction coefficient `kappa` for the `f64` laws: zero, or within
+/// [`INDEX_RANGE`].
 pub fn extinction(name: &str, value: f64) -> Result<f64, DomainError> {
-    in_range(
-        name,
-        value,
-        value >= 0.0,
-        "a non-negative extinction coefficient",
-    )?;
-    in_range(
-        name,
-        value,
-        value == 0.0 || INDEX_RANGE.contains(&value),
-        "an extinction coefficient of 0 or from 1e-50 to 1e50",
-    )
+    INDEX_RANGE.extinction(name, value)
 }
 
 /// A fraction (reflectance, albedo), in `[0, 1]`.

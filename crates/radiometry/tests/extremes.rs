@@ -22,7 +22,7 @@ use radiometry::snell::{
     brewster_angle, cos_transmitted, critical_angle, transmitted_angle, Incidence,
 };
 use radiometry::specular::refract;
-use radiometry::Vector3;
+use radiometry::{domain, Vector3};
 
 const EPS: f64 = f64::EPSILON;
 const GLASS: f64 = 1.5;
@@ -377,21 +377,25 @@ proptest! {
     }
 }
 
-/// The ends of the documented range of indices (crate conventions), at the
-/// extreme cosines: f64 from 1e-50 to 1e50, f32 from 1e-9 to 1e9.
+/// The ends of the documented range of indices (crate conventions,
+/// `domain::INDEX_RANGE` and `INDEX_RANGE_F32`), at the extreme cosines:
+/// f64 from 1e-50 to 1e50, f32 from 1e-9 to 1e9.
 #[test]
 fn the_ends_of_the_documented_index_range_are_valid() {
     let cosines = [1.0, 0.5, 1e-30, 0.0, -0.0, -1e-30, -0.5, -1.0];
-    for eta in [1e-50, 1e50] {
-        for kappa in [0.0, 1e-50, 1e50] {
+    let (lo, hi) = domain::INDEX_RANGE.range.into_inner();
+    for eta in [lo, hi] {
+        for kappa in [0.0, lo, hi] {
             for c in cosines {
                 all_finite::<DVec3>(c, eta, kappa)
                     .unwrap_or_else(|e| panic!("{eta}, {kappa}, {c}: {e}"));
             }
         }
     }
-    for eta in [1e-9f32, 1e9] {
-        for kappa in [0.0, 1e-9, 1e9] {
+    let (lo, hi) = domain::INDEX_RANGE_F32.range.into_inner();
+    let (lo, hi) = (lo as f32, hi as f32);
+    for eta in [lo, hi] {
+        for kappa in [0.0, lo, hi] {
             for c in cosines.map(|c| c as f32) {
                 all_finite::<Vec3>(c, eta, kappa)
                     .unwrap_or_else(|e| panic!("{eta}, {kappa}, {c}: {e}"));

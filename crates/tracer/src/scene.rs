@@ -586,26 +586,6 @@ fn direction(path: &str, v: [f64; 3]) -> Result<Vec3, SceneError> {
     Ok(unit)
 }
 
-/// An index of refraction or extinction coefficient for the `f32` laws:
-/// within `domain::INDEX_RANGE_F32` (or 0, where `zero` allows it).
-fn index(path: &str, value: f64, zero: bool) -> Result<f32, SceneError> {
-    domain::finite(path, value)?;
-    let ok = (zero && value == 0.0) || domain::INDEX_RANGE_F32.contains(&value);
-    if !ok {
-        return Err(DomainError::OutOfRange {
-            name: path.to_owned(),
-            value,
-            expected: if zero {
-                "0 or from 1e-9 to 1e9 (the range of the f32 laws)"
-            } else {
-                "from 1e-9 to 1e9 (the range of the f32 laws)"
-            },
-        }
-        .into());
-    }
-    Ok(value as f32)
-}
-
 fn positive(path: &str, value: f64) -> Result<f32, SceneError> {
     domain::finite(path, value)?;
     if !(value > 0.0) || (value as f32) == 0.0 || !(value as f32).is_finite() {
@@ -883,8 +863,8 @@ fn validate_material(p: &str, spec: &MaterialSpec) -> Result<Material, SceneErro
                 .into_iter()
                 .zip(n.into_iter().zip(kappa))
             {
-                index(&format!("{p}.n{axis}"), n, false)?;
-                index(&format!("{p}.kappa{axis}"), k, true)?;
+                domain::INDEX_RANGE_F32.refractive_index(&format!("{p}.n{axis}"), n)?;
+                domain::INDEX_RANGE_F32.extinction(&format!("{p}.kappa{axis}"), k)?;
             }
             Material::Conductor {
                 n: n.map(|x| x as f32),
@@ -892,7 +872,7 @@ fn validate_material(p: &str, spec: &MaterialSpec) -> Result<Material, SceneErro
             }
         }
         MaterialSpec::Dielectric { eta } => Material::Dielectric {
-            eta: index(&format!("{p}.eta"), eta, false)?,
+            eta: domain::INDEX_RANGE_F32.refractive_index(&format!("{p}.eta"), eta)? as f32,
         },
     })
 }

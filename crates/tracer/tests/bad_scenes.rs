@@ -168,7 +168,7 @@ fn bad_scenes_are_refused_with_the_path_of_the_bad_value() {
         (
             "negative kappa",
             with("/materials/gold/kappa", json!([3.1, -2.7, 1.9])),
-            &["materials.gold.kappa[1]", "0 or from 1e-9 to 1e9", "-2.7"],
+            &["materials.gold.kappa[1]", "non-negative", "-2.7"],
         ),
         (
             "index beyond the f32 laws",
