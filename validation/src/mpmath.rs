@@ -91,6 +91,13 @@ pub struct Tiers<C> {
     pub f32: Vec<C>,
 }
 
+impl<C> Tiers<C> {
+    /// Both tiers' cases, each with its tier's name.
+    pub fn by_tier(&self) -> [(&'static str, &[C]); 2] {
+        [("f64", &self.f64), ("f32", &self.f32)]
+    }
+}
+
 /// One dielectric case.
 #[derive(Clone, Debug, Deserialize)]
 pub struct DielectricCase {
@@ -238,11 +245,7 @@ pub fn check_dielectric(laws: &Laws, laws64: &Laws64, reference: &FresnelMpmath)
             "within {BOUND_ULPS} ulps of the tier: a handful of roundings from correctly rounded"
         ),
     );
-    let tiers: [(&str, &Vec<DielectricCase>); 2] = [
-        ("f64", &reference.dielectric.f64),
-        ("f32", &reference.dielectric.f32),
-    ];
-    for (tier, cases) in tiers {
+    for (tier, cases) in reference.dielectric.by_tier() {
         for case in cases {
             check.cases += 1;
             let (got, tir) = if tier == "f64" {
@@ -278,11 +281,7 @@ pub fn check_conductor(laws: &Laws, laws64: &Laws64, reference: &FresnelMpmath) 
         &format!("mpmath {}, 50 digits", reference.mpmath_version),
         &format!("within {BOUND_ULPS} ulps of the tier"),
     );
-    let tiers: [(&str, &Vec<ConductorCase>); 2] = [
-        ("f64", &reference.conductor.f64),
-        ("f32", &reference.conductor.f32),
-    ];
-    for (tier, cases) in tiers {
+    for (tier, cases) in reference.conductor.by_tier() {
         for case in cases {
             check.cases += 1;
             let got = if tier == "f64" {
@@ -336,11 +335,7 @@ pub fn check_angles(laws: &Laws, laws64: &Laws64, reference: &FresnelMpmath) -> 
              brewster_angle within {BOUND_ULPS} ulps"
         ),
     );
-    let tiers: [(&str, &Vec<AngleCase>); 2] = [
-        ("f64", &reference.angles.f64),
-        ("f32", &reference.angles.f32),
-    ];
-    for (tier, cases) in tiers {
+    for (tier, cases) in reference.angles.by_tier() {
         for case in cases {
             check.cases += 1;
             let (theta, eta) = (case.theta_i, case.eta_path);
