@@ -140,8 +140,8 @@ pub fn reflected_radiance<T: Real>(brdf: T, irradiance: T) -> T {
 /// is the transmitted fraction of power (the Fresnel transmittance) and
 /// `η = eta_path = n_t / n_i` the effective relative index along the
 /// direction the *radiance is traced* (the
-/// [`crate::specular::Refraction::eta_path`] of a camera path). Radiance divided by `n²` is invariant along a ray across
-/// refractions (the beam's solid angle is compressed by `n_i² / n_t²`;
+/// [`crate::specular::Refraction::eta_path`] of a camera path). Radiance
+/// divided by `n²` is invariant along a ray across refractions (the beam's solid angle is compressed by `n_i² / n_t²`;
 /// Nicodemus 1963; Veach's thesis §5.2; pbrt-v4 §9.5.2), so the factor
 /// cancels over a path that enters and leaves the same medium.
 ///

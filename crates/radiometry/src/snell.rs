@@ -155,17 +155,18 @@ pub fn cos_transmitted<T: Real>(cos_i: T, eta: T) -> Option<T> {
 /// ```
 #[inline]
 pub fn transmitted_angle<T: Real>(theta_i: T, eta_path: T) -> Option<T> {
-    let in_range = theta_i >= T::zero() && theta_i <= T::FRAC_PI_2();
-    if !(in_range && eta_path > T::zero() && eta_path.is_finite()) {
+    if !(theta_i >= T::zero() && theta_i <= T::FRAC_PI_2()) {
         return None;
     }
     let (sin_i, cos_i) = theta_i.sin_cos();
+    // From the outside of an interface of index eta_path (n_i = 1, n_t =
+    // eta_path); resolving it also checks eta_path.
+    let incidence = Incidence::resolve(cos_i, eta_path)?;
     let discriminant = if theta_i <= T::FRAC_PI_4() {
         // η² − sin²θ_i: the same discriminant, from the sine.
         compensated::index_contrast(eta_path, T::zero(), sin_i)
     } else {
-        // From the outside of an interface of index eta_path: n_i = 1, n_t = eta_path.
-        Incidence::resolve(cos_i, eta_path)?.discriminant()
+        incidence.discriminant()
     };
     if !(discriminant >= T::zero()) {
         return None;
