@@ -32,8 +32,8 @@ pub enum DomainError {
         name: String,
         /// The value given.
         value: f64,
-        /// What was expected, as a phrase ("in [-1, 1]").
-        expected: &'static str,
+        /// What was expected.
+        expected: Expected,
     },
     /// A direction with no direction: zero length (or too small to
     /// normalise).
@@ -48,6 +48,131 @@ pub enum DomainError {
         /// The components given.
         z: f64,
     },
+}
+
+impl DomainError {
+    /// The input's name as the user wrote it (a flag, a JSON path).
+    pub fn name(&self) -> &str {
+        match self {
+            DomainError::NotFinite { name, .. }
+            | DomainError::OutOfRange { name, .. }
+            | DomainError::ZeroVector { name, .. } => name,
+        }
+    }
+}
+
+/// What an input outside its range should have been: the identity of the
+/// expectation, whose English phrase is its `Display` ("in [-1, 1]").
+/// Translations match on it, so a new expectation without one stops the
+/// build.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Expected {
+    /// A cosine, in `[-1, 1]`.
+    Cosine,
+    /// A fraction, in `[0, 1]`.
+    Fraction,
+    /// Zero or more.
+    NonNegative,
+    /// An angle of incidence, in `[0, π/2]` rad.
+    IncidenceAngle,
+    /// A refractive index greater than zero.
+    PositiveIndex,
+    /// An extinction coefficient of zero or more.
+    NonNegativeExtinction,
+    /// A refractive index within [`INDEX_RANGE`].
+    IndexInRange,
+    /// An extinction coefficient of zero or within [`INDEX_RANGE`].
+    ExtinctionInRange,
+    /// A refractive index within [`INDEX_RANGE_F32`].
+    IndexInRangeF32,
+    /// An extinction coefficient of zero or within [`INDEX_RANGE_F32`].
+    ExtinctionInRangeF32,
+    /// A number that stays finite in `f32` (|x| < 3.4e38).
+    WithinF32,
+    /// A positive number that stays positive and finite in `f32`.
+    PositiveF32,
+}
+
+impl Expected {
+    /// Every expectation, in declaration order.
+    pub const ALL: [Expected; 12] = [
+        Expected::Cosine,
+        Expected::Fraction,
+        Expected::NonNegative,
+        Expected::IncidenceAngle,
+        Expected::PositiveIndex,
+        Expected::NonNegativeExtinction,
+        Expected::IndexInRange,
+        Expected::ExtinctionInRange,
+        Expected::IndexInRangeF32,
+        Expected::ExtinctionInRangeF32,
+        Expected::WithinF32,
+        Expected::PositiveF32,
+    ];
+
+    /// The position in [`Expected::ALL`]; an exhaustive match, so that a new
+    /// expectation must be given a place in the list.
+    pub const fn ordinal(self) -> usize {
+        match self {
+            Expected::Cosine => 0,
+            Expected::Fraction => 1,
+            Expected::NonNegative => 2,
+            Expected::IncidenceAngle => 3,
+            Expected::PositiveIndex => 4,
+            Expected::NonNegativeExtinction => 5,
+            Expected::IndexInRange => 6,
+            Expected::ExtinctionInRange => 7,
+            Expected::IndexInRangeF32 => 8,
+            Expected::ExtinctionInRangeF32 => 9,
+            Expected::WithinF32 => 10,
+            Expected::PositiveF32 => 11,
+        }
+    }
+
+    /// The index range the expectation names, if it names one.
+    pub fn index_range(self) -> Option<&'static IndexRange> {
+        match self {
+            Expected::IndexInRange | Expected::ExtinctionInRange => Some(&INDEX_RANGE),
+            Expected::IndexInRangeF32 | Expected::ExtinctionInRangeF32 => Some(&INDEX_RANGE_F32),
+            Expected::Cosine
+            | Expected::Fraction
+            | Expected::NonNegative
+            | Expected::IncidenceAngle
+            | Expected::PositiveIndex
+            | Expected::NonNegativeExtinction
+            | Expected::WithinF32
+            | Expected::PositiveF32 => None,
+        }
+    }
+}
+
+impl core::fmt::Display for Expected {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        let ends = self.index_range().map(IndexRange::ends_text);
+        let (low, high) = ends.unwrap_or_default();
+        match self {
+            Expected::Cosine => write!(f, "in [-1, 1]"),
+            Expected::Fraction => write!(f, "in [0, 1]"),
+            Expected::NonNegative => write!(f, "non-negative"),
+            Expected::IncidenceAngle => write!(f, "an angle in [0, π/2] rad"),
+            Expected::PositiveIndex => write!(f, "a positive refractive index"),
+            Expected::NonNegativeExtinction => write!(f, "a non-negative extinction coefficient"),
+            Expected::IndexInRange => write!(f, "a refractive index from {low} to {high}"),
+            Expected::ExtinctionInRange => {
+                write!(f, "an extinction coefficient of 0 or from {low} to {high}")
+            }
+            Expected::IndexInRangeF32 => write!(
+                f,
+                "a refractive index from {low} to {high} (the range of the f32 laws)"
+            ),
+            Expected::ExtinctionInRangeF32 => write!(
+                f,
+                "an extinction coefficient of 0 or from {low} to {high} (the range of the f32 laws)"
+            ),
+            Expected::WithinF32 => write!(f, "within f32 range (|x| < 3.4e38)"),
+            Expected::PositiveF32 => write!(f, "positive (and representable in f32)"),
+        }
+    }
 }
 
 /// A number as an error message shows it: as Rust prints it, but in
@@ -74,7 +199,7 @@ pub fn finite(name: &str, value: f64) -> Result<f64, DomainError> {
     }
 }
 
-fn in_range(name: &str, value: f64, ok: bool, expected: &'static str) -> Result<f64, DomainError> {
+fn in_range(name: &str, value: f64, ok: bool, expected: Expected) -> Result<f64, DomainError> {
     finite(name, value)?;
     if ok {
         Ok(value)
@@ -89,7 +214,7 @@ fn in_range(name: &str, value: f64, ok: bool, expected: &'static str) -> Result<
 
 /// A cosine, in `[-1, 1]`.
 pub fn cosine(name: &str, value: f64) -> Result<f64, DomainError> {
-    in_range(name, value, (-1.0..=1.0).contains(&value), "in [-1, 1]")
+    in_range(name, value, (-1.0..=1.0).contains(&value), Expected::Cosine)
 }
 
 /// The indices and extinction coefficients the laws are valid on in one
@@ -99,40 +224,43 @@ pub fn cosine(name: &str, value: f64) -> Result<f64, DomainError> {
 pub struct IndexRange {
     /// The valid indices, and positive extinction coefficients.
     pub range: core::ops::RangeInclusive<f64>,
-    index: &'static str,
-    extinction: &'static str,
+    index: Expected,
+    extinction: Expected,
 }
 
 /// The `f64` tier's: from 1e-50 to 1e50.
 pub const INDEX_RANGE: IndexRange = IndexRange {
     range: 1e-50..=1e50,
-    index: "a refractive index from 1e-50 to 1e50",
-    extinction: "an extinction coefficient of 0 or from 1e-50 to 1e50",
+    index: Expected::IndexInRange,
+    extinction: Expected::ExtinctionInRange,
 };
 
 /// The `f32` tier's: from 1e-9 to 1e9.
 pub const INDEX_RANGE_F32: IndexRange = IndexRange {
     range: 1e-9..=1e9,
-    index: "a refractive index from 1e-9 to 1e9 (the range of the f32 laws)",
-    extinction: "an extinction coefficient of 0 or from 1e-9 to 1e9 (the range of the f32 laws)",
+    index: Expected::IndexInRangeF32,
+    extinction: Expected::ExtinctionInRangeF32,
 };
 
 impl IndexRange {
+    /// The two ends as messages write them: `1e-50`, `1e50`.
+    pub fn ends_text(&self) -> (String, String) {
+        (
+            format!("{:e}", self.range.start()),
+            format!("{:e}", self.range.end()),
+        )
+    }
+
     /// A real refractive index or relative index `eta`: positive, and in
     /// the range.
     pub fn refractive_index(&self, name: &str, value: f64) -> Result<f64, DomainError> {
-        in_range(name, value, value > 0.0, "a positive refractive index")?;
+        in_range(name, value, value > 0.0, Expected::PositiveIndex)?;
         in_range(name, value, self.range.contains(&value), self.index)
     }
 
     /// An extinction coefficient `kappa`: zero, or in the range.
     pub fn extinction(&self, name: &str, value: f64) -> Result<f64, DomainError> {
-        in_range(
-            name,
-            value,
-            value >= 0.0,
-            "a non-negative extinction coefficient",
-        )?;
+        in_range(name, value, value >= 0.0, Expected::NonNegativeExtinction)?;
         let ok = value == 0.0 || self.range.contains(&value);
         in_range(name, value, ok, self.extinction)
     }
@@ -152,12 +280,17 @@ pub fn extinction(name: &str, value: f64) -> Result<f64, DomainError> {
 
 /// A fraction (reflectance, albedo), in `[0, 1]`.
 pub fn fraction(name: &str, value: f64) -> Result<f64, DomainError> {
-    in_range(name, value, (0.0..=1.0).contains(&value), "in [0, 1]")
+    in_range(
+        name,
+        value,
+        (0.0..=1.0).contains(&value),
+        Expected::Fraction,
+    )
 }
 
 /// A non-negative quantity (radiance, a BRDF coefficient, an exponent).
 pub fn non_negative(name: &str, value: f64) -> Result<f64, DomainError> {
-    in_range(name, value, value >= 0.0, "non-negative")
+    in_range(name, value, value >= 0.0, Expected::NonNegative)
 }
 
 /// An angle of incidence in radians, in `[0, π/2]`.
@@ -166,7 +299,7 @@ pub fn incidence_angle(name: &str, value: f64) -> Result<f64, DomainError> {
         name,
         value,
         (0.0..=core::f64::consts::FRAC_PI_2).contains(&value),
-        "an angle in [0, π/2] rad",
+        Expected::IncidenceAngle,
     )
 }
 
@@ -242,6 +375,26 @@ mod tests {
         for (result, message) in cases {
             assert_eq!(result.unwrap_err().to_string(), message);
         }
+    }
+
+    #[test]
+    fn every_expectation_is_listed_once_in_order() {
+        for (i, expected) in Expected::ALL.into_iter().enumerate() {
+            assert_eq!(expected.ordinal(), i, "{expected:?}");
+        }
+    }
+
+    #[test]
+    fn the_range_phrases_take_their_ends_from_the_ranges() {
+        assert_eq!(
+            Expected::IndexInRangeF32.to_string(),
+            "a refractive index from 1e-9 to 1e9 (the range of the f32 laws)"
+        );
+        assert_eq!(
+            INDEX_RANGE_F32.extinction("k", 1e20).unwrap_err().to_string(),
+            "k must be an extinction coefficient of 0 or from 1e-9 to 1e9 (the range of the f32 laws), got 1e20"
+        );
+        assert_eq!(fraction("kd", 2.0).unwrap_err().name(), "kd");
     }
 
     #[test]

@@ -550,7 +550,7 @@ fn within_f32(name: String, c: f64) -> Result<(), DomainError> {
         Err(DomainError::OutOfRange {
             name,
             value: c,
-            expected: "within f32 range (|x| < 3.4e38)",
+            expected: domain::Expected::WithinF32,
         })
     }
 }
@@ -592,7 +592,7 @@ fn positive(path: &str, value: f64) -> Result<f32, SceneError> {
         return Err(DomainError::OutOfRange {
             name: path.to_owned(),
             value,
-            expected: "positive (and representable in f32)",
+            expected: domain::Expected::PositiveF32,
         }
         .into());
     }
