@@ -108,6 +108,7 @@ mod compensated;
 pub mod course;
 pub mod domain;
 pub mod fresnel;
+pub mod photon;
 pub mod radiance;
 mod real;
 pub mod snell;
