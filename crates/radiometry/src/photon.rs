@@ -1,10 +1,10 @@
 //! Compton scattering: the wavelength shift of a photon scattered by a free
 //! electron at rest, in metres.
 //!
-//! Δλ = (h / (m_e c)) (1 − cos θ), with θ the scattering angle (Compton
-//! 1923; any modern physics text, e.g. Griffiths, *Introduction to
-//! Elementary Particles*, §3.4). The shift does not depend on the photon's
-//! wavelength, so it matters for X-rays and gamma rays and is negligible
+//! Δλ = (h / (m_e c)) (1 − cos θ), with θ the scattering angle (A. H.
+//! Compton, "A quantum theory of the scattering of X-rays by light
+//! elements", Phys. Rev. 21, 483, 1923). The shift does not depend on the
+//! photon's wavelength, so it matters for X-rays and gamma rays and is negligible
 //! for visible light — the reason a renderer may treat scattering by
 //! electrons as elastic.
 //!
