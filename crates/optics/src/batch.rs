@@ -4,16 +4,16 @@
 //! with the fields of the matching subcommand's flags (`--cos-i` is
 //! `cos_i`, vectors are `[x, y, z]`). Each output line is the record that
 //! subcommand prints with `--json`, in input order; a line that cannot be
-//! evaluated yields `{"line": N, "law": ..., "error": "..."}` and the rest
-//! go on. Lines are evaluated in parallel in blocks; the output order is the
+//! evaluated yields `{"line": N, "law": ..., "error": {"kind": ...,
+//! "field": ..., "message": ...}}` and the rest go on. Lines are evaluated in parallel in blocks; the output order is the
 //! input order whatever the thread count.
 
+use crate::error::{Error, ErrorKind, Result};
 use crate::input::Via;
 use crate::lang::Lang;
 use crate::laws::{FresnelArgs, ReflectArgs, RefractArgs, ShadeArgs};
 use crate::quiz::{BlinnPhongArgs, CriticalAngleArgs, F0Args, LambertArgs};
 use crate::record::Record;
-use anyhow::{anyhow, Result};
 use rayon::prelude::*;
 use serde::de::DeserializeOwned;
 use serde_json::{json, Map, Value};
@@ -54,64 +54,65 @@ pub fn evaluate(request: Map<String, Value>, law: &str, lang: Lang) -> Result<Re
     fn parse<T: DeserializeOwned>(fields: Map<String, Value>) -> Result<T> {
         serde_path_to_error::deserialize(Value::Object(fields)).map_err(|e| {
             let path = e.path().to_string();
-            if path == "." {
-                anyhow!("{}", e.inner())
-            } else {
-                anyhow!("{path}: {}", e.inner())
-            }
+            let message = e.inner().to_string();
+            let path = (path != ".").then_some(path);
+            ErrorKind::Request { path, message }.into()
         })
     }
     let via = Via::Json;
-    match law {
-        "fresnel" => parse::<FresnelArgs>(request)?.solve(via, lang),
-        "refract" => parse::<RefractArgs>(request)?.solve(via, lang),
-        "reflect" => parse::<ReflectArgs>(request)?.solve(via, lang),
-        "shade" => parse::<ShadeArgs>(request)?.solve(via, lang),
-        "f0" => parse::<F0Args>(request)?.solve(via, lang),
-        "lambert" => parse::<LambertArgs>(request)?.solve(via, lang),
-        "critical_angle" => parse::<CriticalAngleArgs>(request)?.solve(via, lang),
-        "blinn_phong" => parse::<BlinnPhongArgs>(request)?.solve(via, lang),
-        other => Err(anyhow!(
-            "law: unknown law {other:?}, expected one of {}",
-            LAWS.join(", ")
-        )),
+    Ok(match law {
+        "fresnel" => parse::<FresnelArgs>(request)?.solve(via, lang)?,
+        "refract" => parse::<RefractArgs>(request)?.solve(via, lang)?,
+        "reflect" => parse::<ReflectArgs>(request)?.solve(via, lang)?,
+        "shade" => parse::<ShadeArgs>(request)?.solve(via, lang)?,
+        "f0" => parse::<F0Args>(request)?.solve(via, lang)?,
+        "lambert" => parse::<LambertArgs>(request)?.solve(via, lang)?,
+        "critical_angle" => parse::<CriticalAngleArgs>(request)?.solve(via, lang)?,
+        "blinn_phong" => parse::<BlinnPhongArgs>(request)?.solve(via, lang)?,
+        other => {
+            let law = other.to_owned();
+            return Err(ErrorKind::UnknownLaw { law }.into());
+        }
+    })
+}
+
+/// A request line taken apart: the law it names and its other fields.
+fn request(text: &str) -> Result<(String, Map<String, Value>), (Value, Error)> {
+    let refuse = |law: Value, kind: ErrorKind| Err((law, Error::from(kind)));
+    if text.trim().is_empty() {
+        return refuse(Value::Null, ErrorKind::EmptyLine);
+    }
+    let mut request = match serde_json::from_str::<Value>(text) {
+        Ok(Value::Object(map)) => map,
+        Ok(_) => return refuse(Value::Null, ErrorKind::NotAnObject),
+        Err(e) => return refuse(Value::Null, ErrorKind::MalformedJson(e)),
+    };
+    match request.remove("law") {
+        Some(Value::String(law)) => Ok((law, request)),
+        Some(other) => refuse(other, ErrorKind::LawNotString),
+        None => refuse(Value::Null, ErrorKind::LawMissing),
     }
 }
 
 /// One input line to one output line (without the newline), and whether it
-/// was evaluated.
+/// was evaluated. A line that fails gives `{"line", "law", "error"}`, the
+/// error as [`Error::to_json`] writes it.
 pub fn line(number: usize, text: &str, lang: Lang) -> (String, bool) {
-    let error = |law: Value, message: String| {
-        let object = json!({ "line": number, "law": law, "error": message });
-        (object.to_string(), false)
-    };
-    if text.trim().is_empty() {
-        return error(
-            Value::Null,
-            "empty line: every line holds one request".into(),
-        );
-    }
-    let mut request = match serde_json::from_str::<Value>(text) {
-        Ok(Value::Object(map)) => map,
-        Ok(_) => return error(Value::Null, "a request must be a JSON object".into()),
-        Err(e) => return error(Value::Null, format!("malformed JSON: {e}")),
-    };
-    let law = match request.remove("law") {
-        Some(Value::String(law)) => law,
-        Some(other) => return error(other, "law: must be a string".into()),
-        None => {
-            return error(
-                Value::Null,
-                "law: missing; every request names its law".into(),
-            )
+    let outcome = request(text).and_then(|(law, fields)| {
+        let record = evaluate(fields, &law, lang);
+        let json = record.and_then(|r| {
+            serde_json::to_string(&r)
+                .map_err(ErrorKind::Encode)
+                .map_err(Error::from)
+        });
+        json.map_err(|error| (Value::String(law), error))
+    });
+    match outcome {
+        Ok(json) => (json, true),
+        Err((law, error)) => {
+            let object = json!({ "line": number, "law": law, "error": error.to_json(lang) });
+            (object.to_string(), false)
         }
-    };
-    match evaluate(request, &law, lang) {
-        Ok(record) => match serde_json::to_string(&record) {
-            Ok(json) => (json, true),
-            Err(e) => error(Value::String(law), format!("{e}")),
-        },
-        Err(e) => error(Value::String(law), format!("{e:#}")),
     }
 }
 
@@ -129,7 +130,8 @@ pub fn run(
     loop {
         let mut texts = Vec::with_capacity(block);
         for text in lines.by_ref().take(block) {
-            texts.push(text.map_err(|e| anyhow!("reading line {}: {e}", read + texts.len() + 1))?);
+            let line = read + texts.len() + 1;
+            texts.push(text.map_err(|source| ErrorKind::ReadLine { line, source })?);
         }
         if texts.is_empty() {
             break;
@@ -140,12 +142,14 @@ pub fn run(
             .map(|(i, text)| line(read + i + 1, text, lang))
             .collect();
         for (json, ok) in &results {
-            output.write_all(json.as_bytes())?;
-            output.write_all(b"\n")?;
+            let written = output.write_all(json.as_bytes());
+            written
+                .and_then(|()| output.write_all(b"\n"))
+                .map_err(ErrorKind::Write)?;
             failed += usize::from(!ok);
         }
         read += texts.len();
     }
-    output.flush()?;
+    output.flush().map_err(ErrorKind::Write)?;
     Ok((read, failed))
 }

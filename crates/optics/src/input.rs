@@ -2,6 +2,7 @@
 //! `x,y,z` on the command line or `[x, y, z]` in JSON, and the names errors
 //! use for each input, in the form the user wrote it.
 
+use crate::error::{Error, ErrorKind};
 use glam::DVec3;
 use radiometry::domain::{self, Direction, DomainError};
 use serde::Deserialize;
@@ -19,19 +20,20 @@ impl From<[f64; 3]> for Vec3Arg {
 }
 
 impl FromStr for Vec3Arg {
-    type Err = String;
+    type Err = Error;
 
     fn from_str(text: &str) -> Result<Self, Self::Err> {
         let parts: Vec<&str> = text.split(',').map(str::trim).collect();
         let [x, y, z] = parts[..] else {
-            return Err(format!(
-                "expected three comma-separated numbers such as 0,3,4, got {} part(s)",
-                parts.len()
-            ));
+            return Err(ErrorKind::VectorParts { count: parts.len() }.into());
         };
-        let parse = |axis: &str, part: &str| {
-            part.parse::<f64>()
-                .map_err(|_| format!("the {axis} component {part:?} is not a number"))
+        let parse = |axis: &'static str, part: &str| {
+            part.parse::<f64>().map_err(|_| {
+                Error::from(ErrorKind::VectorComponent {
+                    axis,
+                    text: part.to_owned(),
+                })
+            })
         };
         Ok(Self([parse("x", x)?, parse("y", y)?, parse("z", z)?]))
     }
@@ -91,13 +93,21 @@ mod tests {
 
     #[test]
     fn vectors_parse_from_comma_separated_text() {
-        assert_eq!("0,3,4".parse(), Ok(Vec3Arg([0.0, 3.0, 4.0])));
-        assert_eq!(" 1, -2.5 ,1e3".parse(), Ok(Vec3Arg([1.0, -2.5, 1000.0])));
-        assert!("0,3".parse::<Vec3Arg>().unwrap_err().contains("2 part(s)"));
-        assert!("0,x,4"
-            .parse::<Vec3Arg>()
-            .unwrap_err()
-            .contains("y component"));
+        let parse = |text: &str| text.parse::<Vec3Arg>();
+        assert_eq!(parse("0,3,4").ok(), Some(Vec3Arg([0.0, 3.0, 4.0])));
+        assert_eq!(
+            parse(" 1, -2.5 ,1e3").ok(),
+            Some(Vec3Arg([1.0, -2.5, 1000.0]))
+        );
+        let parts = parse("0,3").unwrap_err();
+        assert!(matches!(parts.kind(), ErrorKind::VectorParts { count: 2 }));
+        assert!(parts.to_string().contains("2 part(s)"));
+        let component = parse("0,x,4").unwrap_err();
+        assert!(matches!(
+            component.kind(),
+            ErrorKind::VectorComponent { axis: "y", .. }
+        ));
+        assert!(component.to_string().contains("y component"));
     }
 
     #[test]

@@ -1,7 +1,9 @@
 //! The two languages of the text output: English, and Hungarian, the
 //! language of the source course.
 
+use crate::error::{Error, ErrorKind};
 use clap::ValueEnum;
+use radiometry::domain::{self, DomainError, Expected};
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum Lang {
@@ -32,69 +34,130 @@ macro_rules! say {
 }
 pub(crate) use say;
 
-/// An error message in `lang`: the domain errors of the laws (a wrong
-/// number, named by its argument) are translated; others stay in English.
-pub fn error_message(error: &anyhow::Error, lang: Lang) -> String {
-    use radiometry::domain::DomainError;
-    match (lang, error.downcast_ref::<DomainError>()) {
-        (Lang::Hu, Some(DomainError::NotFinite { name, value })) => {
-            format!("{name}: véges számnak kell lennie, kapott érték: {value}")
-        }
-        (
-            Lang::Hu,
-            Some(DomainError::OutOfRange {
-                name,
-                value,
-                expected,
-            }),
-        ) => {
-            let expected = match *expected {
-                "in [-1, 1]" => "a [-1, 1] tartományba kell esnie",
-                "in [0, 1]" => "a [0, 1] tartományba kell esnie",
-                "a positive refractive index" => "pozitív törésmutatónak kell lennie",
-                "a refractive index from 1e-50 to 1e50" => {
-                    "1e-50 és 1e50 közötti törésmutatónak kell lennie"
-                }
-                "an extinction coefficient of 0 or from 1e-50 to 1e50" => {
-                    "0 vagy 1e-50 és 1e50 közötti kioltási tényezőnek kell lennie"
-                }
-                "a refractive index from 1e-9 to 1e9 (the range of the f32 laws)" => {
-                    "1e-9 és 1e9 közötti törésmutatónak kell lennie (az f32 törvények tartománya)"
-                }
-                "an extinction coefficient of 0 or from 1e-9 to 1e9 (the range of the f32 laws)" => {
-                    "0 vagy 1e-9 és 1e9 közötti kioltási tényezőnek kell lennie (az f32 törvények tartománya)"
-                }
-                "a non-negative extinction coefficient" => {
-                    "nemnegatív kioltási tényezőnek kell lennie"
-                }
-                "non-negative" => "nemnegatívnak kell lennie",
-                other => other,
-            };
-            let value = radiometry::domain::shown(*value);
-            format!("{name}: {expected}, kapott érték: {value}")
-        }
-        (Lang::Hu, Some(DomainError::ZeroVector { name, x, y, z })) => {
-            format!("{name}: nem nulla hosszú iránynak kell lennie, kapott: ({x}, {y}, {z})")
-        }
-        _ => format!("{error:#}"),
+/// An error's message in `lang`: the English is the kind's `Display`, the
+/// Hungarian an exhaustive `match` over the kinds.
+pub fn error_message(error: &Error, lang: Lang) -> String {
+    match lang {
+        Lang::En => error.to_string(),
+        Lang::Hu => hungarian(error.kind()),
     }
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use radiometry::domain;
+fn hungarian(kind: &ErrorKind) -> String {
+    match kind {
+        ErrorKind::Domain(error) => domain_hu(error),
+        ErrorKind::Usage(error) => usage_hu(error),
+        ErrorKind::VectorParts { count } => format!(
+            "három vesszővel elválasztott számot kell megadni (például 0,3,4), kapott részek száma: {count}"
+        ),
+        ErrorKind::VectorComponent { axis, text } => {
+            format!("a(z) {axis} komponens ({text:?}) nem szám")
+        }
+        ErrorKind::AngleDegrees { name, value } => format!(
+            "{name}: a [0, 180] fok tartományba eső szögnek kell lennie, kapott érték: {value}"
+        ),
+        ErrorKind::CosineOrAngle { cosine, angle } => {
+            format!("{cosine} és {angle} közül pontosan egyet kell megadni")
+        }
+        ErrorKind::ConductorFromInside { name, cos_i } => format!(
+            "{name}: vezetőnél (kappa > 0) ≥ 0 kell legyen: fény nem érkezhet fém belsejéből, kapott érték: {cos_i}"
+        ),
+        ErrorKind::NoCriticalAngle {
+            name,
+            n,
+            name_outside,
+            n_outside,
+        } => format!(
+            "{name} = {n} nem nagyobb, mint {name_outside} = {n_outside}: sűrűbb (vagy azonos) közegbe lépő fény mindig megtörik, nincs határszög"
+        ),
+        ErrorKind::EmptyLine => "üres sor: minden sor egy kérést tartalmaz".to_owned(),
+        ErrorKind::MalformedJson(error) => format!("hibás JSON: {error}"),
+        ErrorKind::NotAnObject => "a kérésnek JSON-objektumnak kell lennie".to_owned(),
+        ErrorKind::LawMissing => "law: hiányzik; minden kérés megnevezi a törvényét".to_owned(),
+        ErrorKind::LawNotString => "law: szövegnek kell lennie".to_owned(),
+        ErrorKind::UnknownLaw { law } => format!(
+            "law: ismeretlen törvény: {law:?}, a lehetségesek: {}",
+            crate::batch::LAWS.join(", ")
+        ),
+        ErrorKind::Request {
+            path: Some(path),
+            message,
+        } => format!("{path}: a kérés mezője nem olvasható: {message}"),
+        ErrorKind::Request {
+            path: None,
+            message,
+        } => format!("a kérés nem olvasható: {message}"),
+        ErrorKind::ReadLine { line, source } => {
+            format!("a(z) {line}. sor nem olvasható: {source}")
+        }
+        ErrorKind::Write(error) => format!("a kimenet nem írható: {error}"),
+        ErrorKind::Encode(error) => format!("az eredmény nem írható JSON-ként: {error}"),
+        ErrorKind::Untyped(error) => format!("(fordítás nélküli üzenet) {error:#}"),
+    }
+}
 
-    #[test]
-    fn domain_errors_are_translated_and_keep_the_argument_name() {
-        let error = anyhow::Error::from(domain::refractive_index("--eta", -1.0).unwrap_err());
-        assert_eq!(
-            error_message(&error, Lang::En),
-            "--eta must be a positive refractive index, got -1"
-        );
-        assert_eq!(
-            error_message(&error, Lang::Hu),
-            "--eta: pozitív törésmutatónak kell lennie, kapott érték: -1"
-        );
+/// A command-line error: a lead-in naming the argument, then the suite's
+/// own message translated, or else the argument parser's as it wrote it.
+fn usage_hu(error: &clap::Error) -> String {
+    use std::error::Error as _;
+    let ours = error.source().and_then(|e| e.downcast_ref::<Error>());
+    let message = ours.map_or_else(|| crate::error::usage_text(error), |e| hungarian(e.kind()));
+    match crate::error::usage_argument(error) {
+        Some(arg) => format!("hibás parancssori argumentum ({arg}): {message}"),
+        None => format!("hibás parancssor: {message}"),
+    }
+}
+
+/// A domain error of the laws: the input's name, what it should have been,
+/// the value given.
+pub fn domain_hu(error: &DomainError) -> String {
+    match error {
+        DomainError::NotFinite { name, value } => {
+            format!("{name}: véges számnak kell lennie, kapott érték: {value}")
+        }
+        DomainError::OutOfRange {
+            name,
+            value,
+            expected,
+        } => format!(
+            "{name}: {}, kapott érték: {}",
+            expected_hu(*expected),
+            domain::shown(*value)
+        ),
+        DomainError::ZeroVector { name, x, y, z } => {
+            format!("{name}: nem nulla hosszú iránynak kell lennie, kapott: ({x}, {y}, {z})")
+        }
+    }
+}
+
+/// What an input should have been, as the rest of a Hungarian sentence
+/// that names the input.
+pub fn expected_hu(expected: Expected) -> String {
+    let (low, high) = expected
+        .index_range()
+        .map(domain::IndexRange::ends_text)
+        .unwrap_or_default();
+    let f32_tier = "(az f32 törvények tartománya)";
+    match expected {
+        Expected::Cosine => "a [-1, 1] tartományba kell esnie".to_owned(),
+        Expected::Fraction => "a [0, 1] tartományba kell esnie".to_owned(),
+        Expected::NonNegative => "nemnegatívnak kell lennie".to_owned(),
+        Expected::IncidenceAngle => "a [0, π/2] rad tartományba eső szögnek kell lennie".to_owned(),
+        Expected::PositiveIndex => "pozitív törésmutatónak kell lennie".to_owned(),
+        Expected::NonNegativeExtinction => "nemnegatív kioltási tényezőnek kell lennie".to_owned(),
+        Expected::IndexInRange => format!("{low} és {high} közötti törésmutatónak kell lennie"),
+        Expected::ExtinctionInRange => {
+            format!("0 vagy {low} és {high} közötti kioltási tényezőnek kell lennie")
+        }
+        Expected::IndexInRangeF32 => {
+            format!("{low} és {high} közötti törésmutatónak kell lennie {f32_tier}")
+        }
+        Expected::ExtinctionInRangeF32 => {
+            format!("0 vagy {low} és {high} közötti kioltási tényezőnek kell lennie {f32_tier}")
+        }
+        Expected::WithinF32 => {
+            "az f32 ábrázolási tartományán belül kell lennie (|x| < 3.4e38)".to_owned()
+        }
+        Expected::PositiveF32 => "pozitívnak (és f32-ben ábrázolhatónak) kell lennie".to_owned(),
     }
 }

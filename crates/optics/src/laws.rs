@@ -4,10 +4,11 @@
 //! struct serves both), checks them, calls the radiometry crate for every
 //! number, and returns a [`Record`] with the working.
 
+use crate::error::{Error, ErrorKind};
 use crate::input::{Vec3Arg, Via};
 use crate::lang::{say, Lang};
 use crate::record::{number, vector, Answer, Record};
-use anyhow::{bail, Result};
+use anyhow::Result;
 use glam::DVec3;
 use radiometry::brdf::{
     half_vector, BlinnPhong, BlinnPhongReciprocal, Brdf, CourseLambert, Lambert, Phong,
@@ -87,24 +88,23 @@ impl FresnelArgs {
             (None, Some(deg)) => {
                 let deg = via.finite("theta_i_deg", deg)?;
                 if !(0.0..=180.0).contains(&deg) {
-                    bail!(
-                        "{} must be an angle in [0, 180] degrees, got {deg}",
-                        via.name("theta_i_deg")
-                    );
+                    let name = via.name("theta_i_deg");
+                    return Err(Error::from(ErrorKind::AngleDegrees { name, value: deg }).into());
                 }
                 deg.to_radians().cos()
             }
-            _ => bail!(
-                "give exactly one of {} and {}",
-                via.name("cos_i"),
-                via.name("theta_i_deg")
-            ),
+            _ => {
+                let (cosine, angle) = (via.name("cos_i"), via.name("theta_i_deg"));
+                return Err(Error::from(ErrorKind::CosineOrAngle { cosine, angle }).into());
+            }
         };
         if kappa > 0.0 && cos_i < 0.0 {
-            bail!(
-                "{} must be ≥ 0 for a conductor (kappa > 0): light cannot arrive from inside a metal, got {cos_i}",
-                via.name(if self.cos_i.is_some() { "cos_i" } else { "theta_i_deg" })
-            );
+            let name = via.name(if self.cos_i.is_some() {
+                "cos_i"
+            } else {
+                "theta_i_deg"
+            });
+            return Err(Error::from(ErrorKind::ConductorFromInside { name, cos_i }).into());
         }
         let kind = if kappa > 0.0 {
             lang.pick("conductor", "vezető")

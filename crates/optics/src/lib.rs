@@ -7,7 +7,7 @@
 //! command-line syntax, as reported by the argument parser).
 
 pub mod batch;
-
+pub mod error;
 pub mod input;
 mod inspect;
 pub mod lang;
@@ -17,6 +17,7 @@ pub mod record;
 mod render;
 mod validate;
 
+pub use error::{Error, ErrorKind};
 pub use lang::Lang;
 
 use clap::{Parser, Subcommand};
@@ -34,15 +35,48 @@ pub struct Ui {
 
 impl Ui {
     /// Prints a record in the chosen form.
-    pub fn show(&self, record: &Record) -> anyhow::Result<()> {
+    pub fn show(&self, record: &Record) -> error::Result<()> {
         let mut out = std::io::stdout().lock();
         if self.json {
-            serde_json::to_writer(&mut out, record)?;
-            writeln!(out)?;
+            serde_json::to_writer(&mut out, record).map_err(ErrorKind::Encode)?;
+            writeln!(out).map_err(ErrorKind::Write)?;
         } else {
-            write!(out, "{}", record.to_text(self.lang))?;
+            write!(out, "{}", record.to_text(self.lang)).map_err(ErrorKind::Write)?;
         }
         Ok(())
+    }
+
+    /// The form chosen on a command line that did not parse: `--json` and
+    /// `--lang hu` are looked for among the raw arguments, so that even a
+    /// syntax error is reported in the form asked for.
+    fn from_raw_args(args: impl IntoIterator<Item = std::ffi::OsString>) -> Self {
+        let args: Vec<_> = args.into_iter().collect();
+        let hu = args.windows(2).any(|w| w[0] == "--lang" && w[1] == "hu")
+            || args.iter().any(|a| a == "--lang=hu");
+        Ui {
+            json: args.iter().any(|a| a == "--json"),
+            lang: if hu { Lang::Hu } else { Lang::En },
+        }
+    }
+
+    /// Reports a failure: the JSON error object on stdout with `--json`,
+    /// and the message on stderr.
+    fn report(&self, error: &Error) {
+        if self.json {
+            println!(
+                "{}",
+                serde_json::json!({ "error": error.to_json(self.lang) })
+            );
+        }
+        match (error.kind(), self.lang) {
+            // The parser's own rendering, with its usage line and hint.
+            (ErrorKind::Usage(usage), Lang::En) => eprint!("{}", usage.render()),
+            _ => eprintln!(
+                "{}: {}",
+                self.lang.pick("error", "hiba"),
+                lang::error_message(error, self.lang)
+            ),
+        }
     }
 }
 
@@ -131,7 +165,10 @@ fn run(command: &Command, ui: &Ui) -> anyhow::Result<ExitCode> {
 
 /// Parses the command line, runs the command, prints any error; the exit status.
 pub fn main_entry() -> ExitCode {
-    let cli = Cli::parse();
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(usage) => return usage_failure(usage),
+    };
     let ui = Ui {
         json: cli.json,
         lang: cli.lang,
@@ -139,12 +176,24 @@ pub fn main_entry() -> ExitCode {
     match run(&cli.command, &ui) {
         Ok(code) => code,
         Err(error) => {
-            let message = lang::error_message(&error, ui.lang);
-            if ui.json {
-                println!("{}", serde_json::json!({ "error": message }));
-            }
-            eprintln!("{}: {message}", ui.lang.pick("error", "hiba"));
+            ui.report(&Error::from(error));
             ExitCode::FAILURE
         }
     }
+}
+
+/// A command line that did not parse, or asked for help or the version.
+fn usage_failure(usage: clap::Error) -> ExitCode {
+    use clap::error::ErrorKind as Clap;
+    let code = ExitCode::from(u8::try_from(usage.exit_code()).unwrap_or(2));
+    match usage.kind() {
+        Clap::DisplayHelp
+        | Clap::DisplayVersion
+        | Clap::DisplayHelpOnMissingArgumentOrSubcommand => {
+            // Help is what was asked for, not a failure to report.
+            let _ = usage.print();
+        }
+        _ => Ui::from_raw_args(std::env::args_os()).report(&ErrorKind::Usage(usage).into()),
+    }
+    code
 }

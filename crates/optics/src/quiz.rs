@@ -2,11 +2,12 @@
 //! solved with the radiometry laws, step by step, and compared with the
 //! answers printed in the course.
 
+use crate::error::{Error, ErrorKind};
 use crate::input::{Vec3Arg, Via};
 use crate::lang::{say, Lang};
 use crate::laws::{ShadeArgs, ShadeModel};
 use crate::record::{number, percent, Answer, Record};
-use anyhow::{bail, Result};
+use anyhow::Result;
 use glam::DVec3;
 use radiometry::fresnel::f0;
 use radiometry::radiance::point_irradiance;
@@ -252,13 +253,13 @@ impl CriticalAngleArgs {
             "Snellius–Descartes: n sin θ = n_ki sin θ_ki; semmi sem lép ki, ha θ_ki elérné a 90°-ot"
         ));
         let Some(theta_c) = critical_angle(n_out / n) else {
-            bail!(
-                "{} = {} is not larger than {} = {}: light going into a denser (or equal) medium always refracts, there is no critical angle",
-                via.name("n"),
+            let kind = ErrorKind::NoCriticalAngle {
+                name: via.name("n"),
                 n,
-                via.name("n_outside"),
-                n_out
-            );
+                name_outside: via.name("n_outside"),
+                n_outside: n_out,
+            };
+            return Err(Error::from(kind).into());
         };
         record.step(format!(
             "sin θc = n_out / n = {} / {} = {}",

@@ -1,0 +1,313 @@
+//! Why a command failed, as a typed kind.
+//!
+//! An error's identity is its [`ErrorKind`]; its English text is only the
+//! kind's `Display`, its Hungarian text an exhaustive `match` over the kinds
+//! in [`crate::lang`], and its JSON form `{"kind", "field", "message"}` takes
+//! the kind's [`name`](ErrorKind::name). Adding a kind without a name, a
+//! field or a translation stops the build.
+//!
+//! Another crate's typed errors are wrapped whole as one variant, as
+//! [`ErrorKind::Domain`] wraps the radiometry crate's [`DomainError`]; the
+//! translation of such a variant is one exhaustive `match` over that
+//! crate's kinds, beside the others in `lang`. Messages that come from
+//! outside the suite (the argument parser's, serde's, the operating
+//! system's) keep their text, and the kinds that carry them say which
+//! argument or field they concern.
+
+use radiometry::domain::DomainError;
+use std::fmt;
+
+/// The outcome of a step that can fail with one of the suite's own errors.
+pub type Result<T, E = Error> = std::result::Result<T, E>;
+
+/// A failure of a command: its kind, which also knows the argument or JSON
+/// field it concerns.
+#[derive(Debug)]
+pub struct Error {
+    kind: ErrorKind,
+}
+
+/// Every failure the suite reports.
+#[derive(Debug)]
+pub enum ErrorKind {
+    /// A number outside the domain of a law (the radiometry crate's kinds).
+    Domain(DomainError),
+    /// The command line did not parse; the argument parser's message.
+    Usage(clap::Error),
+    /// A vector argument that is not three comma-separated parts.
+    VectorParts {
+        /// How many parts were given.
+        count: usize,
+    },
+    /// A component of a vector argument that is not a number.
+    VectorComponent {
+        /// `x`, `y` or `z`.
+        axis: &'static str,
+        /// The text given for it.
+        text: String,
+    },
+    /// An angle in degrees outside `[0, 180]`.
+    AngleDegrees {
+        /// The input's name as the user wrote it.
+        name: String,
+        /// The value given, degrees.
+        value: f64,
+    },
+    /// Neither or both of the two ways of giving the incidence.
+    CosineOrAngle {
+        /// The cosine's name as the user writes it.
+        cosine: String,
+        /// The angle's name as the user writes it.
+        angle: String,
+    },
+    /// Light from inside a conductor, which has no transmitted side.
+    ConductorFromInside {
+        /// The name of the input that gave the incidence.
+        name: String,
+        /// The signed cosine of incidence it gave.
+        cos_i: f64,
+    },
+    /// A critical angle asked for light going into a denser (or equal) medium.
+    NoCriticalAngle {
+        /// The name of the index the light comes from.
+        name: String,
+        /// Its value.
+        n: f64,
+        /// The name of the index beyond the boundary.
+        name_outside: String,
+        /// Its value.
+        n_outside: f64,
+    },
+    /// A batch line with nothing on it.
+    EmptyLine,
+    /// A batch line that is not JSON; serde's message.
+    MalformedJson(serde_json::Error),
+    /// A batch line that is JSON but not an object.
+    NotAnObject,
+    /// A request without a `law`.
+    LawMissing,
+    /// A request whose `law` is not a string.
+    LawNotString,
+    /// A request naming a law the batch does not evaluate.
+    UnknownLaw {
+        /// The law named.
+        law: String,
+    },
+    /// A request field (or the request) that does not deserialise; serde's
+    /// message.
+    Request {
+        /// The JSON path of the field; `None` for the request as a whole.
+        path: Option<String>,
+        /// serde's description.
+        message: String,
+    },
+    /// A line of the batch input that could not be read; the operating
+    /// system's message.
+    ReadLine {
+        /// The line number, from 1.
+        line: usize,
+        /// The operating system's reason.
+        source: std::io::Error,
+    },
+    /// The output could not be written; the operating system's message.
+    Write(std::io::Error),
+    /// A record that could not be written as JSON; serde's message.
+    Encode(serde_json::Error),
+    /// A failure reported by a subcommand whose messages have no kind of
+    /// their own yet (`render`, `inspect`, `validate`): its text as written.
+    Untyped(anyhow::Error),
+}
+
+impl Error {
+    /// What failed.
+    pub fn kind(&self) -> &ErrorKind {
+        &self.kind
+    }
+
+    /// The argument or JSON field the failure concerns, as the user wrote
+    /// it, when known.
+    pub fn field(&self) -> Option<String> {
+        self.kind.field()
+    }
+
+    /// The error as JSON: `{"kind": …, "field": …, "message": …}`, the
+    /// message in `lang`, the field `null` when unknown.
+    pub fn to_json(&self, lang: crate::Lang) -> serde_json::Value {
+        serde_json::json!({
+            "kind": self.kind.name(),
+            "field": self.field(),
+            "message": crate::lang::error_message(self, lang),
+        })
+    }
+}
+
+impl From<ErrorKind> for Error {
+    fn from(kind: ErrorKind) -> Self {
+        Self { kind }
+    }
+}
+
+impl From<DomainError> for Error {
+    fn from(error: DomainError) -> Self {
+        ErrorKind::Domain(error).into()
+    }
+}
+
+impl From<anyhow::Error> for Error {
+    /// Recovers the typed error a step returned through `anyhow`; what has
+    /// no kind stays [`ErrorKind::Untyped`].
+    fn from(error: anyhow::Error) -> Self {
+        let error = match error.downcast::<Error>() {
+            Ok(typed) => return typed,
+            Err(other) => other,
+        };
+        match error.downcast::<DomainError>() {
+            Ok(domain) => domain.into(),
+            Err(other) => ErrorKind::Untyped(other).into(),
+        }
+    }
+}
+
+impl ErrorKind {
+    /// The kind's stable name, the `kind` of the JSON error object.
+    pub fn name(&self) -> &'static str {
+        match self {
+            ErrorKind::Domain(DomainError::NotFinite { .. }) => "domain.not_finite",
+            ErrorKind::Domain(DomainError::OutOfRange { .. }) => "domain.out_of_range",
+            ErrorKind::Domain(DomainError::ZeroVector { .. }) => "domain.zero_vector",
+            ErrorKind::Usage(_) => "usage",
+            ErrorKind::VectorParts { .. } => "vector_parts",
+            ErrorKind::VectorComponent { .. } => "vector_component",
+            ErrorKind::AngleDegrees { .. } => "angle_degrees",
+            ErrorKind::CosineOrAngle { .. } => "cosine_or_angle",
+            ErrorKind::ConductorFromInside { .. } => "conductor_from_inside",
+            ErrorKind::NoCriticalAngle { .. } => "no_critical_angle",
+            ErrorKind::EmptyLine => "empty_line",
+            ErrorKind::MalformedJson(_) => "malformed_json",
+            ErrorKind::NotAnObject => "not_an_object",
+            ErrorKind::LawMissing => "law_missing",
+            ErrorKind::LawNotString => "law_not_a_string",
+            ErrorKind::UnknownLaw { .. } => "unknown_law",
+            ErrorKind::Request { .. } => "request",
+            ErrorKind::ReadLine { .. } => "read_line",
+            ErrorKind::Write(_) => "write",
+            ErrorKind::Encode(_) => "encode",
+            ErrorKind::Untyped(_) => "untyped",
+        }
+    }
+
+    fn field(&self) -> Option<String> {
+        match self {
+            ErrorKind::Domain(error) => Some(error.name().to_owned()),
+            ErrorKind::Usage(error) => usage_argument(error),
+            ErrorKind::AngleDegrees { name, .. }
+            | ErrorKind::ConductorFromInside { name, .. }
+            | ErrorKind::NoCriticalAngle { name, .. } => Some(name.clone()),
+            ErrorKind::LawMissing | ErrorKind::LawNotString | ErrorKind::UnknownLaw { .. } => {
+                Some("law".to_owned())
+            }
+            ErrorKind::Request { path, .. } => path.clone(),
+            ErrorKind::VectorParts { .. }
+            | ErrorKind::VectorComponent { .. }
+            | ErrorKind::CosineOrAngle { .. }
+            | ErrorKind::EmptyLine
+            | ErrorKind::MalformedJson(_)
+            | ErrorKind::NotAnObject
+            | ErrorKind::ReadLine { .. }
+            | ErrorKind::Write(_)
+            | ErrorKind::Encode(_)
+            | ErrorKind::Untyped(_) => None,
+        }
+    }
+}
+
+/// The argument a command-line error names (`--eta <ETA>`), if it names one.
+pub(crate) fn usage_argument(error: &clap::Error) -> Option<String> {
+    use clap::error::{ContextKind, ContextValue};
+    match error.get(ContextKind::InvalidArg)? {
+        ContextValue::String(arg) => Some(arg.clone()),
+        ContextValue::Strings(args) => Some(args.join(", ")),
+        _ => None,
+    }
+}
+
+/// The argument parser's message without its `error: ` and the usage and
+/// help hints that follow it, on one line.
+pub(crate) fn usage_text(error: &clap::Error) -> String {
+    let text = error.to_string();
+    let message: Vec<&str> = text
+        .lines()
+        .take_while(|line| !line.trim().is_empty())
+        .map(str::trim)
+        .collect();
+    let message = message.join(" ");
+    message
+        .strip_prefix("error: ")
+        .unwrap_or(&message)
+        .to_owned()
+}
+
+impl fmt::Display for ErrorKind {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            ErrorKind::Domain(error) => write!(f, "{error}"),
+            ErrorKind::Usage(error) => write!(f, "{}", usage_text(error)),
+            ErrorKind::VectorParts { count } => write!(
+                f,
+                "expected three comma-separated numbers such as 0,3,4, got {count} part(s)"
+            ),
+            ErrorKind::VectorComponent { axis, text } => {
+                write!(f, "the {axis} component {text:?} is not a number")
+            }
+            ErrorKind::AngleDegrees { name, value } => {
+                write!(f, "{name} must be an angle in [0, 180] degrees, got {value}")
+            }
+            ErrorKind::CosineOrAngle { cosine, angle } => {
+                write!(f, "give exactly one of {cosine} and {angle}")
+            }
+            ErrorKind::ConductorFromInside { name, cos_i } => write!(
+                f,
+                "{name} must be ≥ 0 for a conductor (kappa > 0): light cannot arrive from inside a metal, got {cos_i}"
+            ),
+            ErrorKind::NoCriticalAngle {
+                name,
+                n,
+                name_outside,
+                n_outside,
+            } => write!(
+                f,
+                "{name} = {n} is not larger than {name_outside} = {n_outside}: light going into a denser (or equal) medium always refracts, there is no critical angle"
+            ),
+            ErrorKind::EmptyLine => write!(f, "empty line: every line holds one request"),
+            ErrorKind::MalformedJson(error) => write!(f, "malformed JSON: {error}"),
+            ErrorKind::NotAnObject => write!(f, "a request must be a JSON object"),
+            ErrorKind::LawMissing => write!(f, "law: missing; every request names its law"),
+            ErrorKind::LawNotString => write!(f, "law: must be a string"),
+            ErrorKind::UnknownLaw { law } => write!(
+                f,
+                "law: unknown law {law:?}, expected one of {}",
+                crate::batch::LAWS.join(", ")
+            ),
+            ErrorKind::Request {
+                path: Some(path),
+                message,
+            } => write!(f, "{path}: {message}"),
+            ErrorKind::Request {
+                path: None,
+                message,
+            } => write!(f, "{message}"),
+            ErrorKind::ReadLine { line, source } => write!(f, "reading line {line}: {source}"),
+            ErrorKind::Write(error) => write!(f, "cannot write the output: {error}"),
+            ErrorKind::Encode(error) => write!(f, "cannot write the result as JSON: {error}"),
+            ErrorKind::Untyped(error) => write!(f, "{error:#}"),
+        }
+    }
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        self.kind.fmt(f)
+    }
+}
+
+impl std::error::Error for Error {}

@@ -1,0 +1,226 @@
+//! Bad input: refused by name, typed, in the chosen language, without a panic.
+
+use crate::common::{optics, stderr, stdout};
+use serde_json::Value;
+
+/// Bad input: a message naming the argument, a non-zero exit, no panic.
+#[test]
+fn bad_input_is_refused_by_name_without_a_panic() {
+    let cases: &[(&[&str], &str)] = &[
+        (
+            &["fresnel", "--eta", "glass", "--cos-i", "0.3"],
+            "'--eta <ETA>'",
+        ),
+        (
+            &["fresnel", "--eta", "NaN", "--cos-i", "0.3"],
+            "--eta must be a finite number",
+        ),
+        (
+            &["fresnel", "--eta", "-1.5", "--cos-i", "0.3"],
+            "--eta must be a positive refractive index",
+        ),
+        (
+            &["fresnel", "--eta", "0", "--cos-i", "0.3"],
+            "--eta must be a positive refractive index",
+        ),
+        (
+            &["fresnel", "--eta", "1.5", "--kappa", "-1", "--cos-i", "0.3"],
+            "--kappa must be a non-negative",
+        ),
+        (
+            &["fresnel", "--eta", "1e60", "--cos-i", "0.3"],
+            "--eta must be a refractive index from 1e-50 to 1e50, got 1e60",
+        ),
+        (
+            &[
+                "fresnel", "--eta", "1.5", "--kappa", "1e-300", "--cos-i", "0.3",
+            ],
+            "--kappa must be an extinction coefficient of 0 or from 1e-50 to 1e50",
+        ),
+        (
+            &["fresnel", "--eta", "1.5", "--cos-i", "1.0001"],
+            "--cos-i must be in [-1, 1]",
+        ),
+        (
+            &["fresnel", "--eta", "1.5", "--cos-i", "-2"],
+            "--cos-i must be in [-1, 1]",
+        ),
+        (
+            &["fresnel", "--eta", "1.5", "--theta-i-deg", "200"],
+            "--theta-i-deg must be an angle in [0, 180]",
+        ),
+        (&["fresnel", "--eta", "1.5"], "--cos-i"),
+        (
+            &["fresnel", "--eta", "0.2", "--kappa", "3", "--cos-i", "-0.5"],
+            "--cos-i must be ≥ 0 for a conductor",
+        ),
+        (
+            &[
+                "refract", "--wi", "0,0,0", "--normal", "0,0,1", "--eta", "1.5",
+            ],
+            "--wi must be a non-zero direction",
+        ),
+        (
+            &[
+                "refract", "--wi", "0,1,1", "--normal", "0,inf,1", "--eta", "1.5",
+            ],
+            "--normal.y must be a finite number",
+        ),
+        (
+            &["reflect", "--wi", "0,1", "--normal", "0,0,1"],
+            "'--wi <WI>'",
+        ),
+        (
+            &["reflect", "--wi", "0,1,1", "--normal", "0,0,1e-320"],
+            "--normal must be a non-zero direction",
+        ),
+        (
+            &[
+                "shade",
+                "--normal",
+                "0,0,1",
+                "--light-dir",
+                "0,0,1",
+                "--view-dir",
+                "0,0,1",
+                "--radiance",
+                "-5",
+            ],
+            "--radiance must be non-negative",
+        ),
+        (
+            &["quiz", "f0", "--n", "-1.4"],
+            "--n must be a positive refractive index",
+        ),
+        (
+            &["quiz", "critical-angle", "--n", "0.5"],
+            "no critical angle",
+        ),
+        (
+            &[
+                "quiz",
+                "lambert",
+                "--normal",
+                "0,0,0",
+                "--light-dir",
+                "0,3,4",
+                "--view-dir",
+                "1,2,3",
+                "--radiance",
+                "5",
+                "--kd",
+                "0.6",
+            ],
+            "--normal must be a non-zero direction",
+        ),
+    ];
+    for (args, message) in cases {
+        let output = optics(args);
+        let err = stderr(&output);
+        assert!(!output.status.success(), "optics {args:?} succeeded");
+        assert!(
+            err.contains(message),
+            "optics {args:?}: {err:?} lacks {message:?}"
+        );
+        assert!(!err.contains("panicked"), "optics {args:?} panicked: {err}");
+    }
+}
+
+#[test]
+fn json_errors_are_typed_objects_naming_the_field() {
+    // (arguments, kind, field, phrase of the message, exit status)
+    let cases: &[(&[&str], &str, Option<&str>, &str, i32)] = &[
+        (
+            &["fresnel", "--eta", "-1", "--cos-i", "0.3"],
+            "domain.out_of_range",
+            Some("--eta"),
+            "--eta must be a positive refractive index",
+            1,
+        ),
+        (
+            &["fresnel", "--eta", "1.5", "--theta-i-deg", "200"],
+            "angle_degrees",
+            Some("--theta-i-deg"),
+            "an angle in [0, 180] degrees",
+            1,
+        ),
+        (
+            &["quiz", "critical-angle", "--n", "0.5"],
+            "no_critical_angle",
+            Some("--n"),
+            "no critical angle",
+            1,
+        ),
+        (
+            &["fresnel", "--eta", "glass", "--cos-i", "0.3"],
+            "usage",
+            Some("--eta <ETA>"),
+            "invalid value 'glass'",
+            2,
+        ),
+        (
+            &["reflect", "--wi", "0,1", "--normal", "0,0,1"],
+            "usage",
+            Some("--wi <WI>"),
+            "got 2 part(s)",
+            2,
+        ),
+    ];
+    for (args, kind, field, message, status) in cases {
+        let mut all = vec!["--json"];
+        all.extend_from_slice(args);
+        let output = optics(&all);
+        assert_eq!(output.status.code(), Some(*status), "optics {all:?}");
+        let printed: Value = serde_json::from_str(stdout(&output).trim())
+            .unwrap_or_else(|e| panic!("optics {all:?}: no JSON error object ({e})"));
+        let error = &printed["error"];
+        assert_eq!(error["kind"], *kind, "optics {all:?}: {printed}");
+        assert_eq!(error["field"].as_str(), *field, "optics {all:?}: {printed}");
+        let text = error["message"].as_str().expect("a message");
+        assert!(
+            text.contains(message),
+            "optics {all:?}: {text:?} lacks {message:?}"
+        );
+    }
+}
+
+/// Through the binary, a few of every family of kinds in Hungarian: the
+/// suite's own messages wholly translated, the argument parser's kept
+/// behind a Hungarian lead-in naming the argument.
+#[test]
+fn hungarian_errors_leave_no_english_of_the_suites_own() {
+    let cases: &[(&[&str], &str)] = &[
+        (
+            &["fresnel", "--eta", "1e60", "--cos-i", "0.3"],
+            "hiba: --eta: 1e-50 és 1e50 közötti törésmutatónak kell lennie, kapott érték: 1e60",
+        ),
+        (
+            &["fresnel", "--eta", "0.2", "--kappa", "3", "--cos-i", "-0.5"],
+            "hiba: --cos-i: vezetőnél (kappa > 0) ≥ 0 kell legyen: fény nem érkezhet fém belsejéből, kapott érték: -0.5",
+        ),
+        (
+            &["quiz", "critical-angle", "--n", "0.5"],
+            "hiba: --n = 0.5 nem nagyobb, mint --n-outside = 1: sűrűbb (vagy azonos) közegbe lépő fény mindig megtörik, nincs határszög",
+        ),
+        (
+            &["reflect", "--wi", "0,1", "--normal", "0,0,1"],
+            "hiba: hibás parancssori argumentum (--wi <WI>): három vesszővel elválasztott számot kell megadni (például 0,3,4), kapott részek száma: 2",
+        ),
+        (
+            &["fresnel", "--eta", "glass", "--cos-i", "0.3"],
+            "hiba: hibás parancssori argumentum (--eta <ETA>): invalid value 'glass' for '--eta <ETA>': invalid float literal",
+        ),
+    ];
+    for (args, message) in cases {
+        let mut all = vec!["--lang", "hu"];
+        all.extend_from_slice(args);
+        let output = optics(&all);
+        assert!(!output.status.success(), "optics {all:?} succeeded");
+        assert_eq!(stderr(&output).trim(), *message, "optics {all:?}");
+    }
+    let batch = crate::common::batch_in(&["--lang", "hu"], "not json\n");
+    let error = &batch.0[0]["error"];
+    assert_eq!(error["kind"], "malformed_json");
+    let text = error["message"].as_str().expect("a message");
+    assert!(text.starts_with("hibás JSON: "), "{text}");
+}

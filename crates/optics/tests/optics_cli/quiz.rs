@@ -1,0 +1,137 @@
+//! `optics quiz`: the course's quiz answered with the printed answers checked.
+
+use crate::common::{assert_record_fields, json, number, optics, stderr, stdout, ROUND_TRIP};
+
+// The course's quiz (`003`, "Kvíz"): the printed answers are 2.77 %, 2.4,
+// 5.74° and 2.5; question 1 marks statements 1–5 true. Tolerances: the exact
+// values are 1/36, 12/5, asin(1/10) and 5/2; 1e-12 covers the rounding of a
+// dozen operations on numbers of order 1.
+
+#[test]
+fn quiz_seed_answers_every_question_with_correct_rounding() {
+    let quiz = json(&["quiz", "seed"]);
+    assert_record_fields(&quiz);
+    let questions = quiz["details"]["questions"].as_array().expect("questions");
+    assert_eq!(questions.len(), 5);
+
+    let q1 = &questions[0];
+    let verdicts: Vec<bool> = q1["answer"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|v| v.as_bool().unwrap())
+        .collect();
+    assert_eq!(
+        verdicts,
+        [true, false, true, true, true, false, false, false, false]
+    );
+    assert_eq!(
+        q1["details"]["agrees_with_printed"], false,
+        "statement 2 is printed true"
+    );
+    assert!(q1["notes"][0].as_str().unwrap().contains("irradiance"));
+
+    let q2 = &questions[1];
+    assert!((number(&q2["answer"]) - 1.0 / 36.0).abs() < 1e-12);
+    assert_eq!(q2["details"]["agrees_with_printed"], false);
+    let note = q2["notes"][0].as_str().unwrap();
+    assert!(
+        note.contains("truncated") && note.contains("2.78"),
+        "{note}"
+    );
+
+    let q3 = &questions[2];
+    assert!((number(&q3["answer"]) - 2.4).abs() < 1e-12);
+    assert_eq!(q3["unit"], "W/(sr m^2)");
+    assert_eq!(q3["details"]["agrees_with_printed"], true);
+
+    let q4 = &questions[3];
+    assert!((number(&q4["answer"]) - 0.1f64.asin().to_degrees()).abs() < 1e-12);
+    assert_eq!(q4["unit"], "deg");
+    assert_eq!(q4["details"]["agrees_with_printed"], true);
+
+    let q5 = &questions[4];
+    assert!((number(&q5["answer"]) - 2.5).abs() < 1e-12);
+    assert_eq!(q5["details"]["agrees_with_printed"], true);
+}
+
+#[test]
+fn quiz_seed_text_shows_the_working_and_the_corrected_rounding() {
+    let output = optics(&["quiz", "seed"]);
+    assert!(output.status.success());
+    let text = stdout(&output);
+    for expected in [
+        "Question 1",
+        "2.78 %",
+        "the printed answer 2.77 % is truncated instead of rounded",
+        "L_ref = f_r · E = 0.6 · 4 = 2.4",
+        "θc = arcsin(0.1) = 5.73917°",
+        "cos δ = N · H = 0.707107",
+        "L_ref = f_r · E = 0.625 · 4 = 2.5",
+    ] {
+        assert!(text.contains(expected), "missing {expected:?} in\n{text}");
+    }
+}
+
+#[test]
+fn quiz_list_names_every_solver_with_an_example() {
+    let text = stdout(&optics(&["quiz"]));
+    for name in ["seed", "f0", "lambert", "critical-angle", "blinn-phong"] {
+        assert!(
+            text.contains(&format!("optics quiz {name}")),
+            "no example for {name}"
+        );
+    }
+}
+
+#[test]
+fn quiz_solvers_match_the_seed_answers() {
+    // The quiz's exercises with the flags of ROUND_TRIP below; the last
+    // passes ks = 1.41421356, √2 to 9 digits, so its 2.5 holds to 1e-8.
+    let expected = [
+        ("f0", 1.0 / 36.0, 1e-12),
+        ("lambert", 2.4, 1e-12),
+        ("critical_angle", 0.1f64.asin().to_degrees(), 1e-12),
+        ("blinn_phong", 2.5, 1e-8),
+    ];
+    for (law, value, tolerance) in expected {
+        let (_, args) = ROUND_TRIP
+            .iter()
+            .find(|(request, _)| request.contains(&format!("\"{law}\"")))
+            .expect("a request for every quiz law");
+        let record = json(args);
+        assert_eq!(record["law"], law);
+        assert!(
+            (number(&record["answer"]) - value).abs() < tolerance,
+            "{law}: {record}"
+        );
+    }
+    let lambert = json(ROUND_TRIP[5].1);
+    let steps = lambert["steps"].to_string();
+    assert!(
+        steps.contains("light_dir has length 5: normalised to (0, 0.6, 0.8)"),
+        "{steps}"
+    );
+}
+
+#[test]
+fn hungarian_output_speaks_the_course_language() {
+    let text = stdout(&optics(&["--lang", "hu", "quiz", "seed"]));
+    for expected in [
+        "1. kérdés",
+        "eredmény",
+        "csonkolva, nem kerekítve",
+        "teljes visszaverődés",
+    ] {
+        assert!(text.contains(expected), "missing {expected:?}");
+    }
+    // The statements of question 1 are quoted as the course prints them.
+    assert!(text.contains("A törésmutató a két közegbeli fénysebességek arányával egyezik meg."));
+    let refused = optics(&["--lang", "hu", "fresnel", "--eta", "-1", "--cos-i", "0.5"]);
+    assert_eq!(
+        stderr(&refused).trim(),
+        "hiba: --eta: pozitív törésmutatónak kell lennie, kapott érték: -1"
+    );
+    let english = stdout(&optics(&["quiz", "seed"]));
+    assert!(!english.contains("kérdés"));
+}
