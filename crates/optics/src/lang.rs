@@ -161,3 +161,6 @@ pub fn expected_hu(expected: Expected) -> String {
         Expected::PositiveF32 => "pozitívnak (és f32-ben ábrázolhatónak) kell lennie".to_owned(),
     }
 }
+
+#[cfg(test)]
+mod tests;

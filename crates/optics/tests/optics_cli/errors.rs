@@ -126,10 +126,13 @@ fn bad_input_is_refused_by_name_without_a_panic() {
     }
 }
 
+/// A refused command line, with the JSON error it must print: arguments,
+/// kind, field, a phrase of the message, exit status.
+type JsonErrorCase<'a> = (&'a [&'a str], &'a str, Option<&'a str>, &'a str, i32);
+
 #[test]
 fn json_errors_are_typed_objects_naming_the_field() {
-    // (arguments, kind, field, phrase of the message, exit status)
-    let cases: &[(&[&str], &str, Option<&str>, &str, i32)] = &[
+    let cases: &[JsonErrorCase] = &[
         (
             &["fresnel", "--eta", "-1", "--cos-i", "0.3"],
             "domain.out_of_range",

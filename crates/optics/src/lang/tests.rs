@@ -1,0 +1,262 @@
+//! Every error kind walked in both languages: the Hungarian has no English
+//! left but the names, numbers and other programs' messages it quotes.
+
+use super::*;
+use crate::error::usage_text;
+use clap::Parser;
+use std::collections::BTreeSet;
+
+/// One example of every kind, each with the text it quotes verbatim in
+/// both languages: the names the user wrote, and messages from outside the
+/// suite (the argument parser's, serde's, the operating system's).
+fn every_kind() -> Vec<(Error, Vec<String>)> {
+    let usage = |args: &[&str]| match crate::Cli::try_parse_from(args) {
+        Err(error) => error,
+        Ok(_) => panic!("{args:?} parses"),
+    };
+    let foreign_usage = usage(&["optics", "fresnel", "--eta", "glass", "--cos-i", "1"]);
+    let foreign_text = usage_text(&foreign_usage);
+    let our_usage = usage(&["optics", "reflect", "--wi", "0,1", "--normal", "0,0,1"]);
+    let json_error = || serde_json::from_str::<serde_json::Value>("{").unwrap_err();
+    let os_error = || std::io::Error::other("no space left on device");
+    let named = |name: &str| vec![name.to_owned()];
+    let laws = crate::batch::LAWS.join(", ");
+    let mut kinds: Vec<(ErrorKind, Vec<String>)> = vec![
+        (
+            DomainError::NotFinite {
+                name: "--eta".into(),
+                value: f64::NAN,
+            }
+            .into(),
+            named("--eta"),
+        ),
+        (
+            DomainError::ZeroVector {
+                name: "--light-dir".into(),
+                x: 0.0,
+                y: 0.0,
+                z: 0.0,
+            }
+            .into(),
+            named("--light-dir"),
+        ),
+        (
+            ErrorKind::Usage(foreign_usage),
+            vec![foreign_text, "--eta <ETA>".into()],
+        ),
+        (ErrorKind::Usage(our_usage), named("--wi <WI>")),
+        (ErrorKind::VectorParts { count: 2 }, vec![]),
+        (
+            ErrorKind::VectorComponent {
+                axis: "y",
+                text: "x".into(),
+            },
+            vec![],
+        ),
+        (
+            ErrorKind::AngleDegrees {
+                name: "--theta-i-deg".into(),
+                value: 200.0,
+            },
+            named("--theta-i-deg"),
+        ),
+        (
+            ErrorKind::CosineOrAngle {
+                cosine: "cos_i".into(),
+                angle: "theta_i_deg".into(),
+            },
+            vec!["cos_i".into(), "theta_i_deg".into()],
+        ),
+        (
+            ErrorKind::ConductorFromInside {
+                name: "--cos-i".into(),
+                cos_i: -0.5,
+            },
+            named("--cos-i"),
+        ),
+        (
+            ErrorKind::NoCriticalAngle {
+                name: "--n".into(),
+                n: 0.5,
+                name_outside: "--n-outside".into(),
+                n_outside: 1.0,
+            },
+            vec!["--n-outside".into(), "--n".into()],
+        ),
+        (ErrorKind::EmptyLine, vec![]),
+        (
+            ErrorKind::MalformedJson(json_error()),
+            vec![json_error().to_string()],
+        ),
+        (ErrorKind::NotAnObject, vec![]),
+        (ErrorKind::LawMissing, vec![]),
+        (ErrorKind::LawNotString, vec![]),
+        (
+            ErrorKind::UnknownLaw {
+                law: "teleport".into(),
+            },
+            vec![laws, "teleport".into()],
+        ),
+        (
+            ErrorKind::Request {
+                path: Some("eta".into()),
+                message: "invalid type".into(),
+            },
+            vec!["invalid type".into(), "eta".into()],
+        ),
+        (
+            ErrorKind::Request {
+                path: None,
+                message: "missing field `eta`".into(),
+            },
+            vec!["missing field `eta`".into()],
+        ),
+        (
+            ErrorKind::ReadLine {
+                line: 3,
+                source: os_error(),
+            },
+            vec![os_error().to_string()],
+        ),
+        (ErrorKind::Write(os_error()), vec![os_error().to_string()]),
+        (
+            ErrorKind::Encode(json_error()),
+            vec![json_error().to_string()],
+        ),
+        // Untyped carries the text of a subcommand whose messages have no
+        // kind yet; it is quoted as written, behind a Hungarian lead-in.
+        (
+            ErrorKind::Untyped(anyhow::anyhow!("scene a.json: cannot read a.json")),
+            vec!["scene a.json: cannot read a.json".into()],
+        ),
+    ];
+    for expected in Expected::ALL {
+        let error = DomainError::OutOfRange {
+            name: "--eta".into(),
+            value: -1.0,
+            expected,
+        };
+        kinds.push((error.into(), named("--eta")));
+    }
+    kinds
+        .into_iter()
+        .map(|(kind, quoted)| (kind.into(), quoted))
+        .collect()
+}
+
+impl From<DomainError> for ErrorKind {
+    fn from(error: DomainError) -> Self {
+        ErrorKind::Domain(error)
+    }
+}
+
+/// The place of a kind in [`SLOTS`]: an exhaustive match, so a new kind
+/// stops the build here until it is given a slot, and the walk then fails
+/// until [`every_kind`] has an example of it.
+fn slot(kind: &ErrorKind) -> usize {
+    match kind {
+        ErrorKind::Domain(DomainError::NotFinite { .. }) => 0,
+        ErrorKind::Domain(DomainError::OutOfRange { .. }) => 1,
+        ErrorKind::Domain(DomainError::ZeroVector { .. }) => 2,
+        ErrorKind::Usage(_) => 3,
+        ErrorKind::VectorParts { .. } => 4,
+        ErrorKind::VectorComponent { .. } => 5,
+        ErrorKind::AngleDegrees { .. } => 6,
+        ErrorKind::CosineOrAngle { .. } => 7,
+        ErrorKind::ConductorFromInside { .. } => 8,
+        ErrorKind::NoCriticalAngle { .. } => 9,
+        ErrorKind::EmptyLine => 10,
+        ErrorKind::MalformedJson(_) => 11,
+        ErrorKind::NotAnObject => 12,
+        ErrorKind::LawMissing => 13,
+        ErrorKind::LawNotString => 14,
+        ErrorKind::UnknownLaw { .. } => 15,
+        ErrorKind::Request { .. } => 16,
+        ErrorKind::ReadLine { .. } => 17,
+        ErrorKind::Write(_) => 18,
+        ErrorKind::Encode(_) => 19,
+        ErrorKind::Untyped(_) => 20,
+    }
+}
+
+const SLOTS: usize = 21;
+
+/// The words of four letters or more, lower-cased.
+fn words(text: &str) -> BTreeSet<String> {
+    text.split(|c: char| !c.is_alphabetic())
+        .filter(|word| word.chars().count() >= 4)
+        .map(str::to_lowercase)
+        .collect()
+}
+
+#[test]
+fn every_kind_has_an_example_and_a_name_of_its_own() {
+    let mut seen = [false; SLOTS];
+    let mut names = BTreeSet::new();
+    for (error, _) in every_kind() {
+        seen[slot(error.kind())] = true;
+        names.insert(error.kind().name());
+    }
+    let missing: Vec<usize> = (0..SLOTS).filter(|&i| !seen[i]).collect();
+    assert!(
+        missing.is_empty(),
+        "no example of the kinds in slots {missing:?}"
+    );
+    assert_eq!(names.len(), SLOTS, "two kinds share a name: {names:?}");
+}
+
+#[test]
+fn hungarian_messages_have_no_english_left() {
+    for (error, quoted) in every_kind() {
+        let (mut en, mut hu) = (
+            error_message(&error, Lang::En),
+            error_message(&error, Lang::Hu),
+        );
+        assert_eq!(en, error.to_string(), "the English is the Display");
+        for text in &quoted {
+            assert!(hu.contains(text.as_str()), "{hu:?} does not quote {text:?}");
+            en = en.replace(text.as_str(), " ");
+            hu = hu.replace(text.as_str(), " ");
+        }
+        let english: BTreeSet<String> = words(&en).intersection(&words(&hu)).cloned().collect();
+        let names = ["json", "kappa"];
+        let left: Vec<&String> = english
+            .iter()
+            .filter(|w| !names.contains(&w.as_str()))
+            .collect();
+        assert!(
+            left.is_empty(),
+            "{:?}: English {left:?} left in {hu:?}",
+            error.kind().name()
+        );
+    }
+}
+
+#[test]
+fn the_json_error_names_its_kind_and_field() {
+    let error = Error::from(domain::refractive_index("--eta", -1.0).unwrap_err());
+    assert_eq!(
+        error.to_json(Lang::Hu),
+        serde_json::json!({
+            "kind": "domain.out_of_range",
+            "field": "--eta",
+            "message": "--eta: pozitív törésmutatónak kell lennie, kapott érték: -1",
+        })
+    );
+    assert_eq!(
+        error_message(&error, Lang::En),
+        "--eta must be a positive refractive index, got -1"
+    );
+    let line = Error::from(ErrorKind::EmptyLine).to_json(Lang::En);
+    assert_eq!(line["field"], serde_json::Value::Null);
+}
+
+#[test]
+fn typed_errors_survive_the_trip_through_anyhow() {
+    let typed = anyhow::Error::from(Error::from(ErrorKind::LawMissing));
+    assert!(matches!(Error::from(typed).kind(), ErrorKind::LawMissing));
+    let domain = anyhow::Error::from(domain::cosine("cos_i", 2.0).unwrap_err());
+    assert_eq!(Error::from(domain).field().as_deref(), Some("cos_i"));
+    let untyped = Error::from(anyhow::anyhow!("something else"));
+    assert_eq!(untyped.kind().name(), "untyped");
+}
