@@ -152,7 +152,12 @@ fn run(command: &Command, ui: &Ui) -> anyhow::Result<ExitCode> {
             let stdout = std::io::BufWriter::with_capacity(1 << 16, std::io::stdout().lock());
             let (read, failed) = batch::run(args, stdin, stdout, lang)?;
             if failed > 0 {
-                eprintln!("optics batch: {failed} of {read} lines gave errors");
+                let summary = lang::say!(
+                    lang,
+                    "optics batch: {failed} of {read} lines gave errors",
+                    "optics batch: {read} sorból {failed} hibás"
+                );
+                eprintln!("{summary}");
                 return Ok(ExitCode::FAILURE);
             }
         }

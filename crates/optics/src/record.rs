@@ -1,5 +1,13 @@
-//! The result record every subcommand prints: as text for people, or as one
-//! JSON object with stable fields for scripts (documented in the README).
+//! The result record every subcommand prints: as text for people, or with
+//! `--json` as one JSON object with stable fields for scripts.
+//!
+//! [`Record`] is the one definition of that object for every `--json`
+//! output, the law evaluators', the quiz's and `optics batch`'s lines, and
+//! the shape `render`, `inspect` and `validate` print through the same
+//! builder ([`Record::new`], then [`Record::input`]/[`Record::inputs_from`],
+//! [`Record::step`], [`Record::set_answer`], [`Record::detail`]/
+//! [`Record::details_from`], [`Record::note`], and [`crate::Ui::show`]).
+//! A failure prints the error object of [`crate::Error::to_json`] instead.
 
 use crate::lang::Lang;
 use serde::Serialize;
@@ -30,6 +38,8 @@ pub struct Record {
     pub title: String,
     /// The inputs as given (directions before normalisation).
     pub inputs: Map<String, Value>,
+    /// The answer: a number, a vector `[x, y, z]`, `null` when none exists,
+    /// or a list.
     pub answer: Answer,
     /// How the answer reads for people, when a bare number would say less
     /// (`0.0277778 (2.78 %)`); text output only.
@@ -60,6 +70,28 @@ impl Record {
             details: Map::new(),
             notes: Vec::new(),
         }
+    }
+
+    /// The answer, with how it reads for people when a bare number would say
+    /// less.
+    pub fn set_answer(&mut self, answer: Answer, text: Option<String>) -> &mut Self {
+        self.answer = answer;
+        self.answer_text = text;
+        self
+    }
+
+    /// Every field of `value` as an input (a settings struct, a map); a value
+    /// that is not a JSON object goes in whole, under `"value"`.
+    pub fn inputs_from(&mut self, value: impl Serialize) -> &mut Self {
+        fields_into(&mut self.inputs, value);
+        self
+    }
+
+    /// Every field of `value` as a detail; a value that is not a JSON object
+    /// goes in whole, under `"value"`.
+    pub fn details_from(&mut self, value: impl Serialize) -> &mut Self {
+        fields_into(&mut self.details, value);
+        self
     }
 
     pub fn input(&mut self, name: &str, value: impl Serialize) -> &mut Self {
@@ -120,6 +152,15 @@ fn json(value: impl Serialize) -> Value {
     serde_json::to_value(value).unwrap_or(Value::Null)
 }
 
+fn fields_into(map: &mut Map<String, Value>, value: impl Serialize) {
+    match json(value) {
+        Value::Object(fields) => map.extend(fields),
+        other => {
+            map.insert("value".to_owned(), other);
+        }
+    }
+}
+
 /// The unit as it follows a number in text: `2.4 W/(sr m^2)`, `5.74°`.
 fn unit_text(unit: &str) -> String {
     match unit {
@@ -173,6 +214,35 @@ mod tests {
         assert_eq!(number(-0.6), "-0.6");
         assert_eq!(number(1e-9), "1.00000e-9");
         assert_eq!(number(0.0), "0");
+    }
+
+    #[test]
+    fn records_take_inputs_and_details_from_any_serialisable_value() {
+        #[derive(Serialize)]
+        struct Settings {
+            spp: u32,
+            seed: u64,
+        }
+        let mut record = Record::new("render", "Render".into(), "rays/s");
+        record
+            .inputs_from(Settings { spp: 4, seed: 7 })
+            .input("scene", "a.json")
+            .details_from(serde_json::json!({ "png": "a.png" }))
+            .details_from(3)
+            .set_answer(Answer::Number(1e6), None)
+            .step("rendered".into());
+        let json = serde_json::to_value(&record).unwrap();
+        assert_eq!(
+            json,
+            serde_json::json!({
+                "law": "render",
+                "inputs": { "spp": 4, "seed": 7, "scene": "a.json" },
+                "answer": 1e6,
+                "unit": "rays/s",
+                "steps": ["rendered"],
+                "details": { "png": "a.png", "value": 3 },
+            })
+        );
     }
 
     #[test]

@@ -224,7 +224,13 @@ fn bad_scene_files_exit_non_zero_naming_the_json_path_without_panic_or_output() 
         let out = optics(&["--json", "inspect", file.to_str().unwrap()]);
         assert_eq!(out.status.code(), Some(1), "{name}");
         let record: Value = serde_json::from_slice(&out.stdout).unwrap();
-        assert!(record["error"]["message"].as_str().unwrap().contains(needle), "{name}");
+        assert!(
+            record["error"]["message"]
+                .as_str()
+                .unwrap()
+                .contains(needle),
+            "{name}"
+        );
     }
 }
 

@@ -4,9 +4,9 @@
 //!
 //! | file | job |
 //! |---|---|
-//! | [`exercises`] | the exercises one can pose with other numbers: F0, Lambert, critical angle, Phong-Blinn |
-//! | [`statements`] | question 1, the true/false statements, with the laws' verdicts |
-//! | [`seed`] | the whole quiz worked, each answer checked against the printed one |
+//! | `exercises` | the exercises one can pose with other numbers: F0, Lambert, critical angle, Phong-Blinn |
+//! | `statements` | question 1, the true/false statements, with the laws' verdicts |
+//! | `seed` | the whole quiz worked, each answer checked against the printed one |
 
 mod exercises;
 mod seed;
