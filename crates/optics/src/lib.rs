@@ -3,8 +3,10 @@
 //!
 //! Every subcommand prints a record (the working and the answer) as text, or
 //! with `--json` as one JSON object whose fields the README documents.
-//! Errors name the argument that was wrong and exit with status 1 (2 for
-//! command-line syntax, as reported by the argument parser).
+//! Errors are typed ([`Error`], [`ErrorKind`]), name the argument that was
+//! wrong, come in the chosen language (with `--json` also as the object
+//! [`Error::to_json`] writes), and exit with status 1 (2 for command-line
+//! syntax, as reported by the argument parser).
 
 pub mod batch;
 pub mod error;
