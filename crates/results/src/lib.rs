@@ -97,8 +97,8 @@ impl Section {
     /// compared with the committed copy.
     pub fn deterministic(name: &str, command: &str, body: &str) -> Self {
         let lead = format!(
-            "Written by `{command}`; compared with this copy by the same command, \
-             which fails on any difference (`{WRITE_VAR}=1` rewrites it)."
+            "Written by `{command}`, which fails when this copy differs \
+             (`{WRITE_VAR}=1` rewrites it)."
         );
         Self::new(name, command, &lead, body, true)
     }
@@ -107,8 +107,7 @@ impl Section {
     /// never compared.
     pub fn measured(name: &str, command: &str, body: &str) -> Self {
         let lead = format!(
-            "Measured by `{command}` on {} on {}; timings belong to that machine \
-             and are not compared.",
+            "Measured by `{command}` on {}, {}; a timing of that machine, not compared.",
             machine(),
             today()
         );
