@@ -60,6 +60,11 @@ fn fresnel_matches_50_digit_reference_within_8_ulps() {
             }
         }
     }
+    let cases: Vec<String> = checks
+        .iter()
+        .map(|(law, check)| format!("{law} {}", check.cases))
+        .collect();
+    table += &format!("\nCases, both tiers: {}.\n", cases.join(", "));
     println!("{table}");
     for (law, check) in &checks {
         assert!(check.cases > 0, "no {law} cases");
