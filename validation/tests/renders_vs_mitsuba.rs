@@ -67,7 +67,7 @@ fn tracer_renders_agree_with_mitsuba() {
 /// and the path comparison's t-tests, in W/(sr m²) where a unit applies.
 fn scene_table(checks: &[Check]) -> String {
     let mut table = String::from(
-        "| scene | pixels compared | edge pixels masked | Whitted worst \\|Δ\\| | of the tolerance | Whitted mean \\|Δ\\| | path t-tests m | −log10 smallest p | threshold −log10 (α/m) | rejected | of them within Mitsuba's offsets (findings) |\n|---|---|---|---|---|---|---|---|---|---|---|\n",
+        "| scene | pixels compared | edge pixels masked | Whitted worst \\|Δ\\| | of the tolerance | Whitted mean \\|Δ\\| | path worst \\|Δ mean\\| | path t-tests m | −log10 smallest p | threshold −log10 (α/m) | rejected | of them within Mitsuba's offsets (findings) |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n",
     );
     let value =
         |check: &Check, name: &str| tables::number(check.worst(name).map_or(f64::NAN, |m| m.worst));
@@ -86,9 +86,10 @@ fn scene_table(checks: &[Check]) -> String {
         );
         let path_id = format!("renders.mitsuba.{scene}.path");
         table += &match checks.iter().find(|c| c.id == path_id) {
-            None => " not compared | | | | |\n".to_owned(),
+            None => " not compared | | | | | |\n".to_owned(),
             Some(path) => format!(
-                " {} | {} | {} | {} | {} |\n",
+                " {} | {} | {} | {} | {} | {} |\n",
+                value(path, "|mean ours − mean Mitsuba|, W/(sr m²)"),
                 value(path, "pixel-channel t-tests m"),
                 value(path, "−log10 smallest p"),
                 value(path, "−log10 (α/m), the threshold"),
