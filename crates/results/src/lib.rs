@@ -29,7 +29,7 @@ mod stamp;
 use std::path::{Path, PathBuf};
 use std::sync::Mutex;
 
-pub use stamp::{machine, today};
+pub use stamp::{load, machine, today};
 
 /// The environment variable that turns comparison into rewriting.
 pub const WRITE_VAR: &str = "RESULTS_WRITE";
@@ -106,8 +106,9 @@ impl Section {
     /// A timing: stamped with the command, this machine and today's date,
     /// never compared.
     pub fn measured(name: &str, command: &str, body: &str) -> Self {
+        let load = load().map_or(String::new(), |l| format!(" ({l})"));
         let lead = format!(
-            "Measured by `{command}` on {}, {}; a timing of that machine, not compared.",
+            "Measured by `{command}` on {}{load}, {}; a timing of that machine, not compared.",
             machine(),
             today()
         );

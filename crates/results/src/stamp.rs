@@ -20,6 +20,14 @@ pub fn machine() -> String {
     format!("{model}, {threads} threads")
 }
 
+/// The one-minute load average (from `/proc/loadavg` where there is one),
+/// e.g. `load average 1.93`: how busy the machine was as the timing ended.
+pub fn load() -> Option<String> {
+    let text = std::fs::read_to_string("/proc/loadavg").ok()?;
+    let one_minute = text.split_whitespace().next()?;
+    Some(format!("load average {one_minute}"))
+}
+
 /// Today's date in UTC, `YYYY-MM-DD`.
 pub fn today() -> String {
     let seconds = SystemTime::now()
