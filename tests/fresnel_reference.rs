@@ -34,8 +34,9 @@ fn fresnel_matches_50_digit_reference_within_8_ulps() {
         ),
         ("angles", mpmath::check_angles(&laws, &laws64, &reference)),
     ];
-    println!("| law | tier and quantity | worst (ulps) | at | worst (relative) | at |");
-    println!("|---|---|---|---|---|---|");
+    let mut table = String::from(
+        "| law | tier and quantity | worst (ulps) | at | worst (relative) | at |\n|---|---|---|---|---|---|\n",
+    );
     for (law, check) in &checks {
         for metric in check.metrics.iter().filter(|m| m.name.ends_with(" (ulps)")) {
             let quantity = metric.name.trim_end_matches(" (ulps)");
@@ -43,26 +44,37 @@ fn fresnel_matches_50_digit_reference_within_8_ulps() {
                 .worst(&format!("{quantity} (relative)"))
                 .expect("each quantity is measured in both units");
             let cell = |at: &str| at.replace('|', "\\|");
-            println!(
-                "| {law} | {quantity} | {:.2} | {} | {:.1e} | {} |",
+            table += &format!(
+                "| {law} | {quantity} | {:.2} | {} | {:.1e} | {} |\n",
                 metric.worst,
                 cell(&metric.at),
                 relative.worst,
                 cell(&relative.at)
             );
             if let Some(conditioned) = check.worst(&format!("{quantity} (ulps / (1 + cond_θ))")) {
-                println!(
-                    "| {law} | {quantity}, ulps / (1 + cond_θ) | {:.2} | {} | | |",
+                table += &format!(
+                    "| {law} | {quantity}, ulps / (1 + cond_θ) | {:.2} | {} | | |\n",
                     conditioned.worst,
                     cell(&conditioned.at)
                 );
             }
         }
     }
+    let cases: Vec<String> = checks
+        .iter()
+        .map(|(law, check)| format!("{law} {}", check.cases))
+        .collect();
+    table += &format!("\nCases, both tiers: {}.\n", cases.join(", "));
+    println!("{table}");
     for (law, check) in &checks {
         assert!(check.cases > 0, "no {law} cases");
         assert!(check.passed(), "{law}: {:#?}", check.failures);
     }
+    results::assert_settled(&results::Section::deterministic(
+        "fresnel-50-digits",
+        "cargo test -p suite-tests --test fresnel_reference",
+        &table,
+    ));
 }
 
 /// The textbook evaluation (pbrt-v4's `FrDielectric` shape), kept here only
@@ -111,8 +123,11 @@ fn textbook_formulas_lose_digits_where_the_reformulation_does_not() {
             worst_t = (err_t, &case.label);
         }
     }
-    println!("textbook R: worst {:.3e} ulps at {}", worst_r.0, worst_r.1);
-    println!("textbook T: worst {:.3e} ulps at {}", worst_t.0, worst_t.1);
+    let table = format!(
+        "| textbook law | worst (ulps) | at |\n|---|---|---|\n| R | {:.1e} | {} |\n| T = 1 − R | {:.1e} | {} |\n",
+        worst_r.0, worst_r.1, worst_t.0, worst_t.1
+    );
+    println!("{table}");
     assert!(
         worst_t.0 > 1e6,
         "the textbook T was expected to lose digits: {:.1} ulps",
@@ -123,6 +138,11 @@ fn textbook_formulas_lose_digits_where_the_reformulation_does_not() {
         "the textbook R was expected to lose digits: {:.1} ulps",
         worst_r.0
     );
+    results::assert_settled(&results::Section::deterministic(
+        "fresnel-textbook",
+        "cargo test -p suite-tests --test fresnel_reference",
+        &table,
+    ));
 }
 
 /// The reference itself is what the crate's conventions say: spot values

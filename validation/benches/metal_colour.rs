@@ -3,10 +3,13 @@
 //! gold), both ending in CIELAB. Read the ratio; the absolute times belong to
 //! the machine.
 
-use criterion::{black_box, criterion_group, criterion_main, Criterion};
+use criterion::{black_box, criterion_group, Criterion};
 use validation::metals::{MetalLaws, MetalsReference, COURSE_GOLD_KAPPA, COURSE_GOLD_N};
 use validation::reference::committed_dir;
 use validation::speed::{rgb_lab, spectral_lab};
+
+const SPECTRAL: &str = "gold colour, spectral (85 wavelengths)";
+const RGB: &str = "gold colour, course RGB (3 wavelengths)";
 
 fn metal_colour(c: &mut Criterion) {
     let reference = MetalsReference::load(&committed_dir()).expect("committed metals reference");
@@ -18,10 +21,10 @@ fn metal_colour(c: &mut Criterion) {
     let index = gold.index_on_grid().expect("gold covers 360-780 nm");
     let laws = MetalLaws::radiometry();
     let cos_60deg = 0.5;
-    c.bench_function("gold colour, spectral (85 wavelengths)", |b| {
+    c.bench_function(SPECTRAL, |b| {
         b.iter(|| spectral_lab(&laws, &index, black_box(cos_60deg)))
     });
-    c.bench_function("gold colour, course RGB (3 wavelengths)", |b| {
+    c.bench_function(RGB, |b| {
         b.iter(|| {
             rgb_lab(
                 &laws,
@@ -34,4 +37,34 @@ fn metal_colour(c: &mut Criterion) {
 }
 
 criterion_group!(benches, metal_colour);
-criterion_main!(benches);
+
+fn main() {
+    let run = results::criterion::Run::start();
+    benches();
+    Criterion::default().configure_from_args().final_summary();
+    if let Some(run) = run {
+        record(&run);
+    }
+}
+
+/// The section `metal-colour-speed` of `docs/results.md`.
+fn record(run: &results::criterion::Run) {
+    let (spectral, rgb) = match run.estimates(&[SPECTRAL.into(), RGB.into()]) {
+        Ok(e) => (e[0].mean_ns, e[1].mean_ns),
+        Err(e) => return eprintln!("docs/results.md not updated: {e}"),
+    };
+    let table = format!(
+        "| gold's colour at 60°, to CIELAB | time per colour |\n|---|---|\n\
+         | {SPECTRAL} | {spectral:.0} ns |\n| {RGB} | {rgb:.0} ns |\n\
+         | ratio | {:.1}× |\n",
+        spectral / rgb
+    );
+    let section = results::Section::measured(
+        "metal-colour-speed",
+        "cargo bench -p validation --bench metal_colour",
+        &table,
+    );
+    if let Err(e) = results::settle(&section) {
+        eprintln!("docs/results.md not updated: {e}");
+    }
+}

@@ -3,6 +3,8 @@
 //! `.venv/bin/python python-checks/colorimetry.py`). Tolerances are stated in
 //! `validation::colorimetry`. Run with `--nocapture` for the table.
 
+mod tables;
+
 use radiometry::colour::{self, Lab};
 use validation::colorimetry::{self, Colorimetry, ColourLaws};
 use validation::reference::committed_dir;
@@ -24,6 +26,11 @@ fn colorimetry_agrees_with_colour_science() {
     let failures: Vec<_> = checks.iter().flat_map(|c| &c.failures).collect();
     assert!(failures.is_empty(), "{failures:#?}");
     assert!(checks.iter().all(Check::passed));
+    results::assert_settled(&results::Section::deterministic(
+        "colour-vs-colour-science",
+        "cargo test -p validation --test colorimetry_vs_colour_science",
+        &tables::metrics(&checks),
+    ));
 }
 
 /// The CIE 1976 difference, the Euclidean distance in CIELAB, in place of

@@ -4,6 +4,8 @@
 //! rule that tells a failure of ours from a finding about Mitsuba are stated
 //! in `validation::laws`. Run with `--nocapture` for the table.
 
+mod tables;
+
 use validation::laws::{self, Laws, MitsubaLaws};
 use validation::reference::committed_dir;
 
@@ -26,4 +28,9 @@ fn radiometry_laws_agree_with_mitsuba_and_the_exact_values() {
     let failures: Vec<_> = checks.iter().flat_map(|c| &c.failures).collect();
     assert!(failures.is_empty(), "{failures:#?}");
     assert!(checks.iter().all(|c| c.passed()));
+    results::assert_settled(&results::Section::deterministic(
+        "laws-vs-mitsuba",
+        "cargo test -p validation --test laws_vs_mitsuba",
+        &tables::metrics(&checks),
+    ));
 }

@@ -4,6 +4,8 @@
 //! `.venv/bin/python python-checks/metals.py`). Run with `--nocapture` for
 //! the ΔE00 table.
 
+mod tables;
+
 use validation::metals::{self, MetalLaws, MetalsReference};
 use validation::reference::committed_dir;
 
@@ -19,17 +21,22 @@ fn spectral_metal_colours_agree_with_colour_science() {
     }
     assert!(check.passed(), "{:#?}", check.failures);
     assert_eq!(check.cases, 4 * 5, "four metals at five angles");
+    results::assert_settled(&results::Section::deterministic(
+        "metals-vs-colour-science",
+        "cargo test -p validation --test metals_vs_colour_science",
+        &tables::metrics(std::slice::from_ref(&check)),
+    ));
 }
 
 #[test]
 fn shortcut_colour_errors_are_measured_for_every_metal() {
     let rows = metals::shortcut_colours(&MetalLaws::radiometry(), &reference());
-    println!("| metal | shortcut | worst ΔE00 | at |");
-    println!("|---|---|---|---|");
+    let mut table = String::from("| metal | shortcut | worst ΔE00 | at |\n|---|---|---|---|\n");
     let worst = metals::worst_delta_e(&rows);
     for (metal, method, de, angle) in &worst {
-        println!("| {metal} | {method} | {de:.2} | {angle}° |");
+        table += &format!("| {metal} | {method} | {de:.2} | {angle}° |\n");
     }
+    println!("{table}");
     // Four shortcuts per metal, and the course's RGB for gold.
     assert_eq!(worst.len(), 4 * 4 + 1);
     assert!(worst.iter().all(|w| w.2.is_finite()));
@@ -46,6 +53,11 @@ fn shortcut_colour_errors_are_measured_for_every_metal() {
     for row in at_normal {
         assert!(row.delta_e_2000 < 1e-9, "{row:?}");
     }
+    results::assert_settled(&results::Section::deterministic(
+        "metal-shortcuts",
+        "cargo test -p validation --test metals_vs_colour_science",
+        &table,
+    ));
 }
 
 #[test]

@@ -4,6 +4,8 @@
 //! stopped after one bounce are caught; a damaged reference is refused with
 //! its field named.
 
+mod tables;
+
 use tracer::integrator::Settings;
 use tracer::render::Image;
 use tracer::scene::{IntegratorKind, Light, Scene};
@@ -54,6 +56,52 @@ fn tracer_renders_agree_with_mitsuba() {
     for c in &checks {
         assert!(c.passed(), "{}: {:#?}", c.id, c.failures);
     }
+    results::assert_settled(&results::Section::deterministic(
+        "renders-vs-mitsuba",
+        "cargo test -p validation --test renders_vs_mitsuba",
+        &scene_table(&checks),
+    ));
+}
+
+/// One row per scene: the Whitted comparison's worst and mean difference,
+/// and the path comparison's t-tests, in W/(sr m²) where a unit applies.
+fn scene_table(checks: &[Check]) -> String {
+    let mut table = String::from(
+        "| scene | pixels compared | edge pixels masked | Whitted worst \\|Δ\\| | of the tolerance | Whitted mean \\|Δ\\| | path worst \\|Δ mean\\| | path t-tests m | −log10 smallest p | threshold −log10 (α/m) | rejected | of them within Mitsuba's offsets (findings) |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n",
+    );
+    let value =
+        |check: &Check, name: &str| tables::number(check.worst(name).map_or(f64::NAN, |m| m.worst));
+    for whitted in checks.iter().filter(|c| c.id.ends_with(".whitted")) {
+        let scene = whitted
+            .id
+            .trim_start_matches("renders.mitsuba.")
+            .trim_end_matches(".whitted");
+        table += &format!(
+            "| `{scene}` | {} | {} | {} | {} | {} |",
+            whitted.cases,
+            value(whitted, "masked edge pixels"),
+            value(whitted, "|ours − Mitsuba|, W/(sr m²)"),
+            value(whitted, "|ours − Mitsuba| / tolerance"),
+            value(whitted, "mean |ours − Mitsuba|, W/(sr m²)"),
+        );
+        let path_id = format!("renders.mitsuba.{scene}.path");
+        table += &match checks.iter().find(|c| c.id == path_id) {
+            None => " not compared | | | | | |\n".to_owned(),
+            Some(path) => format!(
+                " {} | {} | {} | {} | {} | {} |\n",
+                value(path, "|mean ours − mean Mitsuba|, W/(sr m²)"),
+                value(path, "pixel-channel t-tests m"),
+                value(path, "−log10 smallest p"),
+                value(path, "−log10 (α/m), the threshold"),
+                value(path, "tests rejected"),
+                value(
+                    path,
+                    "rejected within Mitsuba's ray-offset sensitivity (findings)"
+                ),
+            ),
+        };
+    }
+    table
 }
 
 /// The tracer with every light's power doubled.

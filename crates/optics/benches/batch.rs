@@ -4,7 +4,7 @@
 //! `cargo bench -p optics --bench batch`; criterion prints elements/s, the
 //! lines per second (one element is one line).
 
-use criterion::{criterion_group, criterion_main, BatchSize, Criterion, Throughput};
+use criterion::{criterion_group, BatchSize, Criterion, Throughput};
 use optics::batch::{self, BatchArgs};
 use optics::lang::Lang;
 
@@ -56,4 +56,36 @@ fn batch_throughput(c: &mut Criterion) {
 }
 
 criterion_group!(benches, batch_throughput);
-criterion_main!(benches);
+
+fn main() {
+    let run = results::criterion::Run::start();
+    benches();
+    Criterion::default().configure_from_args().final_summary();
+    if let Some(run) = run {
+        record(&run);
+    }
+}
+
+/// The section `batch-throughput` of `docs/results.md`.
+fn record(run: &results::criterion::Run) {
+    let per_second = match run.estimates(&["batch/mixed_laws_100k_lines".into()]) {
+        Ok(e) => e[0]
+            .per_second()
+            .expect("the bench declares its throughput"),
+        Err(e) => return eprintln!("docs/results.md not updated: {e}"),
+    };
+    let table = format!(
+        "| requests | lines per second | 10⁶ lines |\n|---|---|---|\n\
+         | mixed: fresnel exact and Schlick, refract, shade, each with its working; parsing and writing included | {:.0} thousand | {:.1} s |\n",
+        per_second / 1e3,
+        1e6 / per_second
+    );
+    let section = results::Section::measured(
+        "batch-throughput",
+        "cargo bench -p optics --bench batch",
+        &table,
+    );
+    if let Err(e) = results::settle(&section) {
+        eprintln!("docs/results.md not updated: {e}");
+    }
+}

@@ -5,11 +5,18 @@
 //! Run: `cargo bench -p radiometry --bench fresnel`. Each benchmark evaluates
 //! the law over the same 1024 angles, so times compare directly.
 
-use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
+use criterion::{black_box, criterion_group, BenchmarkId, Criterion, Throughput};
 use radiometry::fresnel::{conductor, dielectric, f0, schlick, schlick_dielectric};
 use radiometry::Real;
 
 const ANGLES: usize = 1024;
+const LAWS: [&str; 5] = [
+    "dielectric_exact",
+    "dielectric_schlick",
+    "dielectric_schlick_both_sides",
+    "conductor_exact",
+    "conductor_schlick",
+];
 
 /// Cosines spread over both sides of the interface.
 fn cosines<T: Real>() -> Vec<T> {
@@ -49,4 +56,43 @@ fn benches(c: &mut Criterion) {
 }
 
 criterion_group!(fresnel, benches);
-criterion_main!(fresnel);
+
+fn main() {
+    let run = results::criterion::Run::start();
+    fresnel();
+    Criterion::default().configure_from_args().final_summary();
+    if let Some(run) = run {
+        record(&run);
+    }
+}
+
+/// The section `fresnel-speed` of `docs/results.md`: time per evaluation.
+fn record(run: &results::criterion::Run) {
+    let ids: Vec<String> = ["f32", "f64"]
+        .iter()
+        .flat_map(|tier| LAWS.map(|law| format!("fresnel_{tier}/{law}")))
+        .collect();
+    let estimates = match run.estimates(&ids) {
+        Ok(e) => e,
+        Err(e) => return eprintln!("docs/results.md not updated: {e}"),
+    };
+    let fma = if cfg!(target_feature = "fma") {
+        "hardware"
+    } else {
+        "software"
+    };
+    let mut table = format!("Fused multiply-add: {fma}.\n\n| law | f32 | f64 |\n|---|---|---|\n");
+    for (k, law) in LAWS.iter().enumerate() {
+        let per = |e: &results::criterion::Estimate| e.mean_ns / ANGLES as f64;
+        let (f32_, f64_) = (per(&estimates[k]), per(&estimates[k + LAWS.len()]));
+        table += &format!("| {law} | {f32_:.1} ns | {f64_:.1} ns |\n");
+    }
+    let section = results::Section::measured(
+        "fresnel-speed",
+        "cargo bench -p radiometry --bench fresnel",
+        &table,
+    );
+    if let Err(e) = results::settle(&section) {
+        eprintln!("docs/results.md not updated: {e}");
+    }
+}

@@ -4,7 +4,10 @@
 //! Run: `cargo run --release -p radiometry --example schlick_error`
 //!
 //! The bounds asserted by the test `schlick_stays_within_measured_bound` are
-//! this program's output, rounded up.
+//! this program's output, rounded up. The table is the section
+//! `schlick-accuracy` of `docs/results.md`: the program (and `cargo test`,
+//! which builds it as a test) fails when the committed copy differs, and
+//! rewrites it under `RESULTS_WRITE=1`.
 
 use radiometry::fresnel::{conductor, dielectric, f0, schlick, schlick_dielectric};
 
@@ -41,11 +44,31 @@ fn worst(exact: impl Fn(f64) -> f64, approx: impl Fn(f64) -> f64) -> Worst {
 }
 
 fn main() {
-    println!("| material | light arrives | Schlick form | max |F_schlick - F_exact| | at θ_i | exact | Schlick |");
-    println!("|---|---|---|---|---|---|---|");
-    let row = |name: &str, side: &str, form: &str, w: Worst| {
-        println!(
-            "| {name} | {side} | {form} | {:.4} | {:.2}° | {:.4} | {:.4} |",
+    let table = table();
+    println!("{table}");
+    results::assert_settled(&section(&table));
+}
+
+fn section(table: &str) -> results::Section {
+    results::Section::deterministic(
+        "schlick-accuracy",
+        "cargo run --release -p radiometry --example schlick_error",
+        table,
+    )
+}
+
+#[test]
+fn committed_table_is_current() {
+    results::assert_settled(&section(&table()));
+}
+
+fn table() -> String {
+    let mut table = String::from(
+        "| material | light arrives | Schlick form | max \\|F_schlick − F_exact\\| | at θ_i | exact | Schlick |\n|---|---|---|---|---|---|---|\n",
+    );
+    let mut row = |name: &str, side: &str, form: &str, w: Worst| {
+        table += &format!(
+            "| {name} | {side} | {form} | {:.4} | {:.2}° | {:.4} | {:.4} |\n",
             w.abs_error, w.theta_deg, w.exact, w.approx
         );
     };
@@ -87,4 +110,5 @@ fn main() {
             worst(|c| conductor(c, n, kappa), |c| schlick(c, f0)),
         );
     }
+    table
 }

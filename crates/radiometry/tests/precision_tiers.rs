@@ -16,9 +16,19 @@ use radiometry::specular::{reflect, refract};
 
 const EPS: f64 = f32::EPSILON as f64;
 
-fn header() {
-    println!("| law | worst \\|f32 − f64\\| | at |");
-    println!("|---|---|---|");
+/// The table of worst differences, printed and settled against its section
+/// of `docs/results.md`.
+fn settle(section: &str, rows: &[&Worst]) {
+    let mut table = String::from("| law | worst \\|f32 − f64\\| | at |\n|---|---|---|\n");
+    for w in rows {
+        table += &w.row();
+    }
+    println!("{table}");
+    results::assert_settled(&results::Section::deterministic(
+        section,
+        "cargo test -p radiometry --test precision_tiers",
+        &table,
+    ));
 }
 
 /// The worst value of one measured difference and where it occurred.
@@ -47,13 +57,13 @@ impl Worst {
         }
     }
 
-    fn print(&self) {
+    fn row(&self) -> String {
         let value = if self.unit == "relative" {
             format!("{:.1e}", self.value)
         } else {
             format!("{:.2}", self.value)
         };
-        println!("| {} | {value} {} | {} |", self.law, self.unit, self.at);
+        format!("| {} | {value} {} | {} |\n", self.law, self.unit, self.at)
     }
 }
 
@@ -94,7 +104,6 @@ const INDICES: [f32; 5] = [1.333, 1.5, 2.42, 1.0 / 1.5, 1.0001];
 /// where the value is not subnormal.
 #[test]
 fn f32_fresnel_is_within_8_f32_ulps_of_f64() {
-    header();
     let mut r = Worst::new("dielectric R", "f32 ulps");
     let mut t = Worst::new("dielectric T", "f32 ulps");
     let mut rel = Worst::new("dielectric R and T", "relative");
@@ -140,9 +149,6 @@ fn f32_fresnel_is_within_8_f32_ulps_of_f64() {
             });
         }
     }
-    for w in [&r, &t, &rel, &metal, &schlick_diff] {
-        w.print();
-    }
     for w in [&r, &t, &metal, &schlick_diff] {
         assert!(
             w.value <= 8.0,
@@ -154,6 +160,7 @@ fn f32_fresnel_is_within_8_f32_ulps_of_f64() {
         );
     }
     assert!(rel.value <= 16.0 * EPS, "{} at {}", rel.value, rel.at);
+    settle("f32-fresnel", &[&r, &t, &rel, &metal, &schlick_diff]);
 }
 
 /// Mirror and refracted directions, component by component, in units of ε.
@@ -167,7 +174,6 @@ fn f32_fresnel_is_within_8_f32_ulps_of_f64() {
 /// most √ε, so the bound is capped at 2√ε.
 #[test]
 fn f32_directions_are_within_rounding_of_f64() {
-    header();
     let mut mirror = Worst::new("reflect, per component", "ε");
     let mut bent = Worst::new("refract, per component", "ε");
     let mut bent_vs_bound = Worst::new("refract, error / bound", "of the bound");
@@ -196,9 +202,6 @@ fn f32_directions_are_within_rounding_of_f64() {
             }
         }
     }
-    for w in [&mirror, &bent, &bent_vs_bound] {
-        w.print();
-    }
     assert!(mirror.value <= 4.0, "{} ε at {}", mirror.value, mirror.at);
     assert!(
         bent_vs_bound.value <= 1.0,
@@ -206,6 +209,7 @@ fn f32_directions_are_within_rounding_of_f64() {
         bent_vs_bound.value,
         bent_vs_bound.at
     );
+    settle("f32-directions", &[&mirror, &bent, &bent_vs_bound]);
 }
 
 /// BRDFs and the point light, relative. The half vector and the cosines carry
@@ -217,7 +221,6 @@ fn f32_directions_are_within_rounding_of_f64() {
 /// an absolute quantity: relative to its own value it is unbounded at grazing).
 #[test]
 fn f32_brdfs_and_lights_are_within_rounding_of_f64() {
-    header();
     let mut lambert = Worst::new("Lambert", "ε relative");
     let mut blinn = Worst::new("Blinn-Phong (course), error / bound", "of the bound");
     let mut reciprocal = Worst::new("Blinn-Phong reciprocal, error / bound", "of the bound");
@@ -291,9 +294,6 @@ fn f32_brdfs_and_lights_are_within_rounding_of_f64() {
             );
         }
     }
-    for w in [&lambert, &blinn, &reciprocal, &light] {
-        w.print();
-    }
     assert!(lambert.value <= 1.0, "{}", lambert.value);
     assert!(
         blinn.value <= 1.0,
@@ -308,4 +308,5 @@ fn f32_brdfs_and_lights_are_within_rounding_of_f64() {
         reciprocal.at
     );
     assert!(light.value <= 8.0, "{} ε at {}", light.value, light.at);
+    settle("f32-brdfs-lights", &[&lambert, &blinn, &reciprocal, &light]);
 }

@@ -6,7 +6,7 @@
 
 use std::path::Path;
 
-use criterion::{criterion_group, criterion_main, Criterion, Throughput};
+use criterion::{criterion_group, Criterion, Throughput};
 use tracer::integrator::Settings;
 use tracer::needs;
 use tracer::render::render;
@@ -24,6 +24,15 @@ const SCENES: [&str; 9] = [
     "webgl_seven_spheres",
 ];
 
+/// The integrators each scene is benched with, and their samples per pixel.
+fn runs(name: &str) -> [(IntegratorKind, u32); 2] {
+    if name == "kaleidoscope_lit" || name == "webgl_seven_spheres" {
+        [(IntegratorKind::Whitted, 1), (IntegratorKind::Path, 4)]
+    } else {
+        [(IntegratorKind::Whitted, 1), (IntegratorKind::Course, 1)]
+    }
+}
+
 fn rays_per_second(c: &mut Criterion) {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../validation/scenes");
     let mut group = c.benchmark_group("rays");
@@ -32,11 +41,7 @@ fn rays_per_second(c: &mut Criterion) {
         let scene = scene::load(&dir.join(format!("{name}.json")))
             .expect("course scene")
             .resized(160, 120);
-        let mut runs = vec![(IntegratorKind::Whitted, 1), (IntegratorKind::Course, 1)];
-        if name == "kaleidoscope_lit" || name == "webgl_seven_spheres" {
-            runs = vec![(IntegratorKind::Whitted, 1), (IntegratorKind::Path, 4)];
-        }
-        for (integrator, spp) in runs {
+        for (integrator, spp) in runs(name) {
             let settings = Settings {
                 integrator,
                 spp,
@@ -59,4 +64,38 @@ fn rays_per_second(c: &mut Criterion) {
 }
 
 criterion_group!(benches, rays_per_second);
-criterion_main!(benches);
+
+fn main() {
+    let run = results::criterion::Run::start();
+    benches();
+    Criterion::default().configure_from_args().final_summary();
+    if let Some(run) = run {
+        record(&run);
+    }
+}
+
+/// The section `tracer-rays` of `docs/results.md`: millions of rays per
+/// second per scene and integrator.
+fn record(run: &results::criterion::Run) {
+    let mut table = String::from("| scene | whitted | other |\n|---|---|---|\n");
+    for name in SCENES {
+        let [(_, _), (other, _)] = runs(name);
+        let ids = runs(name).map(|(integrator, _)| format!("rays/{name}/{integrator}"));
+        let rates = match run.estimates(&ids) {
+            Ok(e) => e
+                .iter()
+                .map(|e| e.per_second().unwrap_or(f64::NAN) / 1e6)
+                .collect::<Vec<_>>(),
+            Err(e) => return eprintln!("docs/results.md not updated: {e}"),
+        };
+        table += &format!("| `{name}` | {:.1} | {other} {:.1} |\n", rates[0], rates[1]);
+    }
+    let section = results::Section::measured(
+        "tracer-rays",
+        "cargo bench -p tracer --bench rays",
+        &format!("Millions of rays per second, one thread, 160 × 120.\n\n{table}"),
+    );
+    if let Err(e) = results::settle(&section) {
+        eprintln!("docs/results.md not updated: {e}");
+    }
+}

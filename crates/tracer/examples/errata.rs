@@ -8,6 +8,10 @@
 //! difference, then the mean and the largest over the image; and the share
 //! of pixels whose 8-bit sRGB value changes by more than 2 levels in any
 //! channel (visible side by side). Renders are 320 × 240.
+//!
+//! The table is the section `errata-images` of `docs/results.md`: the
+//! program (and `cargo test`, which builds it as a test) fails when the
+//! committed copy differs, and rewrites it under `RESULTS_WRITE=1`.
 
 use std::path::Path;
 
@@ -33,23 +37,43 @@ fn visible_share(a: &Image, b: &Image) -> f64 {
     changed as f64 / (a8.len() / 3) as f64
 }
 
-fn row(what: &str, scene_name: &str, a: &Image, b: &Image) {
+fn row(what: &str, scene_name: &str, a: &Image, b: &Image) -> String {
     let (mean, max) = a.difference(b);
-    println!(
-        "| {what} | {scene_name} | {mean:.4} | {max:.4} | {:.1} % |",
+    format!(
+        "| {what} | {scene_name} | {mean:.4} | {max:.4} | {:.1} % |\n",
         100.0 * visible_share(a, b)
-    );
+    )
 }
 
 fn main() {
+    let table = table();
+    println!("{table}");
+    results::assert_settled(&section(&table));
+}
+
+fn section(table: &str) -> results::Section {
+    results::Section::deterministic(
+        "errata-images",
+        "cargo run --release -p tracer --example errata",
+        table,
+    )
+}
+
+#[test]
+fn committed_table_is_current() {
+    results::assert_settled(&section(&table()));
+}
+
+fn table() -> String {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../validation/scenes");
     let load = |name: &str| {
         scene::load(&dir.join(format!("{name}.json")))
             .expect("course scene")
             .resized(320, 240)
     };
-    println!("| erratum | scene | mean diff | max diff | pixels visibly changed |");
-    println!("|---|---|---|---|---|");
+    let mut table = String::from(
+        "| erratum | scene | mean diff | max diff | pixels visibly changed |\n|---|---|---|---|---|\n",
+    );
     // The course's shader only has the directional light of these scenes.
     for name in [
         "diffuse",
@@ -67,7 +91,7 @@ fn main() {
             integrator: IntegratorKind::Course,
             ..physical
         };
-        row(
+        table += &row(
             "whole course shader vs whitted",
             name,
             &draw(&scene, &course),
@@ -90,23 +114,24 @@ fn main() {
             ..exact
         };
         let reference = draw(&scene, &exact);
-        row(
+        table += &row(
             "Fresnel cos⁵θ alone",
             name,
             &draw(&scene, &reversed),
             &reference,
         );
-        row(
+        table += &row(
             "Schlick for exact (not an erratum)",
             name,
             &draw(&scene, &schlick),
             &reference,
         );
-        row(
+        table += &row(
             "fixed EPSILON 0.001 alone",
             name,
             &draw(&scene, &fixed),
             &reference,
         );
     }
+    table
 }
