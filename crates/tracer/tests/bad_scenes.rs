@@ -2,7 +2,7 @@
 //! of the bad value and says what was expected; none panics.
 
 use serde_json::{json, Value};
-use tracer::scene::{self, SceneError};
+use tracer::scene::{self, ErrorKind};
 
 fn good() -> Value {
     json!({
@@ -212,6 +212,6 @@ fn bad_scenes_are_refused_with_the_path_of_the_bad_value() {
 #[test]
 fn a_missing_file_is_named() {
     let err = scene::load(std::path::Path::new("no/such/scene.json")).unwrap_err();
-    assert!(matches!(err, SceneError::Io { .. }));
+    assert!(matches!(err.kind(), ErrorKind::Read { .. }));
     assert!(err.to_string().contains("no/such/scene.json"));
 }

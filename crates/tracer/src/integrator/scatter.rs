@@ -1,0 +1,162 @@
+//! The shared scatter step: what a hit's material does with light, asked
+//! once per hit by every physical integrator (as pbrt's and tray_rust's
+//! integrators ask the BSDF) instead of each matching on the material.
+//!
+//! A material is unlit (it shows a radiance), rough (lit by the lights, see
+//! [`super::direct`]) or smooth; a smooth one hands over its [`Lobes`]: the
+//! mirror lobe and, through a dielectric, the refracted one, each with its
+//! ray and its weight. The side of the surface, the Fresnel law and the
+//! radiance carried across the interface are decided here, once.
+
+use glam::Vec3;
+use radiometry::{course, fresnel, radiance, specular};
+
+use super::Tracer;
+use crate::geometry::{Hit, Ray};
+use crate::scene::{FresnelModel, Material};
+use crate::spawn;
+
+/// What kind of secondary ray leaves a surface.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Bounce {
+    /// A sampled direction off a rough surface (the path tracer's).
+    Diffuse,
+    /// The mirror direction.
+    Reflection,
+    /// Through a dielectric interface.
+    Refraction,
+}
+
+/// What a surface does with the light that reaches it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Surface {
+    /// Unlit: it shows this radiance, whatever lights it.
+    Shows(Vec3),
+    /// Rough: shaded from the lights and the ambient term by its BRDF.
+    Rough,
+    /// Smooth: light leaves only along its [`Lobes`].
+    Smooth,
+}
+
+impl Material {
+    /// What this material does with light at `hit`.
+    pub fn surface(&self, hit: &Hit) -> Surface {
+        match *self {
+            Material::Flat { radiance } => Surface::Shows(radiance),
+            Material::NormalColour => Surface::Shows(hit.normal * 0.5 + 0.5),
+            Material::CourseRough { .. } | Material::Lambert { .. } => Surface::Rough,
+            Material::Conductor { .. } | Material::Dielectric { .. } => Surface::Smooth,
+        }
+    }
+}
+
+/// One way light leaves a smooth surface.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Lobe {
+    /// Its kind.
+    pub bounce: Bounce,
+    /// The secondary ray, started off the surface on the side it travels into.
+    pub ray: Ray,
+    /// Radiance arriving along the ray times this is the radiance it
+    /// carries back along the incident ray, per channel.
+    pub weight: Vec3,
+}
+
+/// The lobes of a smooth surface.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Lobes {
+    /// The mirror lobe, weighted by the Fresnel reflectance.
+    pub reflection: Lobe,
+    /// Through a dielectric, the refracted lobe (weighted by the
+    /// transmittance and the radiance's `1/η²`) and the reflectance `R`
+    /// that splits the light between the two; `None` at a conductor and
+    /// under total internal reflection.
+    pub refraction: Option<(Lobe, f32)>,
+}
+
+impl Tracer<'_> {
+    /// The lobes of the smooth material at `hit`, seen along `wo` (towards
+    /// the viewer) with `n` the hit's shading normal.
+    pub(crate) fn lobes(&self, hit: &Hit, n: Vec3, wo: Vec3, material: &Material) -> Lobes {
+        match *material {
+            Material::Dielectric { eta } => self.dielectric_lobes(hit, n, wo, eta),
+            Material::Conductor { n: eta, kappa } => {
+                let facing = if n.dot(wo) < 0.0 { -n } else { n };
+                let weight = self.conductor_fresnel(facing.dot(wo), eta, kappa);
+                let ray = Ray::new(
+                    spawn::origin(hit, facing, self.settings.ray_offset),
+                    specular::reflect(wo, facing),
+                );
+                Lobes {
+                    reflection: mirror(ray, weight),
+                    refraction: None,
+                }
+            }
+            _ => unreachable!("only smooth materials have lobes"),
+        }
+    }
+
+    fn dielectric_lobes(&self, hit: &Hit, n: Vec3, wo: Vec3, eta: f32) -> Lobes {
+        let cos_o = n.dot(wo);
+        let outward = if cos_o >= 0.0 { n } else { -n };
+        let (reflectance, transmittance) = self.dielectric_fresnel(cos_o, eta);
+        let reflected = Ray::new(
+            spawn::origin(hit, outward, self.settings.ray_offset),
+            specular::reflect(wo, n),
+        );
+        let refraction = specular::refract(wo, n, eta).map(|t| {
+            let lobe = Lobe {
+                bounce: Bounce::Refraction,
+                ray: Ray::new(
+                    spawn::origin(hit, -outward, self.settings.ray_offset),
+                    t.direction,
+                ),
+                weight: Vec3::splat(radiance::across_interface(transmittance, t.eta_path)),
+            };
+            (lobe, reflectance)
+        });
+        Lobes {
+            reflection: mirror(reflected, Vec3::splat(reflectance)),
+            refraction,
+        }
+    }
+
+    /// Conductor reflectance per channel at `cos_i`, by the chosen law.
+    fn conductor_fresnel(&self, cos_i: f32, n: [f32; 3], kappa: [f32; 3]) -> Vec3 {
+        Vec3::from_array(match self.settings.fresnel {
+            FresnelModel::Exact => fresnel::conductor_rgb(cos_i, n, kappa),
+            FresnelModel::Schlick => fresnel::schlick_rgb(cos_i, fresnel::f0_rgb(n, kappa)),
+            FresnelModel::Course => {
+                let f0 = fresnel::f0_rgb(n, kappa);
+                core::array::from_fn(|c| course::fresnel_000_glsl(f0[c], cos_i))
+            }
+        })
+    }
+
+    /// Dielectric reflectance and transmittance at signed `cos_i`.
+    fn dielectric_fresnel(&self, cos_i: f32, eta: f32) -> (f32, f32) {
+        match self.settings.fresnel {
+            FresnelModel::Exact => {
+                let f = fresnel::dielectric_polarized(cos_i, eta);
+                (f.reflectance(), f.transmittance())
+            }
+            FresnelModel::Schlick => {
+                let r = fresnel::schlick_dielectric(cos_i, eta);
+                (r, 1.0 - r)
+            }
+            // The course has no glass; its formula with the incident cosine.
+            FresnelModel::Course => {
+                let r = course::fresnel_000_glsl(fresnel::f0(eta, 0.0), cos_i.abs());
+                (r, 1.0 - r)
+            }
+        }
+    }
+}
+
+fn mirror(ray: Ray, weight: Vec3) -> Lobe {
+    Lobe {
+        bounce: Bounce::Reflection,
+        ray,
+        weight,
+    }
+}
