@@ -4,9 +4,8 @@
 //! stopped after one bounce are caught; a damaged reference is refused with
 //! its field named.
 
-use tracer::integrator::Settings;
 use tracer::render::Image;
-use tracer::scene::{IntegratorKind, Light, Scene};
+use tracer::scene::{IntegratorKind, Light, Scene, Settings};
 use validation::reference::{committed_dir, ReferenceError};
 use validation::renders::{self, MitsubaRenders, RenderChecks, Renderer};
 use validation::Check;

@@ -5,11 +5,11 @@ use std::path::PathBuf;
 
 use serde_json::json;
 use tracer::integrator::Machinery;
-use tracer::needs::{self, ReflectionDepth};
-use tracer::render;
+use tracer::needs::ReflectionDepth;
+use tracer::render::Rendered;
 
 use crate::lang::say;
-use crate::render::{prepare, Integrator};
+use crate::render::JobArgs;
 use crate::Ui;
 
 #[derive(clap::Args, Debug)]
@@ -24,36 +24,23 @@ change a pixel.")]
 pub struct InspectArgs {
     /// The scene file (JSON).
     pub scene: PathBuf,
-    /// Light transport to inspect for (default: the scene's).
-    #[arg(long, value_enum)]
-    pub integrator: Option<Integrator>,
-    /// Samples per pixel to inspect for.
-    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=tracer::scene::MAX_SPP as i64))]
-    pub spp: Option<u32>,
-    /// Width of the measuring renders, pixels.
-    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=tracer::scene::MAX_IMAGE_SIDE as i64))]
-    pub width: Option<u32>,
-    /// Height of the measuring renders, pixels.
-    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=tracer::scene::MAX_IMAGE_SIDE as i64))]
-    pub height: Option<u32>,
+    /// The settings to inspect for, over the scene's; --width and
+    /// --height size the measuring renders.
+    #[command(flatten)]
+    pub job: JobArgs,
 }
 
 pub fn run(args: &InspectArgs, ui: &Ui) -> anyhow::Result<()> {
-    let (scene, mut settings) = prepare(&args.scene, args.width, args.height)?;
-    if let Some(i) = args.integrator {
-        settings.integrator = i.into();
-    }
-    settings.spp = args.spp.unwrap_or(settings.spp);
-    needs::check_integrator(&scene, &settings)?;
-    let needs = needs::analyse(&scene, &settings);
-    let lean = needs.machinery(&settings);
-    let everything = Machinery::everything(&scene, &settings);
+    let job = args.job.job(&args.scene)?;
+    let (scene, settings, needs) = (job.scene(), job.settings(), job.needs());
+    let lean = job.machinery().clone();
+    let everything = job.everything();
     let quiet = |_: usize| {};
     // Best of three, so that the time differences are not scheduling noise.
-    let measure = |machinery: &Machinery| -> anyhow::Result<render::Rendered> {
-        let mut best = render::render(&scene, &settings, machinery, None, &quiet)?;
+    let measure = |machinery: &Machinery| -> anyhow::Result<Rendered> {
+        let mut best = job.render_with(machinery, None, &quiet)?;
         for _ in 0..2 {
-            let again = render::render(&scene, &settings, machinery, None, &quiet)?;
+            let again = job.render_with(machinery, None, &quiet)?;
             if again.elapsed < best.elapsed {
                 best = again;
             }
@@ -217,7 +204,7 @@ pub fn run(args: &InspectArgs, ui: &Ui) -> anyhow::Result<()> {
             base.rays.total()
         ),
     ];
-    steps.extend(crate::render::steps(&needs, &lean, &settings, lang));
+    steps.extend(crate::render::steps(needs, &lean, settings, lang));
     steps.extend(lines);
     if ui.json {
         println!(
