@@ -134,7 +134,7 @@ impl FresnelArgs {
 
         let incidence = Incidence::resolve(cos_i, eta)
             .expect("cos_i and eta were validated by radiometry::domain above");
-        let theta_deg = incidence.cos_i.acos().to_degrees();
+        let theta_deg = incidence.abs_cos_i.acos().to_degrees();
         if kappa > 0.0 {
             record.step(say!(
                 lang,
@@ -160,7 +160,7 @@ impl FresnelArgs {
         }
         record.step(format!(
             "|cos θi| = {}, θi = {}°",
-            number(incidence.cos_i),
+            number(incidence.abs_cos_i),
             number(theta_deg)
         ));
 
@@ -179,7 +179,7 @@ impl FresnelArgs {
                         lang,
                         "Snell: sin θt = n_i sin θi / n_t = {} > 1: total internal reflection",
                         "Snellius–Descartes: sin θt = n_i sin θi / n_t = {} > 1: teljes visszaverődés",
-                        number(incidence.n_i * incidence.cos_i.acos().sin() / incidence.n_t)
+                        number(incidence.n_i * incidence.abs_cos_i.acos().sin() / incidence.n_t)
                     )),
                 };
                 if fresnel.is_total_internal_reflection() {
@@ -234,7 +234,7 @@ impl FresnelArgs {
                     number(f_0)
                 ));
                 let r = if conductor {
-                    schlick(incidence.cos_i, f_0)
+                    schlick(incidence.abs_cos_i, f_0)
                 } else {
                     schlick_dielectric(cos_i, eta)
                 };
@@ -259,7 +259,7 @@ impl FresnelArgs {
                         }
                     }
                 } else {
-                    Some(incidence.cos_i)
+                    Some(incidence.abs_cos_i)
                 };
                 if let Some(cos) = cos {
                     record.step(format!(
