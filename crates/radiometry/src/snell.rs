@@ -106,6 +106,11 @@ impl<T: Real> Incidence<T> {
     /// all take `cos θ_t` (or its absence) from this discriminant.
     #[inline]
     pub fn cos_transmitted(&self) -> Option<T> {
+        if self.n_i == self.n_t {
+            // Index-matched: the light goes straight on, θ_t = θ_i exactly
+            // (√ of the rounded cos² would lose bits once cos² underflows).
+            return Some(self.abs_cos_i);
+        }
         let d = self.discriminant();
         // `!(d >= 0)` also catches NaN.
         if !(d >= T::zero()) {

@@ -148,7 +148,8 @@ pub fn dielectric_resolved<T: Real>(incidence: &Incidence<T>) -> DielectricFresn
     let (c, n_i, n_t) = (incidence.abs_cos_i, incidence.n_i, incidence.n_t);
     let contrast = compensated::index_contrast(n_t, T::zero(), n_i); // n_t² − n_i²
     if contrast == T::zero() {
-        return DielectricFresnel::all(T::zero(), Some(c), *incidence);
+        // Index-matched (n_t = n_i): nothing reflects, θ_t = θ_i.
+        return DielectricFresnel::all(T::zero(), incidence.cos_transmitted(), *incidence);
     }
     let d = incidence.discriminant(); // s² with s = n_t cos θ_t
     if d < T::zero() {
