@@ -9,6 +9,7 @@
 //! radiance carried across the interface are decided here, once.
 
 use glam::Vec3;
+use radiometry::snell::Incidence;
 use radiometry::{course, fresnel, radiance, specular};
 
 use super::Tracer;
@@ -97,21 +98,29 @@ impl Tracer<'_> {
     }
 
     fn dielectric_lobes(&self, hit: &Hit, n: Vec3, wo: Vec3, eta: f32) -> Lobes {
-        let cos_o = n.dot(wo);
-        let outward = if cos_o >= 0.0 { n } else { -n };
-        let (reflectance, transmittance) = self.dielectric_fresnel(cos_o, eta);
+        let interface = self.dielectric(n.dot(wo), eta);
+        let outward = if interface.incidence.from_inside {
+            -n
+        } else {
+            n
+        };
         let reflected = Ray::new(
             spawn::origin(hit, outward, self.settings.ray_offset),
             specular::reflect(wo, n),
         );
-        let refraction = specular::refract(wo, n, eta).map(|t| {
+        let reflectance = interface.reflectance;
+        let refraction = interface.cos_t.map(|cos_t| {
+            let t = specular::refract_resolved(wo, n, &interface.incidence, cos_t);
             let lobe = Lobe {
                 bounce: Bounce::Refraction,
                 ray: Ray::new(
                     spawn::origin(hit, -outward, self.settings.ray_offset),
                     t.direction,
                 ),
-                weight: Vec3::splat(radiance::across_interface(transmittance, t.eta_path)),
+                weight: Vec3::splat(radiance::across_interface(
+                    interface.transmittance,
+                    t.eta_path,
+                )),
             };
             (lobe, reflectance)
         });
@@ -133,23 +142,68 @@ impl Tracer<'_> {
         })
     }
 
-    /// Dielectric reflectance and transmittance at signed `cos_i`.
-    fn dielectric_fresnel(&self, cos_i: f32, eta: f32) -> (f32, f32) {
+    /// A dielectric interface met at signed `cos_i`, resolved once by the
+    /// chosen law: the side, the indices and `cos θ_t` the law decided, and
+    /// its reflectance and transmittance.
+    fn dielectric(&self, cos_i: f32, eta: f32) -> Interface {
         match self.settings.fresnel {
             FresnelModel::Exact => {
                 let f = fresnel::dielectric_polarized(cos_i, eta);
-                (f.reflectance(), f.transmittance())
+                Interface::new(f.incidence, f.cos_t, f.reflectance(), f.transmittance())
             }
-            FresnelModel::Schlick => {
-                let r = fresnel::schlick_dielectric(cos_i, eta);
-                (r, 1.0 - r)
-            }
+            FresnelModel::Schlick => match fresnel::schlick_dielectric_working(cos_i, eta) {
+                Some(w) => Interface::new(w.incidence, w.cos_t, w.reflectance, w.transmittance()),
+                None => Interface::undefined(),
+            },
             // The course has no glass; its formula with the incident cosine.
-            FresnelModel::Course => {
-                let r = course::fresnel_000_glsl(fresnel::f0(eta, 0.0), cos_i.abs());
-                (r, 1.0 - r)
-            }
+            FresnelModel::Course => match Incidence::resolve(cos_i, eta) {
+                Some(incidence) => {
+                    let r = course::fresnel_000_glsl(fresnel::f0(eta, 0.0), incidence.abs_cos_i);
+                    Interface::new(incidence, incidence.cos_transmitted(), r, 1.0 - r)
+                }
+                None => Interface::undefined(),
+            },
         }
+    }
+}
+
+/// A dielectric interface as a Fresnel law resolved it.
+struct Interface {
+    /// The side, the indices and `|cos θ_i|`.
+    incidence: Incidence<f32>,
+    /// `cos θ_t`, or `None` under total internal reflection.
+    cos_t: Option<f32>,
+    /// The fraction reflected.
+    reflectance: f32,
+    /// The fraction transmitted.
+    transmittance: f32,
+}
+
+impl Interface {
+    fn new(
+        incidence: Incidence<f32>,
+        cos_t: Option<f32>,
+        reflectance: f32,
+        transmittance: f32,
+    ) -> Self {
+        Interface {
+            incidence,
+            cos_t,
+            reflectance,
+            transmittance,
+        }
+    }
+
+    /// Input that describes no interface (a NaN cosine): NaN weights and no
+    /// refracted lobe, as the laws return.
+    fn undefined() -> Self {
+        let incidence = Incidence {
+            abs_cos_i: f32::NAN,
+            n_i: f32::NAN,
+            n_t: f32::NAN,
+            from_inside: false,
+        };
+        Interface::new(incidence, None, f32::NAN, f32::NAN)
     }
 }
 
