@@ -114,8 +114,10 @@ impl SceneError {
         }
     }
 
-    /// The JSON path of the bad value (`.` for the whole file; settings
-    /// given beside the file are under `overrides.`).
+    /// The JSON path of the bad value: `.` for the whole file (or a file
+    /// that cannot be read), `?` where the JSON breaks off before a value
+    /// could be named; settings given beside the file are under
+    /// `overrides`.
     pub fn field(&self) -> &str {
         &self.field
     }
