@@ -1,6 +1,6 @@
 //! Scene files: the JSON schema (version 1), its parsing and its validation.
 //!
-//! A scene file is read in two passes. The first is serde's ([`json`]):
+//! A scene file is read in two passes. The first is serde's (`json`):
 //! syntax, types and unknown fields, each error carrying the JSON path of
 //! the bad value (via `serde_path_to_error`). The second is
 //! [`SceneFile::validate`]: the values' domains, again naming the path. Only
@@ -12,7 +12,7 @@
 //! | module | what |
 //! |---|---|
 //! | [`schema`] | the file as written |
-//! | [`json`] | text to the schema, errors with their JSON path |
+//! | `json` | text to the schema, errors with their JSON path |
 //! | [`validate`] | the schema to the model, each value in its domain |
 //! | [`model`] | the validated scene the integrators read |
 //! | [`settings`] | render settings as given and as settled |
