@@ -19,24 +19,14 @@ impl Tracer<'_> {
     /// textbook sphere quadratic, and planes one-sided, since its
     /// `intersectPlane` accepts only `dot(normal, dir) > 0.001`.
     pub fn course_intersect(&self, ray: &Ray) -> Option<Hit> {
-        let mut best: Option<Hit> = None;
-        for (i, object) in self.scene.objects.iter().enumerate() {
-            let bounded = Ray {
-                t_max: best.map_or(ray.t_max, |h| h.t),
-                ..*ray
-            };
+        self.nearest(ray, |object, bounded| {
             let hit = match object {
-                Object::Sphere(s) => s.intersect(&bounded, 0.0, s.roots_naive(&bounded)),
-                Object::Plane(p) => p.intersect(&bounded, 0.0),
-                Object::Tube(t) => t.intersect(&bounded, 0.0),
+                Object::Sphere(s) => s.intersect(bounded, 0.0, s.roots_naive(bounded)),
+                Object::Plane(p) => p.intersect(bounded, 0.0),
+                Object::Tube(t) => t.intersect(bounded, 0.0),
             };
-            let hit = hit.filter(|h| !(h.two_sided && h.normal.dot(ray.direction) <= 0.001));
-            if let Some(mut h) = hit {
-                h.object = i as u32;
-                best = Some(h);
-            }
-        }
-        best
+            hit.filter(|h| !(h.two_sided && h.normal.dot(ray.direction) <= 0.001))
+        })
     }
 
     /// `maxBounces = max_depth + 1` iterations; at a mirror `weight *=

@@ -119,18 +119,23 @@ impl Tracer<'_> {
     /// The nearest hit along `ray`, robustly: the stable sphere roots,
     /// planes and the tube seen from both sides.
     pub fn intersect(&self, ray: &Ray) -> Option<Hit> {
+        self.nearest(ray, |object, bounded| match object {
+            Object::Sphere(s) => s.intersect(bounded, 0.0, s.roots(bounded)),
+            Object::Plane(p) => p.intersect(bounded, 0.0),
+            Object::Tube(t) => t.intersect(bounded, 0.0),
+        })
+    }
+
+    /// The nearest of the hits `hit_of` finds along `ray`, each object
+    /// searched only up to the nearest hit so far.
+    fn nearest(&self, ray: &Ray, hit_of: impl Fn(&Object, &Ray) -> Option<Hit>) -> Option<Hit> {
         let mut best: Option<Hit> = None;
         for (i, object) in self.scene.objects.iter().enumerate() {
             let bounded = Ray {
                 t_max: best.map_or(ray.t_max, |h| h.t),
                 ..*ray
             };
-            let hit = match object {
-                Object::Sphere(s) => s.intersect(&bounded, 0.0, s.roots(&bounded)),
-                Object::Plane(p) => p.intersect(&bounded, 0.0),
-                Object::Tube(t) => t.intersect(&bounded, 0.0),
-            };
-            if let Some(mut h) = hit {
+            if let Some(mut h) = hit_of(object, &bounded) {
                 h.object = i as u32;
                 best = Some(h);
             }

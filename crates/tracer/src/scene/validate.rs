@@ -28,22 +28,27 @@ fn within_f32(name: String, c: f64) -> Result<(), DomainError> {
     }
 }
 
-fn finite3(path: &str, v: [f64; 3]) -> Result<Vec3, DomainError> {
+/// Three components, each checked by `domain_check` and within `f32`,
+/// named `path[0]`, `path[1]`, `path[2]`.
+fn each3(
+    path: &str,
+    v: [f64; 3],
+    domain_check: fn(&str, f64) -> Result<f64, DomainError>,
+) -> Result<Vec3, DomainError> {
     for (axis, c) in ["[0]", "[1]", "[2]"].into_iter().zip(v) {
         let name = format!("{path}{axis}");
-        domain::finite(&name, c)?;
+        domain_check(&name, c)?;
         within_f32(name, c)?;
     }
     Ok(DVec3::from_array(v).as_vec3())
 }
 
+fn finite3(path: &str, v: [f64; 3]) -> Result<Vec3, DomainError> {
+    each3(path, v, domain::finite)
+}
+
 fn non_negative3(path: &str, v: [f64; 3]) -> Result<Vec3, DomainError> {
-    for (axis, c) in ["[0]", "[1]", "[2]"].into_iter().zip(v) {
-        let name = format!("{path}{axis}");
-        domain::non_negative(&name, c)?;
-        within_f32(name, c)?;
-    }
-    Ok(DVec3::from_array(v).as_vec3())
+    each3(path, v, domain::non_negative)
 }
 
 fn direction(path: &str, v: [f64; 3]) -> Result<Vec3, SceneError> {
