@@ -214,3 +214,88 @@ fn mirror(ray: Ray, weight: Vec3) -> Lobe {
         weight,
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::integrator::{Machinery, Tracer};
+    use crate::scene::{self, Settings};
+
+    /// The hit, resolved once, hands out exactly the bits that deciding the
+    /// side three times gave: the side from the cosine's sign, the law's R
+    /// and T, and `specular::refract`'s direction and index, for each Fresnel
+    /// model, from outside and from inside a glass sphere.
+    #[test]
+    fn a_dielectric_hit_resolved_once_gives_the_bits_of_each_law_alone() {
+        let scene = scene::parse(
+            r#"{ "version": 1, "image": { "width": 4, "height": 4 },
+                 "camera": { "type": "course_pinhole" },
+                 "materials": { "glass": { "type": "dielectric", "eta": 1.5 } },
+                 "objects": [ { "type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "glass" } ] }"#,
+        )
+        .unwrap();
+        let eta = 1.5_f32;
+        let mut cases = 0;
+        for model in [
+            FresnelModel::Exact,
+            FresnelModel::Schlick,
+            FresnelModel::Course,
+        ] {
+            let settings = Settings {
+                fresnel: model,
+                ..Settings::default()
+            };
+            let tracer = Tracer {
+                scene: &scene,
+                settings,
+                machinery: Machinery::everything(&scene, &settings),
+            };
+            for i in 0..400 {
+                // Rays from outside (origin at z = −3) and from the centre
+                // outwards, over a spread of angles.
+                let u = (i % 20) as f32 / 20.0 - 0.5;
+                let v = (i / 20) as f32 / 20.0 - 0.5;
+                let (origin, target) = if i % 2 == 0 {
+                    (Vec3::new(0.0, 0.0, -3.0), Vec3::new(u * 2.0, v * 2.0, 0.0))
+                } else {
+                    (Vec3::new(u * 0.9, v * 0.9, 0.0), Vec3::new(u, v + 0.3, 1.0))
+                };
+                let ray = Ray::new(origin, (target - origin).normalize());
+                let Some(hit) = tracer.intersect(&ray) else {
+                    continue;
+                };
+                let (wo, n) = (-ray.direction, hit.shading_normal(ray.direction));
+                let lobes = tracer.lobes(&hit, n, wo, &Material::Dielectric { eta });
+                let cos_o = n.dot(wo);
+                let (r, t) = match model {
+                    FresnelModel::Exact => {
+                        let f = fresnel::dielectric_polarized(cos_o, eta);
+                        (f.reflectance(), f.transmittance())
+                    }
+                    FresnelModel::Schlick => {
+                        let r = fresnel::schlick_dielectric(cos_o, eta);
+                        (r, 1.0 - r)
+                    }
+                    FresnelModel::Course => {
+                        let r = course::fresnel_000_glsl(fresnel::f0(eta, 0.0), cos_o.abs());
+                        (r, 1.0 - r)
+                    }
+                };
+                let outward = if cos_o >= 0.0 { n } else { -n };
+                let offset = spawn::origin(&hit, outward, settings.ray_offset);
+                assert_eq!(lobes.reflection.weight, Vec3::splat(r), "{model:?} {i}");
+                assert_eq!(lobes.reflection.ray.origin, offset, "{model:?} {i}");
+                let alone = specular::refract(wo, n, eta);
+                assert_eq!(lobes.refraction.is_some(), alone.is_some(), "{model:?} {i}");
+                if let (Some((lobe, reflectance)), Some(alone)) = (lobes.refraction, alone) {
+                    assert_eq!(lobe.ray.direction, alone.direction, "{model:?} {i}");
+                    let weight = radiance::across_interface(t, alone.eta_path);
+                    assert_eq!(lobe.weight, Vec3::splat(weight), "{model:?} {i}");
+                    assert_eq!(reflectance, r);
+                }
+                cases += 1;
+            }
+        }
+        assert!(cases > 600, "{cases}");
+    }
+}
