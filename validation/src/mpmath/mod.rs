@@ -20,7 +20,7 @@
 //! ulps, which say the same everywhere but where the exact value is
 //! subnormal. The workspace test `tests/fresnel_reference.rs` runs this
 //! check on the radiometry crate's laws and prints its table; a broken law
-//! injected through [`Laws`] / [`Laws64`] fails it.
+//! injected through [`Laws`](crate::laws::Laws) / [`Laws64`] fails it.
 
 mod angles;
 mod fresnel;
@@ -43,7 +43,7 @@ pub const FILE: &str = "fresnel_mpmath.json";
 /// Its schema.
 pub const SCHEMA: &str = "fresnel-reference/1";
 
-/// The `f64` laws under test (the `f32` ones are in [`Laws`]).
+/// The `f64` laws under test (the `f32` ones are in [`Laws`](crate::laws::Laws)).
 #[derive(Clone, Copy)]
 pub struct Laws64 {
     /// Exact dielectric Fresnel.
