@@ -103,7 +103,7 @@ impl<T: Real> Incidence<T> {
     ///
     /// This is where Snell's law is decided for a resolved incidence: the
     /// exact Fresnel law, Schlick's working and [`crate::specular::refract`]
-    /// all take `cos θ_t` (or its absence) from this discriminant.
+    /// all take `cos θ_t` (or its absence) from it.
     #[inline]
     pub fn cos_transmitted(&self) -> Option<T> {
         if self.n_i == self.n_t {
@@ -111,12 +111,22 @@ impl<T: Real> Incidence<T> {
             // (√ of the rounded cos² would lose bits once cos² underflows).
             return Some(self.abs_cos_i);
         }
+        self.snell().map(|(_, cos_t)| cos_t)
+    }
+
+    /// Snell's decision with the discriminant it is made from:
+    /// `(d, cos θ_t)` with `d = n_t² cos²θ_t ≥ 0`, or `None` under total
+    /// internal reflection; for the exact Fresnel law, which needs `d`
+    /// itself. Index-matched interfaces are [`Incidence::cos_transmitted`]'s
+    /// to special-case.
+    #[inline]
+    pub(crate) fn snell(&self) -> Option<(T, T)> {
         let d = self.discriminant();
         // `!(d >= 0)` also catches NaN.
         if !(d >= T::zero()) {
             return None;
         }
-        Some(clamp_unit(d.sqrt() / self.n_t))
+        Some((d, clamp_unit(d.sqrt() / self.n_t)))
     }
 
     /// Snell's sine, `sin θ_t = n_i sin θ_i / n_t`, with

@@ -33,7 +33,7 @@ use num_traits::{Float, FloatConst, One, Zero};
 
 use super::{fraction, sqr};
 use crate::compensated;
-use crate::snell::{clamp_unit, Incidence};
+use crate::snell::Incidence;
 use crate::specular::{refract_resolved, Refraction};
 use crate::{Real, Vector3};
 
@@ -151,10 +151,10 @@ pub fn dielectric_resolved<T: Real>(incidence: &Incidence<T>) -> DielectricFresn
         // Index-matched (n_t = n_i): nothing reflects, θ_t = θ_i.
         return DielectricFresnel::all(T::zero(), incidence.cos_transmitted(), *incidence);
     }
-    let d = incidence.discriminant(); // s² with s = n_t cos θ_t
-    if d < T::zero() {
+    // d = s² with s = n_t cos θ_t.
+    let Some((d, cos_t)) = incidence.snell() else {
         return DielectricFresnel::all(T::one(), None, *incidence);
-    }
+    };
     let s = d.sqrt();
     let a = n_i * c; // n_i cos θ_i
 
@@ -181,7 +181,7 @@ pub fn dielectric_resolved<T: Real>(incidence: &Incidence<T>) -> DielectricFresn
         r_p: fraction(r_p),
         t_s: fraction(t_s),
         t_p: fraction(t_p),
-        cos_t: Some(clamp_unit(s / n_t)),
+        cos_t: Some(cos_t),
         incidence: *incidence,
     }
 }
