@@ -50,12 +50,18 @@ impl fmt::Display for IntegratorKind {
 #[serde(rename_all = "snake_case")]
 pub enum FresnelModel {
     /// The exact equations (`radiometry::fresnel::conductor_rgb`, `dielectric`).
+    #[cfg_attr(feature = "clap", value(help = "The exact Fresnel equations"))]
     Exact,
     /// Schlick's approximation (`radiometry::fresnel::schlick_rgb`, `schlick_dielectric`).
+    #[cfg_attr(feature = "clap", value(help = "Schlick's approximation"))]
     Schlick,
     /// The course shader's reversed form, `F0 + (1 − F0) cos⁵θ`
     /// (`radiometry::course::fresnel_000_glsl`): isolates that one erratum
     /// in an otherwise physical render.
+    #[cfg_attr(
+        feature = "clap",
+        value(help = "The course shader's reversed form, for measuring that erratum alone")
+    )]
     Course,
 }
 
