@@ -10,9 +10,8 @@
 //! measured on the same table, to show what the reformulation buys: it loses
 //! up to all digits near the critical angle, near η = 1, and in T.
 
-use validation::check::ulp_f64;
 use validation::laws::Laws;
-use validation::mpmath::{self, Exact, FresnelMpmath, Laws64};
+use validation::mpmath::{self, FresnelMpmath, Laws64};
 use validation::reference::committed_dir;
 
 fn reference() -> FresnelMpmath {
@@ -96,12 +95,6 @@ fn textbook_dielectric(cos_i: f64, eta: f64) -> (f64, f64) {
     (r, 1.0 - r)
 }
 
-/// `|computed − exact|` in f64 ulps of the exact value; `computed − hi` is
-/// exact (Sterbenz) when the two are close, so this resolves below one ulp.
-fn ulps(exact: Exact, computed: f64) -> f64 {
-    ((computed - exact.0) - exact.1).abs() / ulp_f64(exact.0)
-}
-
 /// The same table evaluated with the textbook formulas loses digits where
 /// the reformulated ones do not: this is the reason for the reformulation,
 /// measured. Required: somewhere the textbook T is off by more than 1e6 ulps
@@ -115,7 +108,7 @@ fn textbook_formulas_lose_digits_where_the_reformulation_does_not() {
     // misses them by up to 7e-4 absolute, but that is left out of the table.
     for case in reference.dielectric.f64.iter().filter(|c| c.r.0 != 0.0) {
         let (r, t) = textbook_dielectric(case.cos_i, case.eta);
-        let (err_r, err_t) = (ulps(case.r, r), ulps(case.t, t));
+        let (err_r, err_t) = (case.r.ulps(r, "f64"), case.t.ulps(t, "f64"));
         if err_r > worst_r.0 {
             worst_r = (err_r, &case.label);
         }

@@ -6,6 +6,7 @@
 //! disagreement between two references (Mitsuba's float32 evaluation against
 //! the exact value, say) that the suite reports without failing for it.
 
+use radiometry::Real;
 use serde::Serialize;
 
 /// One check's result, as it appears in `report.json`.
@@ -94,33 +95,14 @@ impl Check {
     }
 }
 
-/// The spacing of `f32` values at `x` (its unit in the last place), down to
-/// the smallest subnormal, as an `f64`.
-pub fn ulp_f32(x: f64) -> f64 {
-    let x = x.abs();
-    let exponent = ((x.to_bits() >> 52) & 0x7ff) as i32 - 1023;
-    2f64.powi((exponent - 23).max(-149))
-}
-
-/// The spacing of doubles at `x`, down to the smallest subnormal. Built from
-/// bits: `2f64.powi(-1074)` would overflow `2^1074` on the way and give 0.
-pub fn ulp_f64(x: f64) -> f64 {
-    let biased = ((x.abs().to_bits() >> 52) & 0x7ff) as i64;
-    if biased > 52 {
-        f64::from_bits(((biased - 52) as u64) << 52)
-    } else {
-        // Subnormal spacing (or normal values whose spacing is subnormal).
-        f64::from_bits(1u64 << (biased - 1).max(0))
-    }
-}
-
-/// `|computed − exact|` in `f32` ulps of `exact`; infinite if `computed` is NaN.
+/// `|computed − exact|` in `f32` ulps of `exact` ([`Real::ulp_at`]);
+/// infinite if `computed` is NaN.
 pub fn ulps_f32(computed: f64, exact: f64) -> f64 {
     let err = (computed - exact).abs();
     if err.is_nan() {
         f64::INFINITY
     } else {
-        err / ulp_f32(exact)
+        err / f32::ulp_at(exact)
     }
 }
 
@@ -129,11 +111,9 @@ mod tests {
     use super::*;
 
     #[test]
-    fn ulp_f32_is_the_float32_spacing() {
-        assert_eq!(ulp_f32(1.0), f32::EPSILON as f64);
-        assert_eq!(ulp_f32(0.75), f32::EPSILON as f64 / 2.0);
-        assert_eq!(ulp_f32(0.0), 2f64.powi(-149));
+    fn ulps_f32_counts_in_float32_spacing() {
         assert_eq!(ulps_f32(1.0 + f32::EPSILON as f64, 1.0), 1.0);
+        assert_eq!(ulps_f32(0.75 + f32::EPSILON as f64, 0.75), 2.0);
         assert!(ulps_f32(f64::NAN, 1.0).is_infinite());
     }
 

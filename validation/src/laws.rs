@@ -407,10 +407,11 @@ pub fn check_dielectric(laws: &Laws, reference: &MitsubaLaws) -> Check {
             case.exact.r_p,
         );
         // The effective index along the path is a convention, not a rounding.
-        if (f64::from(ours.eta_path) - m.eta_it).abs() > 1e-6 * m.eta_it {
+        if (f64::from(ours.eta_path()) - m.eta_it).abs() > 1e-6 * m.eta_it {
             check.fail(format!(
                 "{label}: eta along the path {} but Mitsuba's eta_it is {}",
-                ours.eta_path, m.eta_it
+                ours.eta_path(),
+                m.eta_it
             ));
         }
     }

@@ -22,9 +22,9 @@
 //! can be shown to be caught. Radiance is in W/(sr·m²) per channel.
 
 use serde::Deserialize;
-use tracer::integrator::Settings;
+use tracer::job::RenderJob;
 use tracer::render::Image;
-use tracer::scene::{IntegratorKind, Scene};
+use tracer::scene::{IntegratorKind, Scene, Settings};
 
 use crate::check::Check;
 use crate::reference::ReferenceError;
@@ -295,8 +295,9 @@ pub type Renderer = fn(&Scene, &Settings) -> Result<Image, String>;
 /// The tracer as `optics render` runs it: the scene's needs decide the
 /// machinery, all cores.
 pub fn tracer_render(scene: &Scene, settings: &Settings) -> Result<Image, String> {
-    let machinery = tracer::needs::analyse(scene, settings).machinery(settings);
-    tracer::render::render(scene, settings, &machinery, None, &|_| {})
+    RenderJob::with_settings(scene.clone(), *settings)
+        .map_err(|e| e.to_string())?
+        .render(None, &|_| {})
         .map(|r| r.image)
         .map_err(|e| e.to_string())
 }
@@ -395,7 +396,7 @@ pub fn path_statistics(
     max_depth: u32,
     samples: u32,
 ) -> Result<(Vec<f64>, Vec<f64>), String> {
-    let mut settings = Settings::from_scene(scene);
+    let mut settings = scene.settings;
     settings.integrator = IntegratorKind::Path;
     settings.max_depth = max_depth;
     settings.spp = 1;
@@ -692,7 +693,7 @@ impl RenderChecks {
                     ));
                 }
             }
-            let mut settings = Settings::from_scene(&decoded.scene);
+            let mut settings = decoded.scene.settings;
             settings.integrator = IntegratorKind::Whitted;
             settings.max_depth = s.whitted.max_depth;
             settings.throughput_cutoff = s.whitted.throughput_cutoff as f32;

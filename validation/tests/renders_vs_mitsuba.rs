@@ -6,9 +6,8 @@
 
 mod tables;
 
-use tracer::integrator::Settings;
 use tracer::render::Image;
-use tracer::scene::{IntegratorKind, Light, Scene};
+use tracer::scene::{IntegratorKind, Light, Scene, Settings};
 use validation::reference::{committed_dir, ReferenceError};
 use validation::renders::{self, MitsubaRenders, RenderChecks, Renderer};
 use validation::Check;

@@ -3,13 +3,14 @@
 
 use std::path::PathBuf;
 
-use serde_json::json;
+use serde_json::{json, Value};
 use tracer::integrator::Machinery;
-use tracer::needs::{self, ReflectionDepth};
-use tracer::render;
+use tracer::job::RenderJob;
+use tracer::needs::{Needs, ReflectionDepth};
+use tracer::render::Rendered;
 
-use crate::lang::say;
-use crate::render::{prepare, Integrator};
+use crate::lang::{say, Lang};
+use crate::render::JobArgs;
 use crate::Ui;
 
 #[derive(clap::Args, Debug)]
@@ -24,47 +25,79 @@ change a pixel.")]
 pub struct InspectArgs {
     /// The scene file (JSON).
     pub scene: PathBuf,
-    /// Light transport to inspect for (default: the scene's).
-    #[arg(long, value_enum)]
-    pub integrator: Option<Integrator>,
-    /// Samples per pixel to inspect for.
-    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=tracer::scene::MAX_SPP as i64))]
-    pub spp: Option<u32>,
-    /// Width of the measuring renders, pixels.
-    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=tracer::scene::MAX_IMAGE_SIDE as i64))]
-    pub width: Option<u32>,
-    /// Height of the measuring renders, pixels.
-    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=tracer::scene::MAX_IMAGE_SIDE as i64))]
-    pub height: Option<u32>,
+    // The settings to inspect for, over the scene's; --width and --height
+    // size the measuring renders.
+    #[command(flatten)]
+    pub job: JobArgs,
 }
 
 pub fn run(args: &InspectArgs, ui: &Ui) -> anyhow::Result<()> {
-    let (scene, mut settings) = prepare(&args.scene, args.width, args.height)?;
-    if let Some(i) = args.integrator {
-        settings.integrator = i.into();
+    let job = args.job.job(&args.scene)?;
+    let (scene, settings, needs) = (job.scene(), job.settings(), job.needs());
+    let lang = ui.lang;
+    let base = measure(&job, job.machinery())?;
+    let mut costs = Vec::new();
+    let mut lines = Vec::new();
+    for (name, machinery) in skipped_parts(&job) {
+        let (cost, line) = cost_of(name, &measure(&job, &machinery)?, &base, lang);
+        costs.push(cost);
+        lines.push(line);
     }
-    settings.spp = args.spp.unwrap_or(settings.spp);
-    needs::check_integrator(&scene, &settings)?;
-    let needs = needs::analyse(&scene, &settings);
-    let lean = needs.machinery(&settings);
-    let everything = Machinery::everything(&scene, &settings);
-    let quiet = |_: usize| {};
-    // Best of three, so that the time differences are not scheduling noise.
-    let measure = |machinery: &Machinery| -> anyhow::Result<render::Rendered> {
-        let mut best = render::render(&scene, &settings, machinery, None, &quiet)?;
-        for _ in 0..2 {
-            let again = render::render(&scene, &settings, machinery, None, &quiet)?;
-            if again.elapsed < best.elapsed {
-                best = again;
-            }
+    let mut steps = needs_steps(needs, base.rays.deepest, lang);
+    steps.push(say!(
+        lang,
+        "{}×{} {}: {} rays with only what the scene needs",
+        "{}×{} {}: {} sugár csak a szükséges részekkel",
+        scene.width,
+        scene.height,
+        settings.integrator,
+        base.rays.total()
+    ));
+    steps.extend(crate::render::steps(needs, job.machinery(), settings, lang));
+    steps.extend(lines);
+    if ui.json {
+        println!(
+            "{}",
+            json!({
+                "command": "inspect",
+                "inputs": {
+                    "scene": args.scene.display().to_string(),
+                    "width": scene.width,
+                    "height": scene.height,
+                    "settings": settings,
+                },
+                "answer": { "needs": needs, "skipped": costs, "rays": base.rays },
+                "unit": "rays",
+                "steps": steps,
+            })
+        );
+    } else {
+        for s in steps {
+            println!("{s}");
         }
-        Ok(best)
-    };
-    let base = measure(&lean)?;
+    }
+    Ok(())
+}
 
-    // Each skipped part switched back on alone, then all together.
+/// The best of three renders with `machinery`, so that the time
+/// differences are not scheduling noise.
+fn measure(job: &RenderJob, machinery: &Machinery) -> anyhow::Result<Rendered> {
+    let quiet = |_: usize| {};
+    let mut best = job.render_with(machinery, None, &quiet)?;
+    for _ in 0..2 {
+        let again = job.render_with(machinery, None, &quiet)?;
+        if again.elapsed < best.elapsed {
+            best = again;
+        }
+    }
+    Ok(best)
+}
+
+/// Each part the job skips switched back on alone, then all together.
+fn skipped_parts(job: &RenderJob) -> Vec<(&'static str, Machinery)> {
+    let (lean, everything) = (job.machinery(), job.everything());
     let mut parts: Vec<(&str, Machinery)> = Vec::new();
-    if !lean.shadow_rays && needs.lights.iter().any(|l| l.used) {
+    if !lean.shadow_rays && job.needs().lights.iter().any(|l| l.used) {
         parts.push((
             "shadow_rays",
             Machinery {
@@ -94,57 +127,63 @@ pub fn run(args: &InspectArgs, ui: &Ui) -> anyhow::Result<()> {
         ));
     }
     if parts.len() > 1 {
-        parts.push(("all", everything.clone()));
+        parts.push(("all", everything));
     }
-    let lang = ui.lang;
-    let yes_no = |b: bool| {
-        lang.pick(if b { "yes" } else { "no" }, if b { "igen" } else { "nem" })
-            .to_owned()
-    };
-    let mut costs = Vec::new();
-    let mut lines = Vec::new();
-    for (name, machinery) in &parts {
-        let full = measure(machinery)?;
-        let extra_rays = full.rays.total() as i64 - base.rays.total() as i64;
-        let extra_seconds = full.elapsed.as_secs_f64() - base.elapsed.as_secs_f64();
-        let identical = full.image == base.image;
-        let changed = full
-            .image
-            .pixels
-            .iter()
-            .zip(&base.image.pixels)
-            .filter(|(p, q)| p != q)
-            .count();
-        let (_, max_difference) = full.image.difference(&base.image);
-        lines.push(say!(
-            lang,
-            "{}: would cost {} more rays ({:+.1} %), {:+.4} s; image identical: {}",
-            "{}: {} további sugár ({:+.1} %), {:+.4} s; a kép azonos: {}",
-            name,
-            extra_rays,
-            100.0 * extra_rays as f64 / base.rays.total().max(1) as f64,
-            extra_seconds,
-            if identical {
-                yes_no(true)
-            } else {
-                say!(
-                    lang,
-                    "no, {} pixels differ by up to {:.3}",
-                    "nem, {} pixel tér el, legfeljebb {:.3}-mal",
-                    changed,
-                    max_difference
-                )
-            }
-        ));
-        costs.push(json!({
-            "part": name,
-            "extra_rays": extra_rays,
-            "extra_seconds": extra_seconds,
-            "image_identical": identical,
-            "pixels_changed": changed,
-            "max_difference": max_difference,
-        }));
-    }
+    parts
+}
+
+fn yes_no(lang: Lang, b: bool) -> String {
+    lang.pick(if b { "yes" } else { "no" }, if b { "igen" } else { "nem" })
+        .to_owned()
+}
+
+/// What switching `name` back on cost against `base`: the record and its line.
+fn cost_of(name: &str, full: &Rendered, base: &Rendered, lang: Lang) -> (Value, String) {
+    let extra_rays = full.rays.total() as i64 - base.rays.total() as i64;
+    let extra_seconds = full.elapsed.as_secs_f64() - base.elapsed.as_secs_f64();
+    let identical = full.image == base.image;
+    let changed = full
+        .image
+        .pixels
+        .iter()
+        .zip(&base.image.pixels)
+        .filter(|(p, q)| p != q)
+        .count();
+    let (_, max_difference) = full.image.difference(&base.image);
+    let line = say!(
+        lang,
+        "{}: would cost {} more rays ({:+.1} %), {:+.4} s; image identical: {}",
+        "{}: {} további sugár ({:+.1} %), {:+.4} s; a kép azonos: {}",
+        name,
+        extra_rays,
+        100.0 * extra_rays as f64 / base.rays.total().max(1) as f64,
+        extra_seconds,
+        if identical {
+            yes_no(lang, true)
+        } else {
+            say!(
+                lang,
+                "no, {} pixels differ by up to {:.3}",
+                "nem, {} pixel tér el, legfeljebb {:.3}-mal",
+                changed,
+                max_difference
+            )
+        }
+    );
+    let cost = json!({
+        "part": name,
+        "extra_rays": extra_rays,
+        "extra_seconds": extra_seconds,
+        "image_identical": identical,
+        "pixels_changed": changed,
+        "max_difference": max_difference,
+    });
+    (cost, line)
+}
+
+/// What the scene needs, one line each, and the deepest bounce a render
+/// with only that took.
+fn needs_steps(needs: &Needs, deepest: u32, lang: Lang) -> Vec<String> {
     let depth = match needs.reflection_depth {
         ReflectionDepth::None => "0".to_string(),
         ReflectionDepth::One => "1".to_string(),
@@ -160,7 +199,12 @@ pub fn run(args: &InspectArgs, ui: &Ui) -> anyhow::Result<()> {
             Some(r) => format!("{} {} ({})", l.index, l.kind, r),
         })
         .collect();
-    let mut steps = vec![
+    let lights = if lights.is_empty() {
+        lang.pick("none", "nincs").to_owned()
+    } else {
+        lights.join(", ")
+    };
+    vec![
         say!(
             lang,
             "reflection depth reachable: {}",
@@ -171,74 +215,32 @@ pub fn run(args: &InspectArgs, ui: &Ui) -> anyhow::Result<()> {
             lang,
             "deepest bounce taken in this render: {}",
             "a legmélyebb visszaverődés ebben a képben: {}",
-            base.rays.deepest
+            deepest
         ),
         say!(
             lang,
             "refraction: {}",
             "fénytörés: {}",
-            yes_no(needs.refraction)
+            yes_no(lang, needs.refraction)
         ),
         say!(
             lang,
             "conductors (complex Fresnel): {}",
             "fémek (komplex Fresnel): {}",
-            yes_no(needs.conductors)
+            yes_no(lang, needs.conductors)
         ),
         say!(
             lang,
             "surfaces shaded from lights: {}",
             "fényforrásokkal árnyalt felületek: {}",
-            yes_no(needs.rough_surfaces)
+            yes_no(lang, needs.rough_surfaces)
         ),
         say!(
             lang,
             "shadows possible: {}",
             "lehet árnyék: {}",
-            yes_no(needs.shadows)
+            yes_no(lang, needs.shadows)
         ),
-        say!(
-            lang,
-            "lights used: {}",
-            "használt fények: {}",
-            if lights.is_empty() {
-                lang.pick("none", "nincs").to_owned()
-            } else {
-                lights.join(", ")
-            }
-        ),
-        say!(
-            lang,
-            "{}×{} {}: {} rays with only what the scene needs",
-            "{}×{} {}: {} sugár csak a szükséges részekkel",
-            scene.width,
-            scene.height,
-            settings.integrator,
-            base.rays.total()
-        ),
-    ];
-    steps.extend(crate::render::steps(&needs, &lean, &settings, lang));
-    steps.extend(lines);
-    if ui.json {
-        println!(
-            "{}",
-            json!({
-                "command": "inspect",
-                "inputs": {
-                    "scene": args.scene.display().to_string(),
-                    "width": scene.width,
-                    "height": scene.height,
-                    "settings": settings,
-                },
-                "answer": { "needs": needs, "skipped": costs, "rays": base.rays },
-                "unit": "rays",
-                "steps": steps,
-            })
-        );
-    } else {
-        for s in steps {
-            println!("{s}");
-        }
-    }
-    Ok(())
+        say!(lang, "lights used: {}", "használt fények: {}", lights),
+    ]
 }

@@ -6,9 +6,12 @@ use std::path::{Path, PathBuf};
 
 use anyhow::Context;
 use serde_json::json;
-use tracer::integrator::Settings;
-use tracer::scene::{FresnelModel, IntegratorKind, MAX_DEPTH, MAX_IMAGE_SIDE, MAX_SPP};
-use tracer::{needs, output, render, scene};
+use tracer::integrator::Machinery;
+use tracer::job::{Overrides, RenderJob};
+use tracer::needs::Needs;
+use tracer::output::Destination;
+use tracer::scene::{FresnelModel, IntegratorKind, RenderSpec, Settings};
+use tracer::scene::{MAX_DEPTH, MAX_IMAGE_SIDE, MAX_SPP};
 
 use crate::lang::say;
 use crate::Ui;
@@ -27,9 +30,19 @@ pub struct RenderArgs {
     /// The PNG to write; the PFM goes beside it with the extension .pfm.
     #[arg(short, long)]
     pub output: PathBuf,
-    /// Light transport: local, whitted, path, or course (the course's shader).
+    #[command(flatten)]
+    pub job: JobArgs,
+    /// Worker threads (default: all cores). The image does not depend on it.
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1024))]
+    pub threads: Option<u32>,
+}
+
+/// The settings `render` and `inspect` take over the scene's own.
+#[derive(clap::Args, Debug)]
+pub struct JobArgs {
+    /// Light transport (default: the scene's).
     #[arg(long, value_enum)]
-    pub integrator: Option<Integrator>,
+    pub integrator: Option<IntegratorKind>,
     /// Samples per pixel (the path tracer's; the others are deterministic).
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=MAX_SPP as i64))]
     pub spp: Option<u32>,
@@ -38,10 +51,7 @@ pub struct RenderArgs {
     pub max_depth: Option<u32>,
     /// Fresnel law of mirrors and glass.
     #[arg(long, value_enum)]
-    pub fresnel: Option<Fresnel>,
-    /// Worker threads (default: all cores). The image does not depend on it.
-    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1024))]
-    pub threads: Option<u32>,
+    pub fresnel: Option<FresnelModel>,
     /// Seed of the path tracer's random numbers.
     #[arg(long)]
     pub seed: Option<u64>,
@@ -53,96 +63,30 @@ pub struct RenderArgs {
     pub height: Option<u32>,
 }
 
-#[derive(clap::ValueEnum, Clone, Copy, Debug)]
-pub enum Integrator {
-    Local,
-    Whitted,
-    Path,
-    Course,
-}
-
-impl From<Integrator> for IntegratorKind {
-    fn from(integrator: Integrator) -> Self {
-        match integrator {
-            Integrator::Local => IntegratorKind::Local,
-            Integrator::Whitted => IntegratorKind::Whitted,
-            Integrator::Path => IntegratorKind::Path,
-            Integrator::Course => IntegratorKind::Course,
-        }
+impl JobArgs {
+    /// The scene at `path` with these flags settled over its settings.
+    pub(crate) fn job(&self, path: &Path) -> anyhow::Result<RenderJob> {
+        let overrides = Overrides {
+            render: RenderSpec {
+                integrator: self.integrator,
+                spp: self.spp.map(f64::from),
+                max_depth: self.max_depth.map(f64::from),
+                fresnel: self.fresnel,
+                seed: self.seed,
+                ..RenderSpec::default()
+            },
+            width: self.width,
+            height: self.height,
+        };
+        RenderJob::load(path, &overrides).with_context(|| format!("scene {}", path.display()))
     }
-}
-
-#[derive(clap::ValueEnum, Clone, Copy, Debug)]
-pub enum Fresnel {
-    Exact,
-    Schlick,
-    /// The course shader's reversed form, for measuring that erratum alone.
-    Course,
-}
-
-/// Loads the scene and settles the settings: flags over the scene's own.
-pub(crate) fn prepare(
-    path: &Path,
-    width: Option<u32>,
-    height: Option<u32>,
-) -> anyhow::Result<(scene::Scene, Settings)> {
-    let mut scene = scene::load(path).with_context(|| format!("scene {}", path.display()))?;
-    if width.is_some() || height.is_some() {
-        let (w, h) = (width.unwrap_or(scene.width), height.unwrap_or(scene.height));
-        if w as u64 * h as u64 > scene::MAX_PIXELS {
-            anyhow::bail!(
-                "--width × --height: {w} × {h} pixels is more than the {} accepted",
-                scene::MAX_PIXELS
-            );
-        }
-        scene = scene.resized(w, h);
-    }
-    let settings = Settings::from_scene(&scene);
-    Ok((scene, settings))
 }
 
 pub fn run(args: &RenderArgs, ui: &Ui) -> anyhow::Result<()> {
-    let (scene, mut settings) = prepare(&args.scene, args.width, args.height)?;
-    if let Some(i) = args.integrator {
-        settings.integrator = i.into();
-    }
-    if let Some(f) = args.fresnel {
-        settings.fresnel = match f {
-            Fresnel::Exact => FresnelModel::Exact,
-            Fresnel::Schlick => FresnelModel::Schlick,
-            Fresnel::Course => FresnelModel::Course,
-        };
-    }
-    settings.spp = args.spp.unwrap_or(settings.spp);
-    settings.max_depth = args.max_depth.unwrap_or(settings.max_depth);
-    settings.seed = args.seed.unwrap_or(settings.seed);
-    needs::check_integrator(&scene, &settings)
-        .with_context(|| format!("scene {}", args.scene.display()))?;
-    let needs = needs::analyse(&scene, &settings);
-    let machinery = needs.machinery(&settings);
-
-    let png = args.output.clone();
-    let pfm = png.with_extension("pfm");
-    if pfm == png {
-        anyhow::bail!(
-            "--output {}: give the PNG's name (the PFM is written beside it)",
-            png.display()
-        );
-    }
-
+    let job = args.job.job(&args.scene)?;
     // Refuse an unwritable destination before spending the render on it.
-    let dir = match png.parent() {
-        Some(d) if !d.as_os_str().is_empty() => d,
-        _ => Path::new("."),
-    };
-    if !dir.is_dir() {
-        anyhow::bail!(
-            "--output {}: the directory {} does not exist",
-            png.display(),
-            dir.display()
-        );
-    }
-
+    let destination = Destination::new(&args.output).context("--output")?;
+    let (scene, settings, machinery) = (job.scene(), job.settings(), job.machinery());
     let bar = std::io::stderr().is_terminal().then(|| {
         let bar = indicatif::ProgressBar::new(scene.height as u64);
         bar.set_style(
@@ -156,18 +100,12 @@ pub fn run(args: &RenderArgs, ui: &Ui) -> anyhow::Result<()> {
             bar.set_position(rows as u64);
         }
     };
-    let rendered = render::render(
-        &scene,
-        &settings,
-        &machinery,
-        args.threads.map(|t| t as usize),
-        &progress,
-    )?;
+    let rendered = job.render_to(&destination, args.threads.map(|t| t as usize), &progress);
     if let Some(bar) = &bar {
         bar.finish_and_clear();
     }
-    output::write_png(&png, &rendered.image)?;
-    output::write_pfm(&pfm, &rendered.image)?;
+    let rendered = rendered?;
+    let (png, pfm) = (destination.png(), destination.pfm());
 
     let seconds = rendered.elapsed.as_secs_f64();
     let rays = rendered.rays.total();
@@ -207,7 +145,7 @@ pub fn run(args: &RenderArgs, ui: &Ui) -> anyhow::Result<()> {
                 "shadow_rays": machinery.shadow_rays,
             },
             "unit": "rays/s",
-            "steps": steps(&needs, &machinery, &settings, lang),
+            "steps": steps(job.needs(), machinery, settings, lang),
         });
         println!("{record}");
     } else {
@@ -218,8 +156,8 @@ pub fn run(args: &RenderArgs, ui: &Ui) -> anyhow::Result<()> {
 
 /// What the renderer switched off and why, one line each.
 pub(crate) fn steps(
-    needs: &needs::Needs,
-    machinery: &tracer::integrator::Machinery,
+    needs: &Needs,
+    machinery: &Machinery,
     settings: &Settings,
     lang: crate::Lang,
 ) -> Vec<String> {

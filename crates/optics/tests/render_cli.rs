@@ -304,3 +304,40 @@ fn inspect_reports_needs_and_measures_the_skipped_shadow_rays() {
         "{report}"
     );
 }
+
+/// `inspect` takes the settings `render` takes, and settles them the same
+/// way: its record shows them.
+#[test]
+fn inspect_takes_every_setting_render_takes() {
+    let out = optics(&[
+        "--json",
+        "inspect",
+        &scene("webgl_seven_spheres"),
+        "--width",
+        "16",
+        "--height",
+        "12",
+        "--integrator",
+        "path",
+        "--spp",
+        "2",
+        "--max-depth",
+        "3",
+        "--fresnel",
+        "schlick",
+        "--seed",
+        "9",
+    ]);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let record: Value = serde_json::from_slice(&out.stdout).unwrap();
+    let settings = &record["inputs"]["settings"];
+    assert_eq!(settings["integrator"], "path");
+    assert_eq!(settings["spp"], 2);
+    assert_eq!(settings["max_depth"], 3);
+    assert_eq!(settings["fresnel"], "schlick");
+    assert_eq!(settings["seed"], 9);
+    assert_eq!(
+        record["answer"]["needs"]["reflection_depth"]["up_to_max_depth"],
+        3
+    );
+}

@@ -56,6 +56,15 @@
 //!   `brewster_angle`) have no sign to read the side from; they take the
 //!   index along the path, named `eta_path = n_t / n_i`, and every
 //!   [`specular::Refraction`] reports the `eta_path` it took.
+//! - **A law hands back what it decided.** The side of the interface is
+//!   resolved once, by [`snell::Incidence::resolve`], and whether light is
+//!   transmitted, with `cos θ_t`, once, by
+//!   [`snell::Incidence::cos_transmitted`]. [`fresnel::DielectricFresnel`]
+//!   and [`fresnel::SchlickDielectric`] carry that incidence and `cos θ_t`
+//!   (Schlick's working also the cosine it took), and
+//!   [`specular::refract_resolved`] builds the refracted ray from them, so a
+//!   caller never decides again what a law decided (the test
+//!   `decided_once` holds the handed-back values to the law's, bit for bit).
 //! - **Angles are in radians**, measured from the normal.
 //! - **SI units**: radiance in W/(sr·m²), irradiance in W/m², radiant
 //!   intensity in W/sr, BRDFs in 1/sr, lengths in metres. Reflectances and

@@ -17,6 +17,31 @@ pub trait Real: Float + FloatConst + Debug + Display + Default + Send + Sync + '
     fn widen(self) -> Self::Wide;
     /// Rounds from [`Real::Wide`] once.
     fn narrow(wide: Self::Wide) -> Self;
+    /// The spacing of this tier's numbers in the binade of `x` (its unit in
+    /// the last place there), down to the tier's smallest subnormal, as an
+    /// `f64`: the unit every accuracy statement of the workspace counts in.
+    /// `x` is an exact value, not yet rounded to the tier, so the binade is
+    /// `x`'s own even where rounding would carry it to the next power of two.
+    ///
+    /// ```
+    /// use radiometry::Real;
+    /// assert_eq!(f32::ulp_at(1.0), f64::from(f32::EPSILON));
+    /// assert_eq!(f64::ulp_at(0.75), f64::EPSILON / 2.0);
+    /// assert_eq!(f64::ulp_at(0.0), f64::from_bits(1)); // the smallest subnormal
+    /// ```
+    fn ulp_at(x: f64) -> f64;
+}
+
+/// `2^⌊log₂|x|⌋`, no smaller than `min_positive`, times `epsilon`: the
+/// spacing at `x` of a binary format with that machine epsilon and smallest
+/// normal number. Built from the bits, which are exact where `powi` of a
+/// large negative exponent would overflow on the way.
+#[inline]
+fn spacing(x: f64, epsilon: f64, min_positive: f64) -> f64 {
+    const EXPONENT: u64 = 0x7ff << 52;
+    // 0 for a subnormal x, whose spacing is the subnormals' anyway.
+    let binade = f64::from_bits(x.abs().to_bits() & EXPONENT);
+    binade.max(min_positive) * epsilon
 }
 
 impl Real for f32 {
@@ -33,6 +58,10 @@ impl Real for f32 {
     fn narrow(wide: f64) -> Self {
         wide as f32
     }
+    #[inline]
+    fn ulp_at(x: f64) -> f64 {
+        spacing(x, f32::EPSILON.into(), f32::MIN_POSITIVE.into())
+    }
 }
 
 impl Real for f64 {
@@ -48,6 +77,10 @@ impl Real for f64 {
     #[inline]
     fn narrow(wide: f64) -> Self {
         wide
+    }
+    #[inline]
+    fn ulp_at(x: f64) -> f64 {
+        spacing(x, f64::EPSILON, f64::MIN_POSITIVE)
     }
 }
 
@@ -123,3 +156,40 @@ macro_rules! impl_vector3 {
 
 impl_vector3!(glam::Vec3, f32);
 impl_vector3!(glam::DVec3, f64);
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ulp_at_is_the_float32_spacing() {
+        assert_eq!(f32::ulp_at(1.0), f32::EPSILON as f64);
+        assert_eq!(f32::ulp_at(0.75), f32::EPSILON as f64 / 2.0);
+        assert_eq!(f32::ulp_at(0.0), 2f64.powi(-149));
+        assert_eq!(f32::ulp_at(-1.0), f32::EPSILON as f64);
+        for x in [1e-40f32, f32::MIN_POSITIVE, 0.04, 3.0, 1e30] {
+            let spacing = f64::from(x.next_up()) - f64::from(x);
+            assert_eq!(f32::ulp_at(x.into()), spacing, "{x:e}");
+        }
+        // An exact value just below 1 is in the binade below, even though
+        // it rounds to 1 in f32.
+        assert_eq!(f32::ulp_at(1.0 - 1e-12), f32::EPSILON as f64 / 2.0);
+    }
+
+    #[test]
+    fn ulp_at_is_the_double_spacing() {
+        assert_eq!(f64::ulp_at(1.0), f64::EPSILON);
+        assert_eq!(f64::ulp_at(0.75), f64::EPSILON / 2.0);
+        assert_eq!(f64::ulp_at(0.0), f64::from_bits(1));
+        assert_eq!(f64::ulp_at(f64::MIN_POSITIVE), f64::from_bits(1));
+        assert_eq!(f64::ulp_at(1e-300), 1e-300f64.next_up() - 1e-300);
+        for x in [
+            f64::from_bits(1 << 52),
+            f64::from_bits(60 << 52),
+            5.8e-300,
+            0.04,
+        ] {
+            assert_eq!(f64::ulp_at(x), x.next_up() - x, "{x:e}");
+        }
+    }
+}

@@ -36,8 +36,9 @@ use crate::Real;
 /// pays for a rounded `1 / eta`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Incidence<T> {
-    /// `|cos θ_i|`, clamped into `[0, 1]`.
-    pub cos_i: T,
+    /// `|cos θ_i|`, clamped into `[0, 1]`: the unsigned cosine of
+    /// incidence (the signed one, `cos_i`, said which side this is).
+    pub abs_cos_i: T,
     /// The (relative) index of the medium the light comes from: 1 from the
     /// outside, `eta` from the inside.
     pub n_i: T,
@@ -76,7 +77,7 @@ impl<T: Real> Incidence<T> {
             (T::one(), eta)
         };
         Some(Self {
-            cos_i: clamp_unit(cos_i.abs()),
+            abs_cos_i: clamp_unit(cos_i.abs()),
             n_i,
             n_t,
             from_inside,
@@ -94,19 +95,70 @@ impl<T: Real> Incidence<T> {
     /// internal reflection).
     #[inline]
     pub(crate) fn discriminant(&self) -> T {
-        compensated::snell_discriminant(self.n_t, T::zero(), self.n_i, self.cos_i)
+        compensated::snell_discriminant(self.n_t, T::zero(), self.n_i, self.abs_cos_i)
     }
 
     /// `cos θ_t ≥ 0` on the far side, or `None` under total internal
     /// reflection (`sin θ_t` would exceed 1).
+    ///
+    /// This is where Snell's law is decided for a resolved incidence: the
+    /// exact Fresnel law, Schlick's working and [`crate::specular::refract`]
+    /// all take `cos θ_t` (or its absence) from it.
     #[inline]
     pub fn cos_transmitted(&self) -> Option<T> {
+        if self.n_i == self.n_t {
+            // Index-matched: the light goes straight on, θ_t = θ_i exactly
+            // (√ of the rounded cos² would lose bits once cos² underflows).
+            return Some(self.abs_cos_i);
+        }
+        self.snell().map(|(_, cos_t)| cos_t)
+    }
+
+    /// Snell's decision with the discriminant it is made from:
+    /// `(d, cos θ_t)` with `d = n_t² cos²θ_t ≥ 0`, or `None` under total
+    /// internal reflection; for the exact Fresnel law, which needs `d`
+    /// itself. Index-matched interfaces are [`Incidence::cos_transmitted`]'s
+    /// to special-case.
+    #[inline]
+    pub(crate) fn snell(&self) -> Option<(T, T)> {
         let d = self.discriminant();
         // `!(d >= 0)` also catches NaN.
         if !(d >= T::zero()) {
             return None;
         }
-        Some(clamp_unit(d.sqrt() / self.n_t))
+        Some((d, clamp_unit(d.sqrt() / self.n_t)))
+    }
+
+    /// Snell's sine, `sin θ_t = n_i sin θ_i / n_t`, with
+    /// `sin θ_i = √((1 − |cos θ_i|)(1 + |cos θ_i|))`: greater than 1 under
+    /// total internal reflection, where it says by how far no refracted ray
+    /// exists. For narration; whether light is transmitted is decided by
+    /// [`Incidence::cos_transmitted`], whose discriminant keeps the digits
+    /// this form loses near the critical angle.
+    ///
+    /// ```
+    /// use radiometry::snell::Incidence;
+    /// // From inside glass at 60°: sin θ_t = 1.5 · √3/2 ≈ 1.299 > 1.
+    /// let inside = Incidence::resolve(-0.5_f64, 1.5).unwrap();
+    /// assert!((inside.sin_transmitted() - 1.5 * 0.75_f64.sqrt()).abs() < 1e-15);
+    /// ```
+    #[inline]
+    pub fn sin_transmitted(&self) -> T {
+        let c = self.abs_cos_i;
+        let sin_i = ((T::one() - c) * (T::one() + c)).sqrt();
+        self.n_i * sin_i / self.n_t
+    }
+
+    /// An incidence of NaNs, for laws that return numbers on input that
+    /// describes no interface.
+    #[inline]
+    pub(crate) fn undefined() -> Self {
+        Self {
+            abs_cos_i: T::nan(),
+            n_i: T::nan(),
+            n_t: T::nan(),
+            from_inside: false,
+        }
     }
 }
 

@@ -57,10 +57,12 @@ pub struct Refraction<V: Vector3> {
 /// need `sin θ_t > 1`), and for inputs that describe no interface (a NaN
 /// component, `eta ≤ 0` or not finite).
 ///
-/// The transmitted direction is `−wi / η + (cos θ_i / η − cos θ_t) n'`, with
-/// `η` and `n'` the effective index and the normal on the incident side
-/// (pbrt-v4 §9.3, eq. 9.4). `cos θ_t` comes from [`Incidence::cos_transmitted`],
-/// accurate near the critical angle.
+/// The side is resolved by [`Incidence::resolve`], `cos θ_t` comes from
+/// [`Incidence::cos_transmitted`] (accurate near the critical angle), and the
+/// direction from [`refract_resolved`]: a caller that already holds the
+/// incidence and `cos θ_t` (a [`crate::fresnel::DielectricFresnel`], a
+/// [`crate::fresnel::SchlickDielectric`]) calls that instead and gets the
+/// same bits.
 ///
 /// ```
 /// use glam::DVec3;
@@ -73,18 +75,47 @@ pub struct Refraction<V: Vector3> {
 pub fn refract<V: Vector3>(wi: V, n: V, eta: V::Scalar) -> Option<Refraction<V>> {
     let incidence = Incidence::resolve(n.dot(wi), eta)?;
     let cos_t = incidence.cos_transmitted()?;
+    Some(refract_resolved(wi, n, &incidence, cos_t))
+}
+
+/// The refracted ray for an incidence already resolved: `incidence` is
+/// [`Incidence::resolve`]`(dot(n, wi), eta)` and `cos_t` its
+/// [`Incidence::cos_transmitted`] (or the `cos_t` of a Fresnel law that
+/// returned them), so neither the side nor Snell's discriminant is decided
+/// again.
+///
+/// The transmitted direction is `−wi / η + (cos θ_i / η − cos θ_t) n'`, with
+/// `η` and `n'` the effective index and the normal on the incident side
+/// (pbrt-v4 §9.3, eq. 9.4).
+///
+/// ```
+/// use glam::DVec3;
+/// use radiometry::fresnel::dielectric_polarized;
+/// use radiometry::specular::{refract, refract_resolved};
+/// let (wi, n) = (DVec3::new(0.0, 0.6, 0.8), DVec3::Z);
+/// let f = dielectric_polarized(n.dot(wi), 1.5);
+/// let t = refract_resolved(wi, n, &f.incidence, f.cos_t.unwrap());
+/// assert_eq!(Some(t), refract(wi, n, 1.5));
+/// ```
+#[inline]
+pub fn refract_resolved<V: Vector3>(
+    wi: V,
+    n: V,
+    incidence: &Incidence<V::Scalar>,
+    cos_t: V::Scalar,
+) -> Refraction<V> {
     let n_facing = if incidence.from_inside { -n } else { n };
     // The tangential part scales by n_i / n_t; one of the two is exactly 1.
-    let tangential = n_facing * incidence.cos_i - wi;
+    let tangential = n_facing * incidence.abs_cos_i - wi;
     let tangential = if incidence.from_inside {
         tangential * incidence.n_i
     } else {
         tangential * (V::Scalar::one() / incidence.n_t)
     };
     let direction = tangential - n_facing * cos_t;
-    Some(Refraction {
+    Refraction {
         direction,
         eta_path: incidence.eta_path(),
         cos_t,
-    })
+    }
 }

@@ -16,29 +16,12 @@ use radiometry::fresnel::{
 use radiometry::specular::{reflect, refract};
 use radiometry::{fresnel, snell};
 
+mod common;
+use common::strategies::{
+    fraction, relative_index_log_uniform, unit_direction, unit_direction_above,
+};
+
 const EPS: f64 = f64::EPSILON;
-
-/// A unit direction, uniform in (cos θ, φ) over the whole sphere.
-fn unit_direction() -> impl Strategy<Value = DVec3> {
-    (-1.0..=1.0f64, 0.0..std::f64::consts::TAU).prop_map(|(z, phi): (f64, f64)| {
-        let r = (1.0 - z * z).max(0.0).sqrt();
-        DVec3::new(r * phi.cos(), r * phi.sin(), z)
-    })
-}
-
-/// A unit direction strictly above the surface z = 0 (cos θ ≥ 1e-3).
-fn upper_direction() -> impl Strategy<Value = DVec3> {
-    (1e-3..=1.0f64, 0.0..std::f64::consts::TAU).prop_map(|(z, phi): (f64, f64)| {
-        let r = (1.0 - z * z).sqrt();
-        DVec3::new(r * phi.cos(), r * phi.sin(), z)
-    })
-}
-
-/// A relative index of refraction between 1/4 and 4, log-uniform, as both
-/// sides of everyday interfaces (air, water, glass, diamond) span.
-fn relative_index() -> impl Strategy<Value = f64> {
-    (-4f64.ln()..=4f64.ln()).prop_map(f64::exp)
-}
 
 /// The sine of the angle between a unit vector and the unit normal, from
 /// the cross product: independent of the cosine the laws use.
@@ -53,7 +36,7 @@ proptest! {
     /// Tolerance 16ε(1 + η): the transmitted vector is a sum of terms of size
     /// up to 1/η + 1, each rounded a few times, and η scales the error of sin θ_t.
     #[test]
-    fn snell_law_holds(wi in unit_direction(), eta in relative_index()) {
+    fn snell_law_holds(wi in unit_direction(), eta in relative_index_log_uniform()) {
         let n = DVec3::Z;
         if let Some(t) = refract(wi, n, eta) {
             let lhs = sine(wi, n);
@@ -65,7 +48,7 @@ proptest! {
     /// The refracted direction is a unit vector on the far side, in the plane
     /// of incidence. Tolerance 16ε(1 + 1/η), the size of its rounding errors.
     #[test]
-    fn refracted_direction_is_unit_and_in_the_plane_of_incidence(wi in unit_direction(), eta in relative_index()) {
+    fn refracted_direction_is_unit_and_in_the_plane_of_incidence(wi in unit_direction(), eta in relative_index_log_uniform()) {
         let n = DVec3::Z;
         if let Some(t) = refract(wi, n, eta) {
             let tol = 16.0 * EPS * (1.0 + 1.0 / t.eta_path);
@@ -85,7 +68,7 @@ proptest! {
     /// η each round once, and the sampled direction is unit only to 2ε). (The exact boundary, to the last double and
     /// float, is checked in exact integer arithmetic in `tests/tir_boundary.rs`.)
     #[test]
-    fn total_internal_reflection_happens_exactly_when_sin_t_exceeds_one(wi in unit_direction(), eta in relative_index()) {
+    fn total_internal_reflection_happens_exactly_when_sin_t_exceeds_one(wi in unit_direction(), eta in relative_index_log_uniform()) {
         let n = DVec3::Z;
         let cos_i = wi.dot(n);
         let eta_path = if cos_i < 0.0 { 1.0 / eta } else { eta };
@@ -122,7 +105,7 @@ proptest! {
     #[test]
     fn fresnel_is_a_fraction(
         cos_i in -1.0..=1.0f64,
-        eta in relative_index(),
+        eta in relative_index_log_uniform(),
         n in 0.01..10.0f64,
         kappa in 0.0..20.0f64,
     ) {
@@ -141,7 +124,7 @@ proptest! {
     /// formulas against each other. Tolerance 8ε: each side is a ratio of
     /// accurately computed positive terms, good to a few ulps.
     #[test]
-    fn reflectance_plus_transmittance_is_one(cos_i in -1.0..=1.0f64, eta in relative_index()) {
+    fn reflectance_plus_transmittance_is_one(cos_i in -1.0..=1.0f64, eta in relative_index_log_uniform()) {
         let d = dielectric_polarized(cos_i, eta);
         prop_assert!((d.r_s + d.t_s - 1.0).abs() <= 8.0 * EPS, "{d:?}");
         prop_assert!((d.r_p + d.t_p - 1.0).abs() <= 8.0 * EPS, "{d:?}");
@@ -152,7 +135,7 @@ proptest! {
     /// Tolerance 16 ulps of the result: complex magnitudes (`hypot`) and a
     /// complex square root add a few roundings over the real path.
     #[test]
-    fn conductor_with_zero_kappa_equals_dielectric(cos_i in 0.0..=1.0f64, eta in relative_index()) {
+    fn conductor_with_zero_kappa_equals_dielectric(cos_i in 0.0..=1.0f64, eta in relative_index_log_uniform()) {
         let (c, d) = (conductor(cos_i, eta, 0.0), dielectric(cos_i, eta));
         prop_assert!((c - d).abs() <= 16.0 * EPS * d.max(f64::MIN_POSITIVE), "conductor {c} dielectric {d}");
     }
@@ -173,7 +156,7 @@ proptest! {
     /// incidence the reversed path lies next to the critical angle, where R
     /// approaches 1 like 1 − a√Δ and its slope is unbounded.
     #[test]
-    fn fresnel_is_symmetric_under_reversal_of_the_path(cos_i in 0.0..=1.0f64, eta in relative_index()) {
+    fn fresnel_is_symmetric_under_reversal_of_the_path(cos_i in 0.0..=1.0f64, eta in relative_index_log_uniform()) {
         if let Some(cos_t) = snell::cos_transmitted(cos_i, eta) {
             let delta = 4.0 * EPS * cos_t.max(f64::MIN_POSITIVE);
             let at = |c: f64| dielectric(-c.max(0.0), eta);
@@ -199,7 +182,7 @@ proptest! {
     /// gap to R = 1 must close like √δ, 1e4 times smaller δ giving a gap at
     /// least 50 times smaller (√ gives 100), and past it R is exactly 1.
     #[test]
-    fn fresnel_is_continuous_in_angle(eta in relative_index(), kappa in 0.0..5.0f64, from_inside in any::<bool>()) {
+    fn fresnel_is_continuous_in_angle(eta in relative_index_log_uniform(), kappa in 0.0..5.0f64, from_inside in any::<bool>()) {
         use std::f64::consts::FRAC_PI_2;
         let sign = if from_inside { -1.0 } else { 1.0 };
         let eta_path = if from_inside { 1.0 / eta } else { eta };
@@ -300,10 +283,6 @@ fn rgb_laws_loop_over_the_scalar_law() {
 mod brdfs {
     use super::*;
 
-    fn coefficient() -> impl Strategy<Value = f64> {
-        0.0..=1.0f64
-    }
-
     proptest! {
         #![proptest_config(ProptestConfig::with_cases(1000))]
 
@@ -312,8 +291,8 @@ mod brdfs {
         /// possibly summed in another order.
         #[test]
         fn helmholtz_reciprocity_holds(
-            a in upper_direction(), b in upper_direction(),
-            kd in coefficient(), ks in coefficient(), shine in 1.0..200.0f64,
+            a in unit_direction_above(), b in unit_direction_above(),
+            kd in fraction(), ks in fraction(), shine in 1.0..200.0f64,
         ) {
             let n = DVec3::Z;
             let check = |name: &str, ab: f64, ba: f64| {
@@ -332,7 +311,7 @@ mod brdfs {
         /// `albedo` of the light from any direction. The midpoint rule in cos θ
         /// is exact for this integrand, so the tolerance is rounding: 1e-12.
         #[test]
-        fn normalized_lambert_has_albedo_kd(kd in coefficient(), wo in upper_direction(), n in unit_direction()) {
+        fn normalized_lambert_has_albedo_kd(kd in fraction(), wo in unit_direction_above(), n in unit_direction()) {
             // Turn wo into n's hemisphere: only the angle between them matters.
             let wo = if wo.dot(n) > 0.0 { wo } else { reflect(wo, n.cross(DVec3::X).try_normalize().unwrap_or(DVec3::Y)) };
             prop_assume!(wo.dot(n) > 1e-3);

@@ -13,6 +13,7 @@ use radiometry::brdf::{BlinnPhong, BlinnPhongReciprocal, Brdf, Lambert};
 use radiometry::fresnel::{conductor, dielectric_polarized, f0, schlick};
 use radiometry::radiance::point_irradiance;
 use radiometry::specular::{reflect, refract};
+use radiometry::Real;
 
 const EPS: f64 = f32::EPSILON as f64;
 
@@ -67,13 +68,6 @@ impl Worst {
     }
 }
 
-/// The spacing of `f32` values at `x`, down to the smallest subnormal, as an
-/// `f64`.
-fn ulp32(x: f64) -> f64 {
-    let exponent = x.abs().log2().floor() as i32; // saturates for x = 0
-    2f64.powi(exponent.saturating_sub(23).max(-149))
-}
-
 /// Cosines over both sides, 4001 of them, exact in `f32`, with the grazing
 /// ones the uniform grid misses.
 fn cosines() -> Vec<f32> {
@@ -119,7 +113,7 @@ fn f32_fresnel_is_within_8_f32_ulps_of_f64() {
                 (&mut t, f32_.transmittance(), f64_.transmittance()),
             ] {
                 let diff = (f64::from(a) - b).abs();
-                worst.record(diff / ulp32(b), at);
+                worst.record(diff / f32::ulp_at(b), at);
                 if b >= f64::from(f32::MIN_POSITIVE) {
                     rel.record(diff / b, at);
                 }
@@ -139,12 +133,12 @@ fn f32_fresnel_is_within_8_f32_ulps_of_f64() {
         for c in cosines().into_iter().filter(|&c| c >= 0.0) {
             let exact = conductor(f64::from(c), f64::from(n), f64::from(kappa));
             let diff = (f64::from(conductor(c, n, kappa)) - exact).abs();
-            metal.record(diff / ulp32(exact), || {
+            metal.record(diff / f32::ulp_at(exact), || {
                 format!("n {n}, κ {kappa}, cos {c:e}")
             });
             let s64 = schlick(f64::from(c), f0(f64::from(n), f64::from(kappa)));
             let s32 = schlick(c, f0(n, kappa));
-            schlick_diff.record((f64::from(s32) - s64).abs() / ulp32(s64), || {
+            schlick_diff.record((f64::from(s32) - s64).abs() / f32::ulp_at(s64), || {
                 format!("n {n}, κ {kappa}, cos {c:e}")
             });
         }

@@ -14,20 +14,12 @@ use radiometry::radiance::across_interface;
 use radiometry::snell::{cos_transmitted, critical_angle, transmitted_angle};
 use radiometry::specular::{reflect, refract};
 
+mod common;
+use common::strategies::{
+    relative_index_uniform, travel_direction_down, travel_direction_down_oblique, unit_direction,
+};
+
 const EPS: f64 = f64::EPSILON;
-
-/// A direction of travel towards the surface z = 0 from above, at least
-/// 0.1° off grazing.
-fn incoming() -> impl Strategy<Value = DVec3> {
-    (0.0018..=1.0f64, 0.0..std::f64::consts::TAU).prop_map(|(cos, phi): (f64, f64)| {
-        let sin = (1.0 - cos * cos).sqrt();
-        DVec3::new(sin * phi.cos(), sin * phi.sin(), -cos)
-    })
-}
-
-fn relative_index() -> impl Strategy<Value = f64> {
-    0.25..=4.0f64
-}
 
 /// How far a textbook refraction formula may sit from the law and still be
 /// called right. Every textbook form takes `cos_t = √(1 − r²(1 − cos²θᵢ))`
@@ -49,7 +41,7 @@ proptest! {
     /// refracts (within [`textbook_tolerance`]), and is NaN under total
     /// internal reflection.
     #[test]
-    fn course_001_slide_refraction_is_snells_law(v in incoming(), eta in relative_index()) {
+    fn course_001_slide_refraction_is_snells_law(v in travel_direction_down(), eta in relative_index_uniform()) {
         let n = DVec3::Z;
         let slide = course::refract_001_slide(v, n, 1.0 / eta);
         match refract(-v, n, eta) {
@@ -64,7 +56,7 @@ proptest! {
     /// `001`, Cg `refract(I, N, etaRatio)`: correct where light refracts
     /// (within [`textbook_tolerance`]), and the zero vector under total internal reflection.
     #[test]
-    fn course_001_cg_refract_is_snells_law_with_zero_vector_for_tir(v in incoming(), eta in relative_index()) {
+    fn course_001_cg_refract_is_snells_law_with_zero_vector_for_tir(v in travel_direction_down(), eta in relative_index_uniform()) {
         let n = DVec3::Z;
         let cg = course::refract_001_cg(v, n, 1.0 / eta);
         match refract(-v, n, eta) {
@@ -77,7 +69,7 @@ proptest! {
     /// Correct where light refracts (within [`textbook_tolerance`]); the zero vector under total internal
     /// reflection.
     #[test]
-    fn course_003_code_refract_is_snells_law_with_zero_vector_for_tir(v in incoming(), eta in relative_index()) {
+    fn course_003_code_refract_is_snells_law_with_zero_vector_for_tir(v in travel_direction_down(), eta in relative_index_uniform()) {
         let n = DVec3::Z;
         let code = course::refract_003_code(v, n, eta);
         match refract(-v, n, eta) {
@@ -85,24 +77,6 @@ proptest! {
             None => prop_assert_eq!(code, DVec3::ZERO),
         }
     }
-}
-
-/// A direction of travel towards the surface z = 0 from above, oblique:
-/// between 0.1° off grazing and 0.5° off the normal, where the chapter's
-/// `N⊥ = (…)/sin α` is defined.
-fn incoming_oblique() -> impl Strategy<Value = DVec3> {
-    (0.0018..=0.99996f64, 0.0..std::f64::consts::TAU).prop_map(|(cos, phi): (f64, f64)| {
-        let sin = (1.0 - cos * cos).sqrt();
-        DVec3::new(sin * phi.cos(), sin * phi.sin(), -cos)
-    })
-}
-
-/// Any unit vector, for laws that hold for every pair of directions.
-fn unit_vector() -> impl Strategy<Value = DVec3> {
-    (-1.0..=1.0f64, 0.0..std::f64::consts::TAU).prop_map(|(z, phi): (f64, f64)| {
-        let r = (1.0 - z * z).sqrt();
-        DVec3::new(r * phi.cos(), r * phi.sin(), z)
-    })
 }
 
 /// The ray's direction of travel at incidence angle `alpha` in the xz-plane,
@@ -133,7 +107,7 @@ proptest! {
     /// same products and sums in another order, on components of size
     /// `|v| + 2|v·N| ≤ 3`, each rounded a few times.
     #[test]
-    fn course_003_boxed_and_code_reflection_are_the_law_of_reflection(v in unit_vector(), n in unit_vector()) {
+    fn course_003_boxed_and_code_reflection_are_the_law_of_reflection(v in unit_direction(), n in unit_direction()) {
         let law = reflect(-v, n);
         let boxed = course::reflect_003_boxed(v, n);
         let code = course::reflect_003_code(v, n);
@@ -144,7 +118,7 @@ proptest! {
     /// `001` line 40 `r = e − 2(n·e)n`, line 73 `R = I − 2N(N·I)` and the Cg
     /// `reflect` (lines 76–79): the law of reflection, within 16ε as above.
     #[test]
-    fn course_001_reflect_is_the_law_of_reflection(i in unit_vector(), n in unit_vector()) {
+    fn course_001_reflect_is_the_law_of_reflection(i in unit_direction(), n in unit_direction()) {
         let law = reflect(-i, n);
         let slide = course::reflect_001(i, n);
         prop_assert!((slide - law).length() <= 16.0 * EPS, "{slide} vs {law}");
@@ -167,7 +141,7 @@ proptest! {
     #[test]
     fn course_003_snell_angle_formula_is_snells_law_without_tir_guard(
         theta_in in 0.0..=std::f64::consts::FRAC_PI_2,
-        eta in relative_index(),
+        eta in relative_index_uniform(),
     ) {
         let course = course::refraction_angle_003(theta_in, eta);
         let x = theta_in.sin() / eta;
@@ -195,7 +169,7 @@ proptest! {
     /// discriminant; the tangent's `sin α` cancels against `sin β`'s),
     /// and NaN under total internal reflection.
     #[test]
-    fn course_003_derivation_with_the_true_tangent_is_snells_law(v in incoming_oblique(), eta in relative_index()) {
+    fn course_003_derivation_with_the_true_tangent_is_snells_law(v in travel_direction_down_oblique(), eta in relative_index_uniform()) {
         let n = DVec3::Z;
         let cos_alpha = -v.dot(n);
         let sin_alpha = (1.0 - cos_alpha * cos_alpha).sqrt();

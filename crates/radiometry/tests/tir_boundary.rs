@@ -26,6 +26,9 @@ use radiometry::snell::cos_transmitted;
 use radiometry::specular::refract;
 use radiometry::Vector3;
 
+mod common;
+use common::strategies::relative_index_with_extremes;
+
 /// `x = m · 2^e` exactly, for a finite `x`.
 fn dyadic(x: f64) -> (BigInt, i32) {
     let bits = x.to_bits();
@@ -120,15 +123,6 @@ fn step_f32(x: f32, k: i32) -> f32 {
     f32::from_bits((x.to_bits() as i32 + k) as u32)
 }
 
-/// A relative index with a critical angle on one side or the other, from
-/// 1/4 to 4 log-uniformly, plus the extremes near 1.
-fn relative_index() -> impl Strategy<Value = f64> {
-    prop_oneof![
-        8 => (-4f64.ln()..=4f64.ln()).prop_map(f64::exp),
-        1 => prop_oneof![Just(1.0 + 1e-12), Just(1.0 - 1e-12), Just(1e3), Just(1e-3)],
-    ]
-}
-
 /// The cosine of the critical angle on the side that has one, with the sign
 /// that puts the light there: from inside for `eta > 1`, from outside for
 /// `eta < 1`. Within a few ulps (`eta − 1` and `1 − eta` are exact, so
@@ -148,7 +142,7 @@ proptest! {
     /// is decided as the exact sign decides it, and the boundary is crossed
     /// (so the walk really straddles it).
     #[test]
-    fn total_internal_reflection_switches_at_the_exact_double(eta in relative_index()) {
+    fn total_internal_reflection_switches_at_the_exact_double(eta in relative_index_with_extremes()) {
         let start = critical_cosine(eta);
         let (mut seen_tir, mut seen_refraction) = (false, false);
         for k in -2000..=2000 {
@@ -167,7 +161,7 @@ proptest! {
     /// f32: the same for every float within 200 f32 ulps of the critical
     /// cosine, with the f32 inputs' exact values.
     #[test]
-    fn total_internal_reflection_switches_at_the_exact_float(eta in relative_index()) {
+    fn total_internal_reflection_switches_at_the_exact_float(eta in relative_index_with_extremes()) {
         let eta = eta as f32;
         prop_assume!(eta != 1.0);
         let start = critical_cosine(f64::from(eta)) as f32;
@@ -187,7 +181,7 @@ proptest! {
 
     /// Away from the boundary too: any cosine, either side, any index.
     #[test]
-    fn total_internal_reflection_is_decided_exactly_everywhere(cos_i in -1.0..=1.0f64, eta in relative_index()) {
+    fn total_internal_reflection_is_decided_exactly_everywhere(cos_i in -1.0..=1.0f64, eta in relative_index_with_extremes()) {
         prop_assume!(cos_i != 0.0);
         prop_assert_eq!(crate_tir_f64(cos_i, eta), exactly_tir(cos_i, eta));
         let (c32, e32) = (cos_i as f32, eta as f32);
@@ -228,7 +222,7 @@ proptest! {
     /// one ulp of `sin θ` spans thousands of ulps of θ, which is why the law
     /// reads the cosine there.
     #[test]
-    fn transmitted_angle_refracts_below_and_reflects_above_the_critical_angle(eta in relative_index()) {
+    fn transmitted_angle_refracts_below_and_reflects_above_the_critical_angle(eta in relative_index_with_extremes()) {
         use radiometry::snell::{critical_angle, transmitted_angle};
         let eta_path = if eta < 1.0 { eta } else { 1.0 / eta };
         let theta_c = critical_angle(eta_path).expect("eta_path < 1 has a critical angle");

@@ -7,10 +7,8 @@
 use std::path::Path;
 
 use criterion::{criterion_group, Criterion, Throughput};
-use tracer::integrator::Settings;
-use tracer::needs;
-use tracer::render::render;
-use tracer::scene::{self, IntegratorKind};
+use tracer::job::RenderJob;
+use tracer::scene::{self, IntegratorKind, Settings};
 
 const SCENES: [&str; 9] = [
     "first_red_sphere",
@@ -45,18 +43,17 @@ fn rays_per_second(c: &mut Criterion) {
             let settings = Settings {
                 integrator,
                 spp,
-                ..Settings::from_scene(&scene)
+                ..scene.settings
             };
-            let machinery = needs::analyse(&scene, &settings).machinery(&settings);
-            let rays = render(&scene, &settings, &machinery, Some(1), &|_| {})
+            let job = RenderJob::with_settings(scene.clone(), settings).expect("renderable");
+            let rays = job
+                .render(Some(1), &|_| {})
                 .expect("thread pool")
                 .rays
                 .total();
             group.throughput(Throughput::Elements(rays));
             group.bench_function(format!("{name}/{integrator}"), |b| {
-                b.iter(|| {
-                    render(&scene, &settings, &machinery, Some(1), &|_| {}).expect("thread pool")
-                })
+                b.iter(|| job.render(Some(1), &|_| {}).expect("thread pool"))
             });
         }
     }

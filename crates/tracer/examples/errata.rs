@@ -15,14 +15,15 @@
 
 use std::path::Path;
 
-use tracer::integrator::Settings;
-use tracer::render::{render, Image};
-use tracer::scene::{self, FresnelModel, IntegratorKind, RayOffset, Scene};
-use tracer::{needs, output};
+use tracer::job::RenderJob;
+use tracer::output;
+use tracer::render::Image;
+use tracer::scene::{self, FresnelModel, IntegratorKind, RayOffset, Scene, Settings};
 
 fn draw(scene: &Scene, settings: &Settings) -> Image {
-    let machinery = needs::analyse(scene, settings).machinery(settings);
-    render(scene, settings, &machinery, None, &|_| {})
+    RenderJob::with_settings(scene.clone(), *settings)
+        .expect("renderable")
+        .render(None, &|_| {})
         .expect("thread pool")
         .image
 }
@@ -85,7 +86,7 @@ fn table() -> String {
         let scene = load(name);
         let physical = Settings {
             integrator: IntegratorKind::Whitted,
-            ..Settings::from_scene(&scene)
+            ..scene.settings
         };
         let course = Settings {
             integrator: IntegratorKind::Course,
@@ -100,7 +101,7 @@ fn table() -> String {
     }
     for name in ["gold_spheres", "kaleidoscope_lit", "webgl_seven_spheres"] {
         let scene = load(name);
-        let exact = Settings::from_scene(&scene);
+        let exact = scene.settings;
         let reversed = Settings {
             fresnel: FresnelModel::Course,
             ..exact

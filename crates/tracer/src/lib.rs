@@ -8,7 +8,8 @@
 //! `radiometry`; this crate adds geometry, sampling and bookkeeping.
 //!
 //! ```
-//! use tracer::{integrator::Settings, needs, render, scene};
+//! use tracer::job::{Overrides, RenderJob};
+//! use tracer::scene;
 //!
 //! // The course's first picture: a red sphere at (1, 1, 4), seen from (0, 0, −2).
 //! let scene = scene::parse(r#"{
@@ -18,9 +19,8 @@
 //!     "materials": { "red": { "type": "flat", "radiance": [1, 0, 0] } },
 //!     "objects": [ { "type": "sphere", "center": [1, 1, 4], "radius": 0.8, "material": "red" } ]
 //! }"#).unwrap();
-//! let settings = Settings::default();
-//! let machinery = needs::analyse(&scene, &settings).machinery(&settings);
-//! let out = render::render(&scene, &settings, &machinery, Some(1), &|_| {}).unwrap();
+//! let job = RenderJob::new(scene, &Overrides::default()).unwrap();
+//! let out = job.render(Some(1), &|_| {}).unwrap();
 //! // Up and to the right of the centre, as the course says; the centre is empty.
 //! assert_eq!(out.image.get(20, 8).to_array(), [1.0, 0.0, 0.0]);
 //! assert_eq!(out.image.get(16, 12).to_array(), [0.0, 0.0, 0.0]);
@@ -30,11 +30,12 @@
 //!
 //! | module | what |
 //! |---|---|
-//! | [`scene`] | the JSON scene schema, parsing and validation (`docs/scene-schema.md`) |
+//! | [`job`] | the way in: a scene with its settings settled once, rendered and written |
+//! | [`scene`] | the JSON scene schema, parsing and validation (`docs/scene-schema.md`), the settings |
 //! | [`geometry`] | rays, spheres, two-sided planes, the kaleidoscope's mirror tube |
 //! | [`camera`] | the course's pinhole and the look-at camera unprojected through the inverse view-projection |
 //! | [`spawn`] | where secondary rays start: the hit's error bound, or the course's fixed epsilon |
-//! | [`integrator`] | `local`, `whitted`, `path` and the course shader's loop |
+//! | [`integrator`] | `local`, `whitted`, `path` and the course shader's loop, one file each, and the shared scatter step |
 //! | [`needs`] | what a scene needs, so the renderer runs only that |
 //! | [`render`] | the image, in parallel, identical for any thread count |
 //! | [`rng`] | PCG32 streams, one per pixel |
@@ -57,6 +58,7 @@
 pub mod camera;
 pub mod geometry;
 pub mod integrator;
+pub mod job;
 pub mod needs;
 pub mod output;
 pub mod render;

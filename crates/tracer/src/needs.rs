@@ -15,8 +15,8 @@
 use serde::Serialize;
 
 use crate::geometry::{Object, Tube};
-use crate::integrator::{Machinery, Settings};
-use crate::scene::{IntegratorKind, Light, Material, Scene, SceneError};
+use crate::integrator::Machinery;
+use crate::scene::{IntegratorKind, Light, Material, Scene, Settings};
 
 /// How deep specular recursion can go in a scene.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
@@ -187,24 +187,4 @@ impl Needs {
             },
         }
     }
-}
-
-/// Refuses combinations an integrator cannot render.
-pub fn check_integrator(scene: &Scene, settings: &Settings) -> Result<(), SceneError> {
-    if settings.integrator == IntegratorKind::Course {
-        if let Some((name, _)) = scene
-            .material_names
-            .iter()
-            .zip(&scene.materials)
-            .find(|(_, m)| matches!(m, Material::Dielectric { .. }))
-        {
-            return Err(SceneError::Invalid {
-                path: format!("materials.{name}"),
-                message: "the course's shader has no refraction; render dielectrics with \
-                          --integrator whitted or path"
-                    .into(),
-            });
-        }
-    }
-    Ok(())
 }

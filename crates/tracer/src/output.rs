@@ -13,7 +13,7 @@
 use std::io::Write;
 
 use image::ImageEncoder;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 use crate::render::Image;
 
@@ -27,6 +27,20 @@ pub enum OutputError {
         path: String,
         /// The reason.
         source: std::io::Error,
+    },
+    /// The destination's directory does not exist.
+    #[error("cannot write {path}: the directory {dir} does not exist")]
+    NoDirectory {
+        /// The destination.
+        path: String,
+        /// Its directory.
+        dir: String,
+    },
+    /// A PNG's name whose PFM would be itself (it ends in `.pfm`).
+    #[error("{path}: give the PNG's name (the PFM is written beside it)")]
+    PfmIsPng {
+        /// The name given.
+        path: String,
     },
     /// The PNG encoder failed.
     #[error("cannot encode {path} as PNG: {source}")]
@@ -71,22 +85,70 @@ pub fn pfm_bytes(image: &Image) -> Vec<u8> {
     out
 }
 
+/// The directory `path` is written into, which must exist.
+fn directory(path: &Path) -> Result<&Path, OutputError> {
+    let dir = match path.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d,
+        _ => Path::new("."),
+    };
+    if !dir.is_dir() {
+        return Err(OutputError::NoDirectory {
+            path: path.display().to_string(),
+            dir: dir.display().to_string(),
+        });
+    }
+    Ok(dir)
+}
+
+/// Where a render is written: a PNG and, beside it, the PFM of the same
+/// name. Checked when made, so that an unwritable destination is refused
+/// before the render is spent on it.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Destination {
+    png: PathBuf,
+    pfm: PathBuf,
+}
+
+impl Destination {
+    /// The PNG at `png`, the PFM beside it; its directory must exist.
+    pub fn new(png: &Path) -> Result<Self, OutputError> {
+        let pfm = png.with_extension("pfm");
+        if pfm == png {
+            return Err(OutputError::PfmIsPng {
+                path: png.display().to_string(),
+            });
+        }
+        directory(png)?;
+        Ok(Destination {
+            png: png.to_owned(),
+            pfm,
+        })
+    }
+
+    /// The PNG.
+    pub fn png(&self) -> &Path {
+        &self.png
+    }
+
+    /// The PFM.
+    pub fn pfm(&self) -> &Path {
+        &self.pfm
+    }
+
+    /// Writes `image` to both, each atomically.
+    pub fn write(&self, image: &Image) -> Result<(), OutputError> {
+        write_png(&self.png, image)?;
+        write_pfm(&self.pfm, image)
+    }
+}
+
 /// Writes `bytes` to `path` atomically: a temporary file beside it, renamed.
 pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), OutputError> {
     let io = |source| OutputError::Io {
         path: path.display().to_string(),
         source,
     };
-    let dir = match path.parent() {
-        Some(d) if !d.as_os_str().is_empty() => d,
-        _ => Path::new("."),
-    };
-    if !dir.is_dir() {
-        return Err(io(std::io::Error::new(
-            std::io::ErrorKind::NotFound,
-            format!("the directory {} does not exist", dir.display()),
-        )));
-    }
+    let dir = directory(path)?;
     let mut temp = tempfile::NamedTempFile::new_in(dir).map_err(|e| {
         io(std::io::Error::new(
             e.kind(),

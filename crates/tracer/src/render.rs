@@ -7,9 +7,8 @@ use std::time::{Duration, Instant};
 use glam::{DVec3, Vec3};
 use rayon::prelude::*;
 
-use crate::integrator::{Machinery, RayCounts, Settings, Tracer};
+use crate::integrator::{RayCounts, Tracer};
 use crate::rng::Pcg32;
-use crate::scene::Scene;
 
 /// A linear-radiance image, W/(sr·m²) per channel, rows top to bottom.
 #[derive(Clone, Debug, PartialEq)]
@@ -52,34 +51,27 @@ pub struct Rendered {
     pub elapsed: Duration,
 }
 
-/// Renders `scene` with `settings`, running only `machinery`, on `threads`
-/// threads (`None`: all cores). `progress` is called with the number of rows
-/// finished so far, from any thread.
-pub fn render(
-    scene: &Scene,
-    settings: &Settings,
-    machinery: &Machinery,
+/// Renders with `tracer` on `threads` threads (`None`: all cores).
+/// `progress` is called with the number of rows finished so far, from any
+/// thread. [`RenderJob`](crate::job::RenderJob) is the way in.
+pub(crate) fn render(
+    tracer: &Tracer,
     threads: Option<usize>,
     progress: &(dyn Fn(usize) + Sync),
 ) -> Result<Rendered, rayon::ThreadPoolBuildError> {
-    let tracer = Tracer {
-        scene,
-        settings: *settings,
-        machinery: machinery.clone(),
-    };
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(threads.unwrap_or(0))
         .build()?;
     let rows_done = AtomicUsize::new(0);
     let start = Instant::now();
-    let (width, height) = (scene.width, scene.height);
+    let (width, height) = (tracer.scene.width, tracer.scene.height);
     let rows: Vec<(Vec<Vec3>, RayCounts)> = pool.install(|| {
         (0..height)
             .into_par_iter()
             .map(|y| {
                 let mut counts = RayCounts::default();
                 let row = (0..width)
-                    .map(|x| pixel(&tracer, x, y, &mut counts))
+                    .map(|x| pixel(tracer, x, y, &mut counts))
                     .collect();
                 progress(rows_done.fetch_add(1, Ordering::Relaxed) + 1);
                 (row, counts)

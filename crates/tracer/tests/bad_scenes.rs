@@ -2,7 +2,7 @@
 //! of the bad value and says what was expected; none panics.
 
 use serde_json::{json, Value};
-use tracer::scene::{self, SceneError};
+use tracer::scene::{self, ErrorKind};
 
 fn good() -> Value {
     json!({
@@ -212,6 +212,132 @@ fn bad_scenes_are_refused_with_the_path_of_the_bad_value() {
 #[test]
 fn a_missing_file_is_named() {
     let err = scene::load(std::path::Path::new("no/such/scene.json")).unwrap_err();
-    assert!(matches!(err, SceneError::Io { .. }));
+    assert!(matches!(err.kind(), ErrorKind::Read { .. }));
     assert!(err.to_string().contains("no/such/scene.json"));
+}
+
+/// One case per line: the bad file, the field the error names, and its kind
+/// (what a front end translates; the English text is only its display).
+#[test]
+fn each_refusal_carries_its_field_and_kind() {
+    type Kind = fn(&ErrorKind) -> bool;
+    let cases: Vec<(&str, String, &str, Kind)> = vec![
+        ("syntax", "{\"version\": 1,".into(), "?", |k| {
+            matches!(k, ErrorKind::Syntax { line: 1, .. })
+        }),
+        (
+            "schema",
+            with("/camera/zoom", json!(2)),
+            "camera.zoom",
+            |k| matches!(k, ErrorKind::Schema { .. }),
+        ),
+        (
+            "type missing",
+            with("/lights/0/type", Value::Null).replace(",\"type\":null", ""),
+            "lights[0].type",
+            |k| matches!(k, ErrorKind::TypeMissing),
+        ),
+        (
+            "type not a string",
+            with("/objects/0/type", json!(3)),
+            "objects[0].type",
+            |k| matches!(k, ErrorKind::TypeNotString { got } if got == "3"),
+        ),
+        ("version", with("/version", json!(2)), "version", |k| {
+            matches!(k, ErrorKind::Version { got: 2 })
+        }),
+        (
+            "count",
+            with("/objects/1/sides", json!(2)),
+            "objects[1].sides",
+            |k| {
+                matches!(
+                    k,
+                    ErrorKind::NotACount {
+                        min: 3,
+                        max: 64,
+                        ..
+                    }
+                )
+            },
+        ),
+        (
+            "pixels",
+            with("/image", json!({ "width": 16384, "height": 16384 })),
+            "image",
+            |k| matches!(k, ErrorKind::TooManyPixels { .. }),
+        ),
+        (
+            "domain",
+            with("/objects/0/radius", json!(-1)),
+            "objects[0].radius",
+            |k| matches!(k, ErrorKind::Domain(_)),
+        ),
+        (
+            "target is eye",
+            with(
+                "/camera",
+                json!({ "type": "look_at", "eye": [0, 0, 0], "target": [0, 0, 0], "up": [0, 1, 0],
+                        "fov_y_deg": 40, "near": 0.1, "far": 10 }),
+            ),
+            "camera.target",
+            |k| matches!(k, ErrorKind::TargetIsEye),
+        ),
+        (
+            "up along the view",
+            with(
+                "/camera",
+                json!({ "type": "look_at", "eye": [0, 0, 0], "target": [0, 0, 1], "up": [0, 0, 2],
+                        "fov_y_deg": 40, "near": 0.1, "far": 10 }),
+            ),
+            "camera.up",
+            |k| matches!(k, ErrorKind::UpAlongView),
+        ),
+        (
+            "field of view",
+            with(
+                "/camera",
+                json!({ "type": "look_at", "eye": [0, 0, 0], "target": [0, 0, 1], "up": [0, 1, 0],
+                        "fov_y_deg": 180, "near": 0.1, "far": 10 }),
+            ),
+            "camera.fov_y_deg",
+            |k| matches!(k, ErrorKind::FieldOfView { degrees } if *degrees == 180.0),
+        ),
+        (
+            "far before near",
+            with(
+                "/camera",
+                json!({ "type": "look_at", "eye": [0, 0, 0], "target": [0, 0, 1], "up": [0, 1, 0],
+                        "fov_y_deg": 40, "near": 1, "far": 0.5 }),
+            ),
+            "camera.far",
+            |k| matches!(k, ErrorKind::FarNotBeyondNear { .. }),
+        ),
+        (
+            "unknown material",
+            with("/objects/0/material", json!("blue")),
+            "objects[0].material",
+            |k| matches!(k, ErrorKind::UnknownMaterial { name, defined } if name == "blue" && defined.len() == 2),
+        ),
+        (
+            "glass tube",
+            with(
+                "/materials/gold",
+                json!({ "type": "dielectric", "eta": 1.5 }),
+            ),
+            "objects[1].material",
+            |k| matches!(k, ErrorKind::DielectricWithoutInside),
+        ),
+        (
+            "settings",
+            with("/render/max_depth", json!(1e6)),
+            "render.max_depth",
+            |k| matches!(k, ErrorKind::NotACount { min: 0, .. }),
+        ),
+    ];
+    for (name, text, field, kind) in cases {
+        let error = scene::parse(&text).expect_err(name);
+        assert_eq!(error.field(), field, "{name}: {error}");
+        assert!(kind(error.kind()), "{name}: {:?}", error.kind());
+    }
 }

@@ -5,10 +5,10 @@
 use glam::Vec3;
 use serde_json::json;
 use tracer::geometry::Ray;
-use tracer::integrator::{Machinery, RayCounts, Settings, Tracer};
-use tracer::render::render;
+use tracer::integrator::{Machinery, RayCounts, Tracer};
+use tracer::job::RenderJob;
 use tracer::rng::Pcg32;
-use tracer::scene::{self, IntegratorKind, Scene};
+use tracer::scene::{self, IntegratorKind, Scene, Settings};
 
 fn parse(value: serde_json::Value) -> Scene {
     scene::parse(&value.to_string()).expect("test scene is valid")
@@ -27,7 +27,7 @@ fn course_scene(name: &str) -> Scene {
 fn radiance(scene: &Scene, integrator: IntegratorKind, ray: &Ray) -> Vec3 {
     let settings = Settings {
         integrator,
-        ..Settings::from_scene(scene)
+        ..scene.settings
     };
     let tracer = Tracer {
         scene,
@@ -108,7 +108,7 @@ fn course_adds_unweighted_ambient_at_every_mirror_bounce() {
 #[test]
 fn course_kaleidoscope_feeds_pow_a_negative_cosine_at_every_mirror() {
     let scene = course_scene("kaleidoscope");
-    let settings = Settings::from_scene(&scene);
+    let settings = scene.settings;
     let tracer = Tracer {
         scene: &scene,
         settings,
@@ -136,29 +136,24 @@ fn course_kaleidoscope_feeds_pow_a_negative_cosine_at_every_mirror() {
 fn directional_light_cannot_reach_inside_the_closed_kaleidoscope() {
     let mut scene = course_scene("kaleidoscope");
     scene.ambient = Vec3::ZERO;
-    let settings = Settings::from_scene(&scene);
+    let settings = scene.settings;
     // Everything switched on, the light and its shadow rays included: the
     // scene analysis would skip the light for exactly this reason, which is
     // what is under test here, so it must not decide.
-    let machinery = Machinery::everything(&scene, &settings);
-    let image = render(&scene, &settings, &machinery, None, &|_| {})
-        .unwrap()
-        .image;
+    let everything = |scene: &Scene| {
+        let job = RenderJob::with_settings(scene.clone(), settings).unwrap();
+        job.render_with(&job.everything(), None, &|_| {})
+            .unwrap()
+            .image
+    };
+    let image = everything(&scene);
     assert!(image.pixels.iter().all(|p| *p == Vec3::ZERO));
     // And the light is really there: without the tube's walls shadowing,
     // the spheres inside are lit.
     let mut open = scene.clone();
     open.objects
         .retain(|o| !matches!(o, tracer::geometry::Object::Tube(_)));
-    let lit = render(
-        &open,
-        &settings,
-        &Machinery::everything(&open, &settings),
-        None,
-        &|_| {},
-    )
-    .unwrap()
-    .image;
+    let lit = everything(&open);
     assert!(
         lit.pixels.iter().any(|p| p.max_element() > 0.0),
         "the light reaches nothing even without the tube"

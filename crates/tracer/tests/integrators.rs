@@ -1,17 +1,17 @@
 //! The integrators against known answers: an analytic Lambert plane, a
 //! point light's inverse square and its shadow ray stopping at the light,
 //! the path tracer converging to Whitted's answer, images independent of the
-//! thread count, robust ray offsets where a fixed epsilon fails, and
-//! skipping unused machinery without changing a pixel.
+//! thread count, and robust ray offsets where a fixed epsilon fails
+//! (what a scene needs and what the renderer skips: `machinery.rs`).
 
 use glam::Vec3;
 use serde_json::json;
 use tracer::geometry::Ray;
-use tracer::integrator::{Machinery, RayCounts, Settings, Tracer};
-use tracer::needs;
-use tracer::render::{render, Image};
+use tracer::integrator::{Machinery, RayCounts, Tracer};
+use tracer::job::RenderJob;
+use tracer::render::Image;
 use tracer::rng::Pcg32;
-use tracer::scene::{self, FresnelModel, IntegratorKind, RayOffset, Scene};
+use tracer::scene::{self, FresnelModel, IntegratorKind, RayOffset, Scene, Settings};
 
 fn parse(value: serde_json::Value) -> Scene {
     scene::parse(&value.to_string()).expect("test scene is valid")
@@ -24,11 +24,12 @@ fn settings(integrator: IntegratorKind) -> Settings {
     }
 }
 
+fn job(scene: &Scene, settings: &Settings) -> RenderJob {
+    RenderJob::with_settings(scene.clone(), *settings).expect("renderable")
+}
+
 fn render_with(scene: &Scene, settings: &Settings, threads: Option<usize>) -> Image {
-    let machinery = needs::analyse(scene, settings).machinery(settings);
-    render(scene, settings, &machinery, threads, &|_| {})
-        .unwrap()
-        .image
+    job(scene, settings).render(threads, &|_| {}).unwrap().image
 }
 
 fn radiance_along(scene: &Scene, settings: &Settings, ray: &Ray) -> Vec3 {
@@ -356,124 +357,6 @@ fn fixed_epsilon_shadows_acne_far_from_the_origin_where_the_error_bound_offset_h
     );
 }
 
-fn course_scenes() -> Vec<(String, Scene)> {
-    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/../../validation/scenes");
-    let mut scenes: Vec<(String, Scene)> = std::fs::read_dir(dir)
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.extension().is_some_and(|e| e == "json"))
-        .map(|p| {
-            (
-                p.display().to_string(),
-                scene::load(&p).unwrap().resized(32, 24),
-            )
-        })
-        .collect();
-    scenes.sort_by(|a, b| a.0.cmp(&b.0));
-    scenes
-}
-
-#[test]
-fn every_course_scene_loads_and_renders() {
-    let scenes = course_scenes();
-    assert!(scenes.len() >= 9);
-    for (name, scene) in scenes {
-        let s = Settings::from_scene(&scene);
-        let image = render_with(&scene, &s, None);
-        assert!(image.pixels.iter().all(|p| p.is_finite()), "{name}");
-        assert!(
-            image.pixels.iter().any(|p| p.max_element() > 0.0),
-            "{name} is black"
-        );
-    }
-}
-
-#[test]
-fn skipping_unused_machinery_leaves_the_image_unchanged() {
-    for (name, scene) in course_scenes() {
-        for integrator in [
-            IntegratorKind::Local,
-            IntegratorKind::Whitted,
-            IntegratorKind::Path,
-        ] {
-            let s = Settings {
-                spp: 2,
-                ..Settings {
-                    integrator,
-                    ..Settings::from_scene(&scene)
-                }
-            };
-            let lean = needs::analyse(&scene, &s).machinery(&s);
-            let full = Machinery::everything(&scene, &s);
-            let a = render(&scene, &s, &lean, None, &|_| {}).unwrap();
-            let b = render(&scene, &s, &full, None, &|_| {}).unwrap();
-            let needs = needs::analyse(&scene, &s);
-            let tube_keeps_light_out = needs
-                .lights
-                .iter()
-                .any(|l| l.reason.is_some_and(|r| r.contains("tube")));
-            if tube_keeps_light_out {
-                // Skipping a light the closed tube keeps out also removes
-                // its rounding leaks: a shadow ray that starts within
-                // rounding of where a sphere or the far wall meets a mirror
-                // can slip out. Only darker pixels, and rare (1 of 76 800 at
-                // 320 × 240 with 16 paths per pixel).
-                let changed = a
-                    .image
-                    .pixels
-                    .iter()
-                    .zip(&b.image.pixels)
-                    .filter(|(p, q)| p != q)
-                    .count();
-                assert!(
-                    changed * 1000 <= a.image.pixels.len(),
-                    "{name} {integrator}: {changed} pixels"
-                );
-                assert!(a
-                    .image
-                    .pixels
-                    .iter()
-                    .zip(&b.image.pixels)
-                    .all(|(p, q)| p.cmple(*q).all()));
-            } else if lean.spp == full.spp {
-                assert!(
-                    a.image == b.image,
-                    "{name} {integrator}: skipping changed the image"
-                );
-            } else {
-                // Fewer samples of a deterministic path: the same value,
-                // up to the f64 mean's last rounding to f32.
-                let (_, max) = a.image.difference(&b.image);
-                assert!(max <= 1e-6, "{name} {integrator}: {max}");
-            }
-            assert!(a.rays.total() <= b.rays.total());
-        }
-    }
-}
-
-#[test]
-fn a_single_convex_sphere_needs_no_shadow_rays_and_two_spheres_do() {
-    let scenes = course_scenes();
-    let find = |suffix: &str| &scenes.iter().find(|(n, _)| n.ends_with(suffix)).unwrap().1;
-    let s = Settings::default();
-    assert!(!needs::analyse(find("/blinn_phong.json"), &s).shadows);
-    assert!(needs::analyse(find("/shadow.json"), &s).shadows);
-    let kaleidoscope = needs::analyse(find("/kaleidoscope.json"), &s);
-    assert_eq!(
-        kaleidoscope.reflection_depth,
-        needs::ReflectionDepth::UpToMaxDepth(s.max_depth)
-    );
-    assert!(kaleidoscope.conductors && !kaleidoscope.refraction);
-    // The course's light is outside the closed tube around the camera: it
-    // cannot light anything, and no shadow ray is needed to find that out.
-    assert!(!kaleidoscope.lights[0].used && !kaleidoscope.shadows);
-    let lit = needs::analyse(find("/kaleidoscope_lit.json"), &s);
-    assert!(
-        lit.lights[0].used && lit.shadows,
-        "a point light inside the tube"
-    );
-}
-
 /// The course's Fresnel (`pow(cos θ, 5)` for `pow(1 − cos θ, 5)`) makes a
 /// mirror reflect everything head-on; the exact law gives gold's F0 there.
 #[test]
@@ -583,46 +466,6 @@ fn path_tracer_is_deterministic_per_seed() {
         a != render_with(&scene, &with_seed(2), None),
         "another seed, other noise"
     );
-}
-
-/// The depth `needs` allows is a bound the renders respect, and a tight one
-/// where mirrors face each other.
-#[test]
-fn measured_bounce_depth_stays_within_the_reachable_depth() {
-    for (name, scene) in course_scenes() {
-        for integrator in [
-            IntegratorKind::Whitted,
-            IntegratorKind::Path,
-            IntegratorKind::Course,
-        ] {
-            let s = Settings {
-                integrator,
-                max_depth: 4,
-                ..Settings::from_scene(&scene)
-            };
-            let machinery = needs::analyse(&scene, &s).machinery(&s);
-            let deepest = render(&scene, &s, &machinery, None, &|_| {})
-                .unwrap()
-                .rays
-                .deepest;
-            let bound = match needs::analyse(&scene, &s).reflection_depth {
-                needs::ReflectionDepth::None => 0,
-                needs::ReflectionDepth::One => 1,
-                needs::ReflectionDepth::UpToMaxDepth(d) => d,
-            };
-            let diffuse_bounces =
-                integrator == IntegratorKind::Path && needs::analyse(&scene, &s).rough_surfaces;
-            if !diffuse_bounces {
-                assert!(deepest <= bound, "{name} {integrator}: {deepest} > {bound}");
-            }
-            if name.ends_with("/kaleidoscope_lit.json") && integrator == IntegratorKind::Whitted {
-                assert_eq!(
-                    deepest, 4,
-                    "mirrors facing each other use every bounce allowed"
-                );
-            }
-        }
-    }
 }
 
 /// A Lambert sphere under a uniform sky of radiance L (a white furnace): a

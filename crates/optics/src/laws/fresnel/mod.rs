@@ -1,0 +1,169 @@
+//! `optics fresnel`: Fresnel reflectance, exact or by Schlick's
+//! approximation, of a dielectric or a conductor.
+//!
+//! The incidence is resolved once, here, and every law is evaluated once at
+//! it; the working is narrated from what the laws returned: the side and
+//! indices of the [`Incidence`], the exact law's `cos θt`, and the cosine
+//! Schlick took (`SchlickDielectric::cosine`); [`working`] narrates them.
+
+use crate::input::Via;
+use crate::lang::{say, Lang};
+use crate::record::{Answer, Record};
+use crate::error::{Error, ErrorKind};
+use anyhow::Result;
+use radiometry::fresnel::{dielectric_resolved, schlick_dielectric_resolved};
+use radiometry::snell::Incidence;
+use serde::Deserialize;
+use working::{
+    exact_conductor, exact_dielectric, narrate_incidence, schlick_for_conductor,
+    schlick_for_dielectric,
+};
+
+#[cfg(test)]
+mod tests;
+mod working;
+
+/// Which Fresnel law to evaluate.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum FresnelModel {
+    /// The exact Fresnel equations.
+    #[default]
+    Exact,
+    /// Schlick's approximation, F0 + (1 − F0)(1 − cos θ)⁵.
+    Schlick,
+}
+
+impl FresnelModel {
+    fn name(self) -> &'static str {
+        match self {
+            FresnelModel::Exact => "exact",
+            FresnelModel::Schlick => "schlick",
+        }
+    }
+}
+
+/// Fresnel reflectance of a smooth interface.
+#[derive(clap::Args, Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+#[command(
+    allow_negative_numbers = true,
+    after_help = "Examples:
+  optics fresnel --eta 1.5 --theta-i-deg 60
+  optics fresnel --eta 1.5 --cos-i -0.5           (from inside the glass: total internal reflection)
+  optics fresnel --eta 0.17 --kappa 3.1 --cos-i 1 (gold, red channel, at normal incidence)
+  optics fresnel --eta 1.5 --cos-i 0.3 --model schlick --json"
+)]
+pub struct FresnelArgs {
+    /// Relative index n_inside / n_outside (= n_t / n_i for light from outside).
+    #[arg(long)]
+    pub eta: f64,
+    /// Extinction coefficient of the inside; > 0 makes it a conductor (complex index eta + i·kappa).
+    #[arg(long, default_value_t = 0.0)]
+    #[serde(default)]
+    pub kappa: f64,
+    /// Signed cosine of incidence, n·wi: > 0 from outside, < 0 from inside.
+    #[arg(
+        long,
+        required_unless_present = "theta_i_deg",
+        conflicts_with = "theta_i_deg"
+    )]
+    #[serde(default)]
+    pub cos_i: Option<f64>,
+    /// Angle of incidence from the outward normal in degrees, 0..180 (over 90: from inside).
+    #[arg(long)]
+    #[serde(default)]
+    pub theta_i_deg: Option<f64>,
+    /// The law: exact, or Schlick's approximation.
+    #[arg(long, value_enum, default_value_t)]
+    #[serde(default)]
+    pub model: FresnelModel,
+}
+
+impl FresnelArgs {
+    pub fn solve(&self, via: Via, lang: Lang) -> Result<Record> {
+        let eta = via.index("eta", self.eta)?;
+        let kappa = via.extinction("kappa", self.kappa)?;
+        let cos_i = self.signed_cosine(via, kappa)?;
+        let mut record = self.record(eta, kappa, cos_i, lang);
+        // The one place the side is decided; each law below takes it.
+        let incidence = Incidence::resolve(cos_i, eta)
+            .expect("cos_i and eta were validated by radiometry::domain above");
+        narrate_incidence(&mut record, lang, &incidence, eta, kappa);
+        let reflectance = match (self.model, kappa > 0.0) {
+            (FresnelModel::Exact, false) => {
+                exact_dielectric(&mut record, lang, &dielectric_resolved(&incidence))
+            }
+            (FresnelModel::Exact, true) => exact_conductor(&mut record, &incidence, eta, kappa),
+            (FresnelModel::Schlick, false) => {
+                let working = schlick_dielectric_resolved(&incidence);
+                let exact = dielectric_resolved(&incidence).reflectance();
+                schlick_for_dielectric(&mut record, lang, &working, exact)
+            }
+            (FresnelModel::Schlick, true) => {
+                schlick_for_conductor(&mut record, lang, &incidence, eta, kappa)
+            }
+        };
+        record.answer = Answer::Number(reflectance);
+        Ok(record)
+    }
+
+    /// The signed cosine of incidence, from `cos_i` or `theta_i_deg`,
+    /// checked; a conductor is lit only from outside.
+    fn signed_cosine(&self, via: Via, kappa: f64) -> Result<f64> {
+        let cos_i = match (self.cos_i, self.theta_i_deg) {
+            (Some(c), None) => via.cosine("cos_i", c)?,
+            (None, Some(deg)) => {
+                let deg = via.finite("theta_i_deg", deg)?;
+                if !(0.0..=180.0).contains(&deg) {
+                    let name = via.name("theta_i_deg");
+                    return Err(Error::from(ErrorKind::AngleDegrees { name, value: deg }).into());
+                }
+                deg.to_radians().cos()
+            }
+            _ => {
+                let (cosine, angle) = (via.name("cos_i"), via.name("theta_i_deg"));
+                return Err(Error::from(ErrorKind::CosineOrAngle { cosine, angle }).into());
+            }
+        };
+        if kappa > 0.0 && cos_i < 0.0 {
+            let name = via.name(if self.cos_i.is_some() {
+                "cos_i"
+            } else {
+                "theta_i_deg"
+            });
+            return Err(Error::from(ErrorKind::ConductorFromInside { name, cos_i }).into());
+        }
+        Ok(cos_i)
+    }
+
+    /// The record with its title and inputs, before any working.
+    fn record(&self, eta: f64, kappa: f64, cos_i: f64, lang: Lang) -> Record {
+        let kind = if kappa > 0.0 {
+            lang.pick("conductor", "vezető")
+        } else {
+            lang.pick("dielectric", "dielektrikum")
+        };
+        let model = match (self.model, lang) {
+            (FresnelModel::Exact, Lang::En) => "exact",
+            (FresnelModel::Exact, Lang::Hu) => "pontos",
+            (FresnelModel::Schlick, _) => "Schlick",
+        };
+        let mut record = Record::new(
+            "fresnel",
+            say!(
+                lang,
+                "Fresnel reflectance, {model}, {kind}",
+                "Fresnel-függvény, {model}, {kind}"
+            ),
+            "1",
+        );
+        record.input("eta", eta).input("kappa", kappa);
+        match self.theta_i_deg {
+            Some(deg) => record.input("theta_i_deg", deg),
+            None => record.input("cos_i", cos_i),
+        };
+        record.input("model", self.model.name());
+        record
+    }
+}

@@ -1,0 +1,117 @@
+//! The working of `optics fresnel` reports the laws' own numbers.
+
+use super::*;
+use crate::record::number;
+use radiometry::fresnel::SchlickCosine;
+use radiometry::fresnel::{dielectric_polarized, schlick_dielectric_working};
+
+fn solve(eta: f64, cos_i: f64, model: FresnelModel) -> Record {
+    let args = FresnelArgs {
+        eta,
+        kappa: 0.0,
+        cos_i: Some(cos_i),
+        theta_i_deg: None,
+        model,
+    };
+    args.solve(Via::Flags, Lang::En).expect("a valid request")
+}
+
+fn answer(record: &Record) -> f64 {
+    match record.answer {
+        Answer::Number(r) => r,
+        ref other => panic!("a number, got {other:?}"),
+    }
+}
+
+fn detail(record: &Record, name: &str) -> Option<f64> {
+    record.details.get(name).and_then(|v| v.as_f64())
+}
+
+fn has_step(record: &Record, line: &str) -> bool {
+    record.steps.iter().any(|s| s.contains(line))
+}
+
+/// Entering and leaving glass, below and beyond the critical angle, at
+/// grazing incidence, and index-matched.
+const CASES: [(f64, f64); 7] = [
+    (1.5, 0.5),
+    (1.5, -0.9),
+    (1.5, -0.5),
+    (0.7, 0.3),
+    (0.7, 0.9),
+    (1.0, -0.3),
+    (1.5, 0.0),
+];
+
+/// The exact law's working reports the law's own numbers, bit for bit,
+/// and narrates the `cos θt` (or the Snell sine of the incidence) it
+/// returned: nothing in it is computed by a second evaluation.
+#[test]
+fn exact_working_reports_the_laws_own_numbers() {
+    for (eta, cos_i) in CASES {
+        let law = dielectric_polarized(cos_i, eta);
+        let record = solve(eta, cos_i, FresnelModel::Exact);
+        let at = format!("eta {eta}, cos_i {cos_i}");
+        assert_eq!(
+            answer(&record).to_bits(),
+            law.reflectance().to_bits(),
+            "{at}"
+        );
+        assert_eq!(
+            detail(&record, "cos_t").map(f64::to_bits),
+            law.cos_t.map(f64::to_bits),
+            "{at}"
+        );
+        assert_eq!(
+            detail(&record, "r_s").map(f64::to_bits),
+            Some(law.r_s.to_bits()),
+            "{at}"
+        );
+        let snell = match law.cos_t {
+            Some(cos_t) => format!("/ n_t = {} (θt", number(cos_t)),
+            None => format!("= {} > 1", number(law.incidence.sin_transmitted())),
+        };
+        assert!(has_step(&record, &snell), "{at}: {:#?}", record.steps);
+    }
+}
+
+/// Schlick's working reports the working's numbers and the exact law's,
+/// bit for bit, and narrates the cosine the working says it took.
+#[test]
+fn schlick_working_narrates_the_cosine_the_law_took() {
+    for (eta, cos_i) in CASES {
+        let working = schlick_dielectric_working(cos_i, eta).expect("a valid interface");
+        let exact = dielectric_polarized(cos_i, eta).reflectance();
+        let record = solve(eta, cos_i, FresnelModel::Schlick);
+        let at = format!("eta {eta}, cos_i {cos_i}");
+        assert_eq!(
+            answer(&record).to_bits(),
+            working.reflectance.to_bits(),
+            "{at}"
+        );
+        assert_eq!(
+            detail(&record, "exact").map(f64::to_bits),
+            Some(exact.to_bits()),
+            "{at}"
+        );
+        assert_eq!(
+            detail(&record, "f0").map(f64::to_bits),
+            Some(working.f0.to_bits()),
+            "{at}"
+        );
+        let rarer = "Schlick takes the angle in the rarer medium";
+        let tir = "total internal reflection, R = 1";
+        let formula = working
+            .cosine_used()
+            .map(|cos| format!("·{}⁵ = {}", number(1.0 - cos), number(working.reflectance)));
+        match working.cosine {
+            SchlickCosine::Incident => assert!(!has_step(&record, rarer), "{at}"),
+            SchlickCosine::Transmitted => assert!(has_step(&record, rarer), "{at}"),
+            SchlickCosine::TotalInternalReflection => assert!(has_step(&record, tir), "{at}"),
+        }
+        match formula {
+            Some(line) => assert!(has_step(&record, &line), "{at}: {:#?}", record.steps),
+            None => assert!(!has_step(&record, "R ≈"), "{at}"),
+        }
+    }
+}

@@ -1,0 +1,35 @@
+//! The law evaluators: `optics fresnel`, `refract`, `reflect`, `shade`.
+//!
+//! Each takes its inputs either as flags or as a JSON request (the same
+//! struct serves both), checks them, calls the radiometry crate for every
+//! number, and returns a [`Record`] with the working. The working narrates
+//! what the laws returned (the side and indices of the `Incidence`, the
+//! transmitted cosine, the cosine Schlick took); it never decides again what
+//! a law decided, and each law is evaluated at most once per request.
+
+mod fresnel;
+mod reflect;
+mod refract;
+mod shade;
+
+pub use fresnel::{FresnelArgs, FresnelModel};
+pub use reflect::ReflectArgs;
+pub use refract::RefractArgs;
+pub use shade::{ShadeArgs, ShadeModel, Shading};
+
+use crate::lang::{say, Lang};
+use crate::record::{number, vector, Record};
+use radiometry::domain::Direction;
+
+/// Says in the working when a direction was not unit length.
+pub fn note_normalized(record: &mut Record, lang: Lang, field: &str, d: &Direction) {
+    if d.was_normalized() {
+        record.step(say!(
+            lang,
+            "{field} has length {}: normalised to {}",
+            "{field} hossza {}: normalizálva {}",
+            number(d.given_length),
+            vector(d.unit.to_array())
+        ));
+    }
+}

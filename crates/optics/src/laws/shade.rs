@@ -1,0 +1,240 @@
+//! `optics shade`: radiance reflected towards a viewer from a directional
+//! light, by one of the course's BRDFs.
+
+use super::note_normalized;
+use crate::input::{Vec3Arg, Via};
+use crate::lang::{say, Lang};
+use crate::record::{number, vector, Answer, Record};
+use anyhow::Result;
+use glam::DVec3;
+use radiometry::brdf::{
+    half_vector, BlinnPhong, BlinnPhongReciprocal, Brdf, CourseLambert, Lambert, Phong,
+};
+use radiometry::radiance::{directional_irradiance, reflected_radiance};
+use radiometry::specular::reflect;
+use serde::Deserialize;
+
+/// A BRDF model, by the course's names.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum ShadeModel {
+    /// Physically normalised Lambert, f = kd/π (kd is the albedo).
+    Lambert,
+    /// The course's Lambert, f = kd (no 1/π).
+    CourseLambert,
+    /// Phong: f = kd + ks (cos⁺α)^shine / cos θi.
+    Phong,
+    /// The course's Phong-Blinn: f = kd + ks (cos⁺δ)^shine / cos θi.
+    #[default]
+    BlinnPhong,
+    /// The course's reciprocal fix: f = kd + ks (cos⁺δ)^shine / |L+V|².
+    BlinnPhongReciprocal,
+}
+
+impl ShadeModel {
+    fn name(self) -> &'static str {
+        match self {
+            ShadeModel::Lambert => "lambert",
+            ShadeModel::CourseLambert => "course-lambert",
+            ShadeModel::Phong => "phong",
+            ShadeModel::BlinnPhong => "blinn-phong",
+            ShadeModel::BlinnPhongReciprocal => "blinn-phong-reciprocal",
+        }
+    }
+}
+
+/// Radiance reflected towards a viewer from a directional light.
+#[derive(clap::Args, Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+#[command(
+    allow_negative_numbers = true,
+    after_help = "The light is directional: --radiance is the course's L_in, the light's strength on a surface
+facing it (W/m², which the course calls radiance). Directions point away from the surface.
+
+Examples:
+  optics shade --model course-lambert --normal 0,0,1 --light-dir 0,3,4 --view-dir 1,2,3 --radiance 5 --kd 0.6
+  optics shade --model blinn-phong --normal 0,0,1 --light-dir 0,3,4 --view-dir 0,4,3 --radiance 5 --ks 1.41421356 --shine 3"
+)]
+pub struct ShadeArgs {
+    /// The BRDF model.
+    #[arg(long, value_enum, default_value_t)]
+    #[serde(default)]
+    pub model: ShadeModel,
+    /// Surface normal (any length).
+    #[arg(long, allow_hyphen_values = true)]
+    pub normal: Vec3Arg,
+    /// Direction towards the light (any length).
+    #[arg(long, allow_hyphen_values = true)]
+    pub light_dir: Vec3Arg,
+    /// Direction towards the viewer (any length).
+    #[arg(long, allow_hyphen_values = true)]
+    pub view_dir: Vec3Arg,
+    /// The light's L_in, W/m² on a surface facing it.
+    #[arg(long)]
+    pub radiance: f64,
+    /// Diffuse coefficient (the albedo for `lambert`).
+    #[arg(long, default_value_t = 0.0)]
+    #[serde(default)]
+    pub kd: f64,
+    /// Specular coefficient.
+    #[arg(long, default_value_t = 0.0)]
+    #[serde(default)]
+    pub ks: f64,
+    /// Shininess exponent.
+    #[arg(long, default_value_t = 1.0)]
+    #[serde(default = "one")]
+    pub shine: f64,
+}
+
+fn one() -> f64 {
+    1.0
+}
+
+/// A shading evaluation's numbers, for the quiz solvers built on it.
+pub struct Shading {
+    pub record: Record,
+    pub radiance: f64,
+}
+
+impl ShadeArgs {
+    pub fn solve(&self, via: Via, lang: Lang) -> Result<Record> {
+        Ok(self.shade("shade", via, lang)?.record)
+    }
+
+    /// Shades and records the working under the name `law`.
+    pub fn shade(&self, law: &'static str, via: Via, lang: Lang) -> Result<Shading> {
+        let n = via.direction("normal", self.normal)?;
+        let l = via.direction("light_dir", self.light_dir)?;
+        let v = via.direction("view_dir", self.view_dir)?;
+        let l_in = via.non_negative("radiance", self.radiance)?;
+        let kd = via.non_negative("kd", self.kd)?;
+        let ks = via.non_negative("ks", self.ks)?;
+        let shine = via.non_negative("shine", self.shine)?;
+        let model = self.model;
+        let mut record = Record::new(
+            law,
+            say!(
+                lang,
+                "Reflected radiance, {} BRDF, directional light",
+                "Visszavert sugársűrűség, {} BRDF, irányfényforrás",
+                model.name()
+            ),
+            "W/(sr m^2)",
+        );
+        record
+            .input("model", model.name())
+            .input("normal", self.normal.0)
+            .input("light_dir", self.light_dir.0)
+            .input("view_dir", self.view_dir.0)
+            .input("radiance", l_in);
+        match model {
+            ShadeModel::Lambert | ShadeModel::CourseLambert => record.input("kd", kd),
+            _ => record.input("kd", kd).input("ks", ks).input("shine", shine),
+        };
+        note_normalized(&mut record, lang, "normal", &n);
+        note_normalized(&mut record, lang, "light_dir", &l);
+        note_normalized(&mut record, lang, "view_dir", &v);
+        let (n, l, v) = (n.unit, l.unit, v.unit);
+        record.step(format!(
+            "L = {}, V = {}",
+            vector(l.to_array()),
+            vector(v.to_array())
+        ));
+        let cos_in = n.dot(l);
+        record.step(format!("cos θin = N · L = {}", number(cos_in)));
+        let f = model.evaluate(&mut record, Coefficients { kd, ks, shine }, n, l, v);
+        let e = directional_irradiance(l_in, n, l);
+        record.step(format!(
+            "E = L_in cos⁺θin = {} · {} = {}",
+            number(l_in),
+            number(cos_in.max(0.0)),
+            number(e)
+        ));
+        let radiance = reflected_radiance(f, e);
+        record.step(format!(
+            "L_ref = f_r · E = {} · {} = {}",
+            number(f),
+            number(e),
+            number(radiance)
+        ));
+        if n.dot(v) <= 0.0 {
+            record.note(say!(
+                lang,
+                "the viewer is below the surface: nothing is reflected towards it",
+                "a néző a felület alatt van: felé semmi sem verődik vissza"
+            ));
+        }
+        record.answer = Answer::Number(radiance);
+        record.detail("brdf", f).detail("irradiance", e);
+        Ok(Shading { record, radiance })
+    }
+}
+
+/// The diffuse and specular coefficients and the shininess, as checked.
+#[derive(Clone, Copy)]
+struct Coefficients {
+    kd: f64,
+    ks: f64,
+    shine: f64,
+}
+
+impl ShadeModel {
+    /// Evaluates this BRDF for light along `l` seen along `v` about `n`,
+    /// narrating its terms; its `f_r` in 1/sr.
+    fn evaluate(self, record: &mut Record, c: Coefficients, n: DVec3, l: DVec3, v: DVec3) -> f64 {
+        let Coefficients { kd, ks, shine } = c;
+        match self {
+            ShadeModel::Lambert => {
+                let f = Lambert { albedo: kd }.eval(n, l, v);
+                record.step(format!("f_r = kd / π = {}", number(f)));
+                f
+            }
+            ShadeModel::CourseLambert => {
+                let f = CourseLambert { kd }.eval(n, l, v);
+                record.step(format!("f_r = kd = {}", number(f)));
+                f
+            }
+            ShadeModel::Phong => {
+                let cos_alpha = reflect(l, n).dot(v);
+                record.step(format!("cos α = R · V = {}", number(cos_alpha)));
+                let f = Phong { kd, ks, shine }.eval(n, l, v);
+                record.step(format!(
+                    "f_r = kd + ks (cos⁺α)^shine / cos θin = {}",
+                    number(f)
+                ));
+                f
+            }
+            ShadeModel::BlinnPhong | ShadeModel::BlinnPhongReciprocal => {
+                step_half_vector(record, n, l, v);
+                let f = if self == ShadeModel::BlinnPhong {
+                    let f = BlinnPhong { kd, ks, shine }.eval(n, l, v);
+                    record.step(format!(
+                        "f_r = kd + ks (cos⁺δ)^shine / cos⁺θin = {}",
+                        number(f)
+                    ));
+                    f
+                } else {
+                    let f = BlinnPhongReciprocal { kd, ks, shine }.eval(n, l, v);
+                    record.step(format!(
+                        "f_r = kd + ks (cos⁺δ)^shine / |L + V|² = {}",
+                        number(f)
+                    ));
+                    f
+                };
+                f
+            }
+        }
+    }
+}
+
+fn step_half_vector(record: &mut Record, n: DVec3, l: DVec3, v: DVec3) {
+    match half_vector(l, v) {
+        Some(h) => {
+            record.step(format!("H = (L + V) / |L + V| = {}", vector(h.to_array())));
+            record.step(format!("cos δ = N · H = {}", number(n.dot(h))));
+        }
+        None => {
+            record.step("L = −V: no half vector, the highlight term is 0".to_owned());
+        }
+    }
+}

@@ -1,0 +1,4 @@
+//! What the law tests share: the proptest strategies, named after what they
+//! produce.
+
+pub mod strategies;

@@ -1,0 +1,130 @@
+//! Light at a rough surface: the delta lights' reflected radiance with its
+//! shadow rays, the course's ambient term, and the BRDFs behind both.
+
+use glam::Vec3;
+use radiometry::brdf::{BlinnPhong, Brdf, Lambert};
+use radiometry::radiance;
+
+use super::{rgb, RayCounts, Tracer};
+use crate::geometry::{Hit, Ray};
+use crate::scene::{Light, Material};
+use crate::spawn;
+
+impl Material {
+    /// The BRDF of a rough material per channel, 1/sr (zero for the others,
+    /// which scatter only into discrete directions or not at all).
+    pub fn brdf(&self, n: Vec3, wi: Vec3, wo: Vec3) -> Vec3 {
+        match *self {
+            Material::CourseRough {
+                diffuse,
+                specular,
+                shininess,
+                ..
+            } => rgb(|c| {
+                BlinnPhong {
+                    kd: diffuse[c],
+                    ks: specular[c],
+                    shine: shininess,
+                }
+                .eval(n, wi, wo)
+            }),
+            Material::Lambert { albedo } => rgb(|c| Lambert { albedo: albedo[c] }.eval(n, wi, wo)),
+            _ => Vec3::ZERO,
+        }
+    }
+
+    /// The course's ambient term under ambient radiance `l_ambient`:
+    /// `ka · L_ambient` for the course's model; for a Lambert surface under a
+    /// uniform ambient radiance, the reflected radiance is `albedo ·
+    /// L_ambient` (its directional albedo, see `radiometry::brdf::Lambert`).
+    pub fn ambient(&self, l_ambient: Vec3) -> Vec3 {
+        match *self {
+            Material::CourseRough { ambient, .. } => ambient * l_ambient,
+            Material::Lambert { albedo } => albedo * l_ambient,
+            _ => Vec3::ZERO,
+        }
+    }
+}
+
+impl Tracer<'_> {
+    fn occluded(&self, ray: &Ray, counts: &mut RayCounts) -> bool {
+        counts.shadow += 1;
+        self.intersect(ray).is_some()
+    }
+
+    /// Reflected radiance from the delta lights at a rough surface:
+    /// `Σ f_r(wi, wo) E(wi)`, with shadow rays stopped at point lights.
+    pub(crate) fn direct(
+        &self,
+        hit: &Hit,
+        n: Vec3,
+        wo: Vec3,
+        material: &Material,
+        counts: &mut RayCounts,
+    ) -> Vec3 {
+        let mut sum = Vec3::ZERO;
+        for (light, _) in self
+            .scene
+            .lights
+            .iter()
+            .zip(&self.machinery.lights)
+            .filter(|(_, on)| **on)
+        {
+            let Some((wi, irradiance, stop_at)) = arrival(light, hit, n) else {
+                continue;
+            };
+            if irradiance.max_element() <= 0.0 {
+                continue;
+            }
+            let f = material.brdf(n, wi, wo);
+            if f.max_element() <= 0.0 {
+                continue;
+            }
+            if self.machinery.shadow_rays {
+                let origin = spawn::origin(hit, n, self.settings.ray_offset);
+                let mut shadow = Ray::new(origin, wi);
+                if let Some(position) = stop_at {
+                    // Aimed at the light from the moved origin, and stopped there.
+                    let to_light = position - origin;
+                    shadow.t_max = to_light.length();
+                    shadow.direction = to_light / shadow.t_max;
+                }
+                if self.occluded(&shadow, counts) {
+                    continue;
+                }
+            }
+            sum += rgb(|c| radiance::reflected_radiance(f[c], irradiance[c]));
+        }
+        sum
+    }
+}
+
+/// The direction to `light` from `hit` (normal `n`), the irradiance it
+/// delivers there, and where a shadow ray must stop (a point light's
+/// position); `None` where a point light sits on the point.
+fn arrival(light: &Light, hit: &Hit, n: Vec3) -> Option<(Vec3, Vec3, Option<Vec3>)> {
+    Some(match *light {
+        Light::Directional {
+            towards,
+            irradiance,
+        } => (
+            towards,
+            rgb(|c| radiance::directional_irradiance(irradiance[c], n, towards)),
+            None,
+        ),
+        Light::Point {
+            position,
+            intensity,
+        } => {
+            let sample = radiance::point_irradiance(1.0, position, hit.point, n)?;
+            (
+                sample.to_light,
+                rgb(|c| {
+                    radiance::point_irradiance(intensity[c], position, hit.point, n)
+                        .map_or(0.0, |s| s.irradiance)
+                }),
+                Some(position),
+            )
+        }
+    })
+}

@@ -1,0 +1,100 @@
+//! Path tracing (`003`, "globális illumináció"): at each rough surface the
+//! lights' direct light and one cosine-sampled bounce; at a smooth one a
+//! single lobe, chosen with the Fresnel probability; Russian roulette below
+//! `throughput_cutoff`.
+
+use glam::Vec3;
+
+use super::scatter::{Bounce, Lobe, Surface};
+use super::{cosine_sample, RayCounts, Tracer};
+use crate::geometry::{Hit, Ray};
+use crate::rng::Pcg32;
+use crate::scene::Material;
+use crate::spawn;
+
+impl Tracer<'_> {
+    pub(super) fn path(&self, primary: &Ray, rng: &mut Pcg32, counts: &mut RayCounts) -> Vec3 {
+        let mut ray = *primary;
+        let mut beta = Vec3::ONE;
+        let mut sum = Vec3::ZERO;
+        let mut depth = 0;
+        loop {
+            let Some(hit) = self.intersect(&ray) else {
+                return sum + beta * self.scene.background;
+            };
+            let material = &self.scene.materials[hit.material as usize];
+            let wo = -ray.direction;
+            let n = hit.shading_normal(ray.direction);
+            let next = match material.surface(&hit) {
+                Surface::Shows(radiance) => return sum + beta * radiance,
+                Surface::Rough => {
+                    sum += beta * self.direct(&hit, n, wo, material, counts);
+                    if depth >= self.settings.max_depth {
+                        return sum;
+                    }
+                    // Cosine-weighted hemisphere sampling: pdf = cos θ / π,
+                    // so the weight f_r cos θ / pdf is π f_r.
+                    let wi = cosine_sample(n, rng.next_f32(), rng.next_f32());
+                    let f = material.brdf(n, wi, wo);
+                    beta *= f * std::f32::consts::PI;
+                    (
+                        Ray::new(spawn::origin(&hit, n, self.settings.ray_offset), wi),
+                        Bounce::Diffuse,
+                    )
+                }
+                Surface::Smooth => {
+                    if depth >= self.settings.max_depth {
+                        return sum;
+                    }
+                    let lobe = self.one_lobe(&hit, n, wo, material, rng, &mut beta);
+                    (lobe.ray, lobe.bounce)
+                }
+            };
+            depth += 1;
+            counts.bounce(next.1, depth);
+            let peak = beta.max_element();
+            if peak <= 0.0 {
+                return sum;
+            }
+            if peak < self.settings.throughput_cutoff {
+                // Russian roulette: survive with probability peak / cutoff and
+                // carry 1 / probability, so the estimate stays unbiased.
+                let survive = peak / self.settings.throughput_cutoff;
+                if rng.next_f32() >= survive {
+                    return sum;
+                }
+                beta /= survive;
+            }
+            ray = next.0;
+        }
+    }
+
+    /// One lobe of a smooth surface, its weight folded into `beta`. With a
+    /// refracted lobe, the branch is chosen with probability R, so that the
+    /// Fresnel weight cancels. With the mirror lobe alone (a conductor, or
+    /// total internal reflection) it is certain and carries its weight
+    /// itself (under total internal reflection 1 for the exact law and
+    /// Schlick; the course's formula gives less).
+    fn one_lobe(
+        &self,
+        hit: &Hit,
+        n: Vec3,
+        wo: Vec3,
+        material: &Material,
+        rng: &mut Pcg32,
+        beta: &mut Vec3,
+    ) -> Lobe {
+        let lobes = self.lobes(hit, n, wo, material);
+        match lobes.refraction {
+            None => {
+                *beta *= lobes.reflection.weight;
+                lobes.reflection
+            }
+            Some((refracted, reflectance)) if rng.next_f32() >= reflectance => {
+                *beta *= refracted.weight / (1.0 - reflectance);
+                refracted
+            }
+            Some(_) => lobes.reflection,
+        }
+    }
+}

@@ -1,0 +1,301 @@
+//! The shared scatter step: what a hit's material does with light, asked
+//! once per hit by every physical integrator (as pbrt's and tray_rust's
+//! integrators ask the BSDF) instead of each matching on the material.
+//!
+//! A material is unlit (it shows a radiance), rough (lit by the lights, see
+//! [`super::direct`]) or smooth; a smooth one hands over its [`Lobes`]: the
+//! mirror lobe and, through a dielectric, the refracted one, each with its
+//! ray and its weight. The side of the surface, the Fresnel law and the
+//! radiance carried across the interface are decided here, once.
+
+use glam::Vec3;
+use radiometry::snell::Incidence;
+use radiometry::{course, fresnel, radiance, specular};
+
+use super::Tracer;
+use crate::geometry::{Hit, Ray};
+use crate::scene::{FresnelModel, Material};
+use crate::spawn;
+
+/// What kind of secondary ray leaves a surface.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Bounce {
+    /// A sampled direction off a rough surface (the path tracer's).
+    Diffuse,
+    /// The mirror direction.
+    Reflection,
+    /// Through a dielectric interface.
+    Refraction,
+}
+
+/// What a surface does with the light that reaches it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Surface {
+    /// Unlit: it shows this radiance, whatever lights it.
+    Shows(Vec3),
+    /// Rough: shaded from the lights and the ambient term by its BRDF.
+    Rough,
+    /// Smooth: light leaves only along its [`Lobes`].
+    Smooth,
+}
+
+impl Material {
+    /// What this material does with light at `hit`.
+    pub fn surface(&self, hit: &Hit) -> Surface {
+        match *self {
+            Material::Flat { radiance } => Surface::Shows(radiance),
+            Material::NormalColour => Surface::Shows(hit.normal * 0.5 + 0.5),
+            Material::CourseRough { .. } | Material::Lambert { .. } => Surface::Rough,
+            Material::Conductor { .. } | Material::Dielectric { .. } => Surface::Smooth,
+        }
+    }
+}
+
+/// One way light leaves a smooth surface.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Lobe {
+    /// Its kind.
+    pub bounce: Bounce,
+    /// The secondary ray, started off the surface on the side it travels into.
+    pub ray: Ray,
+    /// Radiance arriving along the ray times this is the radiance it
+    /// carries back along the incident ray, per channel.
+    pub weight: Vec3,
+}
+
+/// The lobes of a smooth surface.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Lobes {
+    /// The mirror lobe, weighted by the Fresnel reflectance.
+    pub reflection: Lobe,
+    /// Through a dielectric, the refracted lobe (weighted by the
+    /// transmittance and the radiance's `1/η²`) and the reflectance `R`
+    /// that splits the light between the two; `None` at a conductor and
+    /// under total internal reflection.
+    pub refraction: Option<(Lobe, f32)>,
+}
+
+impl Tracer<'_> {
+    /// The lobes of the smooth material at `hit`, seen along `wo` (towards
+    /// the viewer) with `n` the hit's shading normal.
+    pub(crate) fn lobes(&self, hit: &Hit, n: Vec3, wo: Vec3, material: &Material) -> Lobes {
+        match *material {
+            Material::Dielectric { eta } => self.dielectric_lobes(hit, n, wo, eta),
+            Material::Conductor { n: eta, kappa } => {
+                let facing = if n.dot(wo) < 0.0 { -n } else { n };
+                let weight = self.conductor_fresnel(facing.dot(wo), eta, kappa);
+                let ray = Ray::new(
+                    spawn::origin(hit, facing, self.settings.ray_offset),
+                    specular::reflect(wo, facing),
+                );
+                Lobes {
+                    reflection: mirror(ray, weight),
+                    refraction: None,
+                }
+            }
+            _ => unreachable!("only smooth materials have lobes"),
+        }
+    }
+
+    fn dielectric_lobes(&self, hit: &Hit, n: Vec3, wo: Vec3, eta: f32) -> Lobes {
+        let interface = self.dielectric(n.dot(wo), eta);
+        let outward = if interface.incidence.from_inside {
+            -n
+        } else {
+            n
+        };
+        let reflected = Ray::new(
+            spawn::origin(hit, outward, self.settings.ray_offset),
+            specular::reflect(wo, n),
+        );
+        let reflectance = interface.reflectance;
+        let refraction = interface.cos_t.map(|cos_t| {
+            let t = specular::refract_resolved(wo, n, &interface.incidence, cos_t);
+            let lobe = Lobe {
+                bounce: Bounce::Refraction,
+                ray: Ray::new(
+                    spawn::origin(hit, -outward, self.settings.ray_offset),
+                    t.direction,
+                ),
+                weight: Vec3::splat(radiance::across_interface(
+                    interface.transmittance,
+                    t.eta_path,
+                )),
+            };
+            (lobe, reflectance)
+        });
+        Lobes {
+            reflection: mirror(reflected, Vec3::splat(reflectance)),
+            refraction,
+        }
+    }
+
+    /// Conductor reflectance per channel at `cos_i`, by the chosen law.
+    fn conductor_fresnel(&self, cos_i: f32, n: [f32; 3], kappa: [f32; 3]) -> Vec3 {
+        Vec3::from_array(match self.settings.fresnel {
+            FresnelModel::Exact => fresnel::conductor_rgb(cos_i, n, kappa),
+            FresnelModel::Schlick => fresnel::schlick_rgb(cos_i, fresnel::f0_rgb(n, kappa)),
+            FresnelModel::Course => {
+                let f0 = fresnel::f0_rgb(n, kappa);
+                core::array::from_fn(|c| course::fresnel_000_glsl(f0[c], cos_i))
+            }
+        })
+    }
+
+    /// A dielectric interface met at signed `cos_i`, resolved once by the
+    /// chosen law: the side, the indices and `cos θ_t` the law decided, and
+    /// its reflectance and transmittance.
+    fn dielectric(&self, cos_i: f32, eta: f32) -> Interface {
+        match self.settings.fresnel {
+            FresnelModel::Exact => {
+                let f = fresnel::dielectric_polarized(cos_i, eta);
+                Interface::new(f.incidence, f.cos_t, f.reflectance(), f.transmittance())
+            }
+            FresnelModel::Schlick => match fresnel::schlick_dielectric_working(cos_i, eta) {
+                Some(w) => Interface::new(w.incidence, w.cos_t, w.reflectance, w.transmittance()),
+                None => Interface::undefined(),
+            },
+            // The course has no glass; its formula with the incident cosine.
+            FresnelModel::Course => match Incidence::resolve(cos_i, eta) {
+                Some(incidence) => {
+                    let r = course::fresnel_000_glsl(fresnel::f0(eta, 0.0), incidence.abs_cos_i);
+                    Interface::new(incidence, incidence.cos_transmitted(), r, 1.0 - r)
+                }
+                None => Interface::undefined(),
+            },
+        }
+    }
+}
+
+/// A dielectric interface as a Fresnel law resolved it.
+struct Interface {
+    /// The side, the indices and `|cos θ_i|`.
+    incidence: Incidence<f32>,
+    /// `cos θ_t`, or `None` under total internal reflection.
+    cos_t: Option<f32>,
+    /// The fraction reflected.
+    reflectance: f32,
+    /// The fraction transmitted.
+    transmittance: f32,
+}
+
+impl Interface {
+    fn new(
+        incidence: Incidence<f32>,
+        cos_t: Option<f32>,
+        reflectance: f32,
+        transmittance: f32,
+    ) -> Self {
+        Interface {
+            incidence,
+            cos_t,
+            reflectance,
+            transmittance,
+        }
+    }
+
+    /// Input that describes no interface (a NaN cosine): NaN weights and no
+    /// refracted lobe, as the laws return.
+    fn undefined() -> Self {
+        let incidence = Incidence {
+            abs_cos_i: f32::NAN,
+            n_i: f32::NAN,
+            n_t: f32::NAN,
+            from_inside: false,
+        };
+        Interface::new(incidence, None, f32::NAN, f32::NAN)
+    }
+}
+
+fn mirror(ray: Ray, weight: Vec3) -> Lobe {
+    Lobe {
+        bounce: Bounce::Reflection,
+        ray,
+        weight,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::integrator::{Machinery, Tracer};
+    use crate::scene::{self, Settings};
+
+    /// The hit, resolved once, hands out exactly the bits that deciding the
+    /// side three times gave: the side from the cosine's sign, the law's R
+    /// and T, and `specular::refract`'s direction and index, for each Fresnel
+    /// model, from outside and from inside a glass sphere.
+    #[test]
+    fn a_dielectric_hit_resolved_once_gives_the_bits_of_each_law_alone() {
+        let scene = scene::parse(
+            r#"{ "version": 1, "image": { "width": 4, "height": 4 },
+                 "camera": { "type": "course_pinhole" },
+                 "materials": { "glass": { "type": "dielectric", "eta": 1.5 } },
+                 "objects": [ { "type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "glass" } ] }"#,
+        )
+        .unwrap();
+        let eta = 1.5_f32;
+        let mut cases = 0;
+        for model in [
+            FresnelModel::Exact,
+            FresnelModel::Schlick,
+            FresnelModel::Course,
+        ] {
+            let settings = Settings {
+                fresnel: model,
+                ..Settings::default()
+            };
+            let tracer = Tracer {
+                scene: &scene,
+                settings,
+                machinery: Machinery::everything(&scene, &settings),
+            };
+            for i in 0..400 {
+                // Rays from outside (origin at z = −3) and from the centre
+                // outwards, over a spread of angles.
+                let u = (i % 20) as f32 / 20.0 - 0.5;
+                let v = (i / 20) as f32 / 20.0 - 0.5;
+                let (origin, target) = if i % 2 == 0 {
+                    (Vec3::new(0.0, 0.0, -3.0), Vec3::new(u * 2.0, v * 2.0, 0.0))
+                } else {
+                    (Vec3::new(u * 0.9, v * 0.9, 0.0), Vec3::new(u, v + 0.3, 1.0))
+                };
+                let ray = Ray::new(origin, (target - origin).normalize());
+                let Some(hit) = tracer.intersect(&ray) else {
+                    continue;
+                };
+                let (wo, n) = (-ray.direction, hit.shading_normal(ray.direction));
+                let lobes = tracer.lobes(&hit, n, wo, &Material::Dielectric { eta });
+                let cos_o = n.dot(wo);
+                let (r, t) = match model {
+                    FresnelModel::Exact => {
+                        let f = fresnel::dielectric_polarized(cos_o, eta);
+                        (f.reflectance(), f.transmittance())
+                    }
+                    FresnelModel::Schlick => {
+                        let r = fresnel::schlick_dielectric(cos_o, eta);
+                        (r, 1.0 - r)
+                    }
+                    FresnelModel::Course => {
+                        let r = course::fresnel_000_glsl(fresnel::f0(eta, 0.0), cos_o.abs());
+                        (r, 1.0 - r)
+                    }
+                };
+                let outward = if cos_o >= 0.0 { n } else { -n };
+                let offset = spawn::origin(&hit, outward, settings.ray_offset);
+                assert_eq!(lobes.reflection.weight, Vec3::splat(r), "{model:?} {i}");
+                assert_eq!(lobes.reflection.ray.origin, offset, "{model:?} {i}");
+                let alone = specular::refract(wo, n, eta);
+                assert_eq!(lobes.refraction.is_some(), alone.is_some(), "{model:?} {i}");
+                if let (Some((lobe, reflectance)), Some(alone)) = (lobes.refraction, alone) {
+                    assert_eq!(lobe.ray.direction, alone.direction, "{model:?} {i}");
+                    let weight = radiance::across_interface(t, alone.eta_path);
+                    assert_eq!(lobe.weight, Vec3::splat(weight), "{model:?} {i}");
+                    assert_eq!(reflectance, r);
+                }
+                cases += 1;
+            }
+        }
+        assert!(cases > 600, "{cases}");
+    }
+}

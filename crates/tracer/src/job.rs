@@ -1,0 +1,173 @@
+//! The one way to render: a [`RenderJob`] is a validated scene with its
+//! settings settled once, the scene's own under a caller's [`Overrides`],
+//! checked against what the integrator can render, with the machinery the
+//! scene needs; it renders and writes.
+//!
+//! Settings pass two stages, as a command line's raw flags become its
+//! settled arguments: as given ([`RenderSpec`], from the file's `render` or
+//! from the overrides, `f64` counts reported as written) and as settled
+//! ([`Settings`]), each value checked in [`Settings::settle`], the only
+//! place it is checked. Nothing after [`RenderJob::new`] re-checks or
+//! re-maps a setting.
+
+use std::path::Path;
+
+use crate::integrator::{Machinery, Tracer};
+use crate::needs::{self, Needs};
+use crate::output::{Destination, OutputError};
+use crate::render::{self, Rendered};
+use crate::scene::validate::image_size;
+use crate::scene::{
+    self, ErrorKind, IntegratorKind, Material, RenderSpec, Scene, SceneError, Settings,
+};
+
+/// Settings given beside a scene (a command line's flags, a test's case),
+/// each over the scene's own. Refusals name them `overrides.<field>`
+/// (`overrides.spp`, `overrides.width`).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Overrides {
+    /// Render settings, as given.
+    pub render: RenderSpec,
+    /// Image width, pixels (the camera keeps its view).
+    pub width: Option<u32>,
+    /// Image height, pixels.
+    pub height: Option<u32>,
+}
+
+/// A scene ready to render: settings settled, integrator checked, needs
+/// analysed.
+#[derive(Clone, Debug)]
+pub struct RenderJob {
+    scene: Scene,
+    settings: Settings,
+    needs: Needs,
+    machinery: Machinery,
+}
+
+/// Why a render did not complete.
+#[derive(Debug, thiserror::Error)]
+pub enum RenderError {
+    /// The worker threads could not be started.
+    #[error("cannot start the render's threads: {0}")]
+    Threads(#[from] rayon::ThreadPoolBuildError),
+    /// An image could not be written.
+    #[error(transparent)]
+    Output(#[from] OutputError),
+}
+
+impl RenderJob {
+    /// Reads the scene file at `path` and settles `overrides` over it.
+    pub fn load(path: &Path, overrides: &Overrides) -> Result<Self, SceneError> {
+        RenderJob::new(scene::load(path)?, overrides)
+    }
+
+    /// `scene` with `overrides` settled over its own settings.
+    pub fn new(scene: Scene, overrides: &Overrides) -> Result<Self, SceneError> {
+        let scene = match (overrides.width, overrides.height) {
+            (None, None) => scene,
+            (w, h) => {
+                let (w, h) = (w.unwrap_or(scene.width), h.unwrap_or(scene.height));
+                let (w, h) = image_size("overrides", w.into(), h.into())?;
+                scene.resized(w, h)
+            }
+        };
+        let settings = scene.settings.settle("overrides", &overrides.render)?;
+        RenderJob::with_settings(scene, settings)
+    }
+
+    /// `scene` with settings already settled (a variation of a settled
+    /// job's, or of [`Scene::settings`]).
+    pub fn with_settings(scene: Scene, settings: Settings) -> Result<Self, SceneError> {
+        renderable(&scene, &settings)?;
+        let needs = needs::analyse(&scene, &settings);
+        let machinery = needs.machinery(&settings);
+        Ok(RenderJob {
+            scene,
+            settings,
+            needs,
+            machinery,
+        })
+    }
+
+    /// The scene, at the size it is rendered.
+    pub fn scene(&self) -> &Scene {
+        &self.scene
+    }
+
+    /// The settled settings.
+    pub fn settings(&self) -> &Settings {
+        &self.settings
+    }
+
+    /// What the scene needs under these settings.
+    pub fn needs(&self) -> &Needs {
+        &self.needs
+    }
+
+    /// The machinery a render runs: only what the scene needs.
+    pub fn machinery(&self) -> &Machinery {
+        &self.machinery
+    }
+
+    /// Everything switched on, the reference against which skipping is
+    /// measured.
+    pub fn everything(&self) -> Machinery {
+        Machinery::everything(&self.scene, &self.settings)
+    }
+
+    /// Renders on `threads` threads (`None`: all cores); `progress` is
+    /// called with the number of rows finished so far, from any thread.
+    pub fn render(
+        &self,
+        threads: Option<usize>,
+        progress: &(dyn Fn(usize) + Sync),
+    ) -> Result<Rendered, RenderError> {
+        self.render_with(&self.machinery, threads, progress)
+    }
+
+    /// Renders running `machinery` instead of what the scene needs (to
+    /// measure what skipping saves; the image must not change).
+    pub fn render_with(
+        &self,
+        machinery: &Machinery,
+        threads: Option<usize>,
+        progress: &(dyn Fn(usize) + Sync),
+    ) -> Result<Rendered, RenderError> {
+        let tracer = Tracer {
+            scene: &self.scene,
+            settings: self.settings,
+            machinery: machinery.clone(),
+        };
+        Ok(render::render(&tracer, threads, progress)?)
+    }
+
+    /// Renders and writes the PNG and the PFM of `destination`.
+    pub fn render_to(
+        &self,
+        destination: &Destination,
+        threads: Option<usize>,
+        progress: &(dyn Fn(usize) + Sync),
+    ) -> Result<Rendered, RenderError> {
+        let rendered = self.render(threads, progress)?;
+        destination.write(&rendered.image)?;
+        Ok(rendered)
+    }
+}
+
+/// Refuses combinations an integrator cannot render.
+fn renderable(scene: &Scene, settings: &Settings) -> Result<(), SceneError> {
+    if settings.integrator == IntegratorKind::Course {
+        if let Some((name, _)) = scene
+            .material_names
+            .iter()
+            .zip(&scene.materials)
+            .find(|(_, m)| matches!(m, Material::Dielectric { .. }))
+        {
+            return Err(SceneError::new(
+                format!("materials.{name}"),
+                ErrorKind::CourseHasNoRefraction,
+            ));
+        }
+    }
+    Ok(())
+}

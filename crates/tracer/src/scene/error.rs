@@ -1,0 +1,212 @@
+//! Why a scene file or its settings were refused: a typed [`ErrorKind`]
+//! and the JSON path of the field it concerns. The English text is only the
+//! [`Display`](std::fmt::Display) of the kind, so that a front end can
+//! translate every kind with an exhaustive `match`.
+
+use std::fmt;
+
+use radiometry::domain::DomainError;
+
+use super::{MAX_PIXELS, SCHEMA_VERSION};
+
+/// A refused scene or setting: what is wrong, and where.
+#[derive(Debug)]
+pub struct SceneError {
+    field: String,
+    kind: ErrorKind,
+}
+
+/// What is wrong with a scene file or a render setting. Every message the
+/// tracer writes about its input is one of these.
+#[derive(Debug)]
+pub enum ErrorKind {
+    /// The file could not be read.
+    Read {
+        /// The file as given.
+        file: String,
+        /// The operating system's reason.
+        source: std::io::Error,
+    },
+    /// Not JSON: serde_json's description and where in the text.
+    Syntax {
+        /// serde_json's description, without its position.
+        message: String,
+        /// Line of the error, from 1.
+        line: usize,
+        /// Column of the error, from 1.
+        column: usize,
+    },
+    /// JSON, but not the schema: a wrong type, an unknown or missing field,
+    /// an unknown kind (serde's description).
+    Schema {
+        /// serde's description.
+        message: String,
+    },
+    /// A camera, material, object or light without its `"type"`.
+    TypeMissing,
+    /// A `"type"` that is not a string.
+    TypeNotString {
+        /// The value given, as JSON.
+        got: String,
+    },
+    /// A schema version this tracer does not read.
+    Version {
+        /// The version given.
+        got: u32,
+    },
+    /// A count (pixels, samples, sides, depth) that is not a whole number
+    /// within its bounds.
+    NotACount {
+        /// The value given.
+        value: f64,
+        /// The least accepted.
+        min: u32,
+        /// The most accepted.
+        max: u32,
+    },
+    /// An image with more than [`MAX_PIXELS`] pixels.
+    TooManyPixels {
+        /// Width, pixels.
+        width: u32,
+        /// Height, pixels.
+        height: u32,
+    },
+    /// A number outside its domain (radiometry's own kinds; the error names
+    /// the field itself).
+    Domain(DomainError),
+    /// A direction whose unit vector does not survive rounding to `f32`.
+    DirectionUnrepresentable,
+    /// A look-at camera whose target is its eye.
+    TargetIsEye,
+    /// A look-at camera whose up direction is along its view.
+    UpAlongView,
+    /// A field of view outside (0, 180) degrees.
+    FieldOfView {
+        /// The value given, degrees.
+        degrees: f64,
+    },
+    /// A far plane not beyond the near plane.
+    FarNotBeyondNear {
+        /// The near plane, m.
+        near: f64,
+        /// The far plane, m.
+        far: f64,
+    },
+    /// An object naming a material the scene does not define.
+    UnknownMaterial {
+        /// The name given.
+        name: String,
+        /// The names the scene defines.
+        defined: Vec<String>,
+    },
+    /// A dielectric on a surface without an inside (a plane, the tube).
+    DielectricWithoutInside,
+    /// A dielectric under the course's shader, which has no refraction.
+    CourseHasNoRefraction,
+}
+
+impl SceneError {
+    /// An error of `kind` at the JSON path `field`.
+    pub fn new(field: impl Into<String>, kind: ErrorKind) -> Self {
+        SceneError {
+            field: field.into(),
+            kind,
+        }
+    }
+
+    /// The JSON path of the bad value: `.` for the whole file (or a file
+    /// that cannot be read), `?` where the JSON breaks off before a value
+    /// could be named; settings given beside the file are under
+    /// `overrides`.
+    pub fn field(&self) -> &str {
+        &self.field
+    }
+
+    /// What is wrong.
+    pub fn kind(&self) -> &ErrorKind {
+        &self.kind
+    }
+}
+
+impl From<DomainError> for SceneError {
+    fn from(error: DomainError) -> Self {
+        let field = match &error {
+            DomainError::NotFinite { name, .. }
+            | DomainError::OutOfRange { name, .. }
+            | DomainError::ZeroVector { name, .. } => name.clone(),
+        };
+        SceneError::new(field, ErrorKind::Domain(error))
+    }
+}
+
+impl fmt::Display for SceneError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match &self.kind {
+            // These name their subject themselves.
+            ErrorKind::Read { .. } | ErrorKind::Domain(_) => write!(f, "{}", self.kind),
+            kind => write!(f, "{}: {kind}", self.field),
+        }
+    }
+}
+
+impl fmt::Display for ErrorKind {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            ErrorKind::Read { file, source } => write!(f, "cannot read {file}: {source}"),
+            ErrorKind::Syntax {
+                message,
+                line,
+                column,
+            } => write!(f, "{message} (line {line}, column {column})"),
+            ErrorKind::Schema { message } => f.write_str(message),
+            ErrorKind::TypeMissing => f.write_str(
+                "missing: every camera, material, object and light names its \"type\"",
+            ),
+            ErrorKind::TypeNotString { got } => {
+                write!(f, "must be a string naming the kind, got {got}")
+            }
+            ErrorKind::Version { got } => write!(
+                f,
+                "this tracer reads scene version {SCHEMA_VERSION}, got {got}"
+            ),
+            ErrorKind::NotACount { value, min, max } => {
+                write!(f, "must be a whole number from {min} to {max}, got {value}")
+            }
+            ErrorKind::TooManyPixels { width, height } => write!(
+                f,
+                "{width} × {height} pixels is more than the {MAX_PIXELS} accepted"
+            ),
+            ErrorKind::Domain(error) => write!(f, "{error}"),
+            ErrorKind::DirectionUnrepresentable => f.write_str("a direction representable in f32"),
+            ErrorKind::TargetIsEye => f.write_str("must differ from camera.eye"),
+            ErrorKind::UpAlongView => f.write_str("must not be parallel to the viewing direction"),
+            ErrorKind::FieldOfView { degrees } => {
+                write!(f, "must be in (0, 180) degrees, got {degrees}")
+            }
+            ErrorKind::FarNotBeyondNear { near, far } => {
+                write!(f, "must be beyond camera.near ({near}), got {far}")
+            }
+            ErrorKind::UnknownMaterial { name, defined } => write!(
+                f,
+                "no material named {name:?}; the scene defines {defined:?}"
+            ),
+            ErrorKind::DielectricWithoutInside => f.write_str(
+                "a dielectric needs a closed surface with an inside: only spheres may be dielectric",
+            ),
+            ErrorKind::CourseHasNoRefraction => f.write_str(
+                "the course's shader has no refraction; render dielectrics with \
+                 --integrator whitted or path",
+            ),
+        }
+    }
+}
+
+impl std::error::Error for SceneError {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match &self.kind {
+            ErrorKind::Read { source, .. } => Some(source),
+            // A domain error is shown as itself, not as a cause.
+            _ => None,
+        }
+    }
+}

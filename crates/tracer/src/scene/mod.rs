@@ -1,0 +1,58 @@
+//! Scene files: the JSON schema (version 1), its parsing and its validation.
+//!
+//! A scene file is read in two passes. The first is serde's (`json`):
+//! syntax, types and unknown fields, each error carrying the JSON path of
+//! the bad value (via `serde_path_to_error`). The second is
+//! [`SceneFile::validate`]: the values' domains, again naming the path. Only
+//! a validated scene becomes a [`Scene`], whose numbers are the tracer's
+//! `f32` and whose render settings are settled ([`Settings`]). Every refusal
+//! is a [`SceneError`]: a typed [`ErrorKind`] and the field's JSON path. The
+//! schema is documented in `docs/scene-schema.md`.
+//!
+//! | module | what |
+//! |---|---|
+//! | [`schema`] | the file as written |
+//! | `json` | text to the schema, errors with their JSON path |
+//! | [`validate`] | the schema to the model, each value in its domain |
+//! | [`model`] | the validated scene the integrators read |
+//! | [`settings`] | render settings as given and as settled |
+//! | [`error`] | the kinds of refusal |
+
+pub mod error;
+mod json;
+pub mod model;
+pub mod schema;
+pub mod settings;
+pub mod validate;
+
+pub use error::{ErrorKind, SceneError};
+pub use model::{Light, Material, Scene};
+pub use schema::SceneFile;
+pub use settings::{FresnelModel, IntegratorKind, RayOffset, RenderSpec, Settings};
+pub use settings::{MAX_DEPTH, MAX_SPP};
+
+/// The only schema version this crate reads.
+pub const SCHEMA_VERSION: u32 = 1;
+
+/// The largest image side accepted, in pixels. 16384 is the largest texture
+/// side common GPUs allow and four times a 4K display; a larger image is
+/// almost certainly a typo, and 16384² RGB floats are already 3 GiB.
+pub const MAX_IMAGE_SIDE: u32 = 16_384;
+
+/// The most pixels accepted: 8192², a 64-megapixel image (768 MiB of
+/// `f32` radiance).
+pub const MAX_PIXELS: u64 = 8192 * 8192;
+
+/// Reads and validates a scene file.
+pub fn load(path: &std::path::Path) -> Result<Scene, SceneError> {
+    let text = std::fs::read_to_string(path).map_err(|source| {
+        let file = path.display().to_string();
+        SceneError::new(".", ErrorKind::Read { file, source })
+    })?;
+    parse(&text)
+}
+
+/// Parses and validates a scene from JSON text.
+pub fn parse(text: &str) -> Result<Scene, SceneError> {
+    json::scene_file(text)?.validate()
+}

@@ -1,0 +1,168 @@
+//! Render settings: as given ([`RenderSpec`], from a scene file's `render`
+//! or from a caller's overrides) and as settled ([`Settings`], validated
+//! once, over the defaults). Nothing after [`Settings::settle`] re-checks or
+//! re-maps a setting.
+
+use std::fmt;
+
+use radiometry::domain;
+use serde::{Deserialize, Serialize};
+
+use super::validate::{count, positive};
+use super::SceneError;
+
+/// The most samples per pixel accepted: 2^20. Beyond this the `f32` image
+/// cannot resolve the difference a further sample makes.
+pub const MAX_SPP: u32 = 1 << 20;
+
+/// The deepest recursion accepted. The course's shaders use 12 and 64.
+pub const MAX_DEPTH: u32 = 1024;
+
+/// The light transport algorithm: the speed/accuracy ladder of `003`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, Serialize)]
+#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
+#[serde(rename_all = "snake_case")]
+pub enum IntegratorKind {
+    /// Direct light only; mirrors and glass show the background.
+    Local,
+    /// Recursive specular reflection and refraction, shadow rays.
+    Whitted,
+    /// Monte Carlo global illumination.
+    Path,
+    /// What the course's final GLSL shader computes, bugs included.
+    Course,
+}
+
+impl fmt::Display for IntegratorKind {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            IntegratorKind::Local => "local",
+            IntegratorKind::Whitted => "whitted",
+            IntegratorKind::Path => "path",
+            IntegratorKind::Course => "course",
+        })
+    }
+}
+
+/// Which Fresnel law the smooth materials use.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, Serialize)]
+#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
+#[serde(rename_all = "snake_case")]
+pub enum FresnelModel {
+    /// The exact equations (`radiometry::fresnel::conductor_rgb`, `dielectric`).
+    #[cfg_attr(feature = "clap", value(help = "The exact Fresnel equations"))]
+    Exact,
+    /// Schlick's approximation (`radiometry::fresnel::schlick_rgb`, `schlick_dielectric`).
+    #[cfg_attr(feature = "clap", value(help = "Schlick's approximation"))]
+    Schlick,
+    /// The course shader's reversed form, `F0 + (1 − F0) cos⁵θ`
+    /// (`radiometry::course::fresnel_000_glsl`): isolates that one erratum
+    /// in an otherwise physical render.
+    #[cfg_attr(
+        feature = "clap",
+        value(help = "The course shader's reversed form, for measuring that erratum alone")
+    )]
+    Course,
+}
+
+/// How a secondary ray's origin is moved off the surface it leaves.
+#[derive(Clone, Copy, Debug, PartialEq, Deserialize, Serialize)]
+#[serde(rename_all = "snake_case", deny_unknown_fields)]
+pub enum RayOffset {
+    /// Along the normal by the bound on the hit point's rounding error.
+    Robust,
+    /// Along the normal by a fixed distance in metres (the course: 0.001).
+    Fixed(f64),
+}
+
+/// Render settings as given, all optional: a scene file's `render`, or a
+/// caller's overrides. Counts are `f64` so that a bad value is reported
+/// exactly as it was given.
+#[derive(Clone, Copy, Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RenderSpec {
+    /// The integrator.
+    pub integrator: Option<IntegratorKind>,
+    /// Samples per pixel (path tracer), 1 to [`MAX_SPP`].
+    pub spp: Option<f64>,
+    /// Maximum number of bounces after the primary hit, 0 to [`MAX_DEPTH`].
+    pub max_depth: Option<f64>,
+    /// Fresnel model.
+    pub fresnel: Option<FresnelModel>,
+    /// Throughput below which a path is cut (whitted) or rouletted (path).
+    pub throughput_cutoff: Option<f64>,
+    /// Seed of the path tracer's random numbers.
+    pub seed: Option<u64>,
+    /// How secondary rays leave a surface.
+    pub ray_offset: Option<RayOffset>,
+}
+
+/// Settled render settings.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct Settings {
+    /// The light transport.
+    pub integrator: IntegratorKind,
+    /// Samples per pixel; only the path tracer is random, the others use 1.
+    pub spp: u32,
+    /// Bounces allowed after the primary hit (the course's `maxBounces`
+    /// counts the primary hit too: its 12 is `max_depth` 11).
+    pub max_depth: u32,
+    /// Fresnel law of smooth materials.
+    pub fresnel: FresnelModel,
+    /// A branch whose throughput (largest channel) falls below this is cut
+    /// (`whitted`) or continued with Russian roulette (`path`). 0 never cuts.
+    pub throughput_cutoff: f32,
+    /// Seed of the path tracer.
+    pub seed: u64,
+    /// How secondary rays leave a surface.
+    pub ray_offset: RayOffset,
+}
+
+impl Default for Settings {
+    fn default() -> Self {
+        Settings {
+            integrator: IntegratorKind::Whitted,
+            spp: 1,
+            max_depth: 11,
+            fresnel: FresnelModel::Exact,
+            throughput_cutoff: 1e-3,
+            seed: 0,
+            ray_offset: RayOffset::Robust,
+        }
+    }
+}
+
+impl Settings {
+    /// These settings with `spec`'s given values over them, each checked
+    /// against its domain and named `{path}.{field}` when refused.
+    pub fn settle(&self, path: &str, spec: &RenderSpec) -> Result<Settings, SceneError> {
+        let field = |name: &str| format!("{path}.{name}");
+        let mut settled = *self;
+        if let Some(integrator) = spec.integrator {
+            settled.integrator = integrator;
+        }
+        if let Some(spp) = spec.spp {
+            settled.spp = count(&field("spp"), spp, 1, MAX_SPP)?;
+        }
+        if let Some(depth) = spec.max_depth {
+            settled.max_depth = count(&field("max_depth"), depth, 0, MAX_DEPTH)?;
+        }
+        if let Some(fresnel) = spec.fresnel {
+            settled.fresnel = fresnel;
+        }
+        if let Some(cutoff) = spec.throughput_cutoff {
+            settled.throughput_cutoff =
+                domain::fraction(&field("throughput_cutoff"), cutoff)? as f32;
+        }
+        if let Some(seed) = spec.seed {
+            settled.seed = seed;
+        }
+        if let Some(offset) = spec.ray_offset {
+            if let RayOffset::Fixed(eps) = offset {
+                positive(&field("ray_offset.fixed"), eps)?;
+            }
+            settled.ray_offset = offset;
+        }
+        Ok(settled)
+    }
+}

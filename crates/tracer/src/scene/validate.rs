@@ -1,0 +1,332 @@
+//! The second pass over a scene file: every value against its domain
+//! (finite numbers, positive radii, non-zero directions, at least three tube
+//! sides, a bounded resolution), each refusal naming the JSON path. Only a
+//! validated scene becomes a [`Scene`].
+
+use glam::{DVec3, Vec3};
+use radiometry::domain::{self, DomainError};
+
+use super::schema::{CameraSpec, LightSpec, MaterialSpec, ObjectSpec, SceneFile};
+use super::{
+    ErrorKind, Light, Material, Scene, SceneError, Settings, MAX_IMAGE_SIDE, MAX_PIXELS,
+    SCHEMA_VERSION,
+};
+use crate::camera::{Camera, LookAtView};
+use crate::geometry::{Object, Plane, Sphere, Tube};
+
+/// The tracer computes in f32: a finite f64 beyond f32's range (3.4e38)
+/// would become infinite there, so it is refused by name like a NaN.
+fn within_f32(name: String, c: f64) -> Result<(), DomainError> {
+    if (c as f32).is_finite() {
+        Ok(())
+    } else {
+        Err(DomainError::OutOfRange {
+            name,
+            value: c,
+            expected: domain::Expected::WithinF32,
+        })
+    }
+}
+
+/// Three components, each checked by `domain_check` and within `f32`,
+/// named `path[0]`, `path[1]`, `path[2]`.
+fn each3(
+    path: &str,
+    v: [f64; 3],
+    domain_check: fn(&str, f64) -> Result<f64, DomainError>,
+) -> Result<Vec3, DomainError> {
+    for (axis, c) in ["[0]", "[1]", "[2]"].into_iter().zip(v) {
+        let name = format!("{path}{axis}");
+        domain_check(&name, c)?;
+        within_f32(name, c)?;
+    }
+    Ok(DVec3::from_array(v).as_vec3())
+}
+
+fn finite3(path: &str, v: [f64; 3]) -> Result<Vec3, DomainError> {
+    each3(path, v, domain::finite)
+}
+
+fn non_negative3(path: &str, v: [f64; 3]) -> Result<Vec3, DomainError> {
+    each3(path, v, domain::non_negative)
+}
+
+fn direction(path: &str, v: [f64; 3]) -> Result<Vec3, SceneError> {
+    let d = domain::direction(path, DVec3::from_array(v))?;
+    // The unit vector must also survive rounding to f32.
+    let unit = d.unit.as_vec3();
+    if !(unit.length() > 0.5) {
+        return Err(SceneError::new(path, ErrorKind::DirectionUnrepresentable));
+    }
+    Ok(unit)
+}
+
+/// A positive length that stays positive and finite in `f32`.
+pub(super) fn positive(path: &str, value: f64) -> Result<f32, SceneError> {
+    domain::finite(path, value)?;
+    if !(value > 0.0) || (value as f32) == 0.0 || !(value as f32).is_finite() {
+        return Err(DomainError::OutOfRange {
+            name: path.to_owned(),
+            value,
+            expected: domain::Expected::PositiveF32,
+        }
+        .into());
+    }
+    Ok(value as f32)
+}
+
+/// A whole number from `min` to `max`.
+pub(super) fn count(path: &str, value: f64, min: u32, max: u32) -> Result<u32, SceneError> {
+    domain::finite(path, value)?;
+    if value.fract() != 0.0 || value < min as f64 || value > max as f64 {
+        return Err(SceneError::new(
+            path,
+            ErrorKind::NotACount { value, min, max },
+        ));
+    }
+    Ok(value as u32)
+}
+
+/// An image size: each side 1 to [`MAX_IMAGE_SIDE`], at most [`MAX_PIXELS`]
+/// in all. `path` names the image (`image`, or the overrides).
+pub fn image_size(path: &str, width: f64, height: f64) -> Result<(u32, u32), SceneError> {
+    let width = count(&format!("{path}.width"), width, 1, MAX_IMAGE_SIDE)?;
+    let height = count(&format!("{path}.height"), height, 1, MAX_IMAGE_SIDE)?;
+    if width as u64 * height as u64 > MAX_PIXELS {
+        return Err(SceneError::new(
+            path,
+            ErrorKind::TooManyPixels { width, height },
+        ));
+    }
+    Ok((width, height))
+}
+
+impl SceneFile {
+    /// Checks every value against its domain and builds the [`Scene`].
+    pub fn validate(&self) -> Result<Scene, SceneError> {
+        if self.version != SCHEMA_VERSION {
+            return Err(SceneError::new(
+                "version",
+                ErrorKind::Version { got: self.version },
+            ));
+        }
+        let (width, height) = image_size("image", self.image.width, self.image.height)?;
+        let camera = validate_camera(&self.camera, width, height)?;
+        let background = non_negative3("background", self.background)?;
+        let ambient = non_negative3("ambient", self.ambient)?;
+        let mut material_names = Vec::new();
+        let mut materials = Vec::new();
+        for (name, spec) in &self.materials {
+            materials.push(validate_material(&format!("materials.{name}"), spec)?);
+            material_names.push(name.clone());
+        }
+        let objects = self
+            .objects
+            .iter()
+            .enumerate()
+            .map(|(i, spec)| {
+                validate_object(&format!("objects[{i}]"), spec, &material_names, &materials)
+            })
+            .collect::<Result<_, _>>()?;
+        let lights = self
+            .lights
+            .iter()
+            .enumerate()
+            .map(|(i, spec)| validate_light(&format!("lights[{i}]"), spec))
+            .collect::<Result<_, _>>()?;
+        let settings = Settings::default().settle("render", &self.render)?;
+        Ok(Scene {
+            width,
+            height,
+            camera,
+            background,
+            ambient,
+            materials,
+            material_names,
+            objects,
+            lights,
+            settings,
+        })
+    }
+}
+
+fn validate_camera(spec: &CameraSpec, width: u32, height: u32) -> Result<Camera, SceneError> {
+    let CameraSpec::LookAt {
+        eye,
+        target,
+        up,
+        fov_y_deg,
+        near,
+        far,
+    } = *spec
+    else {
+        return Ok(Camera::course_pinhole(width, height));
+    };
+    let eye_v = finite3("camera.eye", eye)?;
+    let target_v = finite3("camera.target", target)?;
+    let forward = direction(
+        "camera.target",
+        [target[0] - eye[0], target[1] - eye[1], target[2] - eye[2]],
+    )
+    .map_err(|_| SceneError::new("camera.target", ErrorKind::TargetIsEye))?;
+    let up_v = direction("camera.up", up)?;
+    if forward.cross(up_v).length() < 1e-6 {
+        return Err(SceneError::new("camera.up", ErrorKind::UpAlongView));
+    }
+    domain::finite("camera.fov_y_deg", fov_y_deg)?;
+    if !(fov_y_deg > 0.0 && fov_y_deg < 180.0) {
+        return Err(SceneError::new(
+            "camera.fov_y_deg",
+            ErrorKind::FieldOfView { degrees: fov_y_deg },
+        ));
+    }
+    positive("camera.near", near)?;
+    positive("camera.far", far)?;
+    if !(far > near) {
+        return Err(SceneError::new(
+            "camera.far",
+            ErrorKind::FarNotBeyondNear { near, far },
+        ));
+    }
+    let view = LookAtView {
+        eye: eye_v.as_dvec3(),
+        target: target_v.as_dvec3(),
+        up: up_v.as_dvec3(),
+        fov_y: fov_y_deg.to_radians(),
+        near,
+        far,
+    };
+    Ok(Camera::look_at(view, width, height))
+}
+
+fn validate_object(
+    p: &str,
+    spec: &ObjectSpec,
+    names: &[String],
+    materials: &[Material],
+) -> Result<Object, SceneError> {
+    let material_index = |name: &str| -> Result<u32, SceneError> {
+        names
+            .iter()
+            .position(|m| m == name)
+            .map(|i| i as u32)
+            .ok_or_else(|| {
+                let kind = ErrorKind::UnknownMaterial {
+                    name: name.to_owned(),
+                    defined: names.to_vec(),
+                };
+                SceneError::new(format!("{p}.material"), kind)
+            })
+    };
+    // A dielectric needs a closed surface with an inside.
+    let not_dielectric = |m: u32| match materials[m as usize] {
+        Material::Dielectric { .. } => Err(SceneError::new(
+            format!("{p}.material"),
+            ErrorKind::DielectricWithoutInside,
+        )),
+        _ => Ok(m),
+    };
+    Ok(match spec {
+        ObjectSpec::Sphere {
+            center,
+            radius,
+            material,
+        } => Object::Sphere(Sphere {
+            center: finite3(&format!("{p}.center"), *center)?,
+            radius: positive(&format!("{p}.radius"), *radius)?,
+            material: material_index(material)?,
+        }),
+        ObjectSpec::Plane {
+            point,
+            normal,
+            material,
+        } => {
+            let material = not_dielectric(material_index(material)?)?;
+            Object::Plane(Plane {
+                point: finite3(&format!("{p}.point"), *point)?,
+                normal: direction(&format!("{p}.normal"), *normal)?,
+                material,
+            })
+        }
+        ObjectSpec::MirrorTube {
+            axis_point,
+            axis,
+            sides,
+            radius,
+            material,
+        } => {
+            let material = not_dielectric(material_index(material)?)?;
+            let sides = count(&format!("{p}.sides"), *sides, 3, 64)?;
+            Object::Tube(Tube::new(
+                finite3(&format!("{p}.axis_point"), *axis_point)?,
+                direction(&format!("{p}.axis"), *axis)?,
+                sides,
+                positive(&format!("{p}.radius"), *radius)?,
+                material,
+            ))
+        }
+    })
+}
+
+fn validate_light(p: &str, spec: &LightSpec) -> Result<Light, SceneError> {
+    Ok(match *spec {
+        LightSpec::Directional {
+            towards,
+            irradiance,
+        } => Light::Directional {
+            towards: direction(&format!("{p}.towards"), towards)?,
+            irradiance: non_negative3(&format!("{p}.irradiance"), irradiance)?,
+        },
+        LightSpec::Point {
+            position,
+            intensity,
+        } => Light::Point {
+            position: finite3(&format!("{p}.position"), position)?,
+            intensity: non_negative3(&format!("{p}.intensity"), intensity)?,
+        },
+    })
+}
+
+fn validate_material(p: &str, spec: &MaterialSpec) -> Result<Material, SceneError> {
+    Ok(match *spec {
+        MaterialSpec::Flat { radiance } => Material::Flat {
+            radiance: non_negative3(&format!("{p}.radiance"), radiance)?,
+        },
+        MaterialSpec::NormalColour {} => Material::NormalColour,
+        MaterialSpec::CourseRough {
+            ambient,
+            diffuse,
+            specular,
+            shininess,
+        } => Material::CourseRough {
+            ambient: non_negative3(&format!("{p}.ambient"), ambient)?,
+            diffuse: non_negative3(&format!("{p}.diffuse"), diffuse)?,
+            specular: non_negative3(&format!("{p}.specular"), specular)?,
+            shininess: domain::non_negative(&format!("{p}.shininess"), shininess)? as f32,
+        },
+        MaterialSpec::Lambert { albedo } => {
+            for (axis, c) in ["[0]", "[1]", "[2]"].into_iter().zip(albedo) {
+                domain::fraction(&format!("{p}.albedo{axis}"), c)?;
+            }
+            Material::Lambert {
+                albedo: DVec3::from_array(albedo).as_vec3(),
+            }
+        }
+        MaterialSpec::Conductor { n, kappa } => {
+            for (axis, (n, k)) in ["[0]", "[1]", "[2]"]
+                .into_iter()
+                .zip(n.into_iter().zip(kappa))
+            {
+                domain::INDEX_RANGE_F32.refractive_index(&format!("{p}.n{axis}"), n)?;
+                domain::INDEX_RANGE_F32.extinction(&format!("{p}.kappa{axis}"), k)?;
+            }
+            Material::Conductor {
+                n: n.map(|x| x as f32),
+                kappa: kappa.map(|x| x as f32),
+            }
+        }
+        MaterialSpec::Dielectric { eta } => Material::Dielectric {
+            eta: domain::INDEX_RANGE_F32.refractive_index(&format!("{p}.eta"), eta)? as f32,
+        },
+    })
+}

@@ -1,0 +1,153 @@
+//! The render job: settings settled once (defaults, then the scene's
+//! `render`, then the caller's overrides), each refusal typed and named by
+//! its field, the integrator checked by the job itself, and the destination
+//! refused before any render.
+
+use serde_json::json;
+use tracer::job::{Overrides, RenderJob};
+use tracer::output::{Destination, OutputError};
+use tracer::scene::{self, ErrorKind, FresnelModel, IntegratorKind, RenderSpec, Scene, Settings};
+
+fn glass_scene() -> Scene {
+    scene::parse(
+        &json!({
+            "version": 1,
+            "image": { "width": 8, "height": 6 },
+            "camera": { "type": "course_pinhole" },
+            "materials": { "glass": { "type": "dielectric", "eta": 1.5 } },
+            "objects": [ { "type": "sphere", "center": [0, 0, 4], "radius": 1, "material": "glass" } ],
+            "render": { "integrator": "path", "spp": 4, "max_depth": 3 }
+        })
+        .to_string(),
+    )
+    .expect("test scene is valid")
+}
+
+#[test]
+fn settings_are_the_defaults_under_the_scene_under_the_overrides() {
+    let scene = glass_scene();
+    // The scene's own, over the defaults.
+    assert_eq!(
+        scene.settings,
+        Settings {
+            integrator: IntegratorKind::Path,
+            spp: 4,
+            max_depth: 3,
+            ..Settings::default()
+        }
+    );
+    let overrides = Overrides {
+        render: RenderSpec {
+            spp: Some(16.0),
+            fresnel: Some(FresnelModel::Schlick),
+            seed: Some(7),
+            ..RenderSpec::default()
+        },
+        width: Some(4),
+        height: None,
+    };
+    let job = RenderJob::new(scene, &overrides).unwrap();
+    assert_eq!(
+        *job.settings(),
+        Settings {
+            integrator: IntegratorKind::Path,
+            spp: 16,
+            max_depth: 3,
+            fresnel: FresnelModel::Schlick,
+            seed: 7,
+            ..Settings::default()
+        }
+    );
+    assert_eq!((job.scene().width, job.scene().height), (4, 6));
+    // Glass makes every path random: all 16 samples are taken.
+    assert_eq!(job.machinery().spp, 16);
+}
+
+#[test]
+fn bad_overrides_are_refused_by_kind_and_field() {
+    let refused = |overrides: Overrides| RenderJob::new(glass_scene(), &overrides).unwrap_err();
+    let e = refused(Overrides {
+        render: RenderSpec {
+            spp: Some(0.0),
+            ..RenderSpec::default()
+        },
+        ..Overrides::default()
+    });
+    assert_eq!(e.field(), "overrides.spp");
+    assert!(matches!(
+        e.kind(),
+        ErrorKind::NotACount { min: 1, value, .. } if *value == 0.0
+    ));
+    let e = refused(Overrides {
+        width: Some(16_384),
+        height: Some(16_384),
+        ..Overrides::default()
+    });
+    assert_eq!(e.field(), "overrides");
+    assert!(matches!(
+        e.kind(),
+        ErrorKind::TooManyPixels {
+            width: 16_384,
+            height: 16_384
+        }
+    ));
+    let e = refused(Overrides {
+        width: Some(0),
+        ..Overrides::default()
+    });
+    assert_eq!(e.field(), "overrides.width");
+    let e = refused(Overrides {
+        render: RenderSpec {
+            throughput_cutoff: Some(2.0),
+            ..RenderSpec::default()
+        },
+        ..Overrides::default()
+    });
+    assert_eq!(e.field(), "overrides.throughput_cutoff");
+    assert!(matches!(e.kind(), ErrorKind::Domain(_)));
+}
+
+/// The renderer itself refuses what an integrator cannot render, whoever
+/// calls it: the course's shader has no glass.
+#[test]
+fn the_job_refuses_glass_under_the_course_shader_naming_the_material() {
+    let scene = glass_scene();
+    let course = Settings {
+        integrator: IntegratorKind::Course,
+        ..scene.settings
+    };
+    let e = RenderJob::with_settings(scene.clone(), course).unwrap_err();
+    assert_eq!(e.field(), "materials.glass");
+    assert!(matches!(e.kind(), ErrorKind::CourseHasNoRefraction));
+    let overrides = Overrides {
+        render: RenderSpec {
+            integrator: Some(IntegratorKind::Course),
+            ..RenderSpec::default()
+        },
+        ..Overrides::default()
+    };
+    assert!(RenderJob::new(scene, &overrides).is_err());
+}
+
+#[test]
+fn a_destination_is_refused_before_the_render() {
+    let dir = tempfile::tempdir().unwrap();
+    let pfm = dir.path().join("out.pfm");
+    assert!(matches!(
+        Destination::new(&pfm),
+        Err(OutputError::PfmIsPng { .. })
+    ));
+    let nowhere = dir.path().join("no/such/dir/out.png");
+    assert!(matches!(
+        Destination::new(&nowhere),
+        Err(OutputError::NoDirectory { .. })
+    ));
+    let png = dir.path().join("out.png");
+    let destination = Destination::new(&png).unwrap();
+    let job = RenderJob::new(glass_scene(), &Overrides::default()).unwrap();
+    let rendered = job.render_to(&destination, Some(1), &|_| {}).unwrap();
+    assert_eq!(destination.pfm(), dir.path().join("out.pfm"));
+    let pfm = std::fs::read(destination.pfm()).unwrap();
+    assert_eq!(tracer::output::read_pfm(&pfm), Some(rendered.image));
+    assert!(png.is_file());
+}

@@ -1,0 +1,142 @@
+//! The exact Fresnel laws, and the angle laws of `snell`, against 50-digit
+//! references, in both precision tiers.
+//!
+//! Reference: `validation/reference/fresnel_mpmath.json` (schema
+//! `fresnel-reference/1`), written by `python-checks/fresnel_mpmath.py`:
+//! extremes included (grazing `cos θ = 1e-300`, 1e-12 rad and one ulp either side
+//! of the critical angle on every path that has one, `η = 1 ± 1e-12`,
+//! `η = 1e-3` and `1e3`, `n = 1e3`, `κ = 1e3`).
+//!
+//! Tolerance: [`BOUND_ULPS`] ulps of the exact value in the tier's own
+//! precision. Every input is exactly representable, so a correctly rounded
+//! law would be within 0.5 ulp; each quantity is a handful of roundings from
+//! that (a square root, a few products and quotients, a sum carried in twice
+//! the precision). The bound is just above the worst error measured (6.6
+//! ulps, conductor R_p in f32), so that a regression costing one digit fails;
+//! where the exact value is subnormal the ulps are those of the smallest
+//! subnormal, and an exact value just below a power of two is measured in
+//! the spacing of its own binade. Each quantity's worst relative error
+//! `|ours − exact| / exact` is reported beside its ulps; the bound is on the
+//! ulps, which say the same everywhere but where the exact value is
+//! subnormal. The workspace test `tests/fresnel_reference.rs` runs this
+//! check on the radiometry crate's laws and prints its table; a broken law
+//! injected through [`Laws`](crate::laws::Laws) / [`Laws64`] fails it.
+
+mod angles;
+mod fresnel;
+mod reference;
+
+pub use angles::{check_angles, transmitted_angle_bound_ulps};
+pub use fresnel::{check_conductor, check_dielectric};
+pub use reference::{AngleCase, ConductorCase, DielectricCase, Exact, FresnelMpmath, Tiers};
+
+use radiometry::fresnel::{self as law, ConductorFresnel, DielectricFresnel};
+use radiometry::snell;
+
+use crate::check::Check;
+
+/// The bound, in ulps of the tier.
+pub const BOUND_ULPS: f64 = 8.0;
+
+/// The file name of the reference.
+pub const FILE: &str = "fresnel_mpmath.json";
+/// Its schema.
+pub const SCHEMA: &str = "fresnel-reference/1";
+
+/// The `f64` laws under test (the `f32` ones are in [`Laws`](crate::laws::Laws)).
+#[derive(Clone, Copy)]
+pub struct Laws64 {
+    /// Exact dielectric Fresnel.
+    pub dielectric: fn(f64, f64) -> DielectricFresnel<f64>,
+    /// Exact conductor Fresnel.
+    pub conductor: fn(f64, f64, f64) -> ConductorFresnel<f64>,
+    /// Snell's law for angles, `(theta_i, eta_path)`.
+    pub transmitted_angle: fn(f64, f64) -> Option<f64>,
+    /// The critical angle, `eta_path`.
+    pub critical_angle: fn(f64) -> Option<f64>,
+    /// Brewster's angle, `eta_path`.
+    pub brewster_angle: fn(f64) -> Option<f64>,
+}
+
+impl Laws64 {
+    /// The radiometry crate's.
+    pub fn radiometry() -> Self {
+        Self {
+            dielectric: law::dielectric_polarized,
+            conductor: law::conductor_polarized,
+            transmitted_angle: snell::transmitted_angle,
+            critical_angle: snell::critical_angle,
+            brewster_angle: snell::brewster_angle,
+        }
+    }
+}
+
+/// Records `got` against `exact` in ulps of the tier and relative to the
+/// exact value (0 when both are 0, infinite when only the exact value is),
+/// and returns the ulps.
+fn measure(
+    check: &mut Check,
+    tier: &str,
+    quantity: &str,
+    label: &str,
+    got: f64,
+    exact: Exact,
+) -> f64 {
+    let err = exact.error(got);
+    let ulps = exact.ulps(got, tier);
+    let relative = if err == 0.0 {
+        0.0
+    } else {
+        err / (exact.0 + exact.1).abs()
+    };
+    check.measure(&format!("{tier} {quantity} (ulps)"), ulps, label);
+    check.measure(&format!("{tier} {quantity} (relative)"), relative, label);
+    ulps
+}
+
+/// [`measure`], failing above [`BOUND_ULPS`].
+fn compare(check: &mut Check, tier: &str, quantity: &str, label: &str, got: f64, exact: Exact) {
+    let ulps = measure(check, tier, quantity, label, got, exact);
+    if !(ulps <= BOUND_ULPS) {
+        check.fail(format!(
+            "{tier} {quantity} at {label}: got {got:e}, exact {:e} ({ulps:.1} ulps)",
+            exact.0
+        ));
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// An exact value just below a power of two is measured in the spacing
+    /// of the binade it lies in, not in the coarser one of its rounded `hi`.
+    #[test]
+    fn ulps_are_those_of_the_exact_value_at_a_power_of_two() {
+        let just_below = Exact(1.0, -f64::EPSILON / 8.0);
+        assert_eq!(just_below.ulp("f64"), f64::EPSILON / 2.0);
+        assert_eq!(just_below.ulp("f32"), f32::EPSILON as f64 / 2.0);
+        assert_eq!(Exact(1.0, f64::EPSILON / 8.0).ulp("f64"), f64::EPSILON);
+        assert_eq!(Exact(0.75, -1e-20).ulp("f64"), f64::EPSILON / 2.0);
+        assert_eq!(
+            Exact(-1.0, f64::EPSILON / 8.0).ulp("f64"),
+            f64::EPSILON / 2.0
+        );
+        assert_eq!(Exact(-1.0, -f64::EPSILON / 8.0).ulp("f64"), f64::EPSILON);
+        let mut check = Check::new("t", "t", "t", "t");
+        compare(
+            &mut check,
+            "f64",
+            "R",
+            "one below",
+            1.0,
+            Exact(1.0, -f64::EPSILON / 4.0),
+        );
+        assert_eq!(check.worst("f64 R (ulps)").unwrap().worst, 0.5);
+        let relative = check.worst("f64 R (relative)").unwrap().worst;
+        assert!(
+            (relative - f64::EPSILON / 4.0).abs() < 1e-30,
+            "{relative:e}"
+        );
+    }
+}
