@@ -209,81 +209,97 @@ pub fn check_random(
             "case {i}: {}",
             serde_json::to_string(case).unwrap_or_default()
         );
-        match *case {
-            LawCase::Fresnel { cos_i, eta } => {
-                let ours = (laws.dielectric)(cos_i as f32, eta as f32);
-                let exact = (laws64.dielectric)(cos_i, eta);
-                if ours.is_total_internal_reflection() != exact.is_total_internal_reflection() {
-                    check.fail(format!(
-                        "{label}: total internal reflection differs between f32 and f64"
-                    ));
-                }
-                scalar(
-                    &mut check,
-                    "fresnel R",
-                    &label,
-                    ours.reflectance().into(),
-                    result.f,
-                    exact.reflectance(),
-                );
-            }
-            LawCase::FresnelConductor { cos_i, n, kappa } => {
-                let ours = (laws.conductor)(cos_i as f32, n as f32, kappa as f32);
-                let exact = (laws64.conductor)(cos_i, n, kappa);
-                scalar(
-                    &mut check,
-                    "fresnel_conductor R",
-                    &label,
-                    ours.reflectance().into(),
-                    result.f,
-                    exact.reflectance(),
-                );
-            }
-            LawCase::Directions { wi, n, eta } => {
-                let (wi64, n64) = (DVec3::from_array(wi), DVec3::from_array(n));
-                let ours = (laws.reflect)(vec3(wi), vec3(n)).to_array().map(f64::from);
-                let exact = radiometry::specular::reflect(wi64, n64).to_array();
-                direction(
-                    &mut check,
-                    "reflect",
-                    &label,
-                    ours,
-                    result.reflect,
-                    exact,
-                    0.0,
-                );
-                let ours = (laws.refract)(vec3(wi), vec3(n), eta as f32);
-                let exact = radiometry::specular::refract(wi64, n64, eta);
-                match (ours, exact) {
-                    (Some(o), Some(e)) => {
-                        let exact = e.direction.to_array();
-                        let allowance = refraction_allowance_at(wi, n, eta, exact);
-                        let ours = o.direction.to_array().map(f64::from);
-                        direction(
-                            &mut check,
-                            "refract",
-                            &label,
-                            ours,
-                            result.refract,
-                            exact,
-                            allowance,
-                        )
-                    }
-                    (None, None) => {
-                        if result.cos_t.is_some_and(|c| c != 0.0) {
-                            check.find(format!(
-                                "Mitsuba at {label}: refracts under total internal reflection"
-                            ));
-                        }
-                    }
-                    _ => check.fail(format!(
-                        "{label}: total internal reflection differs between f32 and f64"
-                    )),
-                }
-            }
-        }
+        compare_case(&mut check, laws, laws64, &label, case, result);
     }
     check
+}
+
+/// One exported case: ours (`f32`) against Mitsuba and our `f64` law.
+fn compare_case(
+    check: &mut Check,
+    laws: &Laws,
+    laws64: &Laws64,
+    label: &str,
+    case: &LawCase,
+    result: &LawResult,
+) {
+    match *case {
+        LawCase::Fresnel { cos_i, eta } => {
+            let ours = (laws.dielectric)(cos_i as f32, eta as f32);
+            let exact = (laws64.dielectric)(cos_i, eta);
+            if ours.is_total_internal_reflection() != exact.is_total_internal_reflection() {
+                check.fail(format!(
+                    "{label}: total internal reflection differs between f32 and f64"
+                ));
+            }
+            scalar(
+                check,
+                "fresnel R",
+                label,
+                ours.reflectance().into(),
+                result.f,
+                exact.reflectance(),
+            );
+        }
+        LawCase::FresnelConductor { cos_i, n, kappa } => {
+            let ours = (laws.conductor)(cos_i as f32, n as f32, kappa as f32);
+            let exact = (laws64.conductor)(cos_i, n, kappa);
+            scalar(
+                check,
+                "fresnel_conductor R",
+                label,
+                ours.reflectance().into(),
+                result.f,
+                exact.reflectance(),
+            );
+        }
+        LawCase::Directions { wi, n, eta } => {
+            compare_directions(check, laws, laws64, label, (wi, n, eta), result)
+        }
+    }
+}
+
+/// One exported direction case: the mirror and the refracted direction.
+fn compare_directions(
+    check: &mut Check,
+    laws: &Laws,
+    laws64: &Laws64,
+    label: &str,
+    (wi, n, eta): ([f64; 3], [f64; 3], f64),
+    result: &LawResult,
+) {
+    let (wi64, n64) = (DVec3::from_array(wi), DVec3::from_array(n));
+    let ours = (laws.reflect)(vec3(wi), vec3(n)).to_array().map(f64::from);
+    let exact = (laws64.reflect)(wi64, n64).to_array();
+    direction(check, "reflect", label, ours, result.reflect, exact, 0.0);
+    let ours = (laws.refract)(vec3(wi), vec3(n), eta as f32);
+    let exact = (laws64.refract)(wi64, n64, eta);
+    match (ours, exact) {
+        (Some(o), Some(e)) => {
+            let exact = e.direction.to_array();
+            let allowance = refraction_allowance_at(wi, n, eta, exact);
+            let ours = o.direction.to_array().map(f64::from);
+            direction(
+                check,
+                "refract",
+                label,
+                ours,
+                result.refract,
+                exact,
+                allowance,
+            )
+        }
+        (None, None) => {
+            if result.cos_t.is_some_and(|c| c != 0.0) {
+                check.find(format!(
+                    "Mitsuba at {label}: refracts under total internal reflection"
+                ));
+            }
+        }
+        _ => check.fail(format!(
+            "{label}: total internal reflection differs between f32 and f64"
+        )),
+    }
 }
 
 fn scalar(check: &mut Check, law: &str, label: &str, ours: f64, mitsuba: Option<f64>, exact: f64) {

@@ -22,8 +22,7 @@
 //! check on the radiometry crate's laws and prints its table; a broken law
 //! injected through [`Laws`] / [`Laws64`] fails it.
 
-use radiometry::fresnel::{self, ConductorFresnel, DielectricFresnel};
-use radiometry::snell;
+use radiometry::fresnel::DielectricFresnel;
 use serde::Deserialize;
 
 use crate::check::{ulp_f32, ulp_f64, Check};
@@ -37,33 +36,8 @@ pub const FILE: &str = "fresnel_mpmath.json";
 /// Its schema.
 pub const SCHEMA: &str = "fresnel-reference/1";
 
-/// The `f64` laws under test (the `f32` ones are in [`Laws`]).
-#[derive(Clone, Copy)]
-pub struct Laws64 {
-    /// Exact dielectric Fresnel.
-    pub dielectric: fn(f64, f64) -> DielectricFresnel<f64>,
-    /// Exact conductor Fresnel.
-    pub conductor: fn(f64, f64, f64) -> ConductorFresnel<f64>,
-    /// Snell's law for angles, `(theta_i, eta_path)`.
-    pub transmitted_angle: fn(f64, f64) -> Option<f64>,
-    /// The critical angle, `eta_path`.
-    pub critical_angle: fn(f64) -> Option<f64>,
-    /// Brewster's angle, `eta_path`.
-    pub brewster_angle: fn(f64) -> Option<f64>,
-}
-
-impl Laws64 {
-    /// The radiometry crate's.
-    pub fn radiometry() -> Self {
-        Self {
-            dielectric: fresnel::dielectric_polarized,
-            conductor: fresnel::conductor_polarized,
-            transmitted_angle: snell::transmitted_angle,
-            critical_angle: snell::critical_angle,
-            brewster_angle: snell::brewster_angle,
-        }
-    }
-}
+/// The `f64` laws under test (the `f32` ones are [`Laws`]).
+pub use crate::laws::Laws64;
 
 /// A value carried as the unevaluated sum `hi + lo` of two doubles.
 #[derive(Clone, Copy, Debug, Deserialize)]
