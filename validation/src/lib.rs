@@ -23,12 +23,16 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 pub mod check;
+pub mod checkout;
 pub mod colorimetry;
 pub mod exchange;
 pub mod laws;
 pub mod metals;
 pub mod mpmath;
+pub mod pipeline;
+pub mod python;
 pub mod reference;
+pub mod regenerate;
 pub mod renders;
 pub mod report;
 pub mod speed;
@@ -37,10 +41,4 @@ pub mod suite;
 
 pub use check::{Check, Metric};
 
-/// The root of the suite's checkout (the parent of `validation/`), where
-/// `python-checks/` and the default Python environment `.venv` live.
-pub fn repo_root() -> std::path::PathBuf {
-    let manifest = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
-    manifest.parent().unwrap_or(manifest).to_path_buf()
-}
 pub use reference::ReferenceError;

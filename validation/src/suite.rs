@@ -29,6 +29,9 @@ pub const REPORT_SCHEMA: &str = "validation-report/1";
 pub struct Context {
     /// The directory holding the reference JSON files.
     pub reference_dir: PathBuf,
+    /// The suite's checkout, where the scene files that the references name
+    /// are read (to tell a reference made from an older scene).
+    pub checkout: PathBuf,
     /// The reduced set: fewer timing iterations (and, for future kinds, fewer
     /// samples).
     pub quick: bool,
@@ -346,9 +349,8 @@ impl CheckKind for RenderChecks {
         let reference = MitsubaRenders::load(&context.reference_dir)?;
         report.note_reference(&context.reference_dir, renders::FILE)?;
         self.run_all(
-            &context.reference_dir.join(renders::FILE),
             &reference,
-            context.quick,
+            context,
             &mut report.checks,
             &mut report.render_figures,
         )
