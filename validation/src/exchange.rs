@@ -19,9 +19,9 @@ use serde::{Deserialize, Serialize};
 
 use crate::check::{ulps_f32, Check};
 use crate::laws::{
-    refraction_allowance_at, Laws, DIRECTION_ABS, GROSS_ABS, MITSUBA_ABS, OURS_ULPS,
+    refraction_allowance_at, Laws, Laws64, DIRECTION_ABS, GROSS_ABS, MITSUBA_ABS, OURS_ULPS,
 };
-use crate::mpmath::Laws64;
+
 
 /// The schema of the exported cases.
 pub const CASES_SCHEMA: &str = "law-cases/1";

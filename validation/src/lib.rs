@@ -17,6 +17,12 @@
 //! let checks = laws::check_all(&Laws::radiometry(), &reference);
 //! assert!(checks.iter().all(|c| c.passed()));
 //! ```
+//!
+//! [`pipeline::run`] is the whole harness as one call (`optics validate`
+//! fronts it): the Python environment ([`python`]), the regeneration
+//! ([`regenerate`]), every kind of check ([`suite`]), the random cases
+//! ([`exchange`]) and the report ([`report`]), against a checkout of the
+//! suite found at run time ([`checkout`]).
 
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]

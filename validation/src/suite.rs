@@ -13,9 +13,9 @@ use serde::Serialize;
 
 use crate::check::Check;
 use crate::colorimetry::{self, Colorimetry, ColourLaws};
-use crate::laws::{self, Laws, MitsubaLaws};
+use crate::laws::{self, Laws, Laws64, MitsubaLaws};
 use crate::metals::{self, MetalColour, MetalLaws, MetalsReference};
-use crate::mpmath::{self, FresnelMpmath, Laws64};
+use crate::mpmath::{self, FresnelMpmath};
 use crate::reference::ReferenceError;
 use crate::renders::{self, MitsubaRenders, RenderChecks, RenderFigure};
 use crate::speed::{self, Timing};
