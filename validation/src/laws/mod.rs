@@ -38,7 +38,7 @@ pub use reference::{
     ExactDirections, MitsubaConductor, MitsubaDielectric, MitsubaDirections, MitsubaLaws,
     SchlickCase,
 };
-pub use under_test::{Laws, Laws64, Tier};
+pub use under_test::{Laws, Laws64, RefractLaw, Tier};
 
 use crate::check::Check;
 

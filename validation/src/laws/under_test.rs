@@ -20,6 +20,11 @@ impl Tier for f64 {
     type Vec3 = glam::DVec3;
 }
 
+/// A refraction law of tier `T`: `(wi, n, eta)` to the refracted direction
+/// and the effective index, `None` under total internal reflection.
+pub type RefractLaw<T> =
+    fn(<T as Tier>::Vec3, <T as Tier>::Vec3, T) -> Option<Refraction<<T as Tier>::Vec3>>;
+
 /// The laws under test in tier `T`: `f32` ([`Laws`] alone, the tier the
 /// tracer uses and Mitsuba is compared in) or `f64` ([`Laws64`]).
 #[derive(Clone, Copy)]
@@ -31,7 +36,7 @@ pub struct Laws<T: Tier = f32> {
     /// Mirror direction, `(w, n)`.
     pub reflect: fn(T::Vec3, T::Vec3) -> T::Vec3,
     /// Refracted direction, `(wi, n, eta)`; `None` under TIR.
-    pub refract: fn(T::Vec3, T::Vec3, T) -> Option<Refraction<T::Vec3>>,
+    pub refract: RefractLaw<T>,
     /// Schlick's approximation, `(cos_i, f0)`.
     pub schlick: fn(T, T) -> T,
     /// Snell's law for angles, `(theta_i, eta_path)`; `None` under TIR.
