@@ -26,6 +26,8 @@ pub enum Via {
     Environment,
     /// Found searching upward from the working directory.
     Search,
+    /// The checkout this crate was built from ([`Checkout::at_build_time`]).
+    BuildTime,
 }
 
 /// Why no checkout could be used.
@@ -57,6 +59,7 @@ fn via_name(via: Via) -> &'static str {
         Via::Explicit => "--checkout",
         Via::Environment => ENV,
         Via::Search => "the working directory",
+        Via::BuildTime => "this build's checkout",
     }
 }
 
@@ -110,7 +113,7 @@ impl Checkout {
         let manifest = Path::new(env!("CARGO_MANIFEST_DIR"));
         Self {
             root: manifest.parent().unwrap_or(manifest).to_owned(),
-            via: Via::Explicit,
+            via: Via::BuildTime,
         }
     }
 

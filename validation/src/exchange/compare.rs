@@ -2,17 +2,15 @@
 //! our `f64` laws, by the tolerances and the failure/finding rule of
 //! [`crate::laws`].
 
-use glam::{DVec3, Vec3};
+use glam::DVec3;
 
 use super::{CasesFile, LawCase, LawResult, ResultsFile};
 use crate::check::{ulps_f32, Check};
+use crate::laws::directions::vec3;
 use crate::laws::{
-    refraction_allowance_at, Laws, Laws64, DIRECTION_ABS, GROSS_ABS, MITSUBA_ABS, OURS_ULPS,
+    refraction_allowance_at, Laws, Laws64, Verdict, DIRECTION_ABS, GROSS_ABS, MITSUBA_ABS,
+    OURS_ULPS,
 };
-
-fn vec3(v: [f64; 3]) -> Vec3 {
-    Vec3::new(v[0] as f32, v[1] as f32, v[2] as f32)
-}
 
 fn max_abs(a: [f64; 3], b: [f64; 3]) -> f64 {
     (0..3).map(|i| (a[i] - b[i]).abs()).fold(
@@ -146,8 +144,12 @@ fn compare_directions(
 
 fn scalar(check: &mut Check, law: &str, label: &str, ours: f64, mitsuba: Option<f64>, exact: f64) {
     let ulps = ulps_f32(ours, exact);
+    let (err, gap) = mitsuba.map_or((f64::NAN, f64::NAN), |m| {
+        ((m - exact).abs(), (ours - m).abs())
+    });
+    let verdict = Verdict::of(ulps, OURS_ULPS, gap, err, MITSUBA_ABS);
     check.measure(&format!("{law}: |ours − f64 law| (f32 ulps)"), ulps, label);
-    if !(ulps <= OURS_ULPS) {
+    if verdict.ours_off {
         check.fail(format!(
             "{law} at {label}: ours {ours:e}, f64 law {exact:e} ({ulps:.1} ulps)"
         ));
@@ -156,13 +158,12 @@ fn scalar(check: &mut Check, law: &str, label: &str, ours: f64, mitsuba: Option<
         check.fail(format!("{law} at {label}: no result from Mitsuba"));
         return;
     };
-    let (err, gap) = ((mitsuba - exact).abs(), (ours - mitsuba).abs());
     check.measure(&format!("{law}: |Mitsuba − f64 law|"), err, label);
-    if !(gap <= GROSS_ABS) {
+    if verdict.gross {
         check.fail(format!(
             "{law} at {label}: ours {ours:e}, Mitsuba {mitsuba:e}"
         ));
-    } else if err > MITSUBA_ABS && ulps <= OURS_ULPS {
+    } else if verdict.mitsuba_off {
         check.find(format!(
             "Mitsuba {law} at {label}: {mitsuba:e}, exact {exact:e} (off by {err:.2e})"
         ));
@@ -179,13 +180,17 @@ fn direction(
     allowance: f64,
 ) {
     let err = max_abs(ours, exact);
+    let bound = DIRECTION_ABS + allowance;
+    let (m_err, gap) = mitsuba.map_or((f64::NAN, f64::NAN), |m| {
+        (max_abs(m, exact), max_abs(ours, m))
+    });
+    let verdict = Verdict::of(err, bound, gap, m_err, MITSUBA_ABS + allowance);
     check.measure(
         &format!("{law}: max |ours − f64 law| per component"),
         err,
         label,
     );
-    let bound = DIRECTION_ABS + allowance;
-    if !(err <= bound) {
+    if verdict.ours_off {
         check.fail(format!(
             "{law} at {label}: ours {ours:?}, f64 law {exact:?} (off by {err:.2e} > {bound:.1e})"
         ));
@@ -194,17 +199,16 @@ fn direction(
         check.fail(format!("{law} at {label}: no result from Mitsuba"));
         return;
     };
-    let (m_err, gap) = (max_abs(mitsuba, exact), max_abs(ours, mitsuba));
     check.measure(
         &format!("{law}: max |Mitsuba − f64 law| per component"),
         m_err,
         label,
     );
-    if !(gap <= GROSS_ABS) {
+    if verdict.gross {
         check.fail(format!(
             "{law} at {label}: ours {ours:?}, Mitsuba {mitsuba:?}"
         ));
-    } else if m_err > MITSUBA_ABS + allowance && err <= bound {
+    } else if verdict.mitsuba_off {
         check.find(format!(
             "Mitsuba {law} at {label}: off the exact direction by {m_err:.2e}"
         ));

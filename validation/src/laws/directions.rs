@@ -3,7 +3,7 @@
 
 use glam::Vec3;
 
-use super::{DirectionCase, Laws, MitsubaLaws, DIRECTION_ABS, GROSS_ABS, MITSUBA_ABS};
+use super::{DirectionCase, Laws, MitsubaLaws, Verdict, DIRECTION_ABS, GROSS_ABS, MITSUBA_ABS};
 use crate::check::Check;
 
 /// The extra allowance for a refracted direction near the critical angle,
@@ -36,7 +36,9 @@ pub fn refraction_allowance_at(wi: [f64; 3], n: [f64; 3], eta: f64, refracted: [
     refraction_allowance(cos_i.abs(), eta_path, dot(refracted, n).abs())
 }
 
-fn vec3(v: [f64; 3]) -> Vec3 {
+/// A reference's direction (float32 values stored as doubles) as the `f32`
+/// laws take it.
+pub(crate) fn vec3(v: [f64; 3]) -> Vec3 {
     Vec3::new(v[0] as f32, v[1] as f32, v[2] as f32)
 }
 
@@ -129,16 +131,23 @@ fn compare_direction(
         label,
     );
     let bound = DIRECTION_ABS + allowance;
-    if !(ours_err <= bound) {
+    let verdict = Verdict::of(
+        ours_err,
+        bound,
+        disagreement,
+        mitsuba_err,
+        MITSUBA_ABS + allowance,
+    );
+    if verdict.ours_off {
         check.fail(format!(
             "{law} at {label}: ours {ours:?}, exact {exact:?} (off by {ours_err:.2e} > {bound:.1e})"
         ));
     }
-    if !(disagreement <= GROSS_ABS) {
+    if verdict.gross {
         check.fail(format!(
             "{law} at {label}: ours {ours:?}, Mitsuba {mitsuba:?} differ by {disagreement:.2e}"
         ));
-    } else if mitsuba_err > MITSUBA_ABS + allowance && ours_err <= bound {
+    } else if verdict.mitsuba_off {
         check.find(format!(
             "Mitsuba {law} at {label}: off the exact direction by {mitsuba_err:.2e}"
         ));

@@ -2,7 +2,7 @@
 //! exact values: each reflectance compared three ways (module docs of
 //! [`crate::laws`]).
 
-use super::{Laws, MitsubaLaws, GROSS_ABS, MITSUBA_ABS, OURS_ULPS};
+use super::{Laws, MitsubaLaws, Verdict, GROSS_ABS, MITSUBA_ABS, OURS_ULPS};
 use crate::check::{ulps_f32, Check};
 
 fn power(amplitude: [f64; 2]) -> f64 {
@@ -37,16 +37,17 @@ fn compare_scalar(
         disagreement,
         label,
     );
-    if !(ours_ulps <= OURS_ULPS) {
+    let verdict = Verdict::of(ours_ulps, OURS_ULPS, disagreement, mitsuba_err, MITSUBA_ABS);
+    if verdict.ours_off {
         check.fail(format!(
             "{quantity} at {label}: ours {ours:e}, exact {exact:e} ({ours_ulps:.1} ulps > {OURS_ULPS})"
         ));
     }
-    if !(disagreement <= GROSS_ABS) {
+    if verdict.gross {
         check.fail(format!(
             "{quantity} at {label}: ours {ours:e}, Mitsuba {mitsuba:e} differ by {disagreement:.2e} > {GROSS_ABS:e}"
         ));
-    } else if mitsuba_err > MITSUBA_ABS && ours_ulps <= OURS_ULPS {
+    } else if verdict.mitsuba_off {
         check.find(format!(
             "Mitsuba {quantity} at {label}: {mitsuba:e}, exact {exact:e} (off by {mitsuba_err:.2e}, {:.0} f32 ulps)",
             ulps_f32(mitsuba, exact)
