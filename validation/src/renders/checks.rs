@@ -116,3 +116,28 @@ fn failed_render(name: &str, integrator: &str, error: String) -> Compared {
         },
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::reference::committed_dir;
+
+    #[test]
+    fn a_scene_file_edited_since_the_reference_is_named() {
+        let reference = MitsubaRenders::load(&committed_dir()).unwrap();
+        let s = &reference.scenes[0];
+        let checkout = tempfile::tempdir().unwrap();
+        let on_disk = checkout.path().join(&s.scene_file);
+        // No file: nothing to compare.
+        assert_eq!(stale_scene(checkout.path(), s, "regen"), None);
+        std::fs::create_dir_all(on_disk.parent().unwrap()).unwrap();
+        std::fs::write(&on_disk, &s.scene_text).unwrap();
+        assert_eq!(stale_scene(checkout.path(), s, "regen"), None);
+        std::fs::write(&on_disk, format!("{} ", s.scene_text)).unwrap();
+        let stale = stale_scene(checkout.path(), s, "regen").unwrap();
+        assert!(
+            stale.starts_with(&s.scene_file) && stale.ends_with("`regen`"),
+            "{stale}"
+        );
+    }
+}
