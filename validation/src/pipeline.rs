@@ -29,8 +29,9 @@ use crate::laws::{Laws, Laws64};
 use crate::python::{self, run_tool, SetUp, ToolError};
 use crate::reference::ReferenceError;
 use crate::regenerate::{regenerate, RegenerateError};
+use crate::report::Report;
 use crate::report::{to_html, to_json};
-use crate::suite::{self, Context, Report};
+use crate::suite::{self, Context};
 
 /// Random cases of each law that Mitsuba evaluates: reduced set, full set.
 pub const RANDOM_CASES: [usize; 2] = [300, 3000];

@@ -1,19 +1,9 @@
-//! Writing the report: `report.json` (the exchange format the figure script
-//! reads) and `report.html` (the same, for people), as text; the pipeline
-//! writes them atomically ([`crate::pipeline`]).
+//! `report.html`: the report for people, section by section.
 
 use std::fmt::Write as _;
 
+use super::Report;
 use crate::check::Check;
-use crate::suite::Report;
-
-/// `report.json`, pretty-printed. Non-finite numbers (which JSON cannot hold)
-/// are written as `null`.
-pub fn to_json(report: &Report) -> String {
-    let mut text = serde_json::to_string_pretty(report).expect("a report always serialises");
-    text.push('\n');
-    text
-}
 
 fn escape(text: &str) -> String {
     let mut out = String::with_capacity(text.len());
