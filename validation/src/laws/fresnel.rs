@@ -55,6 +55,20 @@ fn compare_scalar(
     }
 }
 
+/// R, R_s and R_p, each compared three ways: ours (`f32`), Mitsuba's
+/// (unpolarised `f`, the powers of its amplitudes) and the exact values.
+fn compare_polarised(
+    check: &mut Check,
+    label: &str,
+    ours: [f32; 3],
+    mitsuba: [f64; 3],
+    exact: [f64; 3],
+) {
+    for (i, quantity) in ["R", "R_s", "R_p"].into_iter().enumerate() {
+        compare_scalar(check, quantity, label, ours[i].into(), mitsuba[i], exact[i]);
+    }
+}
+
 /// `mi.fresnel` and `mi.fresnel_polarized` (real index) against ours and the exact law.
 pub fn check_dielectric(laws: &Laws, reference: &MitsubaLaws) -> Check {
     let mut check = Check::new(
@@ -84,30 +98,13 @@ pub fn check_dielectric(laws: &Laws, reference: &MitsubaLaws) -> Check {
                 case.exact.tir
             ));
         }
-        let m = &case.mitsuba;
-        compare_scalar(
+        let (m, e) = (&case.mitsuba, &case.exact);
+        compare_polarised(
             &mut check,
-            "R",
             label,
-            ours.reflectance().into(),
-            m.f,
-            case.exact.r,
-        );
-        compare_scalar(
-            &mut check,
-            "R_s",
-            label,
-            ours.r_s.into(),
-            power(m.a_s),
-            case.exact.r_s,
-        );
-        compare_scalar(
-            &mut check,
-            "R_p",
-            label,
-            ours.r_p.into(),
-            power(m.a_p),
-            case.exact.r_p,
+            [ours.reflectance(), ours.r_s, ours.r_p],
+            [m.f, power(m.a_s), power(m.a_p)],
+            [e.r, e.r_s, e.r_p],
         );
         // The effective index along the path is a convention, not a rounding.
         if (f64::from(ours.eta_path) - m.eta_it).abs() > 1e-6 * m.eta_it {
@@ -134,22 +131,12 @@ pub fn check_conductor(laws: &Laws, reference: &MitsubaLaws) -> Check {
         let ours = (laws.conductor)(case.cos_i as f32, case.n as f32, case.kappa as f32);
         let (label, m, e) = (&case.label, &case.mitsuba, &case.exact);
         check.cases += 1;
-        compare_scalar(&mut check, "R", label, ours.reflectance().into(), m.f, e.r);
-        compare_scalar(
+        compare_polarised(
             &mut check,
-            "R_s",
             label,
-            ours.r_s.into(),
-            power(m.a_s),
-            e.r_s,
-        );
-        compare_scalar(
-            &mut check,
-            "R_p",
-            label,
-            ours.r_p.into(),
-            power(m.a_p),
-            e.r_p,
+            [ours.reflectance(), ours.r_s, ours.r_p],
+            [m.f, power(m.a_s), power(m.a_p)],
+            [e.r, e.r_s, e.r_p],
         );
     }
     check
