@@ -6,18 +6,11 @@ use glam::DVec3;
 
 use super::{CasesFile, LawCase, LawResult, ResultsFile};
 use crate::check::{ulps_f32, Check};
-use crate::laws::directions::vec3;
+use crate::laws::directions::{max_abs, vec3};
 use crate::laws::{
     refraction_allowance_at, Laws, Laws64, Verdict, DIRECTION_ABS, GROSS_ABS, MITSUBA_ABS,
     OURS_ULPS,
 };
-
-fn max_abs(a: [f64; 3], b: [f64; 3]) -> f64 {
-    (0..3).map(|i| (a[i] - b[i]).abs()).fold(
-        0.0,
-        |m, d| if d.is_nan() { f64::INFINITY } else { m.max(d) },
-    )
-}
 
 /// Compares our `f32` laws with Mitsuba and with our `f64` laws at every
 /// exported case.

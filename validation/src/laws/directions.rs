@@ -36,6 +36,15 @@ pub fn refraction_allowance_at(wi: [f64; 3], n: [f64; 3], eta: f64, refracted: [
     refraction_allowance(cos_i.abs(), eta_path, dot(refracted, n).abs())
 }
 
+/// The largest per-component difference of two directions; a NaN component
+/// counts as infinitely far, so a NaN direction is never within a bound.
+pub(crate) fn max_abs(a: [f64; 3], b: [f64; 3]) -> f64 {
+    (0..3).map(|i| (a[i] - b[i]).abs()).fold(
+        0.0,
+        |m, d| if d.is_nan() { f64::INFINITY } else { m.max(d) },
+    )
+}
+
 /// A reference's direction (float32 values stored as doubles) as the `f32`
 /// laws take it.
 pub(crate) fn vec3(v: [f64; 3]) -> Vec3 {
@@ -110,11 +119,8 @@ fn compare_direction(
     allowance: f64,
 ) {
     let ours = ours.to_array().map(f64::from);
-    let err = |v: [f64; 3]| (0..3).map(|i| (v[i] - exact[i]).abs()).fold(0.0, f64::max);
-    let (ours_err, mitsuba_err) = (err(ours), err(mitsuba));
-    let disagreement = (0..3)
-        .map(|i| (ours[i] - mitsuba[i]).abs())
-        .fold(0.0, f64::max);
+    let (ours_err, mitsuba_err) = (max_abs(ours, exact), max_abs(mitsuba, exact));
+    let disagreement = max_abs(ours, mitsuba);
     check.measure(
         &format!("{law}: max |ours − exact| per component"),
         ours_err,
