@@ -17,18 +17,28 @@
 //! let checks = laws::check_all(&Laws::radiometry(), &reference);
 //! assert!(checks.iter().all(|c| c.passed()));
 //! ```
+//!
+//! [`pipeline::run`] is the whole harness as one call (`optics validate`
+//! fronts it): the Python environment ([`python`]), the regeneration
+//! ([`regenerate`]), every kind of check ([`suite`]), the random cases
+//! ([`exchange`]) and the report ([`report`]), against a checkout of the
+//! suite found at run time ([`checkout`]).
 
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 pub mod check;
+pub mod checkout;
 pub mod colorimetry;
 pub mod exchange;
 pub mod laws;
 pub mod metals;
 pub mod mpmath;
+pub mod pipeline;
+pub mod python;
 pub mod reference;
+pub mod regenerate;
 pub mod renders;
 pub mod report;
 pub mod speed;
@@ -37,10 +47,4 @@ pub mod suite;
 
 pub use check::{Check, Metric};
 
-/// The root of the suite's checkout (the parent of `validation/`), where
-/// `python-checks/` and the default Python environment `.venv` live.
-pub fn repo_root() -> std::path::PathBuf {
-    let manifest = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
-    manifest.parent().unwrap_or(manifest).to_path_buf()
-}
 pub use reference::ReferenceError;

@@ -40,9 +40,11 @@ pub enum ReferenceError {
     },
 }
 
-/// The committed reference directory, `validation/reference/`.
+/// The committed reference directory of the checkout this crate was built
+/// from, for tests and examples (the harness's command reads the checkout's
+/// it finds at run time: [`crate::checkout::Checkout::reference_dir`]).
 pub fn committed_dir() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("reference")
+    crate::checkout::Checkout::at_build_time().reference_dir()
 }
 
 #[derive(Deserialize)]

@@ -32,6 +32,15 @@ fn refract_tangent_sign_flipped(wi: Vec3, n: Vec3, eta: f32) -> Option<Refractio
     })
 }
 
+/// The refracted direction with one component not a number, as a
+/// `0 / 0` in a normalisation would leave it.
+fn refract_with_a_nan_component(wi: Vec3, n: Vec3, eta: f32) -> Option<Refraction<Vec3>> {
+    specular::refract(wi, n, eta).map(|mut r| {
+        r.direction.y = f32::NAN;
+        r
+    })
+}
+
 /// `eta` read as `n_outside / n_inside`, the opposite of the crate convention.
 fn dielectric_eta_inverted(cos_i: f32, eta: f32) -> DielectricFresnel<f32> {
     fresnel::dielectric_polarized(cos_i, 1.0 / eta)
@@ -71,6 +80,22 @@ fn refraction_with_a_sign_flip_is_caught() {
         "{:#?}",
         check.failures
     );
+}
+
+#[test]
+fn a_refracted_direction_that_is_not_a_number_is_caught() {
+    let broken = Laws {
+        refract: refract_with_a_nan_component,
+        ..Laws::radiometry()
+    };
+    let check = laws::check_directions(&broken, &reference());
+    let refracting = reference()
+        .directions
+        .iter()
+        .filter(|c| c.exact.refract.is_some())
+        .count();
+    // Every refracting case, twice: off the exact direction and off Mitsuba's.
+    assert_eq!(failures_of(&check), 2 * refracting, "{:#?}", check.failures);
 }
 
 #[test]

@@ -6,6 +6,7 @@ use std::path::Path;
 
 use glam::Vec3;
 use radiometry::specular::{self, Refraction};
+use validation::checkout::Checkout;
 use validation::colorimetry::ColourLaws;
 use validation::exchange::{self, LawCase, LawResult};
 use validation::laws::Laws;
@@ -18,6 +19,7 @@ use validation::suite::{self, CheckKind, ColourChecks, Context, LawChecks, Metal
 fn context(dir: &Path) -> Context {
     Context {
         reference_dir: dir.to_owned(),
+        checkout: Checkout::at_build_time().root().to_owned(),
         quick: true,
     }
 }

@@ -8,22 +8,23 @@ mod tables;
 
 use tracer::render::Image;
 use tracer::scene::{IntegratorKind, Light, Scene, Settings};
+use validation::checkout::Checkout;
 use validation::reference::{committed_dir, ReferenceError};
 use validation::renders::{self, MitsubaRenders, RenderChecks, Renderer};
+use validation::suite::Context;
 use validation::Check;
 
 fn run(render: Renderer) -> Vec<Check> {
     let reference = MitsubaRenders::load(&committed_dir()).expect("committed reference");
     let mut checks = Vec::new();
     let mut figures = Vec::new();
+    let context = Context {
+        reference_dir: committed_dir(),
+        checkout: Checkout::at_build_time().root().to_owned(),
+        quick: true,
+    };
     RenderChecks { render }
-        .run_all(
-            &committed_dir().join(renders::FILE),
-            &reference,
-            true,
-            &mut checks,
-            &mut figures,
-        )
+        .run_all(&reference, &context, &mut checks, &mut figures)
         .expect("reference decodes");
     assert_eq!(checks.len(), figures.len(), "one figure per check");
     checks

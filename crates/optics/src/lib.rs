@@ -17,6 +17,7 @@ pub mod laws;
 pub mod quiz;
 pub mod record;
 mod render;
+#[cfg(feature = "harness")]
 mod validate;
 
 pub use error::{Error, ErrorKind};
@@ -123,6 +124,7 @@ enum Command {
     /// Report which effects a scene needs and what the renderer skips.
     Inspect(inspect::InspectArgs),
     /// Cross-check the laws, spectra and renders against the references.
+    #[cfg(feature = "harness")]
     Validate(validate::ValidateArgs),
 }
 
@@ -165,6 +167,7 @@ fn run(command: &Command, ui: &Ui) -> anyhow::Result<ExitCode> {
         }
         Command::Render(args) => render::run(args, ui)?,
         Command::Inspect(args) => inspect::run(args, ui)?,
+        #[cfg(feature = "harness")]
         Command::Validate(args) => validate::run(args, ui)?,
     }
     Ok(ExitCode::SUCCESS)

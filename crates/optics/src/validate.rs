@@ -1,19 +1,16 @@
-//! `optics validate`: the cross-check harness's command. Sets up the Python
-//! environment the references come from, runs every check (the `validation`
-//! crate), and writes `report.json`, `report.html` and the figures.
+//! `optics validate`: the cross-check harness's command, a front over
+//! [`validation::pipeline`]: the flags become its options, its steps
+//! progress messages, its outcome the output and the exit status.
 
 use std::io::IsTerminal;
-use std::path::{Path, PathBuf};
-use std::process::Command;
+use std::path::PathBuf;
 
-use anyhow::{bail, Context as _};
+use anyhow::bail;
+use indicatif::{ProgressBar, ProgressStyle};
 use serde_json::json;
-use validation::exchange;
-use validation::laws::Laws;
-use validation::mpmath::Laws64;
-use validation::report::{to_html, to_json, write_atomically};
-use validation::suite::{self, Context};
-use validation::Check;
+use validation::checkout::Checkout;
+use validation::pipeline::{self, Options, Outcome, PythonOptions, Step};
+use validation::python::SetUp;
 
 use crate::lang::say;
 use crate::Ui;
@@ -24,16 +21,24 @@ use crate::Ui;
   optics validate --quick              the committed references, no regeneration (CI runs this)
   optics validate --quick --no-python  no Python at all: no set-up, no figures
   optics --json validate --quick --out /tmp/validation
+  optics validate --quick --checkout ~/src/optics
 
-Writes report.json, report.html and figures/*.png into --out. On first use the
-Python environment (--venv, pinned by python-checks/requirements.txt) is
-created; that downloads Mitsuba 3, colour-science and matplotlib once.
-Exit status 1 when any check fails.")]
+Reads the suite's checkout: --checkout, else $OPTICS_CHECKOUT, else the
+checkout containing the working directory. Writes report.json, report.html
+and figures/*.png into --out. On first use the Python environment (--venv,
+pinned by python-checks/requirements.txt) is created; that downloads
+Mitsuba 3, colour-science and matplotlib once. Exit status 1 when any check
+fails.")]
 pub struct ValidateArgs {
     /// Run the reduced set: check against the committed references instead of
     /// regenerating them.
     #[arg(long)]
     pub quick: bool,
+    /// The suite's checkout (holding validation/reference/ and
+    /// python-checks/) [default: $OPTICS_CHECKOUT, else the checkout
+    /// containing the working directory].
+    #[arg(long, value_name = "DIR")]
+    pub checkout: Option<PathBuf>,
     /// Directory for report.json, report.html and figures/ (created if
     /// missing) [default: validation/out in the checkout].
     #[arg(long, value_name = "DIR")]
@@ -53,155 +58,140 @@ pub struct ValidateArgs {
     pub seed: u64,
 }
 
-/// The reference generators and the files each writes, in the order the
-/// full run regenerates them.
-/// Each generator and its outputs.
-const GENERATORS: [(&str, &[&str]); 5] = [
-    ("fresnel_mpmath.py", &["fresnel_mpmath.json"]),
-    ("mitsuba_laws.py", &["mitsuba_laws.json"]),
-    ("colorimetry.py", &["colorimetry.json", "cie_tables.rs"]),
-    ("metals.py", &["metals.json"]),
-    ("mitsuba_render.py", &["mitsuba_renders.json"]),
-];
+impl ValidateArgs {
+    /// The pipeline's options: the checkout found, the flags as they are.
+    fn options(&self) -> anyhow::Result<Options> {
+        let checkout = Checkout::find(self.checkout.as_deref())?;
+        // The command as typed, by the program's name rather than its build path.
+        let command = std::iter::once("optics".to_owned())
+            .chain(std::env::args().skip(1))
+            .collect::<Vec<_>>()
+            .join(" ");
+        Ok(Options {
+            checkout,
+            quick: self.quick,
+            out: self.out.clone(),
+            python: (!self.no_python).then(|| PythonOptions {
+                base: self.python.clone(),
+                venv: self.venv.clone(),
+            }),
+            seed: self.seed,
+            command,
+        })
+    }
+}
 
 pub fn run(args: &ValidateArgs, ui: &Ui) -> anyhow::Result<()> {
-    let lang = ui.lang;
-    let root = validation::repo_root();
-    let scripts = root.join("python-checks");
-    let out = args
-        .out
-        .clone()
-        .unwrap_or_else(|| root.join("validation/out"));
-    if out.exists() && !out.is_dir() {
-        bail!("--out {}: exists and is not a directory", out.display());
-    }
-    std::fs::create_dir_all(&out)
-        .with_context(|| format!("--out {}: cannot create the directory", out.display()))?;
-    // The command as typed, by the program's name rather than its build path.
-    let command_line = std::iter::once("optics".to_owned())
-        .chain(std::env::args().skip(1))
-        .collect::<Vec<_>>()
-        .join(" ");
-
-    let python = if args.no_python {
-        None
-    } else {
-        if !scripts.join("requirements.txt").is_file() {
-            bail!(
-                "{} not found: optics validate runs from a checkout of the suite (or use --no-python)",
-                scripts.join("requirements.txt").display()
-            );
-        }
-        let venv = args.venv.clone().unwrap_or_else(|| root.join(".venv"));
-        Some(ensure_environment(&args.python, &venv, &scripts, ui)?)
-    };
-
-    let mut extra_checks = Vec::new();
-    let reference_dir = match (&python, args.quick) {
-        (Some(python), false) => {
-            let fresh = out.join("reference");
-            std::fs::create_dir_all(&fresh)
-                .with_context(|| format!("cannot create {}", fresh.display()))?;
-            note(
-                ui,
-                &say!(
-                    lang,
-                    "regenerating the references with the pinned tools",
-                    "a referenciák újragenerálása a rögzített eszközökkel"
-                ),
-            );
-            extra_checks.push(regenerate(python, &scripts, &fresh)?);
-            fresh
-        }
-        _ => validation::reference::committed_dir(),
-    };
-
-    let context = Context {
-        reference_dir,
-        quick: args.quick,
-    };
-    let kinds = suite::standard_kinds();
+    let options = args.options()?;
     let bar = (std::io::stderr().is_terminal() && !ui.json).then(|| {
-        let bar = indicatif::ProgressBar::new(kinds.len() as u64);
+        let bar = ProgressBar::new(0);
         bar.set_style(
-            indicatif::ProgressStyle::with_template("{bar:30} {pos}/{len} {msg}")
-                .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+            ProgressStyle::with_template("{bar:30} {pos}/{len} {msg}")
+                .unwrap_or_else(|_| ProgressStyle::default_bar()),
         );
         bar
     });
-    let mut report = suite::run(&kinds, &context, &command_line, |i, name| match &bar {
-        Some(bar) => {
-            bar.set_position(i as u64);
-            bar.set_message(name.to_owned());
-        }
-        None => note(ui, &format!("[{}/{}] {name}", i + 1, kinds.len())),
-    })?;
+    let outcome = pipeline::run(&options, |step| progress(ui, bar.as_ref(), step));
     if let Some(bar) = &bar {
         bar.finish_and_clear();
     }
-    if let Some(python) = &python {
-        let count = if args.quick { 300 } else { 3000 };
-        note(
-            ui,
-            &say!(
-                lang,
-                "evaluating {} random cases with Mitsuba",
-                "{} véletlen eset kiértékelése a Mitsubával",
-                3 * count
-            ),
-        );
-        extra_checks.push(random_cases(python, &scripts, &out, args.seed, count)?);
-    }
-    report.checks.splice(0..0, extra_checks);
-    report.summarise();
-    write_atomically(&out, "report.json", to_json(&report).as_bytes())
-        .with_context(|| format!("writing {}", out.join("report.json").display()))?;
-
-    let figures = match &python {
-        Some(python) => {
-            note(ui, &say!(lang, "drawing the figures", "az ábrák rajzolása"));
-            match draw_figures(python, &scripts, &out) {
-                Ok(figures) => figures,
-                Err(error) => {
-                    let mut check = Check::new(
-                        "report.figures",
-                        "The report's figures, drawn by python-checks/plot_report.py",
-                        "matplotlib",
-                        "the script succeeds",
-                    );
-                    check.cases = 1;
-                    check.fail(format!("{error:#}"));
-                    report.checks.push(check);
-                    report.summarise();
-                    write_atomically(&out, "report.json", to_json(&report).as_bytes())?;
-                    Vec::new()
-                }
-            }
-        }
-        None => Vec::new(),
-    };
-    let mut figures = figures;
-    figures.extend(write_render_figures(&out, &report)?);
-    write_atomically(&out, "report.html", to_html(&report, &figures).as_bytes())
-        .with_context(|| format!("writing {}", out.join("report.html").display()))?;
-
-    let s = &report.summary;
+    let outcome = outcome.map_err(|error| flag_named(error, args))?;
     if ui.json {
-        let record = json!({
-            "passed": report.passed(),
-            "summary": s,
-            "report_json": out.join("report.json"),
-            "report_html": out.join("report.html"),
-            "figures": figures,
-            "failed_checks": report.checks.iter().filter(|c| !c.passed()).map(|c| &c.id).collect::<Vec<_>>(),
-        });
-        println!("{record}");
-        if !report.passed() {
+        print_json(&outcome);
+        if !outcome.passed() {
             // The record above is the whole answer; the status says it failed.
             std::process::exit(1);
         }
         return Ok(());
     }
+    print_text(&outcome, ui);
+    let s = &outcome.report.summary;
+    if !outcome.passed() {
+        bail!("{} of {} checks failed", s.failed, s.checks);
+    }
+    Ok(())
+}
+
+/// The pipeline's error, led by the flag that sets what it concerns.
+fn flag_named(error: pipeline::PipelineError, args: &ValidateArgs) -> anyhow::Error {
+    use pipeline::PipelineError::{NoRequirements, OutNotADirectory, Tool};
+    let lead = match &error {
+        OutNotADirectory { .. } => Some("--out"),
+        NoRequirements { .. } => Some("--checkout (or --no-python)"),
+        Tool(validation::python::ToolError::Start { .. }) if !args.no_python => {
+            Some("--python (or --no-python)")
+        }
+        _ => None,
+    };
+    match lead {
+        Some(flag) => anyhow::anyhow!("{flag}: {error}"),
+        None => error.into(),
+    }
+}
+
+/// One step's progress message on stderr (never on stdout, which carries
+/// the result), or the progress bar's position.
+fn progress(ui: &Ui, bar: Option<&ProgressBar>, step: Step) {
+    let lang = ui.lang;
+    let message = match step {
+        Step::Python(SetUp::Creating { venv }) => say!(lang,
+            "setting up the Python environment in {} (first run: installs Mitsuba 3, colour-science, matplotlib, mpmath; a few minutes)",
+            "a Python-környezet létrehozása itt: {} (első futás: Mitsuba 3, colour-science, matplotlib, mpmath telepítése; néhány perc)",
+            venv.display()),
+        Step::Python(SetUp::Installing { requirements }) => say!(
+            lang,
+            "installing the pinned requirements ({})",
+            "a rögzített csomagok telepítése ({})",
+            requirements.display()
+        ),
+        Step::Regenerating => say!(
+            lang,
+            "regenerating the references with the pinned tools",
+            "a referenciák újragenerálása a rögzített eszközökkel"
+        ),
+        Step::Checks { index, total, name } => match bar {
+            Some(bar) => {
+                bar.set_length(total as u64);
+                bar.set_position(index as u64);
+                bar.set_message(name.to_owned());
+                return;
+            }
+            None => format!("[{}/{total}] {name}", index + 1),
+        },
+        Step::ChecksDone => {
+            if let Some(bar) = bar {
+                bar.finish_and_clear();
+            }
+            return;
+        }
+        Step::RandomCases { cases } => say!(
+            lang,
+            "evaluating {} random cases with Mitsuba",
+            "{} véletlen eset kiértékelése a Mitsubával",
+            cases
+        ),
+        Step::DrawingFigures => say!(lang, "drawing the figures", "az ábrák rajzolása"),
+    };
+    if !ui.json {
+        eprintln!("optics validate: {message}");
+    }
+}
+
+fn print_json(outcome: &Outcome) {
+    let report = &outcome.report;
+    let record = json!({
+        "passed": outcome.passed(),
+        "summary": report.summary,
+        "report_json": outcome.report_json(),
+        "report_html": outcome.report_html(),
+        "figures": outcome.figures,
+        "failed_checks": report.checks.iter().filter(|c| !c.passed()).map(|c| &c.id).collect::<Vec<_>>(),
+    });
+    println!("{record}");
+}
+
+fn print_text(outcome: &Outcome, ui: &Ui) {
+    let (report, lang) = (&outcome.report, ui.lang);
     for check in &report.checks {
         let mark = if check.passed() { "pass" } else { "FAIL" };
         println!(
@@ -232,6 +222,7 @@ pub fn run(args: &ValidateArgs, ui: &Ui) -> anyhow::Result<()> {
             )
         );
     }
+    let s = &report.summary;
     println!(
         "{}",
         say!(
@@ -242,233 +233,30 @@ pub fn run(args: &ValidateArgs, ui: &Ui) -> anyhow::Result<()> {
             s.passed,
             s.failed,
             s.findings,
-            out.join("report.html").display()
+            outcome.report_html().display()
         )
     );
-    if !report.passed() {
-        bail!("{} of {} checks failed", s.failed, s.checks);
-    }
-    Ok(())
 }
 
-/// A progress message on stderr (never on stdout, which carries the result).
-fn note(ui: &Ui, message: &str) {
-    if !ui.json {
-        eprintln!("optics validate: {message}");
-    }
-}
+#[cfg(test)]
+mod tests {
+    use super::*;
 
-/// Runs `command`, naming it in the error if it cannot start or fails;
-/// returns its stdout.
-fn run_tool(mut command: Command, what: &str) -> anyhow::Result<String> {
-    let output = command
-        .output()
-        .with_context(|| format!("{what}: cannot run {:?}", command.get_program()))?;
-    if !output.status.success() {
-        let stderr = String::from_utf8_lossy(&output.stderr);
-        let tail: Vec<_> = stderr.lines().rev().take(8).collect();
-        bail!(
-            "{what} failed ({}):\n{}",
-            output.status,
-            tail.into_iter().rev().collect::<Vec<_>>().join("\n")
+    #[test]
+    fn the_checkout_flag_is_read_before_the_variable_and_the_search() {
+        let args = ValidateArgs {
+            quick: true,
+            checkout: Some(PathBuf::from("/nonexistent/checkout")),
+            out: None,
+            venv: None,
+            python: PathBuf::from("python3"),
+            no_python: true,
+            seed: 1,
+        };
+        let message = args.options().unwrap_err().to_string();
+        assert!(
+            message.starts_with("--checkout /nonexistent/checkout: not a checkout"),
+            "{message}"
         );
     }
-    Ok(String::from_utf8_lossy(&output.stdout).into_owned())
-}
-
-/// The environment's interpreter, after creating the environment and
-/// installing the pinned requirements if needed.
-fn ensure_environment(
-    python: &Path,
-    venv: &Path,
-    scripts: &Path,
-    ui: &Ui,
-) -> anyhow::Result<PathBuf> {
-    let lang = ui.lang;
-    let interpreter = venv.join("bin/python");
-    let requirements = scripts.join("requirements.txt");
-    if !interpreter.is_file() {
-        note(ui, &say!(lang,
-            "setting up the Python environment in {} (first run: installs Mitsuba 3, colour-science, matplotlib, mpmath; a few minutes)",
-            "a Python-környezet létrehozása itt: {} (első futás: Mitsuba 3, colour-science, matplotlib, mpmath telepítése; néhány perc)",
-            venv.display()));
-        let mut create = Command::new(python);
-        create.arg("-m").arg("venv").arg(venv);
-        run_tool(create, &format!("creating the virtual environment with `{} -m venv` (is Python 3 installed? --python names another interpreter; --no-python skips Python)", python.display()))?;
-    } else if pins_satisfied(&interpreter, &requirements)? {
-        return Ok(interpreter);
-    }
-    note(
-        ui,
-        &say!(
-            lang,
-            "installing the pinned requirements ({})",
-            "a rögzített csomagok telepítése ({})",
-            requirements.display()
-        ),
-    );
-    let mut install = Command::new(&interpreter);
-    install
-        .args([
-            "-m",
-            "pip",
-            "install",
-            "--quiet",
-            "--disable-pip-version-check",
-            "-r",
-        ])
-        .arg(&requirements);
-    run_tool(
-        install,
-        "installing python-checks/requirements.txt with pip",
-    )?;
-    Ok(interpreter)
-}
-
-/// Whether every `name==version` pin is installed at that version.
-fn pins_satisfied(interpreter: &Path, requirements: &Path) -> anyhow::Result<bool> {
-    const CHECK: &str = "import sys, importlib.metadata as m\n\
-        bad = []\n\
-        for line in open(sys.argv[1], encoding='utf-8'):\n\
-        \x20   line = line.split('#')[0].strip()\n\
-        \x20   if '==' in line:\n\
-        \x20       name, want = line.split('==')\n\
-        \x20       try:\n\
-        \x20           have = m.version(name)\n\
-        \x20       except m.PackageNotFoundError:\n\
-        \x20           have = None\n\
-        \x20       if have != want:\n\
-        \x20           bad.append(f'{name} {have} (pinned {want})')\n\
-        print('\\n'.join(bad))\n";
-    let mut check = Command::new(interpreter);
-    check.arg("-c").arg(CHECK).arg(requirements);
-    Ok(run_tool(check, "checking the installed Python packages")?
-        .trim()
-        .is_empty())
-}
-
-/// Regenerates every reference into `fresh` and checks that each reproduces
-/// the committed one, by the rule of `python-checks/reproduce.py` (byte for
-/// byte, but for the files written through colour-science's BLAS products).
-fn regenerate(python: &Path, scripts: &Path, fresh: &Path) -> anyhow::Result<Check> {
-    let committed = validation::reference::committed_dir();
-    let tables = validation::repo_root().join("crates/radiometry/src/cie_tables.rs");
-    let mut check = Check::new(
-        "references.regenerated",
-        "Every committed reference regenerates with the pinned tools",
-        "python-checks/ generators in the pinned environment",
-        "the rule of python-checks/reproduce.py: byte-identical, but for the files written \
-         through colour-science's BLAS products, whose numbers may move within its stated \
-         tolerance",
-    );
-    for (script, outputs) in GENERATORS {
-        let mut command = Command::new(python);
-        command.arg("-W").arg("ignore").arg(scripts.join(script));
-        for name in outputs {
-            command.arg(fresh.join(name));
-        }
-        run_tool(command, &format!("python-checks/{script}"))?;
-        for name in outputs {
-            check.cases += 1;
-            let old = if name.ends_with(".rs") {
-                tables.clone()
-            } else {
-                committed.join(name)
-            };
-            // Both must exist: two missing files are not a reproduction.
-            if !(old.is_file() && fresh.join(name).is_file()) {
-                check.fail(format!("{} or its regeneration is missing", old.display()));
-                continue;
-            }
-            let output = Command::new(python)
-                .arg(scripts.join("reproduce.py"))
-                .arg(&old)
-                .arg(fresh.join(name))
-                .output()
-                .context("python-checks/reproduce.py: cannot run it")?;
-            let said = String::from_utf8_lossy(&output.stdout)
-                .trim()
-                .replace('\n', "; ");
-            // 0: reproduces; 1: differs (stdout says where); anything else: it could not tell.
-            match output.status.code() {
-                Some(0) => {}
-                Some(1) => check.fail(format!(
-                    "{} differs from what python-checks/{script} writes now ({said}): regenerate and commit it",
-                    old.display()
-                )),
-                _ => bail!(
-                    "python-checks/reproduce.py could not compare {} ({}): {}",
-                    old.display(),
-                    output.status,
-                    String::from_utf8_lossy(&output.stderr).trim()
-                ),
-            }
-        }
-    }
-    Ok(check)
-}
-
-/// Exports `count` random cases of each law, has Mitsuba evaluate them, and
-/// compares (`validation::exchange`).
-fn random_cases(
-    python: &Path,
-    scripts: &Path,
-    out: &Path,
-    seed: u64,
-    count: usize,
-) -> anyhow::Result<Check> {
-    let dir = out.join("exchange");
-    std::fs::create_dir_all(&dir).with_context(|| format!("cannot create {}", dir.display()))?;
-    let cases = exchange::random_cases(seed, count);
-    write_atomically(
-        &dir,
-        "cases.json",
-        serde_json::to_string(&cases)?.as_bytes(),
-    )
-    .with_context(|| format!("writing {}", dir.join("cases.json").display()))?;
-    let mut command = Command::new(python);
-    command
-        .arg(scripts.join("mitsuba_eval.py"))
-        .arg(dir.join("cases.json"))
-        .arg(dir.join("results.json"));
-    run_tool(command, "python-checks/mitsuba_eval.py")?;
-    let results: exchange::ResultsFile =
-        validation::reference::load(&dir, "results.json", exchange::RESULTS_SCHEMA)?;
-    Ok(exchange::check_random(
-        &Laws::radiometry(),
-        &Laws64::radiometry(),
-        &cases,
-        &results,
-    ))
-}
-
-/// Writes the render triptychs (ours | Mitsuba | difference) as PNG under
-/// `out/figures/`; their names, relative to `out`.
-fn write_render_figures(out: &Path, report: &suite::Report) -> anyhow::Result<Vec<String>> {
-    let dir = out.join("figures");
-    std::fs::create_dir_all(&dir).with_context(|| format!("cannot create {}", dir.display()))?;
-    let mut names = Vec::new();
-    for figure in &report.render_figures {
-        let path = dir.join(&figure.file);
-        tracer::output::write_png(&path, &figure.image)
-            .with_context(|| format!("writing {}", path.display()))?;
-        names.push(format!("figures/{}", figure.file));
-    }
-    Ok(names)
-}
-
-/// Runs the figure script on `out/report.json`; the figure file names,
-/// relative to `out`.
-fn draw_figures(python: &Path, scripts: &Path, out: &Path) -> anyhow::Result<Vec<String>> {
-    let figures = out.join("figures");
-    let mut command = Command::new(python);
-    command
-        .arg(scripts.join("plot_report.py"))
-        .arg(out.join("report.json"))
-        .arg(&figures);
-    let listed = run_tool(command, "python-checks/plot_report.py")?;
-    Ok(listed
-        .lines()
-        .map(|name| format!("figures/{}", name.trim()))
-        .collect())
 }

@@ -30,9 +30,6 @@ pub use angles::{check_angles, transmitted_angle_bound_ulps};
 pub use fresnel::{check_conductor, check_dielectric};
 pub use reference::{AngleCase, ConductorCase, DielectricCase, Exact, FresnelMpmath, Tiers};
 
-use radiometry::fresnel::{self as law, ConductorFresnel, DielectricFresnel};
-use radiometry::snell;
-
 use crate::check::Check;
 
 /// The bound, in ulps of the tier.
@@ -43,33 +40,7 @@ pub const FILE: &str = "fresnel_mpmath.json";
 /// Its schema.
 pub const SCHEMA: &str = "fresnel-reference/1";
 
-/// The `f64` laws under test (the `f32` ones are in [`Laws`](crate::laws::Laws)).
-#[derive(Clone, Copy)]
-pub struct Laws64 {
-    /// Exact dielectric Fresnel.
-    pub dielectric: fn(f64, f64) -> DielectricFresnel<f64>,
-    /// Exact conductor Fresnel.
-    pub conductor: fn(f64, f64, f64) -> ConductorFresnel<f64>,
-    /// Snell's law for angles, `(theta_i, eta_path)`.
-    pub transmitted_angle: fn(f64, f64) -> Option<f64>,
-    /// The critical angle, `eta_path`.
-    pub critical_angle: fn(f64) -> Option<f64>,
-    /// Brewster's angle, `eta_path`.
-    pub brewster_angle: fn(f64) -> Option<f64>,
-}
-
-impl Laws64 {
-    /// The radiometry crate's.
-    pub fn radiometry() -> Self {
-        Self {
-            dielectric: law::dielectric_polarized,
-            conductor: law::conductor_polarized,
-            transmitted_angle: snell::transmitted_angle,
-            critical_angle: snell::critical_angle,
-            brewster_angle: snell::brewster_angle,
-        }
-    }
-}
+pub use crate::laws::Laws64;
 
 /// Records `got` against `exact` in ulps of the tier and relative to the
 /// exact value (0 when both are 0, infinite when only the exact value is),

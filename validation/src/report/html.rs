@@ -1,38 +1,9 @@
-//! Writing the report: `report.json` (the exchange format the figure script
-//! reads) and `report.html` (the same, for people). Files are written to a
-//! temporary name in the output directory and renamed into place, so an
-//! interrupted run never leaves a partial report.
+//! `report.html`: the report for people, section by section.
 
 use std::fmt::Write as _;
-use std::io::Write as _;
-use std::path::Path;
 
+use super::Report;
 use crate::check::Check;
-use crate::suite::Report;
-
-/// Writes `contents` to `dir/name` atomically (temporary file, then rename).
-pub fn write_atomically(dir: &Path, name: &str, contents: &[u8]) -> std::io::Result<()> {
-    let mut file = tempfile::NamedTempFile::new_in(dir)?;
-    file.write_all(contents)?;
-    file.as_file().sync_all()?;
-    // A temporary file is private (0600); the report is an ordinary file.
-    #[cfg(unix)]
-    {
-        use std::os::unix::fs::PermissionsExt;
-        file.as_file()
-            .set_permissions(std::fs::Permissions::from_mode(0o644))?;
-    }
-    file.persist(dir.join(name)).map_err(|e| e.error)?;
-    Ok(())
-}
-
-/// `report.json`, pretty-printed. Non-finite numbers (which JSON cannot hold)
-/// are written as `null`.
-pub fn to_json(report: &Report) -> String {
-    let mut text = serde_json::to_string_pretty(report).expect("a report always serialises");
-    text.push('\n');
-    text
-}
 
 fn escape(text: &str) -> String {
     let mut out = String::with_capacity(text.len());
@@ -65,6 +36,18 @@ fn swatch(srgb: [f64; 3]) -> String {
 /// in `figures` (file names relative to the report).
 pub fn to_html(report: &Report, figures: &[String]) -> String {
     let mut h = String::new();
+    header(&mut h, report);
+    worst_errors(&mut h, report);
+    metal_colours(&mut h, report);
+    speed(&mut h, report);
+    figures_section(&mut h, figures);
+    every_check(&mut h, report);
+    references(&mut h, report);
+    h
+}
+
+/// The page head, the style and the summary line.
+fn header(h: &mut String, report: &Report) {
     let s = &report.summary;
     let _ = write!(
         h,
@@ -84,7 +67,10 @@ pub fn to_html(report: &Report, figures: &[String]) -> String {
         s.failed,
         s.findings
     );
+}
 
+/// Every metric's worst value, one row per check and quantity.
+fn worst_errors(h: &mut String, report: &Report) {
     h.push_str("<h2>Worst errors per law and reference</h2>\n<table><tr><th>check</th><th>status</th><th>quantity</th><th>worst</th><th>at</th></tr>\n");
     for check in &report.checks {
         for m in &check.metrics {
@@ -100,7 +86,10 @@ pub fn to_html(report: &Report, figures: &[String]) -> String {
         }
     }
     h.push_str("</table>\n");
+}
 
+/// The metal shortcuts' worst CIEDE2000, with swatches.
+fn metal_colours(h: &mut String, report: &Report) {
     if !report.metal_delta_e.is_empty() {
         h.push_str("<h2>Metal colours: CIEDE2000 of the shortcuts from the spectral colour</h2>\n\
                     <p>Worst over the angles of incidence; about 1 is a just-noticeable difference.</p>\n\
@@ -129,7 +118,10 @@ pub fn to_html(report: &Report, figures: &[String]) -> String {
         }
         h.push_str("</table>\n");
     }
+}
 
+/// The metal-colour timings.
+fn speed(h: &mut String, report: &Report) {
     if !report.speed.is_empty() {
         h.push_str("<h2>Speed: time per metal colour</h2>\n<table><tr><th>method</th><th>ns per colour</th><th>colours timed</th></tr>\n");
         for t in &report.speed {
@@ -156,7 +148,10 @@ pub fn to_html(report: &Report, figures: &[String]) -> String {
             h.push_str("</table>\n");
         }
     }
+}
 
+/// The figures, by file name relative to the report.
+fn figures_section(h: &mut String, figures: &[String]) {
     if !figures.is_empty() {
         h.push_str("<h2>Figures</h2>\n");
         for f in figures {
@@ -167,7 +162,10 @@ pub fn to_html(report: &Report, figures: &[String]) -> String {
             );
         }
     }
+}
 
+/// Every check, failed ones open, with its failures and findings.
+fn every_check(h: &mut String, report: &Report) {
     h.push_str("<h2>Every check</h2>\n");
     for check in &report.checks {
         let _ = writeln!(
@@ -192,7 +190,10 @@ pub fn to_html(report: &Report, figures: &[String]) -> String {
         }
         h.push_str("</details>\n");
     }
+}
 
+/// The references read, and the page's end.
+fn references(h: &mut String, report: &Report) {
     h.push_str(
         "<h2>References</h2>\n<table><tr><th>file</th><th>schema</th><th>regenerate</th></tr>\n",
     );
@@ -206,7 +207,6 @@ pub fn to_html(report: &Report, figures: &[String]) -> String {
         );
     }
     h.push_str("</table>\n</body></html>\n");
-    h
 }
 
 #[cfg(test)]
@@ -231,19 +231,6 @@ mod tests {
             html.contains("<details open>")
                 && html.contains("FAIL")
                 && html.contains("broken &lt;law&gt;")
-        );
-    }
-
-    #[test]
-    fn writing_replaces_the_file_whole() {
-        let dir = tempfile::tempdir().unwrap();
-        write_atomically(dir.path(), "r.json", b"first").unwrap();
-        write_atomically(dir.path(), "r.json", b"second").unwrap();
-        assert_eq!(std::fs::read(dir.path().join("r.json")).unwrap(), b"second");
-        assert_eq!(
-            std::fs::read_dir(dir.path()).unwrap().count(),
-            1,
-            "no temporary file left"
         );
     }
 }

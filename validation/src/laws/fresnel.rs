@@ -1,0 +1,168 @@
+//! The Fresnel laws and Schlick's approximation against Mitsuba and the
+//! exact values: each reflectance compared three ways (module docs of
+//! [`crate::laws`]).
+
+use super::{Laws, MitsubaLaws, Verdict, GROSS_ABS, MITSUBA_ABS, OURS_ULPS};
+use crate::check::{ulps_f32, Check};
+
+fn power(amplitude: [f64; 2]) -> f64 {
+    amplitude[0] * amplitude[0] + amplitude[1] * amplitude[1]
+}
+
+/// Compares one scalar quantity three ways (see the module docs) and records
+/// the outcome in `check`.
+fn compare_scalar(
+    check: &mut Check,
+    quantity: &str,
+    label: &str,
+    ours: f64,
+    mitsuba: f64,
+    exact: f64,
+) {
+    let ours_ulps = ulps_f32(ours, exact);
+    let mitsuba_err = (mitsuba - exact).abs();
+    let disagreement = (ours - mitsuba).abs();
+    check.measure(
+        &format!("{quantity}: |ours − exact| (f32 ulps)"),
+        ours_ulps,
+        label,
+    );
+    check.measure(
+        &format!("{quantity}: |Mitsuba − exact|"),
+        mitsuba_err,
+        label,
+    );
+    check.measure(
+        &format!("{quantity}: |ours − Mitsuba|"),
+        disagreement,
+        label,
+    );
+    let verdict = Verdict::of(ours_ulps, OURS_ULPS, disagreement, mitsuba_err, MITSUBA_ABS);
+    if verdict.ours_off {
+        check.fail(format!(
+            "{quantity} at {label}: ours {ours:e}, exact {exact:e} ({ours_ulps:.1} ulps > {OURS_ULPS})"
+        ));
+    }
+    if verdict.gross {
+        check.fail(format!(
+            "{quantity} at {label}: ours {ours:e}, Mitsuba {mitsuba:e} differ by {disagreement:.2e} > {GROSS_ABS:e}"
+        ));
+    } else if verdict.mitsuba_off {
+        check.find(format!(
+            "Mitsuba {quantity} at {label}: {mitsuba:e}, exact {exact:e} (off by {mitsuba_err:.2e}, {:.0} f32 ulps)",
+            ulps_f32(mitsuba, exact)
+        ));
+    }
+}
+
+/// R, R_s and R_p, each compared three ways: ours (`f32`), Mitsuba's
+/// (unpolarised `f`, the powers of its amplitudes) and the exact values.
+fn compare_polarised(
+    check: &mut Check,
+    label: &str,
+    ours: [f32; 3],
+    mitsuba: [f64; 3],
+    exact: [f64; 3],
+) {
+    for (i, quantity) in ["R", "R_s", "R_p"].into_iter().enumerate() {
+        compare_scalar(check, quantity, label, ours[i].into(), mitsuba[i], exact[i]);
+    }
+}
+
+/// `mi.fresnel` and `mi.fresnel_polarized` (real index) against ours and the exact law.
+pub fn check_dielectric(laws: &Laws, reference: &MitsubaLaws) -> Check {
+    let mut check = Check::new(
+        "laws.mitsuba.fresnel_dielectric",
+        "Dielectric Fresnel R, R_s, R_p, both sides, normal to grazing, TIR",
+        &reference.version(),
+        &format!(
+            "ours within {OURS_ULPS} f32 ulps of exact; Mitsuba beyond {MITSUBA_ABS:.1e} of exact is a finding; ours and Mitsuba within {GROSS_ABS:e}"
+        ),
+    );
+    for case in &reference.dielectric {
+        let ours = (laws.dielectric)(case.cos_i as f32, case.eta as f32);
+        let label = &case.label;
+        check.cases += 1;
+        if ours.is_total_internal_reflection() != case.exact.tir {
+            check.fail(format!(
+                "{label}: total internal reflection {} but exactly {}",
+                ours.is_total_internal_reflection(),
+                case.exact.tir
+            ));
+        }
+        // Mitsuba signals TIR by cos_t = 0, which index-matched grazing light also gives.
+        let mitsuba_tir = case.mitsuba.cos_t == 0.0 && case.eta != 1.0;
+        if mitsuba_tir != case.exact.tir {
+            check.find(format!(
+                "Mitsuba at {label}: total internal reflection {mitsuba_tir} but exactly {}",
+                case.exact.tir
+            ));
+        }
+        let (m, e) = (&case.mitsuba, &case.exact);
+        compare_polarised(
+            &mut check,
+            label,
+            [ours.reflectance(), ours.r_s, ours.r_p],
+            [m.f, power(m.a_s), power(m.a_p)],
+            [e.r, e.r_s, e.r_p],
+        );
+        // The effective index along the path is a convention, not a rounding.
+        if (f64::from(ours.eta_path()) - m.eta_it).abs() > 1e-6 * m.eta_it {
+            check.fail(format!(
+                "{label}: eta along the path {} but Mitsuba's eta_it is {}",
+                ours.eta_path(),
+                m.eta_it
+            ));
+        }
+    }
+    check
+}
+
+/// `mi.fresnel_conductor` and complex `mi.fresnel_polarized` against ours and the exact law.
+pub fn check_conductor(laws: &Laws, reference: &MitsubaLaws) -> Check {
+    let mut check = Check::new(
+        "laws.mitsuba.fresnel_conductor",
+        "Conductor Fresnel R, R_s, R_p (n + iκ), normal to grazing",
+        &reference.version(),
+        &format!(
+            "ours within {OURS_ULPS} f32 ulps of exact; Mitsuba beyond {MITSUBA_ABS:.1e} of exact is a finding; ours and Mitsuba within {GROSS_ABS:e}"
+        ),
+    );
+    for case in &reference.conductor {
+        let ours = (laws.conductor)(case.cos_i as f32, case.n as f32, case.kappa as f32);
+        let (label, m, e) = (&case.label, &case.mitsuba, &case.exact);
+        check.cases += 1;
+        compare_polarised(
+            &mut check,
+            label,
+            [ours.reflectance(), ours.r_s, ours.r_p],
+            [m.f, power(m.a_s), power(m.a_p)],
+            [e.r, e.r_s, e.r_p],
+        );
+    }
+    check
+}
+
+/// Schlick's approximation against its exact definition (Mitsuba has no
+/// binding for it, so this is a check of the formula, not of a renderer).
+pub fn check_schlick(laws: &Laws, reference: &MitsubaLaws) -> Check {
+    let mut check = Check::new(
+        "laws.mpmath.schlick",
+        "Schlick's approximation F0 + (1 − F0)(1 − cos)⁵ against its definition",
+        "mpmath, 50 digits",
+        &format!("within {OURS_ULPS} f32 ulps: five products and a sum, each rounded once"),
+    );
+    for case in &reference.schlick {
+        let ours: f64 = (laws.schlick)(case.cos_i as f32, case.f0 as f32).into();
+        let ulps = ulps_f32(ours, case.exact);
+        check.cases += 1;
+        check.measure("|ours − exact| (f32 ulps)", ulps, &case.label);
+        if !(ulps <= OURS_ULPS) {
+            check.fail(format!(
+                "{}: ours {ours:e}, exact {:e} ({ulps:.1} ulps)",
+                case.label, case.exact
+            ));
+        }
+    }
+    check
+}

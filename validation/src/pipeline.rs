@@ -1,0 +1,389 @@
+//! The whole harness as one call: set up the pinned Python environment,
+//! regenerate the references (or take the committed ones), run every check,
+//! have Mitsuba evaluate random cases, and write `report.json`,
+//! `report.html` and the figures.
+//!
+//! ```no_run
+//! use validation::checkout::Checkout;
+//! use validation::pipeline::{self, Options};
+//!
+//! let options = Options::quick(Checkout::find(None)?, "example");
+//! let outcome = pipeline::run(&options, |step| eprintln!("{step:?}"))?;
+//! println!("{} checks passed: {}", outcome.report.checks.len(), outcome.passed());
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+//!
+//! Every file is written to a temporary name beside it and renamed into
+//! place (`tracer::output::write_atomically`), so an interrupted run never
+//! leaves a partial report.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use tracer::output::{write_atomically, OutputError};
+
+use crate::check::Check;
+use crate::checkout::Checkout;
+use crate::exchange;
+use crate::laws::{Laws, Laws64};
+use crate::python::{self, run_tool, SetUp, ToolError};
+use crate::reference::ReferenceError;
+use crate::regenerate::{regenerate, RegenerateError};
+use crate::report::Report;
+use crate::report::{to_html, to_json};
+use crate::suite::{self, Context};
+
+/// Random cases of each law that Mitsuba evaluates: reduced set, full set.
+pub const RANDOM_CASES: [usize; 2] = [300, 3000];
+
+/// What to run, and where.
+#[derive(Clone, Debug)]
+pub struct Options {
+    /// The suite's checkout: references, scenes, generators.
+    pub checkout: Checkout,
+    /// The reduced set: the committed references instead of regenerated
+    /// ones, fewer samples and cases.
+    pub quick: bool,
+    /// Directory for the report and the figures, created if missing
+    /// [default: `validation/out` in the checkout].
+    pub out: Option<PathBuf>,
+    /// The Python side; `None`: no Python at all (committed references, no
+    /// random cases, no drawn figures).
+    pub python: Option<PythonOptions>,
+    /// Seed of the random cases.
+    pub seed: u64,
+    /// The command line recorded in the report.
+    pub command: String,
+}
+
+/// The Python environment the references come from.
+#[derive(Clone, Debug)]
+pub struct PythonOptions {
+    /// The Python 3 interpreter that creates the environment.
+    pub base: PathBuf,
+    /// The environment, created if missing [default: `.venv` in the checkout].
+    pub venv: Option<PathBuf>,
+}
+
+impl Options {
+    /// The reduced set against `checkout`'s committed references, no Python,
+    /// seed 1, the report in the checkout's `validation/out`.
+    pub fn quick(checkout: Checkout, command: &str) -> Self {
+        Self {
+            checkout,
+            quick: true,
+            out: None,
+            python: None,
+            seed: 1,
+            command: command.to_owned(),
+        }
+    }
+}
+
+/// A step of the run, for progress messages.
+#[derive(Clone, Copy, Debug)]
+pub enum Step<'a> {
+    /// Setting the Python environment up.
+    Python(SetUp<'a>),
+    /// Regenerating the references with the pinned tools.
+    Regenerating,
+    /// About to run kind `index` of `total` kinds of check.
+    Checks {
+        /// Which kind, from 0.
+        index: usize,
+        /// How many kinds.
+        total: usize,
+        /// Its name.
+        name: &'a str,
+    },
+    /// Every kind of check has run.
+    ChecksDone,
+    /// Having Mitsuba evaluate `cases` random cases.
+    RandomCases {
+        /// How many, all laws together.
+        cases: usize,
+    },
+    /// Drawing the figures.
+    DrawingFigures,
+}
+
+/// What a run produced.
+#[derive(Debug)]
+pub struct Outcome {
+    /// Every check, summarised.
+    pub report: Report,
+    /// The directory written.
+    pub out: PathBuf,
+    /// The figures, relative to `out`.
+    pub figures: Vec<String>,
+}
+
+impl Outcome {
+    /// Whether every check passed.
+    pub fn passed(&self) -> bool {
+        self.report.passed()
+    }
+
+    /// `report.json`.
+    pub fn report_json(&self) -> PathBuf {
+        self.out.join("report.json")
+    }
+
+    /// `report.html`.
+    pub fn report_html(&self) -> PathBuf {
+        self.out.join("report.html")
+    }
+}
+
+/// Why the harness could not run to the end (failed checks are not errors:
+/// they are in the report).
+#[derive(Debug, thiserror::Error)]
+pub enum PipelineError {
+    /// The output directory names something else.
+    #[error("the output directory {} exists and is not a directory", .path.display())]
+    OutNotADirectory {
+        /// It.
+        path: PathBuf,
+    },
+    /// A directory could not be created.
+    #[error("cannot create the directory {}: {source}", .path.display())]
+    CreateDir {
+        /// The directory.
+        path: PathBuf,
+        /// The cause.
+        source: std::io::Error,
+    },
+    /// The checkout has no pinned requirements for the Python side.
+    #[error("{} not found: the Python side runs from a checkout of the suite", .path.display())]
+    NoRequirements {
+        /// The file looked for.
+        path: PathBuf,
+    },
+    /// A report, figure or exchange file could not be written.
+    #[error(transparent)]
+    Write(#[from] OutputError),
+    /// A reference, or Mitsuba's results, could not be used.
+    #[error(transparent)]
+    Reference(#[from] ReferenceError),
+    /// A Python tool could not run or failed.
+    #[error(transparent)]
+    Tool(#[from] ToolError),
+    /// The regeneration could not be judged.
+    #[error(transparent)]
+    Regenerate(#[from] RegenerateError),
+}
+
+/// Runs the harness as `options` say; `progress` hears of each step.
+pub fn run(options: &Options, mut progress: impl FnMut(Step)) -> Result<Outcome, PipelineError> {
+    let checkout = &options.checkout;
+    let scripts = checkout.python_checks();
+    let out = options
+        .out
+        .clone()
+        .unwrap_or_else(|| checkout.root().join("validation/out"));
+    if out.exists() && !out.is_dir() {
+        return Err(PipelineError::OutNotADirectory { path: out });
+    }
+    create_dir(&out)?;
+    let python = match &options.python {
+        Some(setup) => Some(set_up_python(checkout, setup, &mut progress)?),
+        None => None,
+    };
+    let mut first_checks = Vec::new();
+    let reference_dir = match (&python, options.quick) {
+        (Some(python), false) => {
+            let fresh = out.join("reference");
+            create_dir(&fresh)?;
+            progress(Step::Regenerating);
+            first_checks.push(regenerate(python, checkout, &fresh)?);
+            fresh
+        }
+        _ => checkout.reference_dir(),
+    };
+    let context = Context {
+        reference_dir,
+        checkout: checkout.root().to_owned(),
+        quick: options.quick,
+    };
+    let kinds = suite::standard_kinds();
+    let total = kinds.len();
+    let mut report = suite::run(&kinds, &context, &options.command, |index, name| {
+        progress(Step::Checks { index, total, name })
+    })?;
+    progress(Step::ChecksDone);
+    if let Some(python) = &python {
+        let count = RANDOM_CASES[usize::from(!options.quick)];
+        progress(Step::RandomCases { cases: 3 * count });
+        first_checks.push(random_cases(python, &scripts, &out, options.seed, count)?);
+    }
+    report.checks.splice(0..0, first_checks);
+    report.summarise();
+    write(&out, "report.json", to_json(&report).as_bytes())?;
+    let mut figures = match &python {
+        Some(python) => {
+            progress(Step::DrawingFigures);
+            draw_figures_or_report(python, &scripts, &out, &mut report)?
+        }
+        None => Vec::new(),
+    };
+    figures.extend(write_render_figures(&out, &report)?);
+    write(&out, "report.html", to_html(&report, &figures).as_bytes())?;
+    Ok(Outcome {
+        report,
+        out,
+        figures,
+    })
+}
+
+fn create_dir(path: &Path) -> Result<(), PipelineError> {
+    std::fs::create_dir_all(path).map_err(|source| PipelineError::CreateDir {
+        path: path.to_owned(),
+        source,
+    })
+}
+
+/// Writes `dir/name` atomically.
+fn write(dir: &Path, name: &str, contents: &[u8]) -> Result<(), OutputError> {
+    write_atomically(&dir.join(name), contents)
+}
+
+/// The environment's interpreter, the environment set up first if needed.
+fn set_up_python(
+    checkout: &Checkout,
+    setup: &PythonOptions,
+    progress: &mut impl FnMut(Step),
+) -> Result<PathBuf, PipelineError> {
+    let requirements = checkout.python_checks().join("requirements.txt");
+    if !requirements.is_file() {
+        return Err(PipelineError::NoRequirements { path: requirements });
+    }
+    let venv = setup
+        .venv
+        .clone()
+        .unwrap_or_else(|| checkout.root().join(".venv"));
+    let interpreter = python::ensure_environment(&setup.base, &venv, &requirements, |step| {
+        progress(Step::Python(step))
+    })?;
+    Ok(interpreter)
+}
+
+/// Exports `count` random cases of each law, has Mitsuba evaluate them, and
+/// compares (`crate::exchange`).
+fn random_cases(
+    python: &Path,
+    scripts: &Path,
+    out: &Path,
+    seed: u64,
+    count: usize,
+) -> Result<Check, PipelineError> {
+    let dir = out.join("exchange");
+    create_dir(&dir)?;
+    let cases = exchange::random_cases(seed, count);
+    let text = serde_json::to_string(&cases).expect("the cases always serialise");
+    write(&dir, "cases.json", text.as_bytes())?;
+    let mut command = Command::new(python);
+    command
+        .arg(scripts.join("mitsuba_eval.py"))
+        .arg(dir.join("cases.json"))
+        .arg(dir.join("results.json"));
+    run_tool(command, "python-checks/mitsuba_eval.py")?;
+    let results: exchange::ResultsFile =
+        crate::reference::load(&dir, "results.json", exchange::RESULTS_SCHEMA)?;
+    Ok(exchange::check_random(
+        &Laws::radiometry(),
+        &Laws64::radiometry(),
+        &cases,
+        &results,
+    ))
+}
+
+/// The figure script's figures; when it fails, a failed check in the
+/// report (rewritten) instead of figures.
+fn draw_figures_or_report(
+    python: &Path,
+    scripts: &Path,
+    out: &Path,
+    report: &mut Report,
+) -> Result<Vec<String>, PipelineError> {
+    match draw_figures(python, scripts, out) {
+        Ok(figures) => Ok(figures),
+        Err(error) => {
+            let mut check = Check::new(
+                "report.figures",
+                "The report's figures, drawn by python-checks/plot_report.py",
+                "matplotlib",
+                "the script succeeds",
+            );
+            check.cases = 1;
+            check.fail(error.to_string());
+            report.checks.push(check);
+            report.summarise();
+            write(out, "report.json", to_json(report).as_bytes())?;
+            Ok(Vec::new())
+        }
+    }
+}
+
+/// Runs the figure script on `out/report.json`; the figure file names,
+/// relative to `out`.
+fn draw_figures(python: &Path, scripts: &Path, out: &Path) -> Result<Vec<String>, ToolError> {
+    let mut command = Command::new(python);
+    command
+        .arg(scripts.join("plot_report.py"))
+        .arg(out.join("report.json"))
+        .arg(out.join("figures"));
+    let listed = run_tool(command, "python-checks/plot_report.py")?;
+    Ok(listed
+        .lines()
+        .map(|name| format!("figures/{}", name.trim()))
+        .collect())
+}
+
+/// Writes the render triptychs (ours | Mitsuba | difference) as PNG under
+/// `out/figures/`; their names, relative to `out`.
+fn write_render_figures(out: &Path, report: &Report) -> Result<Vec<String>, PipelineError> {
+    let dir = out.join("figures");
+    create_dir(&dir)?;
+    let mut names = Vec::new();
+    for figure in &report.render_figures {
+        tracer::output::write_png(&dir.join(&figure.file), &figure.image)?;
+        names.push(format!("figures/{}", figure.file));
+    }
+    Ok(names)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn writing_replaces_the_file_whole() {
+        let dir = tempfile::tempdir().unwrap();
+        write(dir.path(), "r.json", b"first").unwrap();
+        write(dir.path(), "r.json", b"second").unwrap();
+        assert_eq!(std::fs::read(dir.path().join("r.json")).unwrap(), b"second");
+        assert_eq!(
+            std::fs::read_dir(dir.path()).unwrap().count(),
+            1,
+            "no temporary file left"
+        );
+    }
+
+    #[test]
+    fn an_output_path_that_is_a_file_is_refused_before_anything_runs() {
+        let dir = tempfile::tempdir().unwrap();
+        let file = dir.path().join("taken");
+        std::fs::write(&file, "x").unwrap();
+        let options = Options {
+            out: Some(file.clone()),
+            ..Options::quick(Checkout::at_build_time(), "test")
+        };
+        let mut steps = 0;
+        let error = run(&options, |_| steps += 1).unwrap_err();
+        assert!(
+            matches!(&error, PipelineError::OutNotADirectory { path } if *path == file),
+            "{error}"
+        );
+        assert_eq!(steps, 0);
+    }
+}

@@ -1,0 +1,257 @@
+//! The schema of `mitsuba_renders.json` and its decoding: the base64 images
+//! as `f64` per channel, the scene as Mitsuba rendered it, every size
+//! checked before anything is allocated.
+
+use std::path::Path;
+
+use base64::Engine as _;
+use serde::Deserialize;
+use tracer::scene::Scene;
+
+use super::{FILE, SCHEMA};
+use crate::reference::ReferenceError;
+
+/// `mitsuba_renders.json`.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct MitsubaRenders {
+    /// [`SCHEMA`].
+    pub schema: String,
+    /// The script that wrote it.
+    pub generator: String,
+    /// The command that regenerates it.
+    pub regenerate: String,
+    /// What it holds.
+    pub description: String,
+    /// Mitsuba's version and variant.
+    pub mitsuba: Tool,
+    /// Scenes not compared, and why.
+    pub excluded: std::collections::BTreeMap<String, String>,
+    /// The scenes rendered.
+    pub scenes: Vec<SceneRenders>,
+}
+
+/// A tool's version.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Tool {
+    /// Version.
+    pub version: String,
+    /// Mitsuba's variant.
+    pub variant: String,
+}
+
+/// One scene's Mitsuba renders.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SceneRenders {
+    /// The scene's name (its file stem).
+    pub name: String,
+    /// Its file, relative to the repository root.
+    pub scene_file: String,
+    /// The scene file's text as Mitsuba rendered it.
+    pub scene_text: String,
+    /// Image width, pixels.
+    pub width: u32,
+    /// Image height, pixels.
+    pub height: u32,
+    /// The Whitted render.
+    pub whitted: WhittedRender,
+    /// Edge mask, one byte per pixel (1: masked), base64.
+    pub edges_u8: String,
+    /// Mitsuba's path tracer, when compared.
+    #[serde(default)]
+    pub path: Option<PathRender>,
+    /// Why the path tracer is not compared.
+    #[serde(default)]
+    pub path_skipped: Option<String>,
+}
+
+/// A Whitted render.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct WhittedRender {
+    /// Bounces after the primary hit.
+    pub max_depth: u32,
+    /// The throughput below which a branch is cut.
+    pub throughput_cutoff: f64,
+    /// Radiance, float32 little-endian RGB, rows top to bottom, base64.
+    pub radiance_f32le: String,
+}
+
+/// Mitsuba's path tracer at the pixel centres.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PathRender {
+    /// Bounces after the primary hit, the suite's count.
+    pub max_depth: u32,
+    /// The same as Mitsuba counts it (path segments): `max_depth + 2`.
+    pub mitsuba_max_depth: u32,
+    /// Samples per pixel.
+    pub samples: u32,
+    /// Per-pixel mean, float32 RGB, base64.
+    pub mean_f32le: String,
+    /// Per-pixel unbiased variance of one sample, float32 RGB, base64.
+    pub variance_f32le: String,
+    /// How far Mitsuba's own ray offsets move each pixel: its Whitted render
+    /// with `si.spawn_ray` against the one the Whitted check uses, float32
+    /// RGB, base64.
+    pub offset_sensitivity_f32le: String,
+}
+
+impl MitsubaRenders {
+    /// Reads [`FILE`] from `dir`.
+    pub fn load(dir: &std::path::Path) -> Result<Self, ReferenceError> {
+        crate::reference::load(dir, FILE, SCHEMA)
+    }
+}
+
+/// A scene's reference decoded: images as `f64` per channel.
+#[derive(Clone, Debug)]
+pub struct Decoded {
+    /// The scene as Mitsuba saw it, at the reference's size.
+    pub scene: Scene,
+    /// Mitsuba's Whitted radiance, `3 · width · height`.
+    pub whitted: Vec<f64>,
+    /// Masked pixels, `width · height`.
+    pub edges: Vec<bool>,
+    /// Mitsuba's path mean and variance, and how far its ray offsets move
+    /// each pixel, `3 · width · height` each.
+    pub path: Option<PathImages>,
+}
+
+/// Mitsuba's path render, decoded.
+#[derive(Clone, Debug)]
+pub struct PathImages {
+    /// Per-pixel mean.
+    pub mean: Vec<f64>,
+    /// Per-pixel variance of one sample.
+    pub variance: Vec<f64>,
+    /// Per-pixel sensitivity to Mitsuba's ray offsets.
+    pub offset_sensitivity: Vec<f64>,
+}
+
+/// Decodes one scene of the reference; errors name the field.
+pub fn decode(file: &Path, index: usize, s: &SceneRenders) -> Result<Decoded, ReferenceError> {
+    let malformed = |field: &str, message: String| ReferenceError::Malformed {
+        path: file.to_owned(),
+        field: format!("scenes[{index}].{field}"),
+        message,
+    };
+    check_sizes(s).map_err(|(field, message)| malformed(field, message))?;
+    let scene = tracer::scene::parse(&s.scene_text)
+        .map_err(|e| malformed("scene_text", e.to_string()))?
+        .resized(s.width, s.height);
+    let pixels = s.width as usize * s.height as usize;
+    let floats = |field: &str, text: &str| rgb_f32le(text, pixels).map_err(|m| malformed(field, m));
+    let whitted = floats("whitted.radiance_f32le", &s.whitted.radiance_f32le)?;
+    let edges = base64_bytes(&s.edges_u8).map_err(|m| malformed("edges_u8", m))?;
+    if edges.len() != pixels {
+        return Err(malformed(
+            "edges_u8",
+            format!("expected {pixels} bytes, got {}", edges.len()),
+        ));
+    }
+    let path = match &s.path {
+        Some(p) => Some(PathImages {
+            mean: floats("path.mean_f32le", &p.mean_f32le)?,
+            variance: floats("path.variance_f32le", &p.variance_f32le)?,
+            offset_sensitivity: floats(
+                "path.offset_sensitivity_f32le",
+                &p.offset_sensitivity_f32le,
+            )?,
+        }),
+        None => None,
+    };
+    Ok(Decoded {
+        scene,
+        whitted,
+        edges: edges.iter().map(|&b| b != 0).collect(),
+        path,
+    })
+}
+
+/// The sizes that decide what [`decode`] allocates, checked first: the
+/// field at fault and what is wrong with it.
+fn check_sizes(s: &SceneRenders) -> Result<(), (&'static str, String)> {
+    // The reference images are small (64 × 48); anything beyond the tracer's
+    // own cap is a malformed file, refused before any allocation.
+    let side = 1..=tracer::scene::MAX_IMAGE_SIDE;
+    if !side.contains(&s.width) || !side.contains(&s.height) {
+        return Err((
+            "width",
+            format!(
+                "image {} × {} outside 1..={} per side",
+                s.width,
+                s.height,
+                tracer::scene::MAX_IMAGE_SIDE
+            ),
+        ));
+    }
+    if let Some(p) = &s.path {
+        if p.samples < 2 {
+            return Err((
+                "path.samples",
+                format!("a variance needs at least 2 samples, got {}", p.samples),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// A base64 image of `pixels` float32 little-endian RGB pixels, widened.
+fn rgb_f32le(text: &str, pixels: usize) -> Result<Vec<f64>, String> {
+    let bytes = base64_bytes(text)?;
+    if bytes.len() != 12 * pixels {
+        return Err(format!(
+            "expected {} float32 RGB pixels ({} bytes), got {} bytes",
+            pixels,
+            12 * pixels,
+            bytes.len()
+        ));
+    }
+    Ok(bytes
+        .chunks_exact(4)
+        .map(|b| f32::from_le_bytes([b[0], b[1], b[2], b[3]]) as f64)
+        .collect())
+}
+
+/// Standard base64 (RFC 4648, with padding), as Python's `base64.b64encode`
+/// writes it.
+fn base64_bytes(text: &str) -> Result<Vec<u8>, String> {
+    base64::engine::general_purpose::STANDARD
+        .decode(text)
+        .map_err(|e| format!("not base64: {e}"))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn base64_decodes_rfc4648_test_vectors() {
+        // RFC 4648 §10.
+        for (text, bytes) in [
+            ("", ""),
+            ("Zg==", "f"),
+            ("Zm8=", "fo"),
+            ("Zm9v", "foo"),
+            ("Zm9vYg==", "foob"),
+            ("Zm9vYmE=", "fooba"),
+            ("Zm9vYmFy", "foobar"),
+        ] {
+            assert_eq!(base64_bytes(text).unwrap(), bytes.as_bytes(), "{text}");
+        }
+        assert!(base64_bytes("Zm9").is_err());
+        assert!(base64_bytes("Zm9*").is_err());
+    }
+
+    #[test]
+    fn an_image_of_the_wrong_size_is_refused() {
+        // Two float32 pixels' worth of bytes for one pixel.
+        let text = base64::engine::general_purpose::STANDARD.encode([0u8; 24]);
+        let message = rgb_f32le(&text, 1).unwrap_err();
+        assert!(message.contains("12 bytes"), "{message}");
+        assert_eq!(rgb_f32le(&text, 2).unwrap().len(), 6);
+    }
+}

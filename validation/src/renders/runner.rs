@@ -1,0 +1,51 @@
+//! Rendering for the comparisons: the renderer under test, and the path
+//! tracer's per-pixel sample statistics.
+
+use tracer::job::RenderJob;
+use tracer::render::Image;
+use tracer::scene::{IntegratorKind, Scene, Settings};
+
+use super::flatten;
+
+/// Renders a scene with settings; the tracer, or a deliberately broken one.
+pub type Renderer = fn(&Scene, &Settings) -> Result<Image, String>;
+
+/// The tracer as `optics render` runs it: the scene's needs decide the
+/// machinery, all cores.
+pub fn tracer_render(scene: &Scene, settings: &Settings) -> Result<Image, String> {
+    RenderJob::with_settings(scene.clone(), *settings)
+        .map_err(|e| e.to_string())?
+        .render(None, &|_| {})
+        .map(|r| r.image)
+        .map_err(|e| e.to_string())
+}
+
+/// The tracer's path samples: per-pixel mean and unbiased variance of one
+/// sample, from `samples` renders at 1 sample per pixel with seeds `0..samples`.
+pub fn path_statistics(
+    render: Renderer,
+    scene: &Scene,
+    max_depth: u32,
+    samples: u32,
+) -> Result<(Vec<f64>, Vec<f64>), String> {
+    let mut settings = scene.settings;
+    settings.integrator = IntegratorKind::Path;
+    settings.max_depth = max_depth;
+    settings.spp = 1;
+    let n = (3 * scene.width * scene.height) as usize;
+    // Welford's running mean and sum of squared deviations: exact zero
+    // variance where every sample is the same, no cancellation elsewhere.
+    let (mut mean, mut squares) = (vec![0.0; n], vec![0.0; n]);
+    for seed in 0..samples as u64 {
+        settings.seed = seed;
+        let image = flatten(&render(scene, &settings)?);
+        let count = (seed + 1) as f64;
+        for (i, v) in image.into_iter().enumerate() {
+            let delta = v - mean[i];
+            mean[i] += delta / count;
+            squares[i] += delta * (v - mean[i]);
+        }
+    }
+    let variance = squares.iter().map(|q| q / (samples as f64 - 1.0)).collect();
+    Ok((mean, variance))
+}
