@@ -60,8 +60,8 @@
 //!   resolved once, by [`snell::Incidence::resolve`], and whether light is
 //!   transmitted, with `cos θ_t`, once, by
 //!   [`snell::Incidence::cos_transmitted`]. [`fresnel::DielectricFresnel`]
-//!   and [`fresnel::SchlickDielectric`] carry that incidence and `cos θ_t`
-//!   (Schlick's working also the cosine it took), and
+//!   carries that incidence and `cos θ_t`, [`fresnel::SchlickDielectric`]
+//!   the incidence and the cosine it took, and
 //!   [`specular::refract_resolved`] builds the refracted ray from them, so a
 //!   caller never decides again what a law decided (the test
 //!   `decided_once` holds the handed-back values to the law's, bit for bit).

@@ -16,7 +16,7 @@
 //! law has a solution, once: [`dielectric_polarized`] returns them in its
 //! [`DielectricFresnel`] (the [`Incidence`](crate::snell::Incidence) and
 //! `cos_t`), and [`schlick_dielectric_working`] in its [`SchlickDielectric`],
-//! with the cosine Schlick took. Callers narrate or refract from those
+//! with the cosine Schlick took (and `cos θ_t` when it took that one). Callers narrate or refract from those
 //! ([`crate::specular::refract_resolved`]); the `*_resolved` forms take an
 //! incidence already resolved, so a caller evaluating several laws at one
 //! incidence resolves it once.

@@ -37,21 +37,21 @@ pub fn schlick_rgb<T: Real>(cos_i: T, f0: [T; 3]) -> [T; 3] {
 
 /// Which cosine Schlick's approximation took at a dielectric interface: the
 /// one in the less dense medium.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum SchlickCosine {
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum SchlickCosine<T> {
     /// `|cos θ_i|`: the light arrives from the less dense side (or the
-    /// indices match).
+    /// indices match), and `cos θ_t` was not needed.
     Incident,
-    /// `cos θ_t`: the light arrives from the denser side, and the angle in
-    /// the rarer medium is the transmitted one.
-    Transmitted,
+    /// `cos θ_t`, given: the light arrives from the denser side, and the
+    /// angle in the rarer medium is the transmitted one.
+    Transmitted(T),
     /// None: beyond the critical angle nothing is transmitted and `R = 1`
     /// exactly.
     TotalInternalReflection,
 }
 
 /// Schlick's approximation at a dielectric interface, with its working: the
-/// `F0` and the cosine it took, and the side and `cos θ_t` it decided.
+/// `F0` and the cosine it took, and the side it resolved.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SchlickDielectric<T> {
     /// The approximate unpolarised reflectance, in `[0, 1]`.
@@ -59,10 +59,8 @@ pub struct SchlickDielectric<T> {
     /// The normal-incidence reflectance `((η − 1)/(η + 1))²`, the same from
     /// both sides.
     pub f0: T,
-    /// Which cosine the approximation took.
-    pub cosine: SchlickCosine,
-    /// `cos θ_t ≥ 0`, or `None` under total internal reflection.
-    pub cos_t: Option<T>,
+    /// Which cosine the approximation took, with `cos θ_t` when it took it.
+    pub cosine: SchlickCosine<T>,
     /// The side, the indices `n_i`, `n_t` and `|cos θ_i|`.
     pub incidence: Incidence<T>,
 }
@@ -75,7 +73,20 @@ impl<T: Real> SchlickDielectric<T> {
     pub fn cosine_used(&self) -> Option<T> {
         match self.cosine {
             SchlickCosine::Incident => Some(self.incidence.abs_cos_i),
-            SchlickCosine::Transmitted => self.cos_t,
+            SchlickCosine::Transmitted(cos_t) => Some(cos_t),
+            SchlickCosine::TotalInternalReflection => None,
+        }
+    }
+
+    /// `cos θ_t ≥ 0`, or `None` under total internal reflection: the one
+    /// Schlick took from the denser side; from the rarer side, where the
+    /// approximation needs none, Snell's law is evaluated here, when asked
+    /// ([`Incidence::cos_transmitted`]).
+    #[inline]
+    pub fn cos_t(&self) -> Option<T> {
+        match self.cosine {
+            SchlickCosine::Incident => self.incidence.cos_transmitted(),
+            SchlickCosine::Transmitted(cos_t) => Some(cos_t),
             SchlickCosine::TotalInternalReflection => None,
         }
     }
@@ -90,7 +101,7 @@ impl<T: Real> SchlickDielectric<T> {
     /// Whether Snell's law has no solution and all light is reflected.
     #[inline]
     pub fn is_total_internal_reflection(&self) -> bool {
-        self.cos_t.is_none()
+        matches!(self.cosine, SchlickCosine::TotalInternalReflection)
     }
 
     /// The effective relative index along the path, `n_t / n_i`.
@@ -100,11 +111,12 @@ impl<T: Real> SchlickDielectric<T> {
     }
 
     /// The refracted ray of `wi` about `n`, the vectors whose `dot(n, wi)`
-    /// this working was made at, from the side and `cos θ_t` it decided
-    /// ([`refract_resolved`]); `None` under total internal reflection.
+    /// this working was made at, from the side it resolved and
+    /// [`SchlickDielectric::cos_t`] ([`refract_resolved`]); `None` under
+    /// total internal reflection.
     #[inline]
     pub fn refraction<V: Vector3<Scalar = T>>(&self, wi: V, n: V) -> Option<Refraction<V>> {
-        let cos_t = self.cos_t?;
+        let cos_t = self.cos_t()?;
         Some(refract_resolved(wi, n, &self.incidence, cos_t))
     }
 }
@@ -138,7 +150,7 @@ pub fn schlick_dielectric<T: Real>(cos_i: T, eta: T) -> T {
 /// assert_eq!((tir.reflectance, tir.cosine), (1.0, SchlickCosine::TotalInternalReflection));
 /// // From inside at normal incidence it takes cos θ_t, here 1: R = F0 = 0.04.
 /// let inside = schlick_dielectric_working(-1.0_f64, 1.5).unwrap();
-/// assert_eq!(inside.cosine, SchlickCosine::Transmitted);
+/// assert_eq!(inside.cosine, SchlickCosine::Transmitted(1.0));
 /// assert_eq!(inside.reflectance, schlick_dielectric(-1.0, 1.5));
 /// assert!((inside.reflectance - 0.04).abs() < 1e-16);
 /// ```
@@ -158,12 +170,11 @@ pub fn schlick_dielectric_resolved<T: Real>(incidence: &Incidence<T>) -> Schlick
     };
     // F0 is the same from both sides: ((η−1)/(η+1))² = ((1/η−1)/(1/η+1))².
     let f0 = f0(eta, T::zero());
-    let cos_t = incidence.cos_transmitted();
     let (cosine, reflectance) = if incidence.n_t >= incidence.n_i {
         (SchlickCosine::Incident, schlick(incidence.abs_cos_i, f0))
     } else {
-        match cos_t {
-            Some(cos_t) => (SchlickCosine::Transmitted, schlick(cos_t, f0)),
+        match incidence.cos_transmitted() {
+            Some(cos_t) => (SchlickCosine::Transmitted(cos_t), schlick(cos_t, f0)),
             None => (SchlickCosine::TotalInternalReflection, T::one()),
         }
     };
@@ -171,7 +182,6 @@ pub fn schlick_dielectric_resolved<T: Real>(incidence: &Incidence<T>) -> Schlick
         reflectance,
         f0,
         cosine,
-        cos_t,
         incidence: *incidence,
     }
 }

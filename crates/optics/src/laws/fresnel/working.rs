@@ -128,8 +128,8 @@ pub(super) fn schlick_for_dielectric(
     exact: f64,
 ) -> f64 {
     step_f0(record, working.f0);
-    match (working.cosine, working.cosine_used()) {
-        (SchlickCosine::Transmitted, Some(cos_t)) => {
+    match working.cosine {
+        SchlickCosine::Transmitted(cos_t) => {
             record.step(say!(
                 lang,
                 "from the denser side Schlick takes the angle in the rarer medium: cos θt = {}",
@@ -137,14 +137,14 @@ pub(super) fn schlick_for_dielectric(
                 number(cos_t)
             ));
         }
-        (SchlickCosine::TotalInternalReflection, _) => {
+        SchlickCosine::TotalInternalReflection => {
             record.step(say!(
                 lang,
                 "beyond the critical angle: total internal reflection, R = 1",
                 "a határszögön túl: teljes visszaverődés, R = 1"
             ));
         }
-        _ => {}
+        SchlickCosine::Incident => {}
     }
     if let Some(cos) = working.cosine_used() {
         step_schlick(record, working.f0, cos, working.reflectance);
