@@ -152,7 +152,7 @@ impl Tracer<'_> {
                 Interface::new(f.incidence, f.cos_t, f.reflectance(), f.transmittance())
             }
             FresnelModel::Schlick => match fresnel::schlick_dielectric_working(cos_i, eta) {
-                Some(w) => Interface::new(w.incidence, w.cos_t, w.reflectance, w.transmittance()),
+                Some(w) => Interface::new(w.incidence, w.cos_t(), w.reflectance, w.transmittance()),
                 None => Interface::undefined(),
             },
             // The course has no glass; its formula with the incident cosine.
