@@ -11,7 +11,7 @@ two minutes on a 2-core machine (Mitsuba's ``scalar_rgb`` variant, one ray at a
 time from Python).
 
 One scene, one place: each Mitsuba scene is built here from the suite's own
-scene file in ``validation/scenes/``, whose text the reference embeds, so the
+scene file in ``crates/tracer/scenes/``, whose text the reference embeds, so the
 harness renders exactly the scene Mitsuba saw and refuses a stale reference.
 
 How the suite's scene maps to Mitsuba's (each checked by the render
@@ -565,7 +565,7 @@ def u8_base64(values):
 
 
 def render_scene(name, path_too, width=WIDTH, height=HEIGHT, samples=PATH_SAMPLES):
-    relative = f"validation/scenes/{name}.json"
+    relative = f"crates/tracer/scenes/{name}.json"
     with open(os.path.join(ROOT, relative), encoding="utf-8") as f:
         text = f.read()
     scene = json.loads(text)

@@ -15,8 +15,8 @@ use crate::Ui;
 
 #[derive(clap::Args, Debug)]
 #[command(after_help = "Examples:
-  optics inspect validation/scenes/shadow.json
-  optics --json inspect validation/scenes/kaleidoscope.json --integrator path --spp 16
+  optics inspect crates/tracer/scenes/shadow.json
+  optics --json inspect crates/tracer/scenes/kaleidoscope.json --integrator path --spp 16
 
 The costs are measured by rendering the scene twice or more at its own size
 (or --width/--height): with only the machinery it needs, and with each

@@ -18,8 +18,8 @@ use crate::Ui;
 
 #[derive(clap::Args, Debug)]
 #[command(after_help = "Examples:
-  optics render validation/scenes/kaleidoscope.json -o kaleidoscope.png
-  optics render validation/scenes/gold_spheres.json -o gold.png --integrator course
+  optics render crates/tracer/scenes/kaleidoscope.json -o kaleidoscope.png
+  optics render crates/tracer/scenes/gold_spheres.json -o gold.png --integrator course
   optics --json render scene.json -o out.png --integrator path --spp 64 --seed 7 --threads 2
 
 Writes the PNG (sRGB, radiance clamped to [0, 1]: see docs/scene-schema.md)

@@ -16,7 +16,7 @@ fn optics(args: &[&str]) -> Output {
 
 fn scene(name: &str) -> String {
     format!(
-        "{}/../../validation/scenes/{name}.json",
+        "{}/../tracer/scenes/{name}.json",
         env!("CARGO_MANIFEST_DIR")
     )
 }

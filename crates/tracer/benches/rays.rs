@@ -32,7 +32,7 @@ fn runs(name: &str) -> [(IntegratorKind, u32); 2] {
 }
 
 fn rays_per_second(c: &mut Criterion) {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../validation/scenes");
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes");
     let mut group = c.benchmark_group("rays");
     group.sample_size(10);
     for name in SCENES {

@@ -66,7 +66,7 @@ fn committed_table_is_current() {
 }
 
 fn table() -> String {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../validation/scenes");
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes");
     let load = |name: &str| {
         scene::load(&dir.join(format!("{name}.json")))
             .expect("course scene")

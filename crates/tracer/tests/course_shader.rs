@@ -15,10 +15,7 @@ fn parse(value: serde_json::Value) -> Scene {
 }
 
 fn course_scene(name: &str) -> Scene {
-    let path = format!(
-        "{}/../../validation/scenes/{name}.json",
-        env!("CARGO_MANIFEST_DIR")
-    );
+    let path = format!("{}/scenes/{name}.json", env!("CARGO_MANIFEST_DIR"));
     scene::load(std::path::Path::new(&path))
         .unwrap()
         .resized(32, 24)

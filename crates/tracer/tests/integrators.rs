@@ -269,10 +269,7 @@ fn path_mean_within_five_standard_errors_of_whitted(scene: &Scene, base: Setting
 
 #[test]
 fn image_is_identical_for_any_thread_count() {
-    let path = concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/../../validation/scenes/kaleidoscope_lit.json"
-    );
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/kaleidoscope_lit.json");
     let scene = scene::load(std::path::Path::new(path))
         .unwrap()
         .resized(32, 24);
@@ -447,7 +444,7 @@ fn glass_sphere_in_a_uniform_sky_is_invisible() {
 fn path_tracer_is_deterministic_per_seed() {
     let path = concat!(
         env!("CARGO_MANIFEST_DIR"),
-        "/../../validation/scenes/webgl_seven_spheres.json"
+        "/scenes/webgl_seven_spheres.json"
     );
     let scene = scene::load(std::path::Path::new(path))
         .unwrap()

@@ -17,7 +17,7 @@ fn render_with(scene: &Scene, settings: &Settings, threads: Option<usize>) -> Im
 }
 
 fn course_scenes() -> Vec<(String, Scene)> {
-    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/../../validation/scenes");
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes");
     let mut scenes: Vec<(String, Scene)> = std::fs::read_dir(dir)
         .unwrap()
         .map(|e| e.unwrap().path())

@@ -71,7 +71,7 @@ fn fresnel_matches_50_digit_reference_within_8_ulps() {
     }
     results::assert_settled(&results::Section::deterministic(
         "fresnel-50-digits",
-        "cargo test -p suite-tests --test fresnel_reference",
+        "cargo test -p validation --test fresnel_reference",
         &table,
     ));
 }
@@ -133,7 +133,7 @@ fn textbook_formulas_lose_digits_where_the_reformulation_does_not() {
     );
     results::assert_settled(&results::Section::deterministic(
         "fresnel-textbook",
-        "cargo test -p suite-tests --test fresnel_reference",
+        "cargo test -p validation --test fresnel_reference",
         &table,
     ));
 }
