@@ -66,6 +66,42 @@ def test_only_the_colour_science_files_are_compared_with_a_tolerance():
         assert reproduce.tolerance_for(exact) == 0.0, exact
 
 
+def test_only_mitsubas_path_statistics_are_float32_arrays_with_a_tolerance():
+    assert reproduce.f32_tolerances_for("validation/reference/mitsuba_renders.json") == {
+        "mean_f32le": 1e-3, "variance_f32le": 1e-2}
+    for exact in (colorimetry.DEFAULT_JSON, metals.DEFAULT_PATH, "fresnel_mpmath.json",
+                  "mitsuba_laws.json"):
+        assert reproduce.f32_tolerances_for(exact) == {}, exact
+
+
+def test_float32_arrays_reproduce_within_their_tolerance_and_nothing_else_moves():
+    import base64
+    import struct
+    f32 = lambda *v: base64.b64encode(struct.pack(f"<{len(v)}f", *v)).decode()
+    doc = {"path": {"mean_f32le": f32(0.5, 873.8), "variance_f32le": f32(0.0, 7.7e7)},
+           "whitted": {"radiance_f32le": f32(0.25)}}
+    committed = json.dumps(doc).encode()
+    rule = reproduce.f32_tolerances_for("mitsuba_renders.json")
+    moved = {"path": {"mean_f32le": f32(0.5 + 2e-5, 873.8 * (1 + 5e-5)),
+                      "variance_f32le": f32(0.0, 7.7e7 * (1 + 4e-4))},
+             "whitted": doc["whitted"]}
+    assert reproduce.differences(committed, json.dumps(moved).encode(), f32_tolerances=rule) == []
+    assert reproduce.differences(committed, json.dumps(moved).encode()) == ["the bytes differ"]
+    for changed in ({"path": dict(doc["path"], mean_f32le=f32(0.5 + 2e-3, 873.8)),
+                     "whitted": doc["whitted"]},  # a mean beyond 1e-3
+                    {"path": dict(doc["path"], variance_f32le=f32(0.02, 7.7e7)),
+                     "whitted": doc["whitted"]},  # a variance beyond 1e-2
+                    {"path": dict(doc["path"], mean_f32le=f32(float("nan"), 873.8)),
+                     "whitted": doc["whitted"]},  # NaN
+                    {"path": dict(doc["path"], mean_f32le=f32(0.5)),
+                     "whitted": doc["whitted"]},  # a value lost
+                    {"path": dict(doc["path"], mean_f32le="not base64!"),
+                     "whitted": doc["whitted"]},  # not an array
+                    {"path": doc["path"], "whitted": {"radiance_f32le": f32(0.25 + 1e-7)}}):
+        found = reproduce.differences(committed, json.dumps(changed).encode(), f32_tolerances=rule)
+        assert found, changed
+
+
 def test_reproduction_tolerates_blas_rounding_and_nothing_else():
     doc = {"schema": "x/1", "n": 3, "values": [0.1, -16.299011627332910, 1e-300]}
     committed = json.dumps(doc).encode()
