@@ -39,12 +39,7 @@ fn metal_colour(c: &mut Criterion) {
 criterion_group!(benches, metal_colour);
 
 fn main() {
-    let run = results::criterion::Run::start();
-    benches();
-    Criterion::default().configure_from_args().final_summary();
-    if let Some(run) = run {
-        record(&run);
-    }
+    results::criterion::main(benches, record);
 }
 
 /// The section `metal-colour-speed` of `docs/results.md`.

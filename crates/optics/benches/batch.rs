@@ -58,12 +58,7 @@ fn batch_throughput(c: &mut Criterion) {
 criterion_group!(benches, batch_throughput);
 
 fn main() {
-    let run = results::criterion::Run::start();
-    benches();
-    Criterion::default().configure_from_args().final_summary();
-    if let Some(run) = run {
-        record(&run);
-    }
+    results::criterion::main(benches, record);
 }
 
 /// The section `batch-throughput` of `docs/results.md`.

@@ -58,12 +58,7 @@ fn benches(c: &mut Criterion) {
 criterion_group!(fresnel, benches);
 
 fn main() {
-    let run = results::criterion::Run::start();
-    fresnel();
-    Criterion::default().configure_from_args().final_summary();
-    if let Some(run) = run {
-        record(&run);
-    }
+    results::criterion::main(fresnel, record);
 }
 
 /// The section `fresnel-speed` of `docs/results.md`: time per evaluation.

@@ -43,24 +43,11 @@ fn worst(exact: impl Fn(f64) -> f64, approx: impl Fn(f64) -> f64) -> Worst {
     w
 }
 
-fn main() {
-    let table = table();
-    println!("{table}");
-    results::assert_settled(&section(&table));
-}
-
-fn section(table: &str) -> results::Section {
-    results::Section::deterministic(
-        "schlick-accuracy",
-        "cargo run --release -p radiometry --example schlick_error",
-        table,
-    )
-}
-
-#[test]
-fn committed_table_is_current() {
-    results::assert_settled(&section(&table()));
-}
+results::deterministic_example!(
+    "schlick-accuracy",
+    "cargo run --release -p radiometry --example schlick_error",
+    table
+);
 
 fn table() -> String {
     let mut table = String::from(

@@ -7,6 +7,21 @@ use std::time::SystemTime;
 
 use crate::Error;
 
+/// A bench's `main`, in place of `criterion_main!`: runs `benches` (a
+/// `criterion_group!`), prints criterion's summary, and when the bench
+/// measures (see [`Run::start`]) hands the run to `record`, which writes the
+/// bench's measured section.
+pub fn main(benches: fn(), record: fn(&Run)) {
+    let run = Run::start();
+    benches();
+    ::criterion::Criterion::default()
+        .configure_from_args()
+        .final_summary();
+    if let Some(run) = run {
+        record(&run);
+    }
+}
+
 /// One benchmark's mean time per iteration, as criterion measured it.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Estimate {

@@ -240,5 +240,28 @@ pub fn assert_settled(section: &Section) {
     }
 }
 
+/// An example that prints a deterministic table and is also built as a test
+/// (`[[example]] test = true`): `main` prints the table and settles its
+/// section, and the test `committed_table_is_current` settles it under
+/// `cargo test`, so CI compares it with the committed copy.
+///
+/// `deterministic_example!("name", "the command that runs it", table)`,
+/// where `table: fn() -> String`.
+#[macro_export]
+macro_rules! deterministic_example {
+    ($name:literal, $command:literal, $table:path) => {
+        fn main() {
+            let table = $table();
+            println!("{table}");
+            $crate::assert_settled(&$crate::Section::deterministic($name, $command, &table));
+        }
+
+        #[test]
+        fn committed_table_is_current() {
+            $crate::assert_settled(&$crate::Section::deterministic($name, $command, &$table()));
+        }
+    };
+}
+
 #[cfg(test)]
 mod tests;

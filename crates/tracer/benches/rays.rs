@@ -63,12 +63,7 @@ fn rays_per_second(c: &mut Criterion) {
 criterion_group!(benches, rays_per_second);
 
 fn main() {
-    let run = results::criterion::Run::start();
-    benches();
-    Criterion::default().configure_from_args().final_summary();
-    if let Some(run) = run {
-        record(&run);
-    }
+    results::criterion::main(benches, record);
 }
 
 /// The section `tracer-rays` of `docs/results.md`: millions of rays per

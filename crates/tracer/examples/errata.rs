@@ -46,24 +46,11 @@ fn row(what: &str, scene_name: &str, a: &Image, b: &Image) -> String {
     )
 }
 
-fn main() {
-    let table = table();
-    println!("{table}");
-    results::assert_settled(&section(&table));
-}
-
-fn section(table: &str) -> results::Section {
-    results::Section::deterministic(
-        "errata-images",
-        "cargo run --release -p tracer --example errata",
-        table,
-    )
-}
-
-#[test]
-fn committed_table_is_current() {
-    results::assert_settled(&section(&table()));
-}
+results::deterministic_example!(
+    "errata-images",
+    "cargo run --release -p tracer --example errata",
+    table
+);
 
 fn table() -> String {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes");
