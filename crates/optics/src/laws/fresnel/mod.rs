@@ -6,11 +6,11 @@
 //! indices of the [`Incidence`], the exact law's `cos θt`, and the cosine
 //! Schlick took (`SchlickDielectric::cosine`); [`working`] narrates them.
 
+use crate::error::Result;
 use crate::error::{Error, ErrorKind};
 use crate::input::Via;
 use crate::lang::{say, Lang};
 use crate::record::{Answer, Record};
-use anyhow::Result;
 use radiometry::fresnel::{dielectric_resolved, schlick_dielectric_resolved};
 use radiometry::snell::Incidence;
 use serde::Deserialize;
