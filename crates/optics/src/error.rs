@@ -33,7 +33,8 @@ pub type Result<T, E = Error> = std::result::Result<T, E>;
 /// field it concerns.
 #[derive(Debug)]
 pub struct Error {
-    kind: ErrorKind,
+    // Boxed: the harness's kinds are large, and an error is moved often.
+    kind: Box<ErrorKind>,
 }
 
 /// Every failure the suite reports.
@@ -176,7 +177,9 @@ impl Error {
 
 impl From<ErrorKind> for Error {
     fn from(kind: ErrorKind) -> Self {
-        Self { kind }
+        Self {
+            kind: Box::new(kind),
+        }
     }
 }
 

@@ -169,7 +169,7 @@ impl CriticalAngleArgs {
                 name_outside: via.name("n_outside"),
                 n_outside: n_out,
             };
-            return Err(Error::from(kind).into());
+            return Err(Error::from(kind));
         };
         record.step(format!(
             "sin θc = n_out / n = {} / {} = {}",

@@ -117,13 +117,13 @@ impl FresnelArgs {
                 let deg = via.finite("theta_i_deg", deg)?;
                 if !(0.0..=180.0).contains(&deg) {
                     let name = via.name("theta_i_deg");
-                    return Err(Error::from(ErrorKind::AngleDegrees { name, value: deg }).into());
+                    return Err(Error::from(ErrorKind::AngleDegrees { name, value: deg }));
                 }
                 deg.to_radians().cos()
             }
             _ => {
                 let (cosine, angle) = (via.name("cos_i"), via.name("theta_i_deg"));
-                return Err(Error::from(ErrorKind::CosineOrAngle { cosine, angle }).into());
+                return Err(Error::from(ErrorKind::CosineOrAngle { cosine, angle }));
             }
         };
         if kappa > 0.0 && cos_i < 0.0 {
@@ -132,7 +132,7 @@ impl FresnelArgs {
             } else {
                 "theta_i_deg"
             });
-            return Err(Error::from(ErrorKind::ConductorFromInside { name, cos_i }).into());
+            return Err(Error::from(ErrorKind::ConductorFromInside { name, cos_i }));
         }
         Ok(cos_i)
     }
