@@ -26,7 +26,7 @@ use crate::check::Check;
 use crate::checkout::Checkout;
 use crate::exchange;
 use crate::laws::{Laws, Laws64};
-use crate::python::{self, run_tool, SetUp, ToolError};
+use crate::python::{self, run_tool, SetUp, Task, ToolError};
 use crate::reference::ReferenceError;
 use crate::regenerate::{regenerate, RegenerateError};
 use crate::report::Report;
@@ -286,7 +286,10 @@ fn random_cases(
         .arg(scripts.join("mitsuba_eval.py"))
         .arg(dir.join("cases.json"))
         .arg(dir.join("results.json"));
-    run_tool(command, "python-checks/mitsuba_eval.py")?;
+    run_tool(
+        command,
+        Task::Script("python-checks/mitsuba_eval.py".into()),
+    )?;
     let results: exchange::ResultsFile =
         crate::reference::load(&dir, "results.json", exchange::RESULTS_SCHEMA)?;
     Ok(exchange::check_random(
@@ -332,7 +335,7 @@ fn draw_figures(python: &Path, scripts: &Path, out: &Path) -> Result<Vec<String>
         .arg(scripts.join("plot_report.py"))
         .arg(out.join("report.json"))
         .arg(out.join("figures"));
-    let listed = run_tool(command, "python-checks/plot_report.py")?;
+    let listed = run_tool(command, Task::Script("python-checks/plot_report.py".into()))?;
     Ok(listed
         .lines()
         .map(|name| format!("figures/{}", name.trim()))

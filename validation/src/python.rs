@@ -2,8 +2,43 @@
 //! come from, pinned by `python-checks/requirements.txt`, and running its
 //! scripts with their failures named.
 
+use std::fmt;
 use std::path::{Path, PathBuf};
 use std::process::Command;
+
+/// What a tool was run for, as its errors name it.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Task {
+    /// Creating the virtual environment with `base -m venv`.
+    CreateEnvironment {
+        /// The Python 3 interpreter that creates it.
+        base: PathBuf,
+    },
+    /// Installing the pinned requirements with pip.
+    InstallRequirements,
+    /// Checking the installed packages against the pins.
+    CheckPins,
+    /// Running one of the suite's scripts: its path in the checkout
+    /// (`python-checks/plot_report.py`).
+    Script(String),
+}
+
+impl fmt::Display for Task {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Task::CreateEnvironment { base } => write!(
+                f,
+                "creating the virtual environment with `{} -m venv` (is Python 3 installed?)",
+                base.display()
+            ),
+            Task::InstallRequirements => {
+                f.write_str("installing python-checks/requirements.txt with pip")
+            }
+            Task::CheckPins => f.write_str("checking the installed Python packages"),
+            Task::Script(script) => f.write_str(script),
+        }
+    }
+}
 
 /// Why a Python tool could not be used.
 #[derive(Debug, thiserror::Error)]
@@ -12,7 +47,7 @@ pub enum ToolError {
     #[error("{what}: cannot run {program}: {source}")]
     Start {
         /// What was being done.
-        what: String,
+        what: Task,
         /// The program.
         program: String,
         /// The cause.
@@ -22,7 +57,7 @@ pub enum ToolError {
     #[error("{what} failed ({status}):\n{stderr_tail}")]
     Failed {
         /// What was being done.
-        what: String,
+        what: Task,
         /// Its exit status.
         status: std::process::ExitStatus,
         /// The last lines of its standard error.
@@ -47,17 +82,23 @@ pub enum SetUp<'a> {
 
 /// Runs `command`, naming it (`what`) in the error if it cannot start or
 /// fails; its standard output.
-pub fn run_tool(mut command: Command, what: &str) -> Result<String, ToolError> {
-    let output = command.output().map_err(|source| ToolError::Start {
-        what: what.to_owned(),
-        program: format!("{:?}", command.get_program()),
-        source,
-    })?;
+pub fn run_tool(mut command: Command, what: Task) -> Result<String, ToolError> {
+    let output = match command.output() {
+        Ok(output) => output,
+        Err(source) => {
+            return Err(ToolError::Start {
+                what,
+                program: format!("{:?}", command.get_program()),
+                source,
+            })
+        }
+    };
     if !output.status.success() {
         let stderr = String::from_utf8_lossy(&output.stderr);
         let tail: Vec<_> = stderr.lines().rev().take(8).collect();
         return Err(ToolError::Failed {
-            what: what.to_owned(),
+            what,
+
             status: output.status,
             stderr_tail: tail.into_iter().rev().collect::<Vec<_>>().join("\n"),
         });
@@ -81,10 +122,9 @@ pub fn ensure_environment(
         create.arg("-m").arg("venv").arg(venv);
         run_tool(
             create,
-            &format!(
-                "creating the virtual environment with `{} -m venv` (is Python 3 installed?)",
-                base.display()
-            ),
+            Task::CreateEnvironment {
+                base: base.to_owned(),
+            },
         )?;
     } else if pins_satisfied(&interpreter, requirements)? {
         return Ok(interpreter);
@@ -101,10 +141,7 @@ pub fn ensure_environment(
             "-r",
         ])
         .arg(requirements);
-    run_tool(
-        install,
-        "installing python-checks/requirements.txt with pip",
-    )?;
+    run_tool(install, Task::InstallRequirements)?;
     Ok(interpreter)
 }
 
@@ -125,9 +162,7 @@ fn pins_satisfied(interpreter: &Path, requirements: &Path) -> Result<bool, ToolE
         print('\\n'.join(bad))\n";
     let mut check = Command::new(interpreter);
     check.arg("-c").arg(CHECK).arg(requirements);
-    Ok(run_tool(check, "checking the installed Python packages")?
-        .trim()
-        .is_empty())
+    Ok(run_tool(check, Task::CheckPins)?.trim().is_empty())
 }
 
 #[cfg(test)]
@@ -136,15 +171,16 @@ mod tests {
 
     #[test]
     fn a_program_that_cannot_start_is_named() {
+        let base = PathBuf::from("/nonexistent/python3");
         let error = run_tool(
-            Command::new("/nonexistent/python3"),
-            "creating the environment",
+            Command::new(&base),
+            Task::CreateEnvironment { base: base.clone() },
         )
         .unwrap_err();
         let message = error.to_string();
         assert!(
-            matches!(error, ToolError::Start { .. })
-                && message.contains("creating the environment")
+            matches!(&error, ToolError::Start { what, .. } if *what == Task::CreateEnvironment { base })
+                && message.contains("creating the virtual environment")
                 && message.contains("/nonexistent/python3"),
             "{message}"
         );
@@ -157,7 +193,9 @@ mod tests {
         command
             .arg("-c")
             .arg("for i in 1 2 3 4 5 6 7 8 9 10; do echo line$i >&2; done; exit 3");
-        let message = run_tool(command, "the script").unwrap_err().to_string();
+        let message = run_tool(command, Task::Script("the script".into()))
+            .unwrap_err()
+            .to_string();
         assert!(message.starts_with("the script failed"), "{message}");
         assert!(
             message.contains("line3") && message.contains("line10") && !message.contains("line2\n"),

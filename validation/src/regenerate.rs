@@ -8,7 +8,7 @@ use std::process::Command;
 
 use crate::check::Check;
 use crate::checkout::Checkout;
-use crate::python::{run_tool, ToolError};
+use crate::python::{run_tool, Task, ToolError};
 
 /// The reference generators and the files each writes, in the order the
 /// full run regenerates them.
@@ -70,7 +70,7 @@ pub fn regenerate(
         for name in outputs {
             command.arg(fresh.join(name));
         }
-        run_tool(command, &format!("python-checks/{script}"))?;
+        run_tool(command, Task::Script(format!("python-checks/{script}")))?;
         for name in outputs {
             check.cases += 1;
             let old = committed(checkout, name);
@@ -98,14 +98,13 @@ fn reproduces(
     old: &Path,
     new: &Path,
 ) -> Result<Option<String>, RegenerateError> {
-    let what = "python-checks/reproduce.py";
     let output = Command::new(python)
         .arg(scripts.join("reproduce.py"))
         .arg(old)
         .arg(new)
         .output()
         .map_err(|source| ToolError::Start {
-            what: what.to_owned(),
+            what: Task::Script("python-checks/reproduce.py".to_owned()),
             program: python.display().to_string(),
             source,
         })?;

@@ -7,15 +7,24 @@
 //! field or a translation stops the build.
 //!
 //! Another crate's typed errors are wrapped whole as one variant, as
-//! [`ErrorKind::Domain`] wraps the radiometry crate's [`DomainError`]; the
-//! translation of such a variant is one exhaustive `match` over that
-//! crate's kinds, beside the others in `lang`. Messages that come from
-//! outside the suite (the argument parser's, serde's, the operating
-//! system's) keep their text, and the kinds that carry them say which
-//! argument or field they concern.
+//! [`ErrorKind::Domain`] wraps the radiometry crate's [`DomainError`] and
+//! [`ErrorKind::Scene`] the tracer's [`SceneError`]; the translation of such
+//! a variant is one exhaustive `match` over that crate's kinds, beside the
+//! others in `lang`, and its name and field are given in `error::render` or
+//! `error::harness`. Messages that come from outside the suite (the argument
+//! parser's, serde's, the operating system's) keep their text, and the
+//! kinds that carry them say which argument or field they concern.
 
 use radiometry::domain::DomainError;
 use std::fmt;
+use std::path::PathBuf;
+use tracer::job::RenderError;
+use tracer::output::OutputError;
+use tracer::scene::SceneError;
+
+#[cfg(feature = "harness")]
+pub mod harness;
+pub mod render;
 
 /// The outcome of a step that can fail with one of the suite's own errors.
 pub type Result<T, E = Error> = std::result::Result<T, E>;
@@ -24,7 +33,8 @@ pub type Result<T, E = Error> = std::result::Result<T, E>;
 /// field it concerns.
 #[derive(Debug)]
 pub struct Error {
-    kind: ErrorKind,
+    // Boxed: the harness's kinds are large, and an error is moved often.
+    kind: Box<ErrorKind>,
 }
 
 /// Every failure the suite reports.
@@ -113,9 +123,33 @@ pub enum ErrorKind {
     Write(std::io::Error),
     /// A record that could not be written as JSON; serde's message.
     Encode(serde_json::Error),
-    /// A failure reported by a subcommand whose messages have no kind of
-    /// their own yet (`render`, `inspect`, `validate`): its text as written.
-    Untyped(anyhow::Error),
+    /// A scene file, or a setting given beside it, that the tracer refused:
+    /// its kind and the JSON path of the bad value.
+    Scene {
+        /// The scene file as given.
+        file: PathBuf,
+        /// The tracer's error.
+        error: SceneError,
+    },
+    /// The render's destination (`--output`) refused, or an image that
+    /// could not be written there.
+    Output(OutputError),
+    /// The render's worker threads could not be started; rayon's message.
+    Threads(rayon::ThreadPoolBuildError),
+    /// No usable checkout of the suite (`--checkout`, `OPTICS_CHECKOUT`).
+    #[cfg(feature = "harness")]
+    Checkout(validation::checkout::CheckoutError),
+    /// The harness could not run to the end.
+    #[cfg(feature = "harness")]
+    Pipeline(validation::pipeline::PipelineError),
+    /// The harness ran to the end and some of its checks failed.
+    #[cfg(feature = "harness")]
+    ChecksFailed {
+        /// The checks that failed.
+        failed: usize,
+        /// All checks run.
+        checks: usize,
+    },
 }
 
 impl Error {
@@ -143,7 +177,9 @@ impl Error {
 
 impl From<ErrorKind> for Error {
     fn from(kind: ErrorKind) -> Self {
-        Self { kind }
+        Self {
+            kind: Box::new(kind),
+        }
     }
 }
 
@@ -153,17 +189,11 @@ impl From<DomainError> for Error {
     }
 }
 
-impl From<anyhow::Error> for Error {
-    /// Recovers the typed error a step returned through `anyhow`; what has
-    /// no kind stays [`ErrorKind::Untyped`].
-    fn from(error: anyhow::Error) -> Self {
-        let error = match error.downcast::<Error>() {
-            Ok(typed) => return typed,
-            Err(other) => other,
-        };
-        match error.downcast::<DomainError>() {
-            Ok(domain) => domain.into(),
-            Err(other) => ErrorKind::Untyped(other).into(),
+impl From<RenderError> for Error {
+    fn from(error: RenderError) -> Self {
+        match error {
+            RenderError::Threads(error) => ErrorKind::Threads(error).into(),
+            RenderError::Output(error) => ErrorKind::Output(error).into(),
         }
     }
 }
@@ -192,7 +222,15 @@ impl ErrorKind {
             ErrorKind::ReadLine { .. } => "read_line",
             ErrorKind::Write(_) => "write",
             ErrorKind::Encode(_) => "encode",
-            ErrorKind::Untyped(_) => "untyped",
+            ErrorKind::Scene { error, .. } => render::scene_name(error.kind()),
+            ErrorKind::Output(error) => render::output_name(error),
+            ErrorKind::Threads(_) => "threads",
+            #[cfg(feature = "harness")]
+            ErrorKind::Checkout(error) => harness::checkout_name(error),
+            #[cfg(feature = "harness")]
+            ErrorKind::Pipeline(error) => harness::pipeline_name(error),
+            #[cfg(feature = "harness")]
+            ErrorKind::ChecksFailed { .. } => "harness.checks_failed",
         }
     }
 
@@ -216,7 +254,15 @@ impl ErrorKind {
             | ErrorKind::ReadLine { .. }
             | ErrorKind::Write(_)
             | ErrorKind::Encode(_)
-            | ErrorKind::Untyped(_) => None,
+            | ErrorKind::Threads(_) => None,
+            ErrorKind::Scene { error, .. } => Some(error.field().to_owned()),
+            ErrorKind::Output(_) => Some("--output".to_owned()),
+            #[cfg(feature = "harness")]
+            ErrorKind::Checkout(error) => Some(harness::checkout_field(error).to_owned()),
+            #[cfg(feature = "harness")]
+            ErrorKind::Pipeline(error) => harness::pipeline_field(error),
+            #[cfg(feature = "harness")]
+            ErrorKind::ChecksFailed { .. } => None,
         }
     }
 }
@@ -299,7 +345,22 @@ impl fmt::Display for ErrorKind {
             ErrorKind::ReadLine { line, source } => write!(f, "reading line {line}: {source}"),
             ErrorKind::Write(error) => write!(f, "cannot write the output: {error}"),
             ErrorKind::Encode(error) => write!(f, "cannot write the result as JSON: {error}"),
-            ErrorKind::Untyped(error) => write!(f, "{error:#}"),
+            ErrorKind::Scene { file, error } => write!(f, "scene {}: {error}", file.display()),
+            ErrorKind::Output(error) => write!(f, "--output: {error}"),
+            ErrorKind::Threads(error) => {
+                write!(f, "cannot start the render's threads: {error}")
+            }
+            #[cfg(feature = "harness")]
+            ErrorKind::Checkout(error) => write!(f, "{error}"),
+            #[cfg(feature = "harness")]
+            ErrorKind::Pipeline(error) => match harness::pipeline_lead(error) {
+                Some(lead) => write!(f, "{}: {error}", lead.en),
+                None => write!(f, "{error}"),
+            },
+            #[cfg(feature = "harness")]
+            ErrorKind::ChecksFailed { failed, checks } => {
+                write!(f, "{failed} of {checks} checks failed")
+            }
         }
     }
 }

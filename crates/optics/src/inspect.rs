@@ -9,7 +9,9 @@ use tracer::job::RenderJob;
 use tracer::needs::{Needs, ReflectionDepth};
 use tracer::render::Rendered;
 
+use crate::error;
 use crate::lang::{say, Lang};
+use crate::record::{Answer, Record};
 use crate::render::JobArgs;
 use crate::Ui;
 
@@ -22,16 +24,18 @@ The costs are measured by rendering the scene twice or more at its own size
 (or --width/--height): with only the machinery it needs, and with each
 skipped part switched back on. The images are compared: skipping must not
 change a pixel.")]
+#[derive(serde::Serialize)]
 pub struct InspectArgs {
     /// The scene file (JSON).
     pub scene: PathBuf,
     // The settings to inspect for, over the scene's; --width and --height
     // size the measuring renders.
     #[command(flatten)]
+    #[serde(flatten)]
     pub job: JobArgs,
 }
 
-pub fn run(args: &InspectArgs, ui: &Ui) -> anyhow::Result<()> {
+pub fn run(args: &InspectArgs, ui: &Ui) -> error::Result<()> {
     let job = args.job.job(&args.scene)?;
     let (scene, settings, needs) = (job.scene(), job.settings(), job.needs());
     let lang = ui.lang;
@@ -43,8 +47,15 @@ pub fn run(args: &InspectArgs, ui: &Ui) -> anyhow::Result<()> {
         costs.push(cost);
         lines.push(line);
     }
-    let mut steps = needs_steps(needs, base.rays.deepest, lang);
-    steps.push(say!(
+    let mut record = Record::new("inspect", String::new(), "");
+    record.inputs_from(args);
+    if let Value::Object(needs) = serde_json::to_value(needs).unwrap_or(Value::Null) {
+        record.set_answer(Answer::Object(needs), None);
+    }
+    for line in needs_steps(needs, base.rays.deepest, lang) {
+        record.step(line);
+    }
+    record.step(say!(
         lang,
         "{}×{} {}: {} rays with only what the scene needs",
         "{}×{} {}: {} sugár csak a szükséges részekkel",
@@ -53,35 +64,24 @@ pub fn run(args: &InspectArgs, ui: &Ui) -> anyhow::Result<()> {
         settings.integrator,
         base.rays.total()
     ));
-    steps.extend(crate::render::steps(needs, job.machinery(), settings, lang));
-    steps.extend(lines);
-    if ui.json {
-        println!(
-            "{}",
-            json!({
-                "command": "inspect",
-                "inputs": {
-                    "scene": args.scene.display().to_string(),
-                    "width": scene.width,
-                    "height": scene.height,
-                    "settings": settings,
-                },
-                "answer": { "needs": needs, "skipped": costs, "rays": base.rays },
-                "unit": "rays",
-                "steps": steps,
-            })
-        );
-    } else {
-        for s in steps {
-            println!("{s}");
-        }
+    for line in crate::render::steps(needs, job.machinery(), settings, lang)
+        .into_iter()
+        .chain(lines)
+    {
+        record.step(line);
     }
-    Ok(())
+    record
+        .detail("width", scene.width)
+        .detail("height", scene.height)
+        .detail("settings", settings)
+        .detail("skipped", costs)
+        .detail("rays", base.rays);
+    ui.show_steps(&record)
 }
 
 /// The best of three renders with `machinery`, so that the time
 /// differences are not scheduling noise.
-fn measure(job: &RenderJob, machinery: &Machinery) -> anyhow::Result<Rendered> {
+fn measure(job: &RenderJob, machinery: &Machinery) -> error::Result<Rendered> {
     let quiet = |_: usize| {};
     let mut best = job.render_with(machinery, None, &quiet)?;
     for _ in 0..2 {

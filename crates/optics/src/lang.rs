@@ -5,6 +5,10 @@ use crate::error::{Error, ErrorKind};
 use clap::ValueEnum;
 use radiometry::domain::{self, DomainError, Expected};
 
+#[cfg(feature = "harness")]
+mod harness;
+mod render;
+
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum Lang {
     /// English.
@@ -92,7 +96,17 @@ fn hungarian(kind: &ErrorKind) -> String {
         }
         ErrorKind::Write(error) => format!("a kimenet nem írható: {error}"),
         ErrorKind::Encode(error) => format!("az eredmény nem írható JSON-ként: {error}"),
-        ErrorKind::Untyped(error) => format!("(fordítás nélküli üzenet) {error:#}"),
+        ErrorKind::Scene { file, error } => render::scene_hu(file, error),
+        ErrorKind::Output(error) => format!("--output: {}", render::output_hu(error)),
+        ErrorKind::Threads(error) => format!("a renderelés szálai nem indíthatók: {error}"),
+        #[cfg(feature = "harness")]
+        ErrorKind::Checkout(error) => harness::checkout_hu(error),
+        #[cfg(feature = "harness")]
+        ErrorKind::Pipeline(error) => harness::pipeline_hu(error),
+        #[cfg(feature = "harness")]
+        ErrorKind::ChecksFailed { failed, checks } => {
+            format!("{checks} ellenőrzésből {failed} sikertelen")
+        }
     }
 }
 

@@ -2,7 +2,8 @@
 //! `main` over [`main_entry`], and benches drive [`batch`] directly.
 //!
 //! Every subcommand prints a record (the working and the answer) as text, or
-//! with `--json` as one JSON object whose fields the README documents.
+//! with `--json` as one JSON object whose fields `docs/cli.md` documents
+//! ("The JSON record").
 //! Errors are typed ([`Error`], [`ErrorKind`]), name the argument that was
 //! wrong, come in the chosen language (with `--json` also as the object
 //! [`Error::to_json`] writes), and exit with status 1 (2 for command-line
@@ -45,6 +46,19 @@ impl Ui {
             writeln!(out).map_err(ErrorKind::Write)?;
         } else {
             write!(out, "{}", record.to_text(self.lang)).map_err(ErrorKind::Write)?;
+        }
+        Ok(())
+    }
+
+    /// Prints a record whose text form is its steps alone, one a line
+    /// (`render`, `inspect`, `validate`: their steps are what they report).
+    pub fn show_steps(&self, record: &Record) -> error::Result<()> {
+        if self.json {
+            return self.show(record);
+        }
+        let mut out = std::io::stdout().lock();
+        for step in &record.steps {
+            writeln!(out, "{step}").map_err(ErrorKind::Write)?;
         }
         Ok(())
     }
@@ -128,7 +142,7 @@ enum Command {
     Validate(validate::ValidateArgs),
 }
 
-fn run(command: &Command, ui: &Ui) -> anyhow::Result<ExitCode> {
+fn run(command: &Command, ui: &Ui) -> error::Result<ExitCode> {
     let (via, lang) = (Via::Flags, ui.lang);
     match command {
         Command::Quiz(args) => match &args.exercise {
@@ -168,7 +182,7 @@ fn run(command: &Command, ui: &Ui) -> anyhow::Result<ExitCode> {
         Command::Render(args) => render::run(args, ui)?,
         Command::Inspect(args) => inspect::run(args, ui)?,
         #[cfg(feature = "harness")]
-        Command::Validate(args) => validate::run(args, ui)?,
+        Command::Validate(args) => return validate::run(args, ui),
     }
     Ok(ExitCode::SUCCESS)
 }
@@ -186,7 +200,7 @@ pub fn main_entry() -> ExitCode {
     match run(&cli.command, &ui) {
         Ok(code) => code,
         Err(error) => {
-            ui.report(&Error::from(error));
+            ui.report(&error);
             ExitCode::FAILURE
         }
     }

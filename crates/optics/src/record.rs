@@ -1,13 +1,16 @@
 //! The result record every subcommand prints: as text for people, or with
-//! `--json` as one JSON object with stable fields for scripts.
+//! `--json` as one JSON object with stable fields for scripts, documented
+//! in `docs/cli.md` ("The JSON record").
 //!
 //! [`Record`] is the one definition of that object for every `--json`
-//! output, the law evaluators', the quiz's and `optics batch`'s lines, and
-//! the shape `render`, `inspect` and `validate` print through the same
-//! builder ([`Record::new`], then [`Record::input`]/[`Record::inputs_from`],
+//! output: the law evaluators', the quiz's, `optics batch`'s lines, and
+//! `render`'s, `inspect`'s and `validate`'s, all built the same way
+//! ([`Record::new`], then [`Record::input`]/[`Record::inputs_from`],
 //! [`Record::step`], [`Record::set_answer`], [`Record::detail`]/
-//! [`Record::details_from`], [`Record::note`], and [`crate::Ui::show`]).
-//! A failure prints the error object of [`crate::Error::to_json`] instead.
+//! [`Record::details_from`], [`Record::note`]) and printed by
+//! [`crate::Ui::show`] (or [`crate::Ui::show_steps`], whose text is the
+//! steps alone). A failure prints the error object of
+//! [`crate::Error::to_json`] instead.
 
 use crate::lang::Lang;
 use serde::Serialize;
@@ -21,8 +24,12 @@ pub enum Answer {
     Vector([f64; 3]),
     /// No value exists (a ray totally reflected has no refracted direction).
     None,
-    /// Several answers, in order (a whole quiz).
+    /// Several answers, in order (a whole quiz, the files a render wrote).
     List(Vec<Value>),
+    /// Named answers (what a scene needs).
+    Object(Map<String, Value>),
+    /// Yes or no (whether every check of the harness passed).
+    Verdict(bool),
 }
 
 /// One evaluation: what was asked, the answer with its unit, and the working.
@@ -137,6 +144,17 @@ impl Record {
                 })
                 .collect::<Vec<_>>()
                 .join(", "),
+            (None, Answer::Object(fields)) => fields
+                .iter()
+                .map(|(name, value)| format!("{name} = {value}"))
+                .collect::<Vec<_>>()
+                .join(", "),
+            (None, Answer::Verdict(yes)) => lang
+                .pick(
+                    if *yes { "yes" } else { "no" },
+                    if *yes { "igen" } else { "nem" },
+                )
+                .to_owned(),
         };
         out.push_str(&format!("{label}: {}\n", answer.trim_end()));
         for note in &self.notes {

@@ -4,16 +4,18 @@
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 
-use anyhow::Context;
-use serde_json::json;
+use serde::Serialize;
 use tracer::integrator::Machinery;
 use tracer::job::{Overrides, RenderJob};
 use tracer::needs::Needs;
 use tracer::output::Destination;
+use tracer::render::Rendered;
 use tracer::scene::{FresnelModel, IntegratorKind, RenderSpec, Settings};
 use tracer::scene::{MAX_DEPTH, MAX_IMAGE_SIDE, MAX_SPP};
 
-use crate::lang::say;
+use crate::error::{self, ErrorKind};
+use crate::lang::{say, Lang};
+use crate::record::{Answer, Record};
 use crate::Ui;
 
 #[derive(clap::Args, Debug)]
@@ -24,6 +26,7 @@ use crate::Ui;
 
 Writes the PNG (sRGB, radiance clamped to [0, 1]: see docs/scene-schema.md)
 and, beside it, the linear radiance as a PFM with the same name.")]
+#[derive(Serialize)]
 pub struct RenderArgs {
     /// The scene file (JSON, see docs/scene-schema.md).
     pub scene: PathBuf,
@@ -31,41 +34,51 @@ pub struct RenderArgs {
     #[arg(short, long)]
     pub output: PathBuf,
     #[command(flatten)]
+    #[serde(flatten)]
     pub job: JobArgs,
     /// Worker threads (default: all cores). The image does not depend on it.
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1024))]
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub threads: Option<u32>,
 }
 
-/// The settings `render` and `inspect` take over the scene's own.
-#[derive(clap::Args, Debug)]
+/// The settings `render` and `inspect` take over the scene's own; as
+/// JSON, those given.
+#[derive(clap::Args, Debug, Serialize)]
 pub struct JobArgs {
     /// Light transport (default: the scene's).
     #[arg(long, value_enum)]
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub integrator: Option<IntegratorKind>,
     /// Samples per pixel (the path tracer's; the others are deterministic).
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=MAX_SPP as i64))]
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub spp: Option<u32>,
     /// Bounces allowed after the primary hit.
     #[arg(long, value_parser = clap::value_parser!(u32).range(0..=MAX_DEPTH as i64))]
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub max_depth: Option<u32>,
     /// Fresnel law of mirrors and glass.
     #[arg(long, value_enum)]
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub fresnel: Option<FresnelModel>,
     /// Seed of the path tracer's random numbers.
     #[arg(long)]
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub seed: Option<u64>,
     /// Image width in pixels, overriding the scene's (the camera keeps its view).
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=MAX_IMAGE_SIDE as i64))]
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub width: Option<u32>,
     /// Image height in pixels, overriding the scene's.
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=MAX_IMAGE_SIDE as i64))]
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub height: Option<u32>,
 }
 
 impl JobArgs {
     /// The scene at `path` with these flags settled over its settings.
-    pub(crate) fn job(&self, path: &Path) -> anyhow::Result<RenderJob> {
+    pub(crate) fn job(&self, path: &Path) -> error::Result<RenderJob> {
         let overrides = Overrides {
             render: RenderSpec {
                 integrator: self.integrator,
@@ -78,17 +91,22 @@ impl JobArgs {
             width: self.width,
             height: self.height,
         };
-        RenderJob::load(path, &overrides).with_context(|| format!("scene {}", path.display()))
+        RenderJob::load(path, &overrides).map_err(|error| {
+            ErrorKind::Scene {
+                file: path.to_owned(),
+                error,
+            }
+            .into()
+        })
     }
 }
 
-pub fn run(args: &RenderArgs, ui: &Ui) -> anyhow::Result<()> {
+pub fn run(args: &RenderArgs, ui: &Ui) -> error::Result<()> {
     let job = args.job.job(&args.scene)?;
     // Refuse an unwritable destination before spending the render on it.
-    let destination = Destination::new(&args.output).context("--output")?;
-    let (scene, settings, machinery) = (job.scene(), job.settings(), job.machinery());
+    let destination = Destination::new(&args.output).map_err(ErrorKind::Output)?;
     let bar = std::io::stderr().is_terminal().then(|| {
-        let bar = indicatif::ProgressBar::new(scene.height as u64);
+        let bar = indicatif::ProgressBar::new(job.scene().height as u64);
         bar.set_style(
             indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} rows, {eta} left")
                 .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
@@ -104,54 +122,61 @@ pub fn run(args: &RenderArgs, ui: &Ui) -> anyhow::Result<()> {
     if let Some(bar) = &bar {
         bar.finish_and_clear();
     }
-    let rendered = rendered?;
-    let (png, pfm) = (destination.png(), destination.pfm());
+    ui.show_steps(&record(args, &job, &destination, &rendered?, ui.lang))
+}
 
+/// The render's record: the files written as the answer, the summary line
+/// as its one step, what was skipped as notes, the cost as details.
+fn record(
+    args: &RenderArgs,
+    job: &RenderJob,
+    destination: &Destination,
+    rendered: &Rendered,
+    lang: Lang,
+) -> Record {
+    let (scene, settings, machinery) = (job.scene(), job.settings(), job.machinery());
+    let (png, pfm) = (destination.png(), destination.pfm());
     let seconds = rendered.elapsed.as_secs_f64();
     let rays = rendered.rays.total();
     let rate = rays as f64 / seconds.max(1e-9);
-    let lang = ui.lang;
-    let summary = say!(
-        lang,
-        "{}×{} {} in {:.3} s: {} rays, {:.2} M rays/s → {}, {}",
-        "{}×{} {} {:.3} s alatt: {} sugár, {:.2} M sugár/s → {}, {}",
-        scene.width,
-        scene.height,
-        settings.integrator,
-        seconds,
-        rays,
-        rate / 1e6,
-        png.display(),
-        pfm.display()
-    );
-    if ui.json {
-        let record = json!({
-            "command": "render",
-            "inputs": {
-                "scene": args.scene.display().to_string(),
-                "width": scene.width,
-                "height": scene.height,
-                "settings": settings,
-                "threads": args.threads,
-            },
-            "answer": {
-                "png": png.display().to_string(),
-                "pfm": pfm.display().to_string(),
-                "seconds": seconds,
-                "rays": rendered.rays,
-                "rays_total": rays,
-                "rays_per_second": rate,
-                "samples_per_pixel_taken": machinery.spp,
-                "shadow_rays": machinery.shadow_rays,
-            },
-            "unit": "rays/s",
-            "steps": steps(job.needs(), machinery, settings, lang),
-        });
-        println!("{record}");
-    } else {
-        println!("{summary}");
+    let mut record = Record::new("render", String::new(), "");
+    record
+        .inputs_from(args)
+        .set_answer(
+            Answer::List(vec![
+                png.display().to_string().into(),
+                pfm.display().to_string().into(),
+            ]),
+            None,
+        )
+        .step(say!(
+            lang,
+            "{}×{} {} in {:.3} s: {} rays, {:.2} M rays/s → {}, {}",
+            "{}×{} {} {:.3} s alatt: {} sugár, {:.2} M sugár/s → {}, {}",
+            scene.width,
+            scene.height,
+            settings.integrator,
+            seconds,
+            rays,
+            rate / 1e6,
+            png.display(),
+            pfm.display()
+        ))
+        .detail("width", scene.width)
+        .detail("height", scene.height)
+        .detail("settings", settings)
+        .detail("png", png.display().to_string())
+        .detail("pfm", pfm.display().to_string())
+        .detail("seconds", seconds)
+        .detail("rays", rendered.rays)
+        .detail("rays_total", rays)
+        .detail("rays_per_second", rate)
+        .detail("samples_per_pixel_taken", machinery.spp)
+        .detail("shadow_rays", machinery.shadow_rays);
+    for line in steps(job.needs(), machinery, settings, lang) {
+        record.note(line);
     }
-    Ok(())
+    record
 }
 
 /// What the renderer switched off and why, one line each.

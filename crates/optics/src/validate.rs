@@ -4,15 +4,16 @@
 
 use std::io::IsTerminal;
 use std::path::PathBuf;
+use std::process::ExitCode;
 
-use anyhow::bail;
 use indicatif::{ProgressBar, ProgressStyle};
-use serde_json::json;
 use validation::checkout::Checkout;
 use validation::pipeline::{self, Options, Outcome, PythonOptions, Step};
 use validation::python::SetUp;
 
-use crate::lang::say;
+use crate::error::{self, ErrorKind};
+use crate::lang::{say, Lang};
+use crate::record::{Answer, Record};
 use crate::Ui;
 
 #[derive(clap::Args, Debug)]
@@ -29,6 +30,7 @@ and figures/*.png into --out. On first use the Python environment (--venv,
 pinned by python-checks/requirements.txt) is created; that downloads
 Mitsuba 3, colour-science and matplotlib once. Exit status 1 when any check
 fails.")]
+#[derive(serde::Serialize)]
 pub struct ValidateArgs {
     /// Run the reduced set: check against the committed references instead of
     /// regenerating them.
@@ -38,14 +40,17 @@ pub struct ValidateArgs {
     /// python-checks/) [default: $OPTICS_CHECKOUT, else the checkout
     /// containing the working directory].
     #[arg(long, value_name = "DIR")]
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub checkout: Option<PathBuf>,
     /// Directory for report.json, report.html and figures/ (created if
     /// missing) [default: validation/out in the checkout].
     #[arg(long, value_name = "DIR")]
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub out: Option<PathBuf>,
     /// The Python virtual environment, created if missing [default: .venv in
     /// the checkout].
     #[arg(long, value_name = "DIR")]
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub venv: Option<PathBuf>,
     /// The Python 3 interpreter that creates the environment.
     #[arg(long, value_name = "PATH", default_value = "python3")]
@@ -60,8 +65,8 @@ pub struct ValidateArgs {
 
 impl ValidateArgs {
     /// The pipeline's options: the checkout found, the flags as they are.
-    fn options(&self) -> anyhow::Result<Options> {
-        let checkout = Checkout::find(self.checkout.as_deref())?;
+    fn options(&self) -> error::Result<Options> {
+        let checkout = Checkout::find(self.checkout.as_deref()).map_err(ErrorKind::Checkout)?;
         // The command as typed, by the program's name rather than its build path.
         let command = std::iter::once("optics".to_owned())
             .chain(std::env::args().skip(1))
@@ -81,7 +86,10 @@ impl ValidateArgs {
     }
 }
 
-pub fn run(args: &ValidateArgs, ui: &Ui) -> anyhow::Result<()> {
+/// Runs the harness; the exit status says whether every check passed (with
+/// `--json` the record is the whole answer, without it a failure is also
+/// reported as an error).
+pub fn run(args: &ValidateArgs, ui: &Ui) -> error::Result<ExitCode> {
     let options = args.options()?;
     let bar = (std::io::stderr().is_terminal() && !ui.json).then(|| {
         let bar = ProgressBar::new(0);
@@ -95,37 +103,17 @@ pub fn run(args: &ValidateArgs, ui: &Ui) -> anyhow::Result<()> {
     if let Some(bar) = &bar {
         bar.finish_and_clear();
     }
-    let outcome = outcome.map_err(|error| flag_named(error, args))?;
-    if ui.json {
-        print_json(&outcome);
-        if !outcome.passed() {
-            // The record above is the whole answer; the status says it failed.
-            std::process::exit(1);
-        }
-        return Ok(());
-    }
-    print_text(&outcome, ui);
+    let outcome = outcome.map_err(ErrorKind::Pipeline)?;
+    ui.show_steps(&record(args, &outcome, ui.lang))?;
     let s = &outcome.report.summary;
-    if !outcome.passed() {
-        bail!("{} of {} checks failed", s.failed, s.checks);
-    }
-    Ok(())
-}
-
-/// The pipeline's error, led by the flag that sets what it concerns.
-fn flag_named(error: pipeline::PipelineError, args: &ValidateArgs) -> anyhow::Error {
-    use pipeline::PipelineError::{NoRequirements, OutNotADirectory, Tool};
-    let lead = match &error {
-        OutNotADirectory { .. } => Some("--out"),
-        NoRequirements { .. } => Some("--checkout (or --no-python)"),
-        Tool(validation::python::ToolError::Start { .. }) if !args.no_python => {
-            Some("--python (or --no-python)")
+    match (outcome.passed(), ui.json) {
+        (true, _) => Ok(ExitCode::SUCCESS),
+        (false, true) => Ok(ExitCode::FAILURE),
+        (false, false) => Err(ErrorKind::ChecksFailed {
+            failed: s.failed,
+            checks: s.checks,
         }
-        _ => None,
-    };
-    match lead {
-        Some(flag) => anyhow::anyhow!("{flag}: {error}"),
-        None => error.into(),
+        .into()),
     }
 }
 
@@ -177,65 +165,73 @@ fn progress(ui: &Ui, bar: Option<&ProgressBar>, step: Step) {
     }
 }
 
-fn print_json(outcome: &Outcome) {
+/// The run's record: the verdict as the answer, one step per check (and
+/// its first failures), the speed and the summary lines.
+fn record(args: &ValidateArgs, outcome: &Outcome, lang: Lang) -> Record {
     let report = &outcome.report;
-    let record = json!({
-        "passed": outcome.passed(),
-        "summary": report.summary,
-        "report_json": outcome.report_json(),
-        "report_html": outcome.report_html(),
-        "figures": outcome.figures,
-        "failed_checks": report.checks.iter().filter(|c| !c.passed()).map(|c| &c.id).collect::<Vec<_>>(),
-    });
-    println!("{record}");
-}
-
-fn print_text(outcome: &Outcome, ui: &Ui) {
-    let (report, lang) = (&outcome.report, ui.lang);
+    let mut record = Record::new("validate", String::new(), "");
+    record
+        .inputs_from(args)
+        .set_answer(Answer::Verdict(outcome.passed()), None);
     for check in &report.checks {
-        let mark = if check.passed() { "pass" } else { "FAIL" };
-        println!(
-            "{mark}  {} ({} cases, {} findings)",
+        let mark = match (check.passed(), lang) {
+            (true, Lang::En) => "pass",
+            (false, Lang::En) => "FAIL",
+            (true, Lang::Hu) => "jó  ",
+            (false, Lang::Hu) => "HIBA",
+        };
+        record.step(say!(
+            lang,
+            "{}  {} ({} cases, {} findings)",
+            "{}  {} ({} eset, {} megállapítás)",
+            mark,
             check.id,
             check.cases,
             check.findings.len()
-        );
+        ));
         for failure in check.failures.iter().take(5) {
-            println!("      {failure}");
+            record.step(format!("      {failure}"));
         }
     }
     if let [spectral, rgb] = report.speed.as_slice() {
-        println!(
-            "{}",
-            say!(
-                lang,
-                "gold's colour: {:.2} µs from 85 wavelengths, {:.2} µs from three ({:.1}×{})",
-                "az arany színe: {:.2} µs 85 hullámhosszból, {:.2} µs háromból ({:.1}×{})",
-                spectral.ns_per_colour / 1e3,
-                rgb.ns_per_colour / 1e3,
-                spectral.ns_per_colour / rgb.ns_per_colour,
-                if spectral.optimised {
-                    ""
-                } else {
-                    lang.pick(", unoptimised build", ", optimalizálatlan fordítás")
-                }
-            )
-        );
+        record.step(say!(
+            lang,
+            "gold's colour: {:.2} µs from 85 wavelengths, {:.2} µs from three ({:.1}×{})",
+            "az arany színe: {:.2} µs 85 hullámhosszból, {:.2} µs háromból ({:.1}×{})",
+            spectral.ns_per_colour / 1e3,
+            rgb.ns_per_colour / 1e3,
+            spectral.ns_per_colour / rgb.ns_per_colour,
+            if spectral.optimised {
+                ""
+            } else {
+                lang.pick(", unoptimised build", ", optimalizálatlan fordítás")
+            }
+        ));
     }
     let s = &report.summary;
-    println!(
-        "{}",
-        say!(
-            lang,
-            "{} checks: {} passed, {} failed; {} findings about the references. Report: {}",
-            "{} ellenőrzés: {} sikeres, {} sikertelen; {} megállapítás a referenciákról. Jelentés: {}",
-            s.checks,
-            s.passed,
-            s.failed,
-            s.findings,
-            outcome.report_html().display()
-        )
-    );
+    record.step(say!(
+        lang,
+        "{} checks: {} passed, {} failed; {} findings about the references. Report: {}",
+        "{} ellenőrzés: {} sikeres, {} sikertelen; {} megállapítás a referenciákról. Jelentés: {}",
+        s.checks,
+        s.passed,
+        s.failed,
+        s.findings,
+        outcome.report_html().display()
+    ));
+    let failed: Vec<&String> = report
+        .checks
+        .iter()
+        .filter(|c| !c.passed())
+        .map(|c| &c.id)
+        .collect();
+    record
+        .detail("summary", &report.summary)
+        .detail("report_json", outcome.report_json())
+        .detail("report_html", outcome.report_html())
+        .detail("figures", &outcome.figures)
+        .detail("failed_checks", failed);
+    record
 }
 
 #[cfg(test)]

@@ -91,15 +91,29 @@ fn render_json_record_has_the_documented_fields() {
     ]);
     assert!(out.status.success(), "{}", text(&out.stderr));
     let record: Value = serde_json::from_slice(&out.stdout).unwrap();
-    assert_eq!(record["command"], "render");
-    assert_eq!(record["inputs"]["settings"]["integrator"], "path");
-    assert_eq!(record["inputs"]["settings"]["fresnel"], "schlick");
-    assert_eq!(record["inputs"]["settings"]["spp"], 2);
-    assert_eq!(record["unit"], "rays/s");
-    assert!(record["answer"]["rays_total"].as_u64().unwrap() >= 32 * 24 * 2);
-    assert!(record["answer"]["rays_per_second"].as_f64().unwrap() > 0.0);
-    assert_eq!(record["answer"]["png"], png_arg);
-    assert!(record["steps"].is_array());
+    assert_eq!(record["law"], "render");
+    // The flags as given, and the settings as settled.
+    assert_eq!(record["inputs"]["integrator"], "path");
+    assert_eq!(record["inputs"]["spp"], 2);
+    assert_eq!(record["inputs"]["output"], png_arg);
+    assert_eq!(record["details"]["settings"]["integrator"], "path");
+    assert_eq!(record["details"]["settings"]["fresnel"], "schlick");
+    assert_eq!(record["details"]["settings"]["spp"], 2);
+    assert_eq!(record["unit"], "");
+    assert!(record["details"]["rays_total"].as_u64().unwrap() >= 32 * 24 * 2);
+    assert!(record["details"]["rays_per_second"].as_f64().unwrap() > 0.0);
+    assert_eq!(record["details"]["png"], png_arg);
+    let pfm = png.with_extension("pfm");
+    assert_eq!(
+        record["answer"],
+        serde_json::json!([png_arg, pfm.to_str().unwrap()])
+    );
+    let steps = record["steps"].as_array().unwrap();
+    assert_eq!(steps.len(), 1, "the summary line: {steps:?}");
+    assert!(
+        steps[0].as_str().unwrap().contains("32×24 path"),
+        "{steps:?}"
+    );
 }
 
 #[test]
@@ -271,11 +285,11 @@ fn inspect_reports_needs_and_measures_the_skipped_shadow_rays() {
     ]);
     assert!(out.status.success(), "{}", text(&out.stderr));
     let record: Value = serde_json::from_slice(&out.stdout).unwrap();
-    assert_eq!(record["command"], "inspect");
-    let needs = &record["answer"]["needs"];
+    assert_eq!(record["law"], "inspect");
+    let needs = &record["answer"];
     assert_eq!(needs["shadows"], false);
     assert_eq!(needs["reflection_depth"], "none");
-    let skipped = record["answer"]["skipped"].as_array().unwrap();
+    let skipped = record["details"]["skipped"].as_array().unwrap();
     let shadow = skipped.iter().find(|s| s["part"] == "shadow_rays").unwrap();
     // One shadow ray per lit pixel of the sphere would have been cast.
     assert!(shadow["extra_rays"].as_i64().unwrap() > 0);
@@ -330,14 +344,13 @@ fn inspect_takes_every_setting_render_takes() {
     ]);
     assert!(out.status.success(), "{}", text(&out.stderr));
     let record: Value = serde_json::from_slice(&out.stdout).unwrap();
-    let settings = &record["inputs"]["settings"];
+    let settings = &record["details"]["settings"];
     assert_eq!(settings["integrator"], "path");
     assert_eq!(settings["spp"], 2);
     assert_eq!(settings["max_depth"], 3);
     assert_eq!(settings["fresnel"], "schlick");
     assert_eq!(settings["seed"], 9);
-    assert_eq!(
-        record["answer"]["needs"]["reflection_depth"]["up_to_max_depth"],
-        3
-    );
+    assert_eq!(record["answer"]["reflection_depth"]["up_to_max_depth"], 3);
+    assert_eq!(record["inputs"]["max_depth"], 3);
+    assert_eq!(record["inputs"]["seed"], 9);
 }

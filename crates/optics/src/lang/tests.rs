@@ -6,6 +6,20 @@ use crate::error::usage_text;
 use clap::Parser;
 use std::collections::BTreeSet;
 
+#[cfg(feature = "harness")]
+mod harness_kinds;
+mod render_kinds;
+
+/// The operating system's message that examples quote.
+fn os_error() -> std::io::Error {
+    std::io::Error::other("no space left on device")
+}
+
+/// The names a message is expected to quote verbatim.
+fn named(names: &[&str]) -> Vec<String> {
+    names.iter().map(|&name| name.to_owned()).collect()
+}
+
 /// One example of every kind, each with the text it quotes verbatim in
 /// both languages: the names the user wrote, and messages from outside the
 /// suite (the argument parser's, serde's, the operating system's).
@@ -18,7 +32,6 @@ fn every_kind() -> Vec<(Error, Vec<String>)> {
     let foreign_text = usage_text(&foreign_usage);
     let our_usage = usage(&["optics", "reflect", "--wi", "0,1", "--normal", "0,0,1"]);
     let json_error = || serde_json::from_str::<serde_json::Value>("{").unwrap_err();
-    let os_error = || std::io::Error::other("no space left on device");
     let named = |name: &str| vec![name.to_owned()];
     let laws = crate::batch::LAWS.join(", ");
     let mut kinds: Vec<(ErrorKind, Vec<String>)> = vec![
@@ -123,13 +136,10 @@ fn every_kind() -> Vec<(Error, Vec<String>)> {
             ErrorKind::Encode(json_error()),
             vec![json_error().to_string()],
         ),
-        // Untyped carries the text of a subcommand whose messages have no
-        // kind yet; it is quoted as written, behind a Hungarian lead-in.
-        (
-            ErrorKind::Untyped(anyhow::anyhow!("scene a.json: cannot read a.json")),
-            vec!["scene a.json: cannot read a.json".into()],
-        ),
     ];
+    kinds.extend(render_kinds::examples());
+    #[cfg(feature = "harness")]
+    kinds.extend(harness_kinds::examples());
     for expected in Expected::ALL {
         let error = DomainError::OutOfRange {
             name: "--eta".into(),
@@ -175,11 +185,31 @@ fn slot(kind: &ErrorKind) -> usize {
         ErrorKind::ReadLine { .. } => 17,
         ErrorKind::Write(_) => 18,
         ErrorKind::Encode(_) => 19,
-        ErrorKind::Untyped(_) => 20,
+        ErrorKind::Scene { error, .. } => CALCULATOR + render_kinds::scene_slot(error.kind()),
+        ErrorKind::Output(error) => CALCULATOR + render_kinds::output_slot(error),
+        ErrorKind::Threads(_) => CALCULATOR + render_kinds::THREADS,
+        #[cfg(feature = "harness")]
+        ErrorKind::Checkout(error) => {
+            CALCULATOR + render_kinds::SLOTS + harness_kinds::checkout_slot(error)
+        }
+        #[cfg(feature = "harness")]
+        ErrorKind::Pipeline(error) => {
+            CALCULATOR + render_kinds::SLOTS + harness_kinds::pipeline_slot(error)
+        }
+        #[cfg(feature = "harness")]
+        ErrorKind::ChecksFailed { .. } => {
+            CALCULATOR + render_kinds::SLOTS + harness_kinds::CHECKS_FAILED
+        }
     }
 }
 
-const SLOTS: usize = 21;
+/// The calculator's own kinds' slots.
+const CALCULATOR: usize = 20;
+
+#[cfg(feature = "harness")]
+const SLOTS: usize = CALCULATOR + render_kinds::SLOTS + harness_kinds::SLOTS;
+#[cfg(not(feature = "harness"))]
+const SLOTS: usize = CALCULATOR + render_kinds::SLOTS;
 
 /// The words of four letters or more, lower-cased.
 fn words(text: &str) -> BTreeSet<String> {
@@ -252,11 +282,14 @@ fn the_json_error_names_its_kind_and_field() {
 }
 
 #[test]
-fn typed_errors_survive_the_trip_through_anyhow() {
-    let typed = anyhow::Error::from(Error::from(ErrorKind::LawMissing));
-    assert!(matches!(Error::from(typed).kind(), ErrorKind::LawMissing));
-    let domain = anyhow::Error::from(domain::cosine("cos_i", 2.0).unwrap_err());
-    assert_eq!(Error::from(domain).field().as_deref(), Some("cos_i"));
-    let untyped = Error::from(anyhow::anyhow!("something else"));
-    assert_eq!(untyped.kind().name(), "untyped");
+fn a_render_error_becomes_the_kind_of_what_failed() {
+    let output = tracer::output::OutputError::PfmIsPng {
+        path: "a.pfm".into(),
+    };
+    let error = Error::from(tracer::job::RenderError::Output(output));
+    assert_eq!(error.kind().name(), "output.pfm_is_png");
+    assert_eq!(error.field().as_deref(), Some("--output"));
+    let threads = render_kinds::thread_pool_error();
+    let error = Error::from(tracer::job::RenderError::Threads(threads));
+    assert_eq!(error.kind().name(), "threads");
 }

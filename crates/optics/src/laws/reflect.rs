@@ -1,10 +1,10 @@
 //! `optics reflect`: the mirror direction, by the law of reflection.
 
 use super::note_normalized;
+use crate::error::Result;
 use crate::input::{Vec3Arg, Via};
 use crate::lang::{say, Lang};
 use crate::record::{number, vector, Answer, Record};
-use anyhow::Result;
 use radiometry::specular::reflect;
 use serde::Deserialize;
 

@@ -1,10 +1,10 @@
 //! `optics refract`: the refracted direction, by Snell's law in vector form.
 
 use super::note_normalized;
+use crate::error::Result;
 use crate::input::{Vec3Arg, Via};
 use crate::lang::{say, Lang};
 use crate::record::{number, vector, Answer, Record};
-use anyhow::Result;
 use glam::DVec3;
 use radiometry::snell::Incidence;
 use radiometry::specular::{reflect, refract_resolved};

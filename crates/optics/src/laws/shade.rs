@@ -2,10 +2,10 @@
 //! light, by one of the course's BRDFs.
 
 use super::note_normalized;
+use crate::error::Result;
 use crate::input::{Vec3Arg, Via};
 use crate::lang::{say, Lang};
 use crate::record::{number, vector, Answer, Record};
-use anyhow::Result;
 use glam::DVec3;
 use radiometry::brdf::{
     half_vector, BlinnPhong, BlinnPhongReciprocal, Brdf, CourseLambert, Lambert, Phong,

@@ -2,12 +2,12 @@
 //! `lambert`, `critical-angle` and `blinn-phong`, each also a law of
 //! `optics batch`.
 
+use crate::error::Result;
 use crate::error::{Error, ErrorKind};
 use crate::input::{Vec3Arg, Via};
 use crate::lang::{say, Lang};
 use crate::laws::{ShadeArgs, ShadeModel};
 use crate::record::{number, percent, Answer, Record};
-use anyhow::Result;
 use radiometry::fresnel::f0;
 use radiometry::snell::critical_angle;
 use serde::Deserialize;
@@ -169,7 +169,7 @@ impl CriticalAngleArgs {
                 name_outside: via.name("n_outside"),
                 n_outside: n_out,
             };
-            return Err(Error::from(kind).into());
+            return Err(Error::from(kind));
         };
         record.step(format!(
             "sin θc = n_out / n = {} / {} = {}",

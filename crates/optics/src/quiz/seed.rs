@@ -3,10 +3,10 @@
 
 use super::exercises::{BlinnPhongArgs, CriticalAngleArgs, F0Args, LambertArgs};
 use super::statements::question_one;
+use crate::error::Result;
 use crate::input::{Vec3Arg, Via};
 use crate::lang::{say, Lang};
 use crate::record::{number, Answer, Record};
-use anyhow::Result;
 use serde_json::Value;
 
 /// A record's answer as a number (NaN if it has none).

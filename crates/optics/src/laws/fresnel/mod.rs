@@ -6,11 +6,11 @@
 //! indices of the [`Incidence`], the exact law's `cos θt`, and the cosine
 //! Schlick took (`SchlickDielectric::cosine`); [`working`] narrates them.
 
+use crate::error::Result;
 use crate::error::{Error, ErrorKind};
 use crate::input::Via;
 use crate::lang::{say, Lang};
 use crate::record::{Answer, Record};
-use anyhow::Result;
 use radiometry::fresnel::{dielectric_resolved, schlick_dielectric_resolved};
 use radiometry::snell::Incidence;
 use serde::Deserialize;
@@ -117,13 +117,13 @@ impl FresnelArgs {
                 let deg = via.finite("theta_i_deg", deg)?;
                 if !(0.0..=180.0).contains(&deg) {
                     let name = via.name("theta_i_deg");
-                    return Err(Error::from(ErrorKind::AngleDegrees { name, value: deg }).into());
+                    return Err(Error::from(ErrorKind::AngleDegrees { name, value: deg }));
                 }
                 deg.to_radians().cos()
             }
             _ => {
                 let (cosine, angle) = (via.name("cos_i"), via.name("theta_i_deg"));
-                return Err(Error::from(ErrorKind::CosineOrAngle { cosine, angle }).into());
+                return Err(Error::from(ErrorKind::CosineOrAngle { cosine, angle }));
             }
         };
         if kappa > 0.0 && cos_i < 0.0 {
@@ -132,7 +132,7 @@ impl FresnelArgs {
             } else {
                 "theta_i_deg"
             });
-            return Err(Error::from(ErrorKind::ConductorFromInside { name, cos_i }).into());
+            return Err(Error::from(ErrorKind::ConductorFromInside { name, cos_i }));
         }
         Ok(cos_i)
     }

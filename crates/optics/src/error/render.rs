@@ -1,0 +1,42 @@
+//! The errors of `render` and `inspect`, the tracer's, as the command
+//! reports them: each kind's stable name. Their fields are the tracer's
+//! own (the JSON path of a scene error), or `--output` for an image.
+
+use radiometry::domain::DomainError;
+use tracer::output::OutputError;
+use tracer::scene::ErrorKind as Scene;
+
+/// The name of a scene error's kind: `scene.` and the tracer's kind.
+pub fn scene_name(kind: &Scene) -> &'static str {
+    match kind {
+        Scene::Read { .. } => "scene.read",
+        Scene::Syntax { .. } => "scene.syntax",
+        Scene::Schema { .. } => "scene.schema",
+        Scene::TypeMissing => "scene.type_missing",
+        Scene::TypeNotString { .. } => "scene.type_not_a_string",
+        Scene::Version { .. } => "scene.version",
+        Scene::NotACount { .. } => "scene.not_a_count",
+        Scene::TooManyPixels { .. } => "scene.too_many_pixels",
+        Scene::Domain(DomainError::NotFinite { .. }) => "scene.domain.not_finite",
+        Scene::Domain(DomainError::OutOfRange { .. }) => "scene.domain.out_of_range",
+        Scene::Domain(DomainError::ZeroVector { .. }) => "scene.domain.zero_vector",
+        Scene::DirectionUnrepresentable => "scene.direction_unrepresentable",
+        Scene::TargetIsEye => "scene.target_is_eye",
+        Scene::UpAlongView => "scene.up_along_view",
+        Scene::FieldOfView { .. } => "scene.field_of_view",
+        Scene::FarNotBeyondNear { .. } => "scene.far_not_beyond_near",
+        Scene::UnknownMaterial { .. } => "scene.unknown_material",
+        Scene::DielectricWithoutInside => "scene.dielectric_without_inside",
+        Scene::CourseHasNoRefraction => "scene.course_has_no_refraction",
+    }
+}
+
+/// The name of an image-writing error's kind: `output.` and the kind.
+pub fn output_name(error: &OutputError) -> &'static str {
+    match error {
+        OutputError::Io { .. } => "output.io",
+        OutputError::NoDirectory { .. } => "output.no_directory",
+        OutputError::PfmIsPng { .. } => "output.pfm_is_png",
+        OutputError::Png { .. } => "output.png",
+    }
+}

@@ -1,0 +1,126 @@
+//! The harness's errors in Hungarian: no checkout, a pipeline that could
+//! not run to the end. Each is an exhaustive `match` over the harness's
+//! kinds.
+
+use validation::checkout::{CheckoutError, Via, ENV};
+use validation::pipeline::PipelineError;
+use validation::python::{Task, ToolError};
+use validation::reference::ReferenceError;
+use validation::regenerate::RegenerateError;
+
+use super::render::output_hu;
+
+/// No usable checkout: what named the directory, and what it lacks.
+pub fn checkout_hu(error: &CheckoutError) -> String {
+    match error {
+        CheckoutError::NotACheckout { via, path, marker } => format!(
+            "{} {}: nem a programcsomag munkapéldánya (nincs benne {marker})",
+            via_hu(*via),
+            path.display()
+        ),
+        CheckoutError::NotFound { start } => format!(
+            "nem található a programcsomag munkapéldánya: adja meg a --checkout DIR \
+             kapcsolót, állítsa be az {ENV}=DIR változót, vagy futtassa egy munkapéldányon \
+             belülről (egyik sem tartalmazza ezt: {})",
+            start.display()
+        ),
+    }
+}
+
+fn via_hu(via: Via) -> &'static str {
+    match via {
+        Via::Explicit => "--checkout",
+        Via::Environment => ENV,
+        Via::Search => "a munkakönyvtár",
+        Via::BuildTime => "e fordítás munkapéldánya",
+    }
+}
+
+/// A pipeline that could not run to the end, led by the flag that sets
+/// what it concerns.
+pub fn pipeline_hu(error: &PipelineError) -> String {
+    let message = match error {
+        PipelineError::OutNotADirectory { path } => format!(
+            "a(z) {} kimeneti könyvtár létezik, de nem könyvtár",
+            path.display()
+        ),
+        PipelineError::CreateDir { path, source } => format!(
+            "a(z) {} könyvtár nem hozható létre: {source}",
+            path.display()
+        ),
+        PipelineError::NoRequirements { path } => format!(
+            "{} nem található: a Python-oldal a programcsomag munkapéldányából fut",
+            path.display()
+        ),
+        PipelineError::Write(error) => output_hu(error),
+        PipelineError::Reference(error) => reference_hu(error),
+        PipelineError::Tool(error) | PipelineError::Regenerate(RegenerateError::Tool(error)) => {
+            tool_hu(error)
+        }
+        PipelineError::Regenerate(RegenerateError::Undecided {
+            file,
+            status,
+            stderr,
+        }) => format!(
+            "a python-checks/reproduce.py nem tudta eldönteni, egyezik-e {file} ({status}): \
+             {stderr}"
+        ),
+    };
+    match crate::error::harness::pipeline_lead(error) {
+        Some(lead) => format!("{}: {message}", lead.hu),
+        None => message,
+    }
+}
+
+fn reference_hu(error: &ReferenceError) -> String {
+    match error {
+        ReferenceError::Io { path, source } => {
+            format!("a(z) {} referencia nem olvasható: {source}", path.display())
+        }
+        ReferenceError::Malformed {
+            path,
+            field,
+            message,
+        } => format!(
+            "a(z) {} referencia hibás itt: `{field}`: {message}",
+            path.display()
+        ),
+        ReferenceError::Schema {
+            path,
+            found,
+            expected,
+        } => format!(
+            "a(z) {} referencia sémája `{found}`, a várt séma `{expected}`",
+            path.display()
+        ),
+    }
+}
+
+fn tool_hu(error: &ToolError) -> String {
+    match error {
+        ToolError::Start {
+            what,
+            program,
+            source,
+        } => format!("{}: a(z) {program} nem indítható: {source}", task_hu(what)),
+        ToolError::Failed {
+            what,
+            status,
+            stderr_tail,
+        } => format!("{}: sikertelen ({status}):\n{stderr_tail}", task_hu(what)),
+    }
+}
+
+fn task_hu(task: &Task) -> String {
+    match task {
+        Task::CreateEnvironment { base } => format!(
+            "a virtuális környezet létrehozása a(z) `{} -m venv` paranccsal (telepítve van a Python 3?)",
+            base.display()
+        ),
+        Task::InstallRequirements => {
+            "a python-checks/requirements.txt telepítése pip-pel".to_owned()
+        }
+        Task::CheckPins => "a telepített Python-csomagok ellenőrzése".to_owned(),
+        Task::Script(script) => script.clone(),
+    }
+}

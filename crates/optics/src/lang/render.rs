@@ -1,0 +1,86 @@
+//! The tracer's errors in Hungarian: a scene refused, an image not
+//! written. Each is an exhaustive `match` over the tracer's kinds.
+
+use std::path::Path;
+
+use tracer::output::OutputError;
+use tracer::scene::{ErrorKind as Scene, SceneError, MAX_PIXELS, SCHEMA_VERSION};
+
+use super::domain_hu;
+
+/// A refused scene: the file, the JSON path (where the message does not
+/// name its subject itself), and what is wrong.
+pub fn scene_hu(file: &Path, error: &SceneError) -> String {
+    let file = file.display();
+    let what = scene_kind_hu(error.kind());
+    match error.kind() {
+        Scene::Read { .. } | Scene::Domain(_) => format!("a(z) {file} jelenet: {what}"),
+        _ => format!("a(z) {file} jelenet: {}: {what}", error.field()),
+    }
+}
+
+fn scene_kind_hu(kind: &Scene) -> String {
+    match kind {
+        Scene::Read { file, source } => format!("a(z) {file} fájl nem olvasható: {source}"),
+        Scene::Syntax {
+            message,
+            line,
+            column,
+        } => format!("hibás JSON ({line}. sor, {column}. oszlop): {message}"),
+        Scene::Schema { message } => {
+            format!("nem felel meg a jelenetleírás sémájának: {message}")
+        }
+        Scene::TypeMissing => "hiányzik: minden kamera, anyag, objektum és fény megnevezi a \
+                               fajtáját (\"type\")"
+            .to_owned(),
+        Scene::TypeNotString { got } => {
+            format!("a fajtát megnevező szövegnek kell lennie, kapott érték: {got}")
+        }
+        Scene::Version { got } => format!(
+            "ez a sugárkövető a(z) {SCHEMA_VERSION}. változatú jelenetleírást olvassa, \
+             kapott változat: {got}"
+        ),
+        Scene::NotACount { value, min, max } => {
+            format!("{min} és {max} közötti egész számnak kell lennie, kapott érték: {value}")
+        }
+        Scene::TooManyPixels { width, height } => {
+            format!("{width} × {height} képpont több a megengedett {MAX_PIXELS} képpontnál")
+        }
+        Scene::Domain(error) => domain_hu(error),
+        Scene::DirectionUnrepresentable => "f32-ben ábrázolható iránynak kell lennie".to_owned(),
+        Scene::TargetIsEye => "különböznie kell a camera.eye értékétől".to_owned(),
+        Scene::UpAlongView => "nem lehet párhuzamos a nézés irányával".to_owned(),
+        Scene::FieldOfView { degrees } => {
+            format!("a (0, 180) fok tartományba kell esnie, kapott érték: {degrees}")
+        }
+        Scene::FarNotBeyondNear { near, far } => {
+            format!("a camera.near ({near}) mögött kell lennie, kapott érték: {far}")
+        }
+        Scene::UnknownMaterial { name, defined } => {
+            format!("nincs {name:?} nevű anyag; a jelenet anyagai: {defined:?}")
+        }
+        Scene::DielectricWithoutInside => "a dielektrikumhoz belső térrel bíró zárt felület \
+                                           kell: csak gömb lehet dielektrikum"
+            .to_owned(),
+        Scene::CourseHasNoRefraction => "a kurzus árnyalójában nincs fénytörés; a \
+                                         dielektrikumokat a --integrator whitted vagy path \
+                                         kapcsolóval kell renderelni"
+            .to_owned(),
+    }
+}
+
+/// An image that could not be written: the file, and why.
+pub fn output_hu(error: &OutputError) -> String {
+    match error {
+        OutputError::Io { path, source } => format!("a(z) {path} nem írható: {source}"),
+        OutputError::NoDirectory { path, dir } => {
+            format!("a(z) {path} nem írható: a(z) {dir} könyvtár nem létezik")
+        }
+        OutputError::PfmIsPng { path } => {
+            format!("{path}: a PNG nevét kell megadni (a PFM mellé kerül)")
+        }
+        OutputError::Png { path, source } => {
+            format!("a(z) {path} nem kódolható PNG-ként: {source}")
+        }
+    }
+}
