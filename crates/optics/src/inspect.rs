@@ -10,7 +10,7 @@ use tracer::needs::{Needs, ReflectionDepth};
 use tracer::render::Rendered;
 
 use crate::error;
-use crate::lang::{say, Lang};
+use crate::lang::{needs, say, Lang};
 use crate::record::{Answer, Record};
 use crate::render::JobArgs;
 use crate::Ui;
@@ -194,9 +194,12 @@ fn needs_steps(needs: &Needs, deepest: u32, lang: Lang) -> Vec<String> {
     let lights: Vec<String> = needs
         .lights
         .iter()
-        .map(|l| match l.reason {
-            None => format!("{} {}", l.index, l.kind),
-            Some(r) => format!("{} {} ({})", l.index, l.kind, r),
+        .map(|l| {
+            let kind = needs::light_kind(l.kind, lang);
+            match l.reason {
+                None => format!("{} {kind}", l.index),
+                Some(r) => format!("{} {kind} ({})", l.index, needs::unused(r, lang)),
+            }
         })
         .collect();
     let lights = if lights.is_empty() {

@@ -7,6 +7,7 @@ use radiometry::domain::{self, DomainError, Expected};
 
 #[cfg(feature = "harness")]
 mod harness;
+pub mod needs;
 mod render;
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]

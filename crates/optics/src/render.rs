@@ -14,7 +14,7 @@ use tracer::scene::{FresnelModel, IntegratorKind, RenderSpec, Settings};
 use tracer::scene::{MAX_DEPTH, MAX_IMAGE_SIDE, MAX_SPP};
 
 use crate::error::{self, ErrorKind};
-use crate::lang::{say, Lang};
+use crate::lang::{needs, say, Lang};
 use crate::record::{Answer, Record};
 use crate::Ui;
 
@@ -208,8 +208,8 @@ pub(crate) fn steps(
             "light {} ({}) skipped: {}",
             "{}. fény ({}) kihagyva: {}",
             light.index,
-            light.kind,
-            light.reason.unwrap_or_default()
+            needs::light_kind(light.kind, lang),
+            light.reason.map_or("", |r| needs::unused(r, lang))
         ));
     }
     if machinery.spp < settings.spp {

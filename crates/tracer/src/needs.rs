@@ -36,12 +36,55 @@ pub enum ReflectionDepth {
 pub struct LightUse {
     /// Its index in `lights`.
     pub index: usize,
-    /// `directional` or `point`.
-    pub kind: &'static str,
+    /// What kind of light it is.
+    pub kind: LightKind,
     /// Whether it can light anything.
     pub used: bool,
     /// Why not, when it is not.
-    pub reason: Option<&'static str>,
+    pub reason: Option<Unused>,
+}
+
+/// The kinds of light a scene can hold.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum LightKind {
+    /// A directional light (parallel rays, irradiance).
+    Directional,
+    /// A point light (radiant intensity).
+    Point,
+}
+
+/// Why a light can light nothing in a scene.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Unused {
+    /// Its power is zero in every channel.
+    EmitsNothing,
+    /// No surface is shaded from lights (only mirrors, glass, flat colours).
+    NothingShaded,
+    /// A closed mirror tube around the camera keeps its light out.
+    OutsideClosedTube,
+}
+
+impl std::fmt::Display for LightKind {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            LightKind::Directional => "directional",
+            LightKind::Point => "point",
+        })
+    }
+}
+
+impl std::fmt::Display for Unused {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            Unused::EmitsNothing => "it emits nothing",
+            Unused::NothingShaded => "no surface is shaded from lights",
+            Unused::OutsideClosedTube => {
+                "the closed mirror tube around the camera keeps its light out"
+            }
+        })
+    }
 }
 
 /// The effects a scene needs under given settings.
@@ -97,15 +140,15 @@ pub fn analyse(scene: &Scene, settings: &Settings) -> Needs {
         .enumerate()
         .map(|(index, light)| {
             let (kind, power) = match *light {
-                Light::Directional { irradiance, .. } => ("directional", irradiance),
-                Light::Point { intensity, .. } => ("point", intensity),
+                Light::Directional { irradiance, .. } => (LightKind::Directional, irradiance),
+                Light::Point { intensity, .. } => (LightKind::Point, intensity),
             };
             let reason = if power.max_element() <= 0.0 {
-                Some("it emits nothing")
+                Some(Unused::EmitsNothing)
             } else if !rough {
-                Some("no surface is shaded from lights")
+                Some(Unused::NothingShaded)
             } else if enclosing.is_some_and(|tube| !reaches_inside(tube, light)) {
-                Some("the closed mirror tube around the camera keeps its light out")
+                Some(Unused::OutsideClosedTube)
             } else {
                 None
             };
