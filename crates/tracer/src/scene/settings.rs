@@ -44,13 +44,15 @@ impl fmt::Display for IntegratorKind {
     }
 }
 
-/// Which Fresnel law the smooth materials use.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, Serialize)]
+/// Which Fresnel law: the smooth materials' in a render, and the law
+/// `optics fresnel --model` evaluates (exact by default in both).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Deserialize, Serialize)]
 #[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
 #[serde(rename_all = "snake_case")]
 pub enum FresnelModel {
     /// The exact equations (`radiometry::fresnel::conductor_rgb`, `dielectric`).
     #[cfg_attr(feature = "clap", value(help = "The exact Fresnel equations"))]
+    #[default]
     Exact,
     /// Schlick's approximation (`radiometry::fresnel::schlick_rgb`, `schlick_dielectric`).
     #[cfg_attr(feature = "clap", value(help = "Schlick's approximation"))]
@@ -63,6 +65,16 @@ pub enum FresnelModel {
         value(help = "The course shader's reversed form, for measuring that erratum alone")
     )]
     Course,
+}
+
+impl fmt::Display for FresnelModel {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            FresnelModel::Exact => "exact",
+            FresnelModel::Schlick => "schlick",
+            FresnelModel::Course => "course",
+        })
+    }
 }
 
 /// How a secondary ray's origin is moved off the surface it leaves.

@@ -11,37 +11,20 @@ use crate::error::{Error, ErrorKind};
 use crate::input::Via;
 use crate::lang::{say, Lang};
 use crate::record::{Answer, Record};
-use radiometry::fresnel::{dielectric_resolved, schlick_dielectric_resolved};
+use radiometry::fresnel::{
+    conductor_polarized, dielectric_resolved, f0, schlick_dielectric_resolved,
+};
 use radiometry::snell::Incidence;
 use serde::Deserialize;
+pub use tracer::scene::FresnelModel;
 use working::{
-    exact_conductor, exact_dielectric, narrate_incidence, schlick_for_conductor,
+    course_form, exact_conductor, exact_dielectric, narrate_incidence, schlick_for_conductor,
     schlick_for_dielectric,
 };
 
 #[cfg(test)]
 mod tests;
 mod working;
-
-/// Which Fresnel law to evaluate.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum, Deserialize)]
-#[serde(rename_all = "lowercase")]
-pub enum FresnelModel {
-    /// The exact Fresnel equations.
-    #[default]
-    Exact,
-    /// Schlick's approximation, F0 + (1 − F0)(1 − cos θ)⁵.
-    Schlick,
-}
-
-impl FresnelModel {
-    fn name(self) -> &'static str {
-        match self {
-            FresnelModel::Exact => "exact",
-            FresnelModel::Schlick => "schlick",
-        }
-    }
-}
 
 /// Fresnel reflectance of a smooth interface.
 #[derive(clap::Args, Clone, Debug, Deserialize)]
@@ -74,7 +57,7 @@ pub struct FresnelArgs {
     #[arg(long)]
     #[serde(default)]
     pub theta_i_deg: Option<f64>,
-    /// The law: exact, or Schlick's approximation.
+    /// The law: exact, Schlick's approximation, or the course shader's reversed form.
     #[arg(long, value_enum, default_value_t)]
     #[serde(default)]
     pub model: FresnelModel,
@@ -102,6 +85,14 @@ impl FresnelArgs {
             }
             (FresnelModel::Schlick, true) => {
                 schlick_for_conductor(&mut record, lang, &incidence, eta, kappa)
+            }
+            (FresnelModel::Course, conductor) => {
+                let exact = if conductor {
+                    conductor_polarized(incidence.abs_cos_i, eta, kappa).reflectance()
+                } else {
+                    dielectric_resolved(&incidence).reflectance()
+                };
+                course_form(&mut record, lang, &incidence, f0(eta, kappa), exact)
             }
         };
         record.answer = Answer::Number(reflectance);
@@ -148,6 +139,8 @@ impl FresnelArgs {
             (FresnelModel::Exact, Lang::En) => "exact",
             (FresnelModel::Exact, Lang::Hu) => "pontos",
             (FresnelModel::Schlick, _) => "Schlick",
+            (FresnelModel::Course, Lang::En) => "the course shader's form",
+            (FresnelModel::Course, Lang::Hu) => "a kurzus shaderének alakja",
         };
         let mut record = Record::new(
             "fresnel",
@@ -163,7 +156,7 @@ impl FresnelArgs {
             Some(deg) => record.input("theta_i_deg", deg),
             None => record.input("cos_i", cos_i),
         };
-        record.input("model", self.model.name());
+        record.input("model", self.model.to_string());
         record
     }
 }

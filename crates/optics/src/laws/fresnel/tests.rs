@@ -115,3 +115,28 @@ fn schlick_working_narrates_the_cosine_the_law_took() {
         }
     }
 }
+
+/// `--model course` is the course shader's law as the tracer's
+/// `--fresnel course` evaluates it, beside the exact law, bit for bit.
+#[test]
+fn course_working_reports_the_course_shaders_own_numbers() {
+    for (eta, cos_i) in CASES {
+        let f_0 = radiometry::fresnel::f0(eta, 0.0);
+        let course = radiometry::course::fresnel_000_glsl(f_0, cos_i.abs());
+        let exact = dielectric_polarized(cos_i, eta).reflectance();
+        let record = solve(eta, cos_i, FresnelModel::Course);
+        let at = format!("eta {eta}, cos_i {cos_i}");
+        assert_eq!(answer(&record).to_bits(), course.to_bits(), "{at}");
+        assert_eq!(
+            detail(&record, "exact").map(f64::to_bits),
+            Some(exact.to_bits()),
+            "{at}"
+        );
+        assert_eq!(
+            detail(&record, "error").map(f64::to_bits),
+            Some((course - exact).to_bits()),
+            "{at}"
+        );
+        assert!(has_step(&record, "course − exact"), "{at}");
+    }
+}

@@ -2,6 +2,7 @@
 
 use crate::lang::{say, Lang};
 use crate::record::{number, Record};
+use radiometry::course;
 use radiometry::fresnel::{
     conductor_polarized, f0, schlick, DielectricFresnel, SchlickCosine, SchlickDielectric,
 };
@@ -149,7 +150,14 @@ pub(super) fn schlick_for_dielectric(
     if let Some(cos) = working.cosine_used() {
         step_schlick(record, working.f0, cos, working.reflectance);
     }
-    compare_with_exact(record, lang, working.f0, working.reflectance, exact)
+    compare_with_exact(
+        record,
+        lang,
+        "Schlick",
+        working.f0,
+        working.reflectance,
+        exact,
+    )
 }
 
 /// Schlick's approximation at a conductor, with the incident cosine,
@@ -166,7 +174,33 @@ pub(super) fn schlick_for_conductor(
     let r = schlick(incidence.abs_cos_i, f_0);
     step_schlick(record, f_0, incidence.abs_cos_i, r);
     let exact = conductor_polarized(incidence.abs_cos_i, eta, kappa).reflectance();
-    compare_with_exact(record, lang, f_0, r, exact)
+    compare_with_exact(record, lang, "Schlick", f_0, r, exact)
+}
+
+/// The course shader's Fresnel (`000`'s GLSL `Fresnel`), `F0 + (1 − F0)
+/// cos⁵θ` at the incident cosine, as `optics render --fresnel course`
+/// evaluates it, compared with the exact law; its `R`.
+pub(super) fn course_form(
+    record: &mut Record,
+    lang: Lang,
+    incidence: &Incidence<f64>,
+    f_0: f64,
+    exact: f64,
+) -> f64 {
+    step_f0(record, f_0);
+    let cos = incidence.abs_cos_i;
+    let r = course::fresnel_000_glsl(f_0, cos);
+    record.step(say!(
+        lang,
+        "the course shader's R = F0 + (1 − F0) cos⁵θ = {} + {}·{}⁵ = {} (Schlick's term is (1 − cos θ)⁵: this is the Fresnel effect backwards)",
+        "a kurzus shadere szerint R = F0 + (1 − F0) cos⁵θ = {} + {}·{}⁵ = {} (Schlick tagja (1 − cos θ)⁵: ez a Fresnel-hatás fordítva)",
+        number(f_0),
+        number(1.0 - f_0),
+        number(cos),
+        number(r)
+    ));
+    let label = lang.pick("course", "kurzus");
+    compare_with_exact(record, lang, label, f_0, r, exact)
 }
 
 fn step_f0(record: &mut Record, f_0: f64) {
@@ -186,12 +220,21 @@ fn step_schlick(record: &mut Record, f_0: f64, cos: f64, r: f64) {
     ));
 }
 
-fn compare_with_exact(record: &mut Record, lang: Lang, f_0: f64, r: f64, exact: f64) -> f64 {
+/// `R` of an approximation (`label`) beside the exact law's, and its error.
+fn compare_with_exact(
+    record: &mut Record,
+    lang: Lang,
+    label: &str,
+    f_0: f64,
+    r: f64,
+    exact: f64,
+) -> f64 {
     record.step(say!(
         lang,
-        "for comparison, the exact law gives R = {}: Schlick − exact = {}",
-        "összevetésül a pontos képlet: R = {}, Schlick − pontos = {}",
+        "for comparison, the exact law gives R = {}: {} − exact = {}",
+        "összevetésül a pontos képlet: R = {}, {} − pontos = {}",
         number(exact),
+        label,
         number(r - exact)
     ));
     record
