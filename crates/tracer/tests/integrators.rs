@@ -41,11 +41,7 @@ fn lambert_plane_under_a_directional_light_matches_kd_over_pi_e_cos_for_every_in
         "lights": [ { "type": "directional", "towards": [theta.sin(), theta.cos(), 0], "irradiance": [2, 2, 2] } ]
     }));
     let expected = Vec3::new(0.5, 0.25, 0.75) / std::f32::consts::PI * 2.0 * 0.5;
-    for integrator in [
-        IntegratorKind::Local,
-        IntegratorKind::Whitted,
-        IntegratorKind::Path,
-    ] {
+    for integrator in common::LAW_INTEGRATORS {
         let s = Settings {
             spp: 8,
             ..settings(integrator)
@@ -453,11 +449,7 @@ fn lambert_sphere_in_a_uniform_sky_reflects_albedo_times_the_sky() {
         }),
     );
     let expected = Vec3::new(0.9, 0.5, 0.1) * 0.4;
-    for integrator in [
-        IntegratorKind::Local,
-        IntegratorKind::Whitted,
-        IntegratorKind::Path,
-    ] {
+    for integrator in common::LAW_INTEGRATORS {
         let s = Settings {
             spp: 4,
             ..settings(integrator)

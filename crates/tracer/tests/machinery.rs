@@ -45,11 +45,7 @@ fn every_course_scene_loads_and_renders() {
 #[test]
 fn skipping_unused_machinery_leaves_the_image_unchanged() {
     for (name, scene) in course_scenes() {
-        for integrator in [
-            IntegratorKind::Local,
-            IntegratorKind::Whitted,
-            IntegratorKind::Path,
-        ] {
+        for integrator in common::LAW_INTEGRATORS {
             let s = Settings {
                 spp: 2,
                 ..Settings {

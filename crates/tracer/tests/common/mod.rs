@@ -12,7 +12,14 @@ use tracer::integrator::{Machinery, RayCounts, Tracer};
 use tracer::job::RenderJob;
 use tracer::render::Image;
 use tracer::rng::Pcg32;
-use tracer::scene::{self, Scene, Settings};
+use tracer::scene::{self, IntegratorKind, Scene, Settings};
+
+/// The integrators built from the laws: all but the course's shader.
+pub const LAW_INTEGRATORS: [IntegratorKind; 3] = [
+    IntegratorKind::Local,
+    IntegratorKind::Whitted,
+    IntegratorKind::Path,
+];
 
 /// The course's gold (`000`), a conductor of index `n + iκ` per channel.
 pub const GOLD_N: [f64; 3] = [0.17, 0.35, 1.5];
