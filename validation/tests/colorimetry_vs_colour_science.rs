@@ -8,7 +8,6 @@ mod tables;
 use radiometry::colour::{self, Lab};
 use validation::colorimetry::{self, Colorimetry, ColourLaws};
 use validation::reference::committed_dir;
-use validation::Check;
 
 fn reference() -> Colorimetry {
     Colorimetry::load(&committed_dir()).expect("committed colorimetry reference")
@@ -16,21 +15,11 @@ fn reference() -> Colorimetry {
 
 #[test]
 fn colorimetry_agrees_with_colour_science() {
-    let checks = colorimetry::check_all(&ColourLaws::radiometry(), &reference());
-    for check in &checks {
-        println!("{} ({} cases)", check.id, check.cases);
-        for m in &check.metrics {
-            println!("  {:<45} {:>10.3e}  at {}", m.name, m.worst, m.at);
-        }
-    }
-    let failures: Vec<_> = checks.iter().flat_map(|c| &c.failures).collect();
-    assert!(failures.is_empty(), "{failures:#?}");
-    assert!(checks.iter().all(Check::passed));
-    results::assert_settled(&results::Section::deterministic(
+    tables::assert_passed_and_settled(
         "colour-vs-colour-science",
         "cargo test -p validation --test colorimetry_vs_colour_science",
-        &tables::metrics(&checks),
-    ));
+        &colorimetry::check_all(&ColourLaws::radiometry(), &reference()),
+    );
 }
 
 /// The CIE 1976 difference, the Euclidean distance in CIELAB, in place of

@@ -16,16 +16,12 @@ fn reference() -> MetalsReference {
 #[test]
 fn spectral_metal_colours_agree_with_colour_science() {
     let check = metals::check_spectral_colours(&MetalLaws::radiometry(), &reference());
-    for m in &check.metrics {
-        println!("{:<45} {:>10.3e}  at {}", m.name, m.worst, m.at);
-    }
-    assert!(check.passed(), "{:#?}", check.failures);
     assert_eq!(check.cases, 4 * 5, "four metals at five angles");
-    results::assert_settled(&results::Section::deterministic(
+    tables::assert_passed_and_settled(
         "metals-vs-colour-science",
         "cargo test -p validation --test metals_vs_colour_science",
-        &tables::metrics(std::slice::from_ref(&check)),
-    ));
+        std::slice::from_ref(&check),
+    );
 }
 
 #[test]
