@@ -2,6 +2,7 @@
 file beside the target, which is then renamed over it, so an interrupted run
 never leaves a truncated reference behind."""
 
+import json
 import os
 
 
@@ -18,3 +19,10 @@ def write_text(path, text):
     finally:
         if os.path.exists(temporary):
             os.remove(temporary)
+
+
+def write_json(path, document):
+    """Writes a reference `document` as the references are kept: indented by
+    one space, ending in a newline, and refused if it holds a NaN or an
+    infinity (which JSON cannot carry)."""
+    write_text(path, json.dumps(document, indent=1, allow_nan=False) + "\n")

@@ -26,13 +26,12 @@ divided by 100); sRGB is IEC 61966-2-1 (colour-science's ``XYZ_to_sRGB``, whose
 matrix is the standard's four-decimal one); CIELAB is relative to the D65
 white point of chromaticity (0.3127, 0.3290), Y = 1.
 """
-import json
 import os
 import sys
 
 import numpy as np
 import colour
-from atomic_write import write_text
+from atomic_write import write_json, write_text
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 DEFAULT_JSON = os.path.join(ROOT, "validation", "reference", "colorimetry.json")
@@ -175,7 +174,7 @@ pub const D65: [f64; SAMPLES] = [
 
 
 def main(json_path=DEFAULT_JSON, rust_path=DEFAULT_RUST):
-    write_text(json_path, json.dumps(build_reference(), indent=1, allow_nan=False) + "\n")
+    write_json(json_path, build_reference())
     write_text(rust_path, rust_tables())
 
 

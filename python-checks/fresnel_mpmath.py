@@ -40,7 +40,6 @@ step |x| * 2^-120, which never straddles the critical angle (checked). It is
 and is identically 0 in cos_i, so cond_t = 0.0 there too (at cos_i = 0 that
 limit is discontinuous; 0.0 is stored by the same convention).
 """
-import json
 import math
 import os
 import struct
@@ -48,7 +47,7 @@ import sys
 
 import mpmath
 from mpmath import mp, mpc, mpf
-from atomic_write import write_text
+from atomic_write import write_json
 
 DPS = 90
 DIGITS = 50
@@ -429,7 +428,7 @@ def build_reference():
 
 
 def main(path=DEFAULT_PATH):
-    write_text(path, json.dumps(build_reference(), indent=1, allow_nan=False) + "\n")
+    write_json(path, build_reference())
 
 
 if __name__ == "__main__":

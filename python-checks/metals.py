@@ -20,7 +20,6 @@ writes ``validation/reference/metals.json`` (schema ``metals/1``):
 The Rust side recomputes these colours with its own colorimetry and its own
 Fresnel law, and measures the colour error of the shortcuts against them.
 """
-import json
 import os
 import sys
 
@@ -29,7 +28,7 @@ from mpmath import mp
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import colorimetry
-from atomic_write import write_text  # noqa: E402
+from atomic_write import write_json  # noqa: E402
 import fresnel_mpmath as fm  # noqa: E402
 
 import mitsuba  # noqa: E402
@@ -90,7 +89,7 @@ def build_reference():
 
 
 def main(path=DEFAULT_PATH):
-    write_text(path, json.dumps(build_reference(), indent=1, allow_nan=False) + "\n")
+    write_json(path, build_reference())
 
 
 if __name__ == "__main__":

@@ -34,7 +34,6 @@ has no Python binding for it): it is the definition an implementation of the
 approximation must reproduce. For the report's figures, Mitsuba's
 reflectance of nine materials is also tabulated every degree (``curves``).
 """
-import json
 import os
 import struct
 import sys
@@ -47,7 +46,7 @@ import fresnel_mpmath as fm  # noqa: E402
 
 import drjit as dr  # noqa: E402
 import mitsuba as mi  # noqa: E402
-from atomic_write import write_text
+from atomic_write import write_json
 
 VARIANT = "scalar_rgb"
 mi.set_variant(VARIANT)
@@ -231,7 +230,7 @@ def build_reference():
 
 
 def main(path=DEFAULT_PATH):
-    write_text(path, json.dumps(build_reference(), indent=1, allow_nan=False) + "\n")
+    write_json(path, build_reference())
 
 
 if __name__ == "__main__":

@@ -29,15 +29,25 @@ def _save(fig, path):
     return path
 
 
-def _grid(n):
-    cols = 3
-    return math.ceil(n / cols), cols
+def _curve_panels(n):
+    """A figure of `n` curve panels, three to a row, 4 × 3 inches each."""
+    rows, cols = math.ceil(n / 3), 3
+    return plt.subplots(rows, cols, figsize=(4 * cols, 3 * rows), squeeze=False)
+
+
+def _finish_panels(fig, axes, used, path, **legend):
+    """Hides the panels past the first `used`, puts the legend on the first
+    and saves the figure to `path`."""
+    for ax in list(axes.flat)[used:]:
+        ax.axis("off")
+    axes.flat[0].legend(**legend)
+    fig.tight_layout()
+    return _save(fig, path)
 
 
 def fresnel_curves(report, out):
     curves = report["fresnel_curves"]
-    rows, cols = _grid(len(curves))
-    fig, axes = plt.subplots(rows, cols, figsize=(4 * cols, 3 * rows), squeeze=False)
+    fig, axes = _curve_panels(len(curves))
     for ax, c in zip(axes.flat, curves):
         ax.plot(c["angle_deg"], c["exact"], "k-", label="exact")
         ax.plot(c["angle_deg"], c["schlick"], "b--", label="Schlick (cos θi)")
@@ -47,18 +57,12 @@ def fresnel_curves(report, out):
         ax.set_ylim(0, 1.02)
         ax.set_xlabel("angle of incidence (deg)")
         ax.set_ylabel("reflectance")
-    for ax in list(axes.flat)[len(curves):]:
-        ax.axis("off")
-    axes.flat[0].legend(fontsize=8)
-    fig.tight_layout()
-    path = os.path.join(out, "fresnel_curves.png")
-    return _save(fig, path)
+    return _finish_panels(fig, axes, len(curves), os.path.join(out, "fresnel_curves.png"), fontsize=8)
 
 
 def fresnel_errors(report, out):
     curves = report["fresnel_curves"]
-    rows, cols = _grid(len(curves))
-    fig, axes = plt.subplots(rows, cols, figsize=(4 * cols, 3 * rows), squeeze=False)
+    fig, axes = _curve_panels(len(curves))
     floor = 1e-10  # below any float32 rounding; zeros are drawn here
     for ax, c in zip(axes.flat, curves):
         schlick = [max(abs(s - e), floor) for s, e in zip(c["schlick"], c["exact"])]
@@ -69,12 +73,7 @@ def fresnel_errors(report, out):
         ax.set_xlim(0, 90)
         ax.set_ylim(floor, 2)
         ax.set_xlabel("angle of incidence (deg)")
-    for ax in list(axes.flat)[len(curves):]:
-        ax.axis("off")
-    axes.flat[0].legend(fontsize=8)
-    fig.tight_layout()
-    path = os.path.join(out, "fresnel_errors.png")
-    return _save(fig, path)
+    return _finish_panels(fig, axes, len(curves), os.path.join(out, "fresnel_errors.png"), fontsize=8)
 
 
 def metal_swatches(report, out):
@@ -120,11 +119,7 @@ def metal_spectra(report, out):
         ax.set_xlabel("wavelength (nm)")
         ax.set_ylabel("reflectance")
         ax.set_xlim(360, 780)
-    for ax in list(axes.flat)[len(metals):]:
-        ax.axis("off")
-    axes.flat[0].legend(fontsize=6, ncol=2)
-    fig.tight_layout()
-    return _save(fig, os.path.join(out, "metal_spectra.png"))
+    return _finish_panels(fig, axes, len(metals), os.path.join(out, "metal_spectra.png"), fontsize=6, ncol=2)
 
 
 def delta_e_table(report, out):

@@ -10,6 +10,9 @@
 //! measured on the same table, to show what the reformulation buys: it loses
 //! up to all digits near the critical angle, near η = 1, and in T.
 
+mod tables;
+
+use tables::cell;
 use validation::laws::Laws;
 use validation::mpmath::{self, FresnelMpmath, Laws64};
 use validation::reference::committed_dir;
@@ -42,7 +45,6 @@ fn fresnel_matches_50_digit_reference_within_8_ulps() {
             let relative = check
                 .worst(&format!("{quantity} (relative)"))
                 .expect("each quantity is measured in both units");
-            let cell = |at: &str| at.replace('|', "\\|");
             table += &format!(
                 "| {law} | {quantity} | {:.2} | {} | {:.1e} | {} |\n",
                 metric.worst,

@@ -30,22 +30,10 @@ fn run(render: Renderer) -> Vec<Check> {
     checks
 }
 
-fn print(checks: &[Check]) {
-    for c in checks {
-        println!("{} cases={} passed={}", c.id, c.cases, c.passed());
-        for m in &c.metrics {
-            println!("    {} = {:.4e} at {}", m.name, m.worst, m.at);
-        }
-        for f in c.failures.iter().take(3) {
-            println!("    FAIL {f}");
-        }
-    }
-}
-
 #[test]
 fn tracer_renders_agree_with_mitsuba() {
     let checks = run(renders::tracer_render);
-    print(&checks);
+    tables::print(&checks);
     // Eight scenes by Whitted (the normals scene shows no radiance), seven by
     // path (the kaleidoscope's only light cannot reach into its tube).
     assert_eq!(

@@ -62,15 +62,12 @@ fn main() {
 }
 
 /// The section `fresnel-speed` of `docs/results.md`: time per evaluation.
-fn record(run: &results::criterion::Run) {
+fn record(run: &results::criterion::Run) -> Result<results::Section, results::Error> {
     let ids: Vec<String> = ["f32", "f64"]
         .iter()
         .flat_map(|tier| LAWS.map(|law| format!("fresnel_{tier}/{law}")))
         .collect();
-    let estimates = match run.estimates(&ids) {
-        Ok(e) => e,
-        Err(e) => return eprintln!("docs/results.md not updated: {e}"),
-    };
+    let estimates = run.estimates(&ids)?;
     let fma = if cfg!(target_feature = "fma") {
         "hardware"
     } else {
@@ -82,12 +79,9 @@ fn record(run: &results::criterion::Run) {
         let (f32_, f64_) = (per(&estimates[k]), per(&estimates[k + LAWS.len()]));
         table += &format!("| {law} | {f32_:.1} ns | {f64_:.1} ns |\n");
     }
-    let section = results::Section::measured(
+    Ok(results::Section::measured(
         "fresnel-speed",
         "cargo bench -p radiometry --bench fresnel",
         &table,
-    );
-    if let Err(e) = results::settle(&section) {
-        eprintln!("docs/results.md not updated: {e}");
-    }
+    ))
 }

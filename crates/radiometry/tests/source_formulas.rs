@@ -33,6 +33,37 @@ fn textbook_tolerance(cos_t: f64, eta: f64) -> f64 {
     32.0 * EPS + 4.0 * EPS * (1.0 + r * r) / cos_t
 }
 
+/// What a course refraction formula gives under total internal reflection.
+#[derive(Clone, Copy, Debug)]
+enum UnderTir {
+    /// NaN, from the square root of a negative discriminant.
+    Nan,
+    /// The zero vector, the formula's own signal.
+    Zero,
+}
+
+/// `formula`, a course formula's refracted direction for travel `v` through
+/// the surface z = 0 (normal +z) into relative index `eta`, is Snell's law
+/// within [`textbook_tolerance`] where light refracts, and `under_tir` where
+/// it does not.
+fn is_snells_law(
+    formula: DVec3,
+    v: DVec3,
+    eta: f64,
+    under_tir: UnderTir,
+) -> Result<(), TestCaseError> {
+    match (refract(-v, DVec3::Z, eta), under_tir) {
+        (Some(t), _) => prop_assert!(
+            (formula - t.direction).length() <= textbook_tolerance(t.cos_t, eta),
+            "{formula} vs {}",
+            t.direction
+        ),
+        (None, UnderTir::Nan) => prop_assert!(formula.is_nan(), "{formula}"),
+        (None, UnderTir::Zero) => prop_assert_eq!(formula, DVec3::ZERO),
+    }
+    Ok(())
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(2000))]
 
@@ -44,13 +75,7 @@ proptest! {
     fn course_001_slide_refraction_is_snells_law(v in travel_direction_down(), eta in relative_index_uniform()) {
         let n = DVec3::Z;
         let slide = course::refract_001_slide(v, n, 1.0 / eta);
-        match refract(-v, n, eta) {
-            Some(t) => prop_assert!(
-                (slide - t.direction).length() <= textbook_tolerance(t.cos_t, eta),
-                "{slide} vs {}", t.direction
-            ),
-            None => prop_assert!(slide.is_nan()),
-        }
+        is_snells_law(slide, v, eta, UnderTir::Nan)?;
     }
 
     /// `001`, Cg `refract(I, N, etaRatio)`: correct where light refracts
@@ -59,10 +84,7 @@ proptest! {
     fn course_001_cg_refract_is_snells_law_with_zero_vector_for_tir(v in travel_direction_down(), eta in relative_index_uniform()) {
         let n = DVec3::Z;
         let cg = course::refract_001_cg(v, n, 1.0 / eta);
-        match refract(-v, n, eta) {
-            Some(t) => prop_assert!((cg - t.direction).length() <= textbook_tolerance(t.cos_t, eta)),
-            None => prop_assert_eq!(cg, DVec3::ZERO),
-        }
+        is_snells_law(cg, v, eta, UnderTir::Zero)?;
     }
 
     /// `003`, code: `V / ns + N (cosa / ns − √disc)` with `ns = n_t / n_i`.
@@ -72,10 +94,7 @@ proptest! {
     fn course_003_code_refract_is_snells_law_with_zero_vector_for_tir(v in travel_direction_down(), eta in relative_index_uniform()) {
         let n = DVec3::Z;
         let code = course::refract_003_code(v, n, eta);
-        match refract(-v, n, eta) {
-            Some(t) => prop_assert!((code - t.direction).length() <= textbook_tolerance(t.cos_t, eta)),
-            None => prop_assert_eq!(code, DVec3::ZERO),
-        }
+        is_snells_law(code, v, eta, UnderTir::Zero)?;
     }
 }
 
@@ -175,13 +194,7 @@ proptest! {
         let sin_alpha = (1.0 - cos_alpha * cos_alpha).sqrt();
         let n_perp = course::perpendicular_003(v, n) * (1.0 / sin_alpha);
         let derived = course::refract_003_derivation(v, n, eta, n_perp);
-        match refract(-v, n, eta) {
-            Some(t) => prop_assert!(
-                (derived - t.direction).length() <= textbook_tolerance(t.cos_t, eta),
-                "{derived} vs {}", t.direction
-            ),
-            None => prop_assert!(derived.is_nan()),
-        }
+        is_snells_law(derived, v, eta, UnderTir::Nan)?;
     }
 }
 

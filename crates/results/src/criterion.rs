@@ -5,20 +5,25 @@
 use std::path::{Path, PathBuf};
 use std::time::SystemTime;
 
-use crate::Error;
+use crate::{Error, Section};
 
 /// A bench's `main`, in place of `criterion_main!`: runs `benches` (a
 /// `criterion_group!`), prints criterion's summary, and when the bench
-/// measures (see [`Run::start`]) hands the run to `record`, which writes the
-/// bench's measured section.
-pub fn main(benches: fn(), record: fn(&Run)) {
+/// measures (see [`Run::start`]) hands the run to `record`, which builds the
+/// bench's measured section from the run's estimates, and settles that
+/// section. A section that cannot be built or written (a filtered run, an
+/// unwritable document) is reported and left as it was: the measurement
+/// itself succeeded.
+pub fn main(benches: fn(), record: fn(&Run) -> Result<Section, Error>) {
     let run = Run::start();
     benches();
     ::criterion::Criterion::default()
         .configure_from_args()
         .final_summary();
     if let Some(run) = run {
-        record(&run);
+        if let Err(e) = record(&run).and_then(|section| crate::settle(&section)) {
+            eprintln!("docs/results.md not updated: {e}");
+        }
     }
 }
 

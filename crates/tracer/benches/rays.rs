@@ -68,26 +68,21 @@ fn main() {
 
 /// The section `tracer-rays` of `docs/results.md`: millions of rays per
 /// second per scene and integrator.
-fn record(run: &results::criterion::Run) {
+fn record(run: &results::criterion::Run) -> Result<results::Section, results::Error> {
     let mut table = String::from("| scene | whitted | other |\n|---|---|---|\n");
     for name in SCENES {
         let [(_, _), (other, _)] = runs(name);
         let ids = runs(name).map(|(integrator, _)| format!("rays/{name}/{integrator}"));
-        let rates = match run.estimates(&ids) {
-            Ok(e) => e
-                .iter()
-                .map(|e| e.per_second().unwrap_or(f64::NAN) / 1e6)
-                .collect::<Vec<_>>(),
-            Err(e) => return eprintln!("docs/results.md not updated: {e}"),
-        };
+        let rates: Vec<f64> = run
+            .estimates(&ids)?
+            .iter()
+            .map(|e| e.per_second().unwrap_or(f64::NAN) / 1e6)
+            .collect();
         table += &format!("| `{name}` | {:.1} | {other} {:.1} |\n", rates[0], rates[1]);
     }
-    let section = results::Section::measured(
+    Ok(results::Section::measured(
         "tracer-rays",
         "cargo bench -p tracer --bench rays",
         &format!("Millions of rays per second, one thread, 160 × 120.\n\n{table}"),
-    );
-    if let Err(e) = results::settle(&section) {
-        eprintln!("docs/results.md not updated: {e}");
-    }
+    ))
 }

@@ -1,6 +1,8 @@
 //! Bad scene files: each is refused with an error that names the JSON path
 //! of the bad value and says what was expected; none panics.
 
+mod common;
+
 use serde_json::{json, Value};
 use tracer::scene::{self, ErrorKind};
 
@@ -11,7 +13,7 @@ fn good() -> Value {
         "camera": { "type": "course_pinhole" },
         "materials": {
             "green": { "type": "lambert", "albedo": [0.1, 0.8, 0.3] },
-            "gold": { "type": "conductor", "n": [0.17, 0.35, 1.5], "kappa": [3.1, 2.7, 1.9] }
+            "gold": common::gold()
         },
         "objects": [
             { "type": "sphere", "center": [1, 1, 4], "radius": 0.8, "material": "green" },
@@ -33,6 +35,15 @@ fn with(pointer: &str, value: Value) -> String {
     }
     *at = value;
     scene.to_string()
+}
+
+/// The good scene seen through a look-at camera from the origin towards +z,
+/// with its `field` set to `value`.
+fn look_at_with(field: &str, value: Value) -> String {
+    let mut camera = json!({ "type": "look_at", "eye": [0, 0, 0], "target": [0, 0, 1], "up": [0, 1, 0],
+                             "fov_y_deg": 40, "near": 0.1, "far": 10 });
+    camera[field] = value;
+    with("/camera", camera)
 }
 
 fn error(text: &str) -> String {
@@ -275,41 +286,25 @@ fn each_refusal_carries_its_field_and_kind() {
         ),
         (
             "target is eye",
-            with(
-                "/camera",
-                json!({ "type": "look_at", "eye": [0, 0, 0], "target": [0, 0, 0], "up": [0, 1, 0],
-                        "fov_y_deg": 40, "near": 0.1, "far": 10 }),
-            ),
+            look_at_with("target", json!([0, 0, 0])),
             "camera.target",
             |k| matches!(k, ErrorKind::TargetIsEye),
         ),
         (
             "up along the view",
-            with(
-                "/camera",
-                json!({ "type": "look_at", "eye": [0, 0, 0], "target": [0, 0, 1], "up": [0, 0, 2],
-                        "fov_y_deg": 40, "near": 0.1, "far": 10 }),
-            ),
+            look_at_with("up", json!([0, 0, 2])),
             "camera.up",
             |k| matches!(k, ErrorKind::UpAlongView),
         ),
         (
             "field of view",
-            with(
-                "/camera",
-                json!({ "type": "look_at", "eye": [0, 0, 0], "target": [0, 0, 1], "up": [0, 1, 0],
-                        "fov_y_deg": 180, "near": 0.1, "far": 10 }),
-            ),
+            look_at_with("fov_y_deg", json!(180)),
             "camera.fov_y_deg",
             |k| matches!(k, ErrorKind::FieldOfView { degrees } if *degrees == 180.0),
         ),
         (
             "far before near",
-            with(
-                "/camera",
-                json!({ "type": "look_at", "eye": [0, 0, 0], "target": [0, 0, 1], "up": [0, 1, 0],
-                        "fov_y_deg": 40, "near": 1, "far": 0.5 }),
-            ),
+            look_at_with("far", json!(0.05)),
             "camera.far",
             |k| matches!(k, ErrorKind::FarNotBeyondNear { .. }),
         ),

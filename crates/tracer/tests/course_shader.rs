@@ -2,48 +2,34 @@
 //! integrator, against the laws: each test demonstrates one erratum of
 //! `docs/errata.md`.
 
+mod common;
+
+use common::{course_scene, gold, pinhole_scene, radiance_along, tracer};
 use glam::Vec3;
 use serde_json::json;
 use tracer::geometry::Ray;
-use tracer::integrator::{Machinery, RayCounts, Tracer};
 use tracer::job::RenderJob;
-use tracer::rng::Pcg32;
-use tracer::scene::{self, IntegratorKind, Scene, Settings};
-
-fn parse(value: serde_json::Value) -> Scene {
-    scene::parse(&value.to_string()).expect("test scene is valid")
-}
-
-fn course_scene(name: &str) -> Scene {
-    let path = format!("{}/scenes/{name}.json", env!("CARGO_MANIFEST_DIR"));
-    scene::load(std::path::Path::new(&path))
-        .unwrap()
-        .resized(32, 24)
-}
+use tracer::scene::{IntegratorKind, Scene, Settings};
 
 fn radiance(scene: &Scene, integrator: IntegratorKind, ray: &Ray) -> Vec3 {
     let settings = Settings {
         integrator,
         ..scene.settings
     };
-    let tracer = Tracer {
-        scene,
-        settings,
-        machinery: Machinery::everything(scene, &settings),
-    };
-    tracer.radiance(ray, &mut Pcg32::for_pixel(0, 0), &mut RayCounts::default())
+    radiance_along(scene, &settings, ray)
 }
 
 fn floor_under_point_light(height: f64) -> Scene {
-    parse(json!({
-        "version": 1,
-        "image": { "width": 4, "height": 4 },
-        "camera": { "type": "course_pinhole" },
-        "materials": { "matte": { "type": "course_rough", "ambient": [0, 0, 0], "diffuse": [0.5, 0.5, 0.5],
-                                  "specular": [0, 0, 0], "shininess": 1 } },
-        "objects": [ { "type": "sphere", "center": [0, -10, 0], "radius": 10, "material": "matte" } ],
-        "lights": [ { "type": "point", "position": [0, height, 0], "intensity": [1, 1, 1] } ]
-    }))
+    pinhole_scene(
+        4,
+        4,
+        json!({
+            "materials": { "matte": { "type": "course_rough", "ambient": [0, 0, 0], "diffuse": [0.5, 0.5, 0.5],
+                                      "specular": [0, 0, 0], "shininess": 1 } },
+            "objects": [ { "type": "sphere", "center": [0, -10, 0], "radius": 10, "material": "matte" } ],
+            "lights": [ { "type": "point", "position": [0, height, 0], "intensity": [1, 1, 1] } ]
+        }),
+    )
 }
 
 /// `normalize(hit.hitPoint - light.position)` points from the light to the
@@ -78,14 +64,15 @@ fn course_point_light_direction_is_reversed_and_does_not_fall_off() {
 /// a gold sphere reflecting an empty black sky shows 0.05 per bounce.
 #[test]
 fn course_adds_unweighted_ambient_at_every_mirror_bounce() {
-    let scene = parse(json!({
-        "version": 1,
-        "image": { "width": 4, "height": 4 },
-        "camera": { "type": "course_pinhole" },
-        "ambient": [0.05, 0.05, 0.05],
-        "materials": { "gold": { "type": "conductor", "n": [0.17, 0.35, 1.5], "kappa": [3.1, 2.7, 1.9] } },
-        "objects": [ { "type": "sphere", "center": [0, 0, 4], "radius": 1, "material": "gold" } ]
-    }));
+    let scene = pinhole_scene(
+        4,
+        4,
+        json!({
+            "ambient": [0.05, 0.05, 0.05],
+            "materials": { "gold": gold() },
+            "objects": [ { "type": "sphere", "center": [0, 0, 4], "radius": 1, "material": "gold" } ]
+        }),
+    );
     let head_on = Ray::new(Vec3::new(0.0, 0.0, -2.0), Vec3::Z);
     assert_eq!(
         radiance(&scene, IntegratorKind::Course, &head_on),
@@ -104,13 +91,8 @@ fn course_adds_unweighted_ambient_at_every_mirror_bounce() {
 /// is undefined (GLSL ES 1.00 §8.2: "Results are undefined if x < 0").
 #[test]
 fn course_kaleidoscope_feeds_pow_a_negative_cosine_at_every_mirror() {
-    let scene = course_scene("kaleidoscope");
-    let settings = scene.settings;
-    let tracer = Tracer {
-        scene: &scene,
-        settings,
-        machinery: Machinery::everything(&scene, &settings),
-    };
+    let scene = course_scene("kaleidoscope", 32, 24);
+    let tracer = tracer(&scene, scene.settings);
     let tube = 3; // objects[3] in the scene file
     let mut mirror_hits = 0;
     for y in 0..scene.height {
@@ -131,7 +113,7 @@ fn course_kaleidoscope_feeds_pow_a_negative_cosine_at_every_mirror() {
 /// physically correct kaleidoscope is lit by the ambient term alone.
 #[test]
 fn directional_light_cannot_reach_inside_the_closed_kaleidoscope() {
-    let mut scene = course_scene("kaleidoscope");
+    let mut scene = course_scene("kaleidoscope", 32, 24);
     scene.ambient = Vec3::ZERO;
     let settings = scene.settings;
     // Everything switched on, the light and its shadow rays included: the
@@ -163,15 +145,16 @@ fn directional_light_cannot_reach_inside_the_closed_kaleidoscope() {
 /// is black. Two-sided, it is shaded on the side the camera sees.
 #[test]
 fn course_far_wall_is_black_where_the_two_sided_plane_is_lit() {
-    let scene = parse(json!({
-        "version": 1,
-        "image": { "width": 4, "height": 4 },
-        "camera": { "type": "course_pinhole" },
-        "materials": { "green": { "type": "course_rough", "ambient": [0.8, 0.6, 0.4], "diffuse": [0.1, 0.8, 0.3],
-                                  "specular": [0, 0, 0], "shininess": 1 } },
-        "objects": [ { "type": "plane", "point": [0, 0, 20], "normal": [0, 0, 1], "material": "green" } ],
-        "lights": [ { "type": "directional", "towards": [1, 0.5, -1], "irradiance": [1, 1, 1] } ]
-    }));
+    let scene = pinhole_scene(
+        4,
+        4,
+        json!({
+            "materials": { "green": { "type": "course_rough", "ambient": [0.8, 0.6, 0.4], "diffuse": [0.1, 0.8, 0.3],
+                                      "specular": [0, 0, 0], "shininess": 1 } },
+            "objects": [ { "type": "plane", "point": [0, 0, 20], "normal": [0, 0, 1], "material": "green" } ],
+            "lights": [ { "type": "directional", "towards": [1, 0.5, -1], "irradiance": [1, 1, 1] } ]
+        }),
+    );
     let ahead = Ray::new(Vec3::new(0.0, 0.0, -2.0), Vec3::Z);
     assert_eq!(radiance(&scene, IntegratorKind::Course, &ahead), Vec3::ZERO);
     // kd cos θ with cos θ = 1 / 1.5 (the light's direction normalised).

@@ -4,42 +4,24 @@
 //! thread count, and robust ray offsets where a fixed epsilon fails
 //! (what a scene needs and what the renderer skips: `machinery.rs`).
 
-use glam::Vec3;
-use serde_json::json;
-use tracer::geometry::Ray;
-use tracer::integrator::{Machinery, RayCounts, Tracer};
-use tracer::job::RenderJob;
-use tracer::render::Image;
-use tracer::rng::Pcg32;
-use tracer::scene::{self, FresnelModel, IntegratorKind, RayOffset, Scene, Settings};
+mod common;
 
-fn parse(value: serde_json::Value) -> Scene {
-    scene::parse(&value.to_string()).expect("test scene is valid")
-}
+use common::{
+    course_scene, gold, parse, pinhole_scene, radiance_along, render_with, tracer, GOLD_KAPPA,
+    GOLD_N,
+};
+use glam::Vec3;
+use serde_json::{json, Value};
+use tracer::geometry::Ray;
+use tracer::integrator::RayCounts;
+use tracer::rng::Pcg32;
+use tracer::scene::{FresnelModel, IntegratorKind, RayOffset, Scene, Settings};
 
 fn settings(integrator: IntegratorKind) -> Settings {
     Settings {
         integrator,
         ..Settings::default()
     }
-}
-
-fn job(scene: &Scene, settings: &Settings) -> RenderJob {
-    RenderJob::with_settings(scene.clone(), *settings).expect("renderable")
-}
-
-fn render_with(scene: &Scene, settings: &Settings, threads: Option<usize>) -> Image {
-    job(scene, settings).render(threads, &|_| {}).unwrap().image
-}
-
-fn radiance_along(scene: &Scene, settings: &Settings, ray: &Ray) -> Vec3 {
-    let tracer = Tracer {
-        scene,
-        settings: *settings,
-        machinery: Machinery::everything(scene, settings),
-    };
-    let mut rng = Pcg32::for_pixel(settings.seed, 0);
-    tracer.radiance(ray, &mut rng, &mut RayCounts::default())
 }
 
 /// A Lambert floor (albedo 0.5, 0.25, 0.75) under a directional light of
@@ -59,11 +41,7 @@ fn lambert_plane_under_a_directional_light_matches_kd_over_pi_e_cos_for_every_in
         "lights": [ { "type": "directional", "towards": [theta.sin(), theta.cos(), 0], "irradiance": [2, 2, 2] } ]
     }));
     let expected = Vec3::new(0.5, 0.25, 0.75) / std::f32::consts::PI * 2.0 * 0.5;
-    for integrator in [
-        IntegratorKind::Local,
-        IntegratorKind::Whitted,
-        IntegratorKind::Path,
-    ] {
+    for integrator in common::LAW_INTEGRATORS {
         let s = Settings {
             spp: 8,
             ..settings(integrator)
@@ -90,14 +68,15 @@ fn lit_floor(occluder: Option<([f64; 3], f64)>, light_height: f64) -> Scene {
             json!({ "type": "sphere", "center": center, "radius": radius, "material": "floor" }),
         );
     }
-    parse(json!({
-        "version": 1,
-        "image": { "width": 4, "height": 4 },
-        "camera": { "type": "course_pinhole" },
-        "materials": { "floor": { "type": "lambert", "albedo": [0.6, 0.6, 0.6] } },
-        "objects": objects,
-        "lights": [ { "type": "point", "position": [0, light_height, 0], "intensity": [10, 10, 10] } ]
-    }))
+    pinhole_scene(
+        4,
+        4,
+        json!({
+            "materials": { "floor": { "type": "lambert", "albedo": [0.6, 0.6, 0.6] } },
+            "objects": objects,
+            "lights": [ { "type": "point", "position": [0, light_height, 0], "intensity": [10, 10, 10] } ]
+        }),
+    )
 }
 
 /// The floor's origin seen along the diagonal from (3, 3, 0).
@@ -151,29 +130,15 @@ fn shadow_ray_stops_at_the_point_light() {
 /// pixel and channel (a false alarm in 1.7 million per value).
 #[test]
 fn path_converges_to_whitted_where_only_mirrors_and_glass_scatter() {
-    let scene = parse(json!({
-        "version": 1,
-        "image": { "width": 24, "height": 18 },
-        "camera": { "type": "course_pinhole" },
-        "background": [0.2, 0.3, 0.5],
-        "materials": {
-            "gold": { "type": "conductor", "n": [0.17, 0.35, 1.5], "kappa": [3.1, 2.7, 1.9] },
-            "glass": { "type": "dielectric", "eta": 1.5 },
-            "panel": { "type": "flat", "radiance": [1.0, 0.9, 0.7] }
-        },
-        "objects": [
+    let scene = gold_and_glass_over_a_panel(
+        json!([
             { "type": "sphere", "center": [0.6, 0, 4], "radius": 0.8, "material": "gold" },
             { "type": "sphere", "center": [-0.7, 0, 3.5], "radius": 0.7, "material": "glass" },
             { "type": "plane", "point": [0, -1, 0], "normal": [0, 1, 0], "material": "panel" }
-        ],
-        "lights": [ { "type": "directional", "towards": [0, 1, 0], "irradiance": [1, 1, 1] } ]
-    }));
-    let base = Settings {
-        max_depth: 6,
-        throughput_cutoff: 0.0,
-        ..Settings::default()
-    };
-    let noisy = path_mean_within_five_standard_errors_of_whitted(&scene, base);
+        ]),
+        json!([ { "type": "directional", "towards": [0, 1, 0], "irradiance": [1, 1, 1] } ]),
+    );
+    let noisy = path_mean_within_five_standard_errors_of_whitted(&scene, FresnelModel::Exact);
     assert!(
         noisy > 50,
         "the glass must make some pixels random, got {noisy}"
@@ -187,40 +152,52 @@ fn path_converges_to_whitted_where_only_mirrors_and_glass_scatter() {
 /// tracer's certain mirror branch must carry R, as Whitted's does.
 #[test]
 fn path_converges_to_whitted_under_total_internal_reflection_with_the_course_fresnel() {
-    let scene = parse(json!({
-        "version": 1,
-        "image": { "width": 24, "height": 18 },
-        "camera": { "type": "course_pinhole" },
-        "background": [0.2, 0.3, 0.5],
-        "materials": {
-            "gold": { "type": "conductor", "n": [0.17, 0.35, 1.5], "kappa": [3.1, 2.7, 1.9] },
-            "glass": { "type": "dielectric", "eta": 1.5 },
-            "panel": { "type": "flat", "radiance": [1.0, 0.9, 0.7] }
-        },
-        "objects": [
+    let scene = gold_and_glass_over_a_panel(
+        json!([
             { "type": "sphere", "center": [0, 10, 4], "radius": 12, "material": "glass" },
             { "type": "sphere", "center": [0.5, -0.4, 4], "radius": 0.5, "material": "gold" },
             { "type": "plane", "point": [0, -1, 0], "normal": [0, 1, 0], "material": "panel" }
-        ],
-        "lights": []
-    }));
-    let base = Settings {
-        max_depth: 6,
-        throughput_cutoff: 0.0,
-        fresnel: FresnelModel::Course,
-        ..Settings::default()
-    };
+        ]),
+        json!([]),
+    );
     // Check that the scene does what it is for: somewhere the course's R
     // under total internal reflection is below 1.
     let tir_r = radiometry::course::fresnel_000_glsl(radiometry::fresnel::f0(1.5f32, 0.0), 0.3);
     assert!(tir_r < 0.9, "{tir_r}");
-    path_mean_within_five_standard_errors_of_whitted(&scene, base);
+    path_mean_within_five_standard_errors_of_whitted(&scene, FresnelModel::Course);
 }
 
-/// Renders Whitted once and the path tracer with 256 seeds, and asserts the
-/// path mean within 5 standard errors (plus f32 rounding) of Whitted at every
-/// pixel and channel. Returns how many values were random at all.
-fn path_mean_within_five_standard_errors_of_whitted(scene: &Scene, base: Settings) -> usize {
+/// The two convergence tests' scene: course gold, glass and an unlit
+/// emitter panel under a blue-grey sky, with their own `objects` and `lights`.
+fn gold_and_glass_over_a_panel(objects: Value, lights: Value) -> Scene {
+    pinhole_scene(
+        24,
+        18,
+        json!({
+            "background": [0.2, 0.3, 0.5],
+            "materials": {
+                "gold": gold(),
+                "glass": { "type": "dielectric", "eta": 1.5 },
+                "panel": { "type": "flat", "radiance": [1.0, 0.9, 0.7] }
+            },
+            "objects": objects,
+            "lights": lights
+        }),
+    )
+}
+
+/// Renders Whitted once and the path tracer with 256 seeds, both with
+/// `fresnel`, six bounces and no throughput cutoff (so that Whitted's
+/// recursion is exact), and asserts the path mean within 5 standard errors
+/// (plus f32 rounding) of Whitted at every pixel and channel. Returns how
+/// many values were random at all.
+fn path_mean_within_five_standard_errors_of_whitted(scene: &Scene, fresnel: FresnelModel) -> usize {
+    let base = Settings {
+        max_depth: 6,
+        throughput_cutoff: 0.0,
+        fresnel,
+        ..Settings::default()
+    };
     let whitted = render_with(
         scene,
         &Settings {
@@ -269,10 +246,7 @@ fn path_mean_within_five_standard_errors_of_whitted(scene: &Scene, base: Setting
 
 #[test]
 fn image_is_identical_for_any_thread_count() {
-    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/kaleidoscope_lit.json");
-    let scene = scene::load(std::path::Path::new(path))
-        .unwrap()
-        .resized(32, 24);
+    let scene = course_scene("kaleidoscope_lit", 32, 24);
     for integrator in [IntegratorKind::Whitted, IntegratorKind::Path] {
         let s = Settings {
             spp: 3,
@@ -314,11 +288,7 @@ fn fixed_epsilon_shadows_acne_far_from_the_origin_where_the_error_bound_offset_h
             ray_offset: offset,
             ..settings(IntegratorKind::Whitted)
         };
-        let tracer = Tracer {
-            scene: &scene,
-            settings: s,
-            machinery: Machinery::everything(&scene, &s),
-        };
+        let tracer = tracer(&scene, s);
         let (mut lit, mut dark) = (0, 0);
         for y in 0..scene.height {
             for x in 0..scene.width {
@@ -358,24 +328,25 @@ fn fixed_epsilon_shadows_acne_far_from_the_origin_where_the_error_bound_offset_h
 /// mirror reflect everything head-on; the exact law gives gold's F0 there.
 #[test]
 fn course_integrator_uses_the_course_fresnel_and_whitted_the_exact_law() {
-    let scene = parse(json!({
-        "version": 1,
-        "image": { "width": 4, "height": 4 },
-        "camera": { "type": "course_pinhole" },
-        "materials": {
-            "gold": { "type": "conductor", "n": [0.17, 0.35, 1.5], "kappa": [3.1, 2.7, 1.9] },
-            "white": { "type": "flat", "radiance": [1, 1, 1] }
-        },
-        "objects": [
-            { "type": "sphere", "center": [0, 0, 4], "radius": 1, "material": "gold" },
-            { "type": "sphere", "center": [0, 0, -20], "radius": 10, "material": "white" }
-        ]
-    }));
+    let scene = pinhole_scene(
+        4,
+        4,
+        json!({
+            "materials": {
+                "gold": gold(),
+                "white": { "type": "flat", "radiance": [1, 1, 1] }
+            },
+            "objects": [
+                { "type": "sphere", "center": [0, 0, 4], "radius": 1, "material": "gold" },
+                { "type": "sphere", "center": [0, 0, -20], "radius": 10, "material": "white" }
+            ]
+        }),
+    );
     let head_on = Ray::new(Vec3::new(0.0, 0.0, -2.0), Vec3::Z);
     let course = radiance_along(&scene, &settings(IntegratorKind::Course), &head_on);
     assert!((course - Vec3::ONE).abs().max_element() < 1e-6, "{course}");
     let exact = radiance_along(&scene, &settings(IntegratorKind::Whitted), &head_on);
-    let f0 = radiometry::fresnel::f0_rgb([0.17_f32, 0.35, 1.5], [3.1, 2.7, 1.9]);
+    let f0 = radiometry::fresnel::f0_rgb(GOLD_N.map(|n| n as f32), GOLD_KAPPA.map(|k| k as f32));
     assert!(
         (exact - Vec3::from_array(f0)).abs().max_element() < 1e-6,
         "{exact}"
@@ -401,14 +372,15 @@ fn course_integrator_uses_the_course_fresnel_and_whitted_the_exact_law() {
 /// sum to the sky less what falls past `max_depth` or under the cutoff.
 #[test]
 fn glass_sphere_in_a_uniform_sky_is_invisible() {
-    let scene = parse(json!({
-        "version": 1,
-        "image": { "width": 24, "height": 18 },
-        "camera": { "type": "course_pinhole" },
-        "background": [0.5, 0.5, 0.5],
-        "materials": { "glass": { "type": "dielectric", "eta": 1.5 } },
-        "objects": [ { "type": "sphere", "center": [0, 0, 3], "radius": 1.2, "material": "glass" } ]
-    }));
+    let scene = pinhole_scene(
+        24,
+        18,
+        json!({
+            "background": [0.5, 0.5, 0.5],
+            "materials": { "glass": { "type": "dielectric", "eta": 1.5 } },
+            "objects": [ { "type": "sphere", "center": [0, 0, 3], "radius": 1.2, "material": "glass" } ]
+        }),
+    );
     for fresnel in [FresnelModel::Exact, FresnelModel::Schlick] {
         let path = Settings {
             spp: 4,
@@ -442,13 +414,7 @@ fn glass_sphere_in_a_uniform_sky_is_invisible() {
 
 #[test]
 fn path_tracer_is_deterministic_per_seed() {
-    let path = concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/scenes/webgl_seven_spheres.json"
-    );
-    let scene = scene::load(std::path::Path::new(path))
-        .unwrap()
-        .resized(24, 18);
+    let scene = course_scene("webgl_seven_spheres", 24, 18);
     let with_seed = |seed| Settings {
         spp: 2,
         seed,
@@ -472,21 +438,18 @@ fn path_tracer_is_deterministic_per_seed() {
 /// the ambient term when the ambient radiance is that same sky.
 #[test]
 fn lambert_sphere_in_a_uniform_sky_reflects_albedo_times_the_sky() {
-    let scene = parse(json!({
-        "version": 1,
-        "image": { "width": 24, "height": 18 },
-        "camera": { "type": "course_pinhole" },
-        "background": [0.4, 0.4, 0.4],
-        "ambient": [0.4, 0.4, 0.4],
-        "materials": { "clay": { "type": "lambert", "albedo": [0.9, 0.5, 0.1] } },
-        "objects": [ { "type": "sphere", "center": [0, 0, 3], "radius": 1.2, "material": "clay" } ]
-    }));
+    let scene = pinhole_scene(
+        24,
+        18,
+        json!({
+            "background": [0.4, 0.4, 0.4],
+            "ambient": [0.4, 0.4, 0.4],
+            "materials": { "clay": { "type": "lambert", "albedo": [0.9, 0.5, 0.1] } },
+            "objects": [ { "type": "sphere", "center": [0, 0, 3], "radius": 1.2, "material": "clay" } ]
+        }),
+    );
     let expected = Vec3::new(0.9, 0.5, 0.1) * 0.4;
-    for integrator in [
-        IntegratorKind::Local,
-        IntegratorKind::Whitted,
-        IntegratorKind::Path,
-    ] {
+    for integrator in common::LAW_INTEGRATORS {
         let s = Settings {
             spp: 4,
             ..settings(integrator)

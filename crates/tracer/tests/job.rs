@@ -3,24 +3,23 @@
 //! its field, the integrator checked by the job itself, and the destination
 //! refused before any render.
 
+mod common;
+
 use serde_json::json;
 use tracer::job::{Overrides, RenderJob};
 use tracer::output::{Destination, OutputError};
-use tracer::scene::{self, ErrorKind, FresnelModel, IntegratorKind, RenderSpec, Scene, Settings};
+use tracer::scene::{ErrorKind, FresnelModel, IntegratorKind, RenderSpec, Scene, Settings};
 
 fn glass_scene() -> Scene {
-    scene::parse(
-        &json!({
-            "version": 1,
-            "image": { "width": 8, "height": 6 },
-            "camera": { "type": "course_pinhole" },
+    common::pinhole_scene(
+        8,
+        6,
+        json!({
             "materials": { "glass": { "type": "dielectric", "eta": 1.5 } },
             "objects": [ { "type": "sphere", "center": [0, 0, 4], "radius": 1, "material": "glass" } ],
             "render": { "integrator": "path", "spp": 4, "max_depth": 3 }
-        })
-        .to_string(),
+        }),
     )
-    .expect("test scene is valid")
 }
 
 #[test]
@@ -63,48 +62,67 @@ fn settings_are_the_defaults_under_the_scene_under_the_overrides() {
     assert_eq!(job.machinery().spp, 16);
 }
 
+/// One case per line: the overrides, the field the refusal names, and its
+/// kind.
 #[test]
 fn bad_overrides_are_refused_by_kind_and_field() {
-    let refused = |overrides: Overrides| RenderJob::new(glass_scene(), &overrides).unwrap_err();
-    let e = refused(Overrides {
-        render: RenderSpec {
-            spp: Some(0.0),
-            ..RenderSpec::default()
-        },
+    type Kind = fn(&ErrorKind) -> bool;
+    let render = |render: RenderSpec| Overrides {
+        render,
         ..Overrides::default()
-    });
-    assert_eq!(e.field(), "overrides.spp");
-    assert!(matches!(
-        e.kind(),
-        ErrorKind::NotACount { min: 1, value, .. } if *value == 0.0
-    ));
-    let e = refused(Overrides {
-        width: Some(16_384),
-        height: Some(16_384),
-        ..Overrides::default()
-    });
-    assert_eq!(e.field(), "overrides");
-    assert!(matches!(
-        e.kind(),
-        ErrorKind::TooManyPixels {
-            width: 16_384,
-            height: 16_384
-        }
-    ));
-    let e = refused(Overrides {
-        width: Some(0),
-        ..Overrides::default()
-    });
-    assert_eq!(e.field(), "overrides.width");
-    let e = refused(Overrides {
-        render: RenderSpec {
-            throughput_cutoff: Some(2.0),
-            ..RenderSpec::default()
-        },
-        ..Overrides::default()
-    });
-    assert_eq!(e.field(), "overrides.throughput_cutoff");
-    assert!(matches!(e.kind(), ErrorKind::Domain(_)));
+    };
+    let cases: [(&str, Overrides, &str, Kind); 4] = [
+        (
+            "no samples",
+            render(RenderSpec {
+                spp: Some(0.0),
+                ..RenderSpec::default()
+            }),
+            "overrides.spp",
+            |k| matches!(k, ErrorKind::NotACount { min: 1, value, .. } if *value == 0.0),
+        ),
+        (
+            "too many pixels",
+            Overrides {
+                width: Some(16_384),
+                height: Some(16_384),
+                ..Overrides::default()
+            },
+            "overrides",
+            |k| {
+                matches!(
+                    k,
+                    ErrorKind::TooManyPixels {
+                        width: 16_384,
+                        height: 16_384
+                    }
+                )
+            },
+        ),
+        (
+            "no width",
+            Overrides {
+                width: Some(0),
+                ..Overrides::default()
+            },
+            "overrides.width",
+            |k| matches!(k, ErrorKind::NotACount { min: 1, value, .. } if *value == 0.0),
+        ),
+        (
+            "cutoff above 1",
+            render(RenderSpec {
+                throughput_cutoff: Some(2.0),
+                ..RenderSpec::default()
+            }),
+            "overrides.throughput_cutoff",
+            |k| matches!(k, ErrorKind::Domain(_)),
+        ),
+    ];
+    for (name, overrides, field, kind) in cases {
+        let e = RenderJob::new(glass_scene(), &overrides).expect_err(name);
+        assert_eq!(e.field(), field, "{name}: {e}");
+        assert!(kind(e.kind()), "{name}: {:?}", e.kind());
+    }
 }
 
 /// The renderer itself refuses what an integrator cannot render, whoever

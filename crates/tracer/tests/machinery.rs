@@ -3,18 +3,12 @@
 //! shadow rule for convex objects, and the reachable bounce depth as a bound
 //! the renders respect.
 
+mod common;
+
+use common::{job, render_with};
 use tracer::job::RenderJob;
 use tracer::needs;
-use tracer::render::Image;
 use tracer::scene::{self, IntegratorKind, Scene, Settings};
-
-fn job(scene: &Scene, settings: &Settings) -> RenderJob {
-    RenderJob::with_settings(scene.clone(), *settings).expect("renderable")
-}
-
-fn render_with(scene: &Scene, settings: &Settings, threads: Option<usize>) -> Image {
-    job(scene, settings).render(threads, &|_| {}).unwrap().image
-}
 
 fn course_scenes() -> Vec<(String, Scene)> {
     let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes");
@@ -51,11 +45,7 @@ fn every_course_scene_loads_and_renders() {
 #[test]
 fn skipping_unused_machinery_leaves_the_image_unchanged() {
     for (name, scene) in course_scenes() {
-        for integrator in [
-            IntegratorKind::Local,
-            IntegratorKind::Whitted,
-            IntegratorKind::Path,
-        ] {
+        for integrator in common::LAW_INTEGRATORS {
             let s = Settings {
                 spp: 2,
                 ..Settings {

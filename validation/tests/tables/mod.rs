@@ -47,3 +47,28 @@ pub fn metrics(checks: &[Check]) -> String {
     }
     table
 }
+
+/// Prints each check's metrics (with `--nocapture`) and its first failures.
+pub fn print(checks: &[Check]) {
+    println!("{}", metrics(checks));
+    for check in checks {
+        for f in check.failures.iter().take(3) {
+            println!("{} FAIL {f}", check.id);
+        }
+    }
+}
+
+/// Prints `checks`, asserts that every one passed, and settles their
+/// [`metrics`] as the deterministic section `name` of `docs/results.md`,
+/// produced by `command`.
+pub fn assert_passed_and_settled(name: &str, command: &str, checks: &[Check]) {
+    print(checks);
+    let failures: Vec<_> = checks.iter().flat_map(|c| &c.failures).collect();
+    assert!(failures.is_empty(), "{failures:#?}");
+    assert!(checks.iter().all(Check::passed), "every check has cases");
+    results::assert_settled(&results::Section::deterministic(
+        name,
+        command,
+        &metrics(checks),
+    ));
+}
