@@ -35,8 +35,7 @@ pub enum DomainError {
         /// What was expected.
         expected: Expected,
     },
-    /// A direction with no direction: zero length (or too small to
-    /// normalise).
+    /// A direction with no direction: every component zero.
     #[error("{name} must be a non-zero direction, got ({x}, {y}, {z})")]
     ZeroVector {
         /// The input's name as the user wrote it.
@@ -320,21 +319,37 @@ impl Direction {
     }
 }
 
-/// A direction: finite components, non-zero length; normalised.
+/// A direction: finite components, not all zero; normalised.
+///
+/// Every such vector has a direction, however short or long: the vector is
+/// first scaled by a power of two that brings its largest component near 1
+/// (as `hypot` scales), so that the squared length neither underflows
+/// (`(0, 3e-162, 4e-162)`) nor overflows (`(0, 3e200, 4e200)`). A power of
+/// two scales exactly, so a vector whose squares were representable gives
+/// the same unit vector, bit for bit, as dividing it by its length.
 pub fn direction(name: &str, v: DVec3) -> Result<Direction, DomainError> {
     for (axis, c) in ["x", "y", "z"].into_iter().zip(v.to_array()) {
         finite(&format!("{name}.{axis}"), c)?;
     }
-    let zero = || DomainError::ZeroVector {
-        name: name.to_owned(),
-        x: v.x,
-        y: v.y,
-        z: v.z,
-    };
-    let unit = crate::Vector3::try_normalize(v).ok_or_else(zero)?;
+    let largest = v.abs().max_element();
+    if largest == 0.0 {
+        return Err(DomainError::ZeroVector {
+            name: name.to_owned(),
+            x: v.x,
+            y: v.y,
+            z: v.z,
+        });
+    }
+    // 2^-k with k the exponent of the largest component, applied in two
+    // halves: 2^-k alone is not representable for a subnormal component.
+    let k = largest.log2().floor() as i32;
+    let (down, down_rest) = (2f64.powi(-k / 2), 2f64.powi(-k + k / 2));
+    let scaled = v * down * down_rest;
+    let length = crate::Vector3::length(scaled);
+    let [x, y, z] = scaled.to_array();
     Ok(Direction {
-        unit,
-        given_length: v.length(),
+        unit: DVec3::new(x / length, y / length, z / length),
+        given_length: length / down / down_rest,
     })
 }
 

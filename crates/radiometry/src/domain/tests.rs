@@ -73,5 +73,56 @@ fn directions_are_normalized_and_zero_vectors_rejected() {
             .to_string(),
         "n.y must be a finite number, got NaN"
     );
-    assert!(direction("tiny", DVec3::splat(1e-320)).is_err());
+    assert!(direction("-0", DVec3::splat(-0.0)).is_err());
+}
+
+/// Within 2 ulp of 1 (0.0 + three rounded squares summed and a rounded
+/// square root), where the squared length itself under- or overflows.
+fn assert_unit(d: &Direction) {
+    let length = d.unit.length();
+    assert!(
+        (length - 1.0).abs() <= 2.0 * f64::EPSILON,
+        "|{}| = {length}",
+        d.unit
+    );
+}
+
+#[test]
+fn tiny_and_huge_directions_are_normalized_by_scaling() {
+    let cases = [
+        (DVec3::new(0.0, 3e-162, 4e-162), 5e-162),
+        (DVec3::new(0.0, 3e200, 4e200), 5e200),
+        (DVec3::new(0.0, -3e-320, 4e-320), 5e-320),
+        (DVec3::splat(f64::MAX), f64::INFINITY),
+    ];
+    for (v, length) in cases {
+        let d = direction("wi", v).unwrap();
+        assert_unit(&d);
+        // 1e-3 relative: the subnormal components carry a few digits only.
+        assert!(
+            (d.given_length - length).abs() <= 1e-3 * length || d.given_length == length,
+            "{v}: {} is not {length}",
+            d.given_length
+        );
+    }
+    let d = direction("wi", DVec3::new(0.0, 3e-162, 4e-162)).unwrap();
+    let off = (d.unit - DVec3::new(0.0, 0.6, 0.8)).abs().max_element();
+    assert!(off <= 2.0 * f64::EPSILON, "{} is not (0, 0.6, 0.8)", d.unit);
+}
+
+#[test]
+fn scaling_keeps_every_bit_of_an_ordinary_normalization() {
+    // Dividing by the length, as the course does: a power-of-two scaling
+    // changes no rounding where the squares were representable.
+    let cases = [
+        DVec3::new(1.0, 2.0, 3.0),
+        DVec3::new(-0.3, 0.1, 7.25),
+        DVec3::new(1e-100, 3e-101, -2e-100),
+        DVec3::new(6e120, -1e119, 2.5e120),
+    ];
+    for v in cases {
+        let length = v.length();
+        assert_eq!(direction("v", v).unwrap().unit, v / length, "{v}");
+        assert_eq!(direction("v", v).unwrap().given_length, length, "{v}");
+    }
 }
