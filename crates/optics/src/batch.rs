@@ -5,8 +5,10 @@
 //! `cos_i`, vectors are `[x, y, z]`). Each output line is the record that
 //! subcommand prints with `--json`, in input order; a line that cannot be
 //! evaluated yields `{"line": N, "law": ..., "error": {"kind": ...,
-//! "field": ..., "message": ...}}` and the rest go on. Lines are evaluated in parallel in blocks; the output order is the
-//! input order whatever the thread count.
+//! "field": ..., "message": ...}}` and the rest go on, whatever the line
+//! holds (bytes that are not UTF-8 included). Lines are evaluated in
+//! parallel in blocks; the output order is the input order whatever the
+//! thread count.
 
 use crate::error::{Error, ErrorKind, Result};
 use crate::input::Via;
@@ -109,29 +111,84 @@ pub fn line(number: usize, text: &str, lang: Lang) -> (String, bool) {
     });
     match outcome {
         Ok(json) => (json, true),
-        Err((law, error)) => {
-            let object = json!({ "line": number, "law": law, "error": error.to_json(lang) });
-            (object.to_string(), false)
+        Err((law, error)) => (failed_line(number, law, &error, lang), false),
+    }
+}
+
+fn failed_line(number: usize, law: Value, error: &Error, lang: Lang) -> String {
+    json!({ "line": number, "law": law, "error": error.to_json(lang) }).to_string()
+}
+
+/// A line as read: its text, or the bytes that are not UTF-8 and the
+/// 1-based column of the first byte that is not.
+type Text = std::result::Result<String, usize>;
+
+/// [`line`] for a line as read: bytes that are not UTF-8 are that line's
+/// error, and the lines around it go on.
+fn read_line(number: usize, text: &Text, lang: Lang) -> (String, bool) {
+    match text {
+        Ok(text) => line(number, text, lang),
+        Err(column) => {
+            let error = Error::from(ErrorKind::NotUtf8 { column: *column });
+            (failed_line(number, Value::Null, &error, lang), false)
         }
     }
 }
 
+#[cfg(test)]
+thread_local! {
+    /// A fault for the fuzz targets to find: bytes that are not UTF-8 stop
+    /// the whole run, as a reader of `String` lines does.
+    pub(crate) static NOT_UTF8_STOPS_THE_RUN: std::cell::Cell<bool> =
+        const { std::cell::Cell::new(false) };
+}
+
+/// The next line of `input` (number `number`), without its `\n` or
+/// `\r\n`; `None` at the end. Only the reader itself failing is an error.
+fn next_line(input: &mut impl BufRead, number: usize) -> Result<Option<Text>> {
+    let mut bytes = Vec::new();
+    let read = input.read_until(b'\n', &mut bytes);
+    let read = read.map_err(|source| ErrorKind::ReadLine {
+        line: number,
+        source,
+    })?;
+    if read == 0 {
+        return Ok(None);
+    }
+    if bytes.last() == Some(&b'\n') {
+        bytes.pop();
+        if bytes.last() == Some(&b'\r') {
+            bytes.pop();
+        }
+    }
+    let text = String::from_utf8(bytes).map_err(|e| e.utf8_error().valid_up_to() + 1);
+    #[cfg(test)]
+    if text.is_err() && NOT_UTF8_STOPS_THE_RUN.get() {
+        let source = std::io::Error::from(std::io::ErrorKind::InvalidData);
+        let line = number;
+        return Err(ErrorKind::ReadLine { line, source }.into());
+    }
+    Ok(Some(text))
+}
+
 /// Streams `input` to `output`; returns how many lines were read and how
-/// many of them gave errors.
+/// many of them gave errors. Lines are held only as they arrive, however
+/// large the block.
 pub fn run(
     args: &BatchArgs,
-    input: impl BufRead,
+    mut input: impl BufRead,
     mut output: impl Write,
     lang: Lang,
 ) -> Result<(usize, usize)> {
     let block = args.block as usize;
-    let mut lines = input.lines();
     let (mut read, mut failed) = (0usize, 0usize);
     loop {
-        let mut texts = Vec::with_capacity(block);
-        for text in lines.by_ref().take(block) {
-            let line = read + texts.len() + 1;
-            texts.push(text.map_err(|source| ErrorKind::ReadLine { line, source })?);
+        let mut texts = Vec::new();
+        while texts.len() < block {
+            match next_line(&mut input, read + texts.len() + 1)? {
+                Some(text) => texts.push(text),
+                None => break,
+            }
         }
         if texts.is_empty() {
             break;
@@ -139,7 +196,7 @@ pub fn run(
         let results: Vec<(String, bool)> = texts
             .par_iter()
             .enumerate()
-            .map(|(i, text)| line(read + i + 1, text, lang))
+            .map(|(i, text)| read_line(read + i + 1, text, lang))
             .collect();
         for (json, ok) in &results {
             let written = output.write_all(json.as_bytes());

@@ -119,6 +119,18 @@ pub enum ErrorKind {
         /// The operating system's reason.
         source: std::io::Error,
     },
+    /// A batch line whose bytes are not UTF-8 text.
+    NotUtf8 {
+        /// The 1-based column of the first byte that is not.
+        column: usize,
+    },
+    /// A result too large for `f64` from inputs that each are finite.
+    Overflow {
+        /// The quantity, as the working names it (`L_ref`, `f_r`).
+        quantity: &'static str,
+        /// The inputs it grows with, as the user wrote them.
+        inputs: Vec<String>,
+    },
     /// The output could not be written; the operating system's message.
     Write(std::io::Error),
     /// A record that could not be written as JSON; serde's message.
@@ -220,6 +232,8 @@ impl ErrorKind {
             ErrorKind::UnknownLaw { .. } => "unknown_law",
             ErrorKind::Request { .. } => "request",
             ErrorKind::ReadLine { .. } => "read_line",
+            ErrorKind::NotUtf8 { .. } => "not_utf8",
+            ErrorKind::Overflow { .. } => "overflow",
             ErrorKind::Write(_) => "write",
             ErrorKind::Encode(_) => "encode",
             ErrorKind::Scene { error, .. } => render::scene_name(error.kind()),
@@ -245,6 +259,7 @@ impl ErrorKind {
                 Some("law".to_owned())
             }
             ErrorKind::Request { path, .. } => path.clone(),
+            ErrorKind::Overflow { inputs, .. } => Some(inputs.join(", ")),
             ErrorKind::VectorParts { .. }
             | ErrorKind::VectorComponent { .. }
             | ErrorKind::CosineOrAngle { .. }
@@ -252,6 +267,7 @@ impl ErrorKind {
             | ErrorKind::MalformedJson(_)
             | ErrorKind::NotAnObject
             | ErrorKind::ReadLine { .. }
+            | ErrorKind::NotUtf8 { .. }
             | ErrorKind::Write(_)
             | ErrorKind::Encode(_)
             | ErrorKind::Threads(_) => None,
@@ -343,6 +359,15 @@ impl fmt::Display for ErrorKind {
                 message,
             } => write!(f, "{message}"),
             ErrorKind::ReadLine { line, source } => write!(f, "reading line {line}: {source}"),
+            ErrorKind::NotUtf8 { column } => write!(
+                f,
+                "the line is not UTF-8 text: the byte at column {column} is not"
+            ),
+            ErrorKind::Overflow { quantity, inputs } => write!(
+                f,
+                "{quantity} overflows: it grows with {} past the largest finite number (1.8e308); give smaller values",
+                inputs.join(", ")
+            ),
             ErrorKind::Write(error) => write!(f, "cannot write the output: {error}"),
             ErrorKind::Encode(error) => write!(f, "cannot write the result as JSON: {error}"),
             ErrorKind::Scene { file, error } => write!(f, "scene {}: {error}", file.display()),

@@ -95,6 +95,13 @@ fn hungarian(kind: &ErrorKind) -> String {
         ErrorKind::ReadLine { line, source } => {
             format!("a(z) {line}. sor nem olvasható: {source}")
         }
+        ErrorKind::NotUtf8 { column } => {
+            format!("a sor nem UTF-8 szöveg: a(z) {column}. oszlopban lévő bájt hibás")
+        }
+        ErrorKind::Overflow { quantity, inputs } => format!(
+            "{quantity} túlcsordul: {} értékével a legnagyobb véges szám (1.8e308) fölé nő; kisebb értékeket kell megadni",
+            inputs.join(", ")
+        ),
         ErrorKind::Write(error) => format!("a kimenet nem írható: {error}"),
         ErrorKind::Encode(error) => format!("az eredmény nem írható JSON-ként: {error}"),
         ErrorKind::Scene { file, error } => render::scene_hu(file, error),

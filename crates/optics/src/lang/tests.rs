@@ -132,6 +132,14 @@ fn every_kind() -> Vec<(Error, Vec<String>)> {
             vec![os_error().to_string()],
         ),
         (ErrorKind::Write(os_error()), vec![os_error().to_string()]),
+        (ErrorKind::NotUtf8 { column: 7 }, vec![]),
+        (
+            ErrorKind::Overflow {
+                quantity: "L_ref",
+                inputs: vec!["--radiance".into(), "--kd".into()],
+            },
+            vec!["L_ref".into(), "--radiance, --kd".into()],
+        ),
         (
             ErrorKind::Encode(json_error()),
             vec![json_error().to_string()],
@@ -185,6 +193,8 @@ fn slot(kind: &ErrorKind) -> usize {
         ErrorKind::ReadLine { .. } => 17,
         ErrorKind::Write(_) => 18,
         ErrorKind::Encode(_) => 19,
+        ErrorKind::NotUtf8 { .. } => 20,
+        ErrorKind::Overflow { .. } => 21,
         ErrorKind::Scene { error, .. } => CALCULATOR + render_kinds::scene_slot(error.kind()),
         ErrorKind::Output(error) => CALCULATOR + render_kinds::output_slot(error),
         ErrorKind::Threads(_) => CALCULATOR + render_kinds::THREADS,
@@ -204,7 +214,7 @@ fn slot(kind: &ErrorKind) -> usize {
 }
 
 /// The calculator's own kinds' slots.
-const CALCULATOR: usize = 20;
+const CALCULATOR: usize = 22;
 
 #[cfg(feature = "harness")]
 const SLOTS: usize = CALCULATOR + render_kinds::SLOTS + harness_kinds::SLOTS;

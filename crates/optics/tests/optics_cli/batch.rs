@@ -1,6 +1,6 @@
 //! `optics batch`: every law round-trips, and bad lines are reported in order.
 
-use crate::common::{assert_record_fields, batch, json, number, stderr, ROUND_TRIP};
+use crate::common::{assert_record_fields, batch, batch_bytes, json, number, stderr, ROUND_TRIP};
 
 #[test]
 fn batch_results_equal_the_subcommands_json_output() {
@@ -77,4 +77,35 @@ fn batch_reports_a_bad_line_and_goes_on_in_order() {
     );
     assert_eq!(results[8]["law"], "fresnel");
     assert!(results[8]["answer"].is_number());
+}
+
+#[test]
+fn a_line_that_is_not_utf8_is_its_own_error_and_the_rest_go_on() {
+    let input = b"{\"law\":\"f0\",\"n\":1.5}\n\xff\xfe\n{\"law\":\"f0\",\"n\":1.5}\r\nab\xc3\n";
+    let (results, output) = batch_bytes(&[], &[], input);
+    assert_eq!(output.status.code(), Some(1), "{}", stderr(&output));
+    assert!(stderr(&output).contains("2 of 4 lines gave errors"));
+    assert_eq!(results.len(), 4, "one record per line");
+    for good in [&results[0], &results[2]] {
+        assert!((number(&good["answer"]) - 0.04).abs() < 1e-15, "{good}");
+    }
+    for (bad, line, column) in [(&results[1], 2, 1), (&results[3], 4, 3)] {
+        assert_eq!(bad["line"], line, "{bad}");
+        assert_eq!(bad["error"]["kind"], "not_utf8", "{bad}");
+        let message = bad["error"]["message"].as_str().unwrap();
+        assert!(message.contains(&format!("column {column}")), "{message}");
+    }
+}
+
+#[test]
+fn a_block_of_four_billion_lines_is_held_only_as_lines_arrive() {
+    let request = "{\"law\":\"f0\",\"n\":1.5}\n".repeat(3);
+    let (results, output) = batch_bytes(&[], &["--block", "4294967295"], request.as_bytes());
+    assert!(
+        output.status.success(),
+        "{:?}: {}",
+        output.status,
+        stderr(&output)
+    );
+    assert_eq!(results.len(), 3);
 }

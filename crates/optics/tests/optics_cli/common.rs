@@ -38,9 +38,16 @@ pub fn batch(input: &str) -> (Vec<Value>, Output) {
 
 /// `optics <global> batch` with `input` on stdin: the output lines as JSON.
 pub fn batch_in(global: &[&str], input: &str) -> (Vec<Value>, Output) {
+    batch_bytes(global, &[], input.as_bytes())
+}
+
+/// `optics <global> batch <args>` with the bytes `input` on stdin: the
+/// output lines as JSON.
+pub fn batch_bytes(global: &[&str], args: &[&str], input: &[u8]) -> (Vec<Value>, Output) {
     let mut child = Command::new(env!("CARGO_BIN_EXE_optics"))
         .args(global)
         .arg("batch")
+        .args(args)
         .stdin(Stdio::piped())
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
@@ -50,7 +57,7 @@ pub fn batch_in(global: &[&str], input: &str) -> (Vec<Value>, Output) {
         .stdin
         .take()
         .expect("stdin is piped")
-        .write_all(input.as_bytes())
+        .write_all(input)
         .expect("stdin takes the requests");
     let output = child.wait_with_output().expect("optics batch finishes");
     let lines = stdout(&output)
