@@ -40,14 +40,13 @@ pub struct Ui {
 impl Ui {
     /// Prints a record in the chosen form.
     pub fn show(&self, record: &Record) -> error::Result<()> {
-        let mut out = std::io::stdout().lock();
-        if self.json {
-            serde_json::to_writer(&mut out, record).map_err(ErrorKind::Encode)?;
-            writeln!(out).map_err(ErrorKind::Write)?;
+        let text = if self.json {
+            let json = serde_json::to_string(record).map_err(ErrorKind::Encode)?;
+            json + "\n"
         } else {
-            write!(out, "{}", record.to_text(self.lang)).map_err(ErrorKind::Write)?;
-        }
-        Ok(())
+            record.to_text(self.lang)
+        };
+        print_out(&text)
     }
 
     /// Prints a record whose text form is its steps alone, one a line
@@ -56,11 +55,12 @@ impl Ui {
         if self.json {
             return self.show(record);
         }
-        let mut out = std::io::stdout().lock();
-        for step in &record.steps {
-            writeln!(out, "{step}").map_err(ErrorKind::Write)?;
-        }
-        Ok(())
+        let steps: String = record
+            .steps
+            .iter()
+            .map(|step| format!("{step}\n"))
+            .collect();
+        print_out(&steps)
     }
 
     /// The form chosen on a command line that did not parse: `--json` and
@@ -77,24 +77,43 @@ impl Ui {
     }
 
     /// Reports a failure: the JSON error object on stdout with `--json`,
-    /// and the message on stderr.
+    /// and the message on stderr. Where either is closed there is no one
+    /// left to tell, and the exit status says it.
     fn report(&self, error: &Error) {
         if self.json {
-            println!(
-                "{}",
-                serde_json::json!({ "error": error.to_json(self.lang) })
-            );
+            let json = serde_json::json!({ "error": error.to_json(self.lang) });
+            let _ = print_out(&format!("{json}\n"));
         }
-        match (error.kind(), self.lang) {
+        let text = match (error.kind(), self.lang) {
             // The parser's own rendering, with its usage line and hint.
-            (ErrorKind::Usage(usage), Lang::En) => eprint!("{}", usage.render()),
-            _ => eprintln!(
-                "{}: {}",
+            (ErrorKind::Usage(usage), Lang::En) => usage.render().to_string(),
+            _ => format!(
+                "{}: {}\n",
                 self.lang.pick("error", "hiba"),
                 lang::error_message(error, self.lang)
             ),
-        }
+        };
+        print_err(&text);
     }
+}
+
+/// Writes `text` to stdout, all of it or an error; the one way the
+/// commands print, so that a closed stdout is one [`ErrorKind::Write`].
+fn print_out(text: &str) -> error::Result<()> {
+    let mut out = std::io::stdout().lock();
+    let written = out.write_all(text.as_bytes()).and_then(|()| out.flush());
+    written.map_err(|e| ErrorKind::Write(e).into())
+}
+
+/// Writes `text` to stderr, where a failure has nowhere left to go.
+fn print_err(text: &str) {
+    let _ = std::io::stderr().lock().write_all(text.as_bytes());
+}
+
+/// Whether the output's reader has gone (`optics … | head`): not a failure
+/// to report but the end of the run, as for the Unix tools.
+fn reader_gone(error: &Error) -> bool {
+    matches!(error.kind(), ErrorKind::Write(e) if e.kind() == std::io::ErrorKind::BrokenPipe)
 }
 
 #[derive(Parser, Debug)]
@@ -151,7 +170,7 @@ fn run(command: &Command, ui: &Ui) -> error::Result<ExitCode> {
             Some(quiz::Exercise::Seed) => {
                 for (i, question) in quiz::seed(lang)?.iter().enumerate() {
                     if i > 0 {
-                        println!();
+                        print_out("\n")?;
                     }
                     ui.show(question)?;
                 }
@@ -175,7 +194,7 @@ fn run(command: &Command, ui: &Ui) -> error::Result<ExitCode> {
                     "optics batch: {failed} of {read} lines gave errors",
                     "optics batch: {read} sorból {failed} hibás"
                 );
-                eprintln!("{summary}");
+                print_err(&format!("{summary}\n"));
                 return Ok(ExitCode::FAILURE);
             }
         }
@@ -199,6 +218,7 @@ pub fn main_entry() -> ExitCode {
     };
     match run(&cli.command, &ui) {
         Ok(code) => code,
+        Err(error) if reader_gone(&error) => ExitCode::SUCCESS,
         Err(error) => {
             ui.report(&error);
             ExitCode::FAILURE

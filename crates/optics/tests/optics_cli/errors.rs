@@ -71,7 +71,7 @@ fn bad_input_is_refused_by_name_without_a_panic() {
             "'--wi <WI>'",
         ),
         (
-            &["reflect", "--wi", "0,1,1", "--normal", "0,0,1e-320"],
+            &["reflect", "--wi", "0,1,1", "--normal", "0,-0,0"],
             "--normal must be a non-zero direction",
         ),
         (
