@@ -30,7 +30,7 @@ pub struct RefractArgs {
     #[arg(long, allow_hyphen_values = true)]
     pub normal: Vec3Arg,
     /// Relative index n_inside / n_outside.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub eta: f64,
 }
 

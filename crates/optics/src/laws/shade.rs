@@ -2,7 +2,7 @@
 //! light, by one of the course's BRDFs.
 
 use super::note_normalized;
-use crate::error::Result;
+use crate::error::{ErrorKind, Result};
 use crate::input::{Vec3Arg, Via};
 use crate::lang::{say, Lang};
 use crate::record::{number, vector, Answer, Record};
@@ -70,18 +70,18 @@ pub struct ShadeArgs {
     #[arg(long, allow_hyphen_values = true)]
     pub view_dir: Vec3Arg,
     /// The light's L_in, W/m² on a surface facing it.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub radiance: f64,
     /// Diffuse coefficient (the albedo for `lambert`).
-    #[arg(long, default_value_t = 0.0)]
+    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
     #[serde(default)]
     pub kd: f64,
     /// Specular coefficient.
-    #[arg(long, default_value_t = 0.0)]
+    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
     #[serde(default)]
     pub ks: f64,
     /// Shininess exponent.
-    #[arg(long, default_value_t = 1.0)]
+    #[arg(long, default_value_t = 1.0, allow_hyphen_values = true)]
     #[serde(default = "one")]
     pub shine: f64,
 }
@@ -143,6 +143,7 @@ impl ShadeArgs {
         let cos_in = n.dot(l);
         record.step(format!("cos θin = N · L = {}", number(cos_in)));
         let f = model.evaluate(&mut record, Coefficients { kd, ks, shine }, n, l, v);
+        let f = model.finite("f_r", f, via, &[])?;
         let e = directional_irradiance(l_in, n, l);
         record.step(format!(
             "E = L_in cos⁺θin = {} · {} = {}",
@@ -150,7 +151,7 @@ impl ShadeArgs {
             number(cos_in.max(0.0)),
             number(e)
         ));
-        let radiance = reflected_radiance(f, e);
+        let radiance = model.finite("L_ref", reflected_radiance(f, e), via, &["radiance"])?;
         record.step(format!(
             "L_ref = f_r · E = {} · {} = {}",
             number(f),
@@ -167,6 +168,24 @@ impl ShadeArgs {
         record.answer = Answer::Number(radiance);
         record.detail("brdf", f).detail("irradiance", e);
         Ok(Shading { record, radiance })
+    }
+}
+
+impl ShadeModel {
+    /// `value`, or its overflow: finite inputs whose product is not (the
+    /// radiance and the coefficients are unbounded). The overflow names
+    /// `also` and the coefficients this model multiplies.
+    fn finite(self, quantity: &'static str, value: f64, via: Via, also: &[&str]) -> Result<f64> {
+        if value.is_finite() {
+            return Ok(value);
+        }
+        let coefficients: &[&str] = match self {
+            ShadeModel::Lambert | ShadeModel::CourseLambert => &["kd"],
+            _ => &["kd", "ks"],
+        };
+        let inputs = also.iter().chain(coefficients);
+        let inputs = inputs.map(|field| via.name(field)).collect();
+        Err(ErrorKind::Overflow { quantity, inputs }.into())
     }
 }
 

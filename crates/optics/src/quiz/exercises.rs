@@ -21,10 +21,10 @@ use serde::Deserialize;
 )]
 pub struct F0Args {
     /// Refractive index (relative to the outside medium).
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub n: f64,
     /// Extinction coefficient (0 for a dielectric).
-    #[arg(long, default_value_t = 0.0)]
+    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
     #[serde(default)]
     pub kappa: f64,
 }
@@ -79,10 +79,10 @@ pub struct LambertArgs {
     #[arg(long, allow_hyphen_values = true)]
     pub view_dir: Vec3Arg,
     /// The light's L_in, W/m² on a surface facing it.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub radiance: f64,
     /// The course's diffuse coefficient kd (f_r = kd, without 1/π).
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub kd: f64,
 }
 
@@ -131,10 +131,10 @@ impl LambertArgs {
 )]
 pub struct CriticalAngleArgs {
     /// Index of the medium the light comes from.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub n: f64,
     /// Index of the medium beyond the boundary (air: 1).
-    #[arg(long, default_value_t = 1.0)]
+    #[arg(long, default_value_t = 1.0, allow_hyphen_values = true)]
     #[serde(default = "air")]
     pub n_outside: f64,
 }
@@ -213,16 +213,16 @@ pub struct BlinnPhongArgs {
     #[arg(long, allow_hyphen_values = true)]
     pub view_dir: Vec3Arg,
     /// The light's L_in, W/m² on a surface facing it.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub radiance: f64,
     /// Specular coefficient.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub ks: f64,
     /// Shininess exponent.
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub shine: f64,
     /// Diffuse coefficient.
-    #[arg(long, default_value_t = 0.0)]
+    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
     #[serde(default)]
     pub kd: f64,
 }

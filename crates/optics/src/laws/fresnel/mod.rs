@@ -39,22 +39,23 @@ mod working;
 )]
 pub struct FresnelArgs {
     /// Relative index n_inside / n_outside (= n_t / n_i for light from outside).
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub eta: f64,
     /// Extinction coefficient of the inside; > 0 makes it a conductor (complex index eta + i·kappa).
-    #[arg(long, default_value_t = 0.0)]
+    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
     #[serde(default)]
     pub kappa: f64,
     /// Signed cosine of incidence, n·wi: > 0 from outside, < 0 from inside.
     #[arg(
         long,
         required_unless_present = "theta_i_deg",
-        conflicts_with = "theta_i_deg"
+        conflicts_with = "theta_i_deg",
+        allow_hyphen_values = true
     )]
     #[serde(default)]
     pub cos_i: Option<f64>,
     /// Angle of incidence from the outward normal in degrees, 0..180 (over 90: from inside).
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     #[serde(default)]
     pub theta_i_deg: Option<f64>,
     /// The law: exact, Schlick's approximation, or the course shader's reversed form.
