@@ -8,6 +8,7 @@
 
 mod batch;
 mod common;
+mod edge_numbers;
 mod errors;
 mod help;
 mod laws;
