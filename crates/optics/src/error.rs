@@ -259,10 +259,10 @@ impl ErrorKind {
                 Some("law".to_owned())
             }
             ErrorKind::Request { path, .. } => path.clone(),
+            ErrorKind::CosineOrAngle { cosine, angle } => Some(format!("{cosine}, {angle}")),
             ErrorKind::Overflow { inputs, .. } => Some(inputs.join(", ")),
             ErrorKind::VectorParts { .. }
             | ErrorKind::VectorComponent { .. }
-            | ErrorKind::CosineOrAngle { .. }
             | ErrorKind::EmptyLine
             | ErrorKind::MalformedJson(_)
             | ErrorKind::NotAnObject

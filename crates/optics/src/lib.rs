@@ -11,6 +11,8 @@
 
 pub mod batch;
 pub mod error;
+#[cfg(test)]
+mod fuzz;
 pub mod input;
 mod inspect;
 pub mod lang;
@@ -161,11 +163,34 @@ enum Command {
     Validate(validate::ValidateArgs),
 }
 
+/// The record of a command that evaluates one law with its flags; `None`
+/// for the others.
+fn law_record(command: &Command, lang: Lang) -> Option<error::Result<Record>> {
+    let via = Via::Flags;
+    Some(match command {
+        Command::Fresnel(args) => args.solve(via, lang),
+        Command::Refract(args) => args.solve(via, lang),
+        Command::Reflect(args) => args.solve(via, lang),
+        Command::Shade(args) => args.solve(via, lang),
+        Command::Quiz(args) => match args.exercise.as_ref()? {
+            quiz::Exercise::F0(a) => a.solve(via, lang),
+            quiz::Exercise::Lambert(a) => a.solve(via, lang),
+            quiz::Exercise::CriticalAngle(a) => a.solve(via, lang),
+            quiz::Exercise::BlinnPhong(a) => a.solve(via, lang),
+            quiz::Exercise::Seed => return None,
+        },
+        _ => return None,
+    })
+}
+
 fn run(command: &Command, ui: &Ui) -> error::Result<ExitCode> {
-    let (via, lang) = (Via::Flags, ui.lang);
+    let lang = ui.lang;
+    if let Some(record) = law_record(command, lang) {
+        ui.show(&record?)?;
+        return Ok(ExitCode::SUCCESS);
+    }
     match command {
         Command::Quiz(args) => match &args.exercise {
-            None => ui.show(&quiz::list(lang))?,
             Some(quiz::Exercise::Seed) if ui.json => ui.show(&quiz::seed_record(lang)?)?,
             Some(quiz::Exercise::Seed) => {
                 for (i, question) in quiz::seed(lang)?.iter().enumerate() {
@@ -175,15 +200,8 @@ fn run(command: &Command, ui: &Ui) -> error::Result<ExitCode> {
                     ui.show(question)?;
                 }
             }
-            Some(quiz::Exercise::F0(a)) => ui.show(&a.solve(via, lang)?)?,
-            Some(quiz::Exercise::Lambert(a)) => ui.show(&a.solve(via, lang)?)?,
-            Some(quiz::Exercise::CriticalAngle(a)) => ui.show(&a.solve(via, lang)?)?,
-            Some(quiz::Exercise::BlinnPhong(a)) => ui.show(&a.solve(via, lang)?)?,
+            _ => ui.show(&quiz::list(lang))?,
         },
-        Command::Fresnel(args) => ui.show(&args.solve(via, lang)?)?,
-        Command::Refract(args) => ui.show(&args.solve(via, lang)?)?,
-        Command::Reflect(args) => ui.show(&args.solve(via, lang)?)?,
-        Command::Shade(args) => ui.show(&args.solve(via, lang)?)?,
         Command::Batch(args) => {
             let stdin = std::io::stdin().lock();
             let stdout = std::io::BufWriter::with_capacity(1 << 16, std::io::stdout().lock());
@@ -202,6 +220,8 @@ fn run(command: &Command, ui: &Ui) -> error::Result<ExitCode> {
         Command::Inspect(args) => inspect::run(args, ui)?,
         #[cfg(feature = "harness")]
         Command::Validate(args) => return validate::run(args, ui),
+        // Evaluated by `law_record` above.
+        Command::Fresnel(_) | Command::Refract(_) | Command::Reflect(_) | Command::Shade(_) => {}
     }
     Ok(ExitCode::SUCCESS)
 }

@@ -1,0 +1,211 @@
+//! Batch lines: the course's requests mutated field by field and byte by
+//! byte, several to an input, through [`crate::batch::run`].
+
+use super::{check_error_field, check_record, edge_number, runner, Coverage, SCHEMA, VECTORS};
+use crate::batch::{self, BatchArgs, NOT_UTF8_STOPS_THE_RUN};
+use crate::lang::Lang;
+use proptest::prelude::*;
+use proptest::test_runner::TestCaseError;
+use serde_json::{json, Map, Value};
+
+/// One request of each law, as the course's quiz and the docs give them.
+fn course_requests() -> Vec<Value> {
+    vec![
+        json!({"law": "fresnel", "eta": 1.5, "cos_i": 0.3}),
+        json!({"law": "fresnel", "eta": 0.17, "kappa": 3.1, "theta_i_deg": 60, "model": "schlick"}),
+        json!({"law": "refract", "wi": [0, 0.6, 0.8], "normal": [0, 0, 1], "eta": 1.5}),
+        json!({"law": "reflect", "wi": [1, 2, 3], "normal": [0, 0, 1]}),
+        json!({"law": "shade", "model": "phong", "normal": [0, 0, 1], "light_dir": [0, 3, 4], "view_dir": [0, 4, 3], "radiance": 5, "kd": 0.2, "ks": 1.5, "shine": 3}),
+        json!({"law": "f0", "n": 1.4}),
+        json!({"law": "lambert", "normal": [0, 0, 1], "light_dir": [0, 3, 4], "view_dir": [1, 2, 3], "radiance": 5, "kd": 0.6}),
+        json!({"law": "critical_angle", "n": 10}),
+        json!({"law": "blinn_phong", "normal": [0, 0, 1], "light_dir": [0, 3, 4], "view_dir": [0, 4, 3], "radiance": 5, "ks": std::f64::consts::SQRT_2, "shine": 3}),
+    ]
+}
+
+/// A value for a field: mostly numbers and vectors at the edges, else the
+/// wrong shape.
+fn field_value() -> impl Strategy<Value = Value> {
+    prop_oneof![
+        4 => edge_number().prop_map(|x| json!(x)),
+        4 => prop::array::uniform3(edge_number()).prop_map(|v| json!(v)),
+        1 => prop::collection::vec(edge_number(), 0..5).prop_map(|v| json!(v)),
+        1 => prop::sample::select(vec![
+            json!(null), json!(true), json!("1.5"), json!({}), json!("schlick"),
+            json!("course-lambert"), json!(-1), json!([[0, 0, 1]]),
+        ]),
+    ]
+}
+
+/// How a request is changed before it is written.
+#[derive(Clone, Debug)]
+enum Change {
+    Set(usize, Value),
+    Remove(usize),
+    Unknown(Value),
+    Law(String),
+}
+
+fn change() -> impl Strategy<Value = Change> {
+    let laws: Vec<String> = SCHEMA.iter().map(|(law, _)| law.to_string()).collect();
+    prop_oneof![
+        6 => (any::<usize>(), field_value()).prop_map(|(i, v)| Change::Set(i, v)),
+        1 => any::<usize>().prop_map(Change::Remove),
+        1 => field_value().prop_map(Change::Unknown),
+        1 => prop::sample::select([laws, vec!["teleport".into()]].concat()).prop_map(Change::Law),
+    ]
+}
+
+fn apply(mut request: Map<String, Value>, change: Change) -> Map<String, Value> {
+    let law = request["law"].as_str().unwrap_or_default().to_owned();
+    let fields = super::schema(&law);
+    if fields.is_empty() {
+        return request; // an unknown law: nothing more to change
+    }
+    match change {
+        Change::Set(i, value) => {
+            let field = fields[i % fields.len()];
+            // A vector field is mostly given a vector, a number a number.
+            let value = match (&value, VECTORS.contains(&field)) {
+                (Value::Number(_), true) | (Value::Array(_), false) if i % 4 != 0 => {
+                    request.get(field).cloned().unwrap_or(value)
+                }
+                _ => value,
+            };
+            request.insert(field.to_owned(), value);
+        }
+        Change::Remove(i) => {
+            request.remove(fields[i % fields.len()]);
+        }
+        Change::Unknown(value) => {
+            request.insert("colour".into(), value);
+        }
+        Change::Law(law) => {
+            request.insert("law".into(), json!(law));
+        }
+    }
+    request
+}
+
+/// Bytes that break lines, strings, objects and UTF-8.
+const HOSTILE_BYTES: [u8; 12] = [
+    0xff, 0xfe, 0xc3, 0x80, b'\n', b'\r', b'"', b'{', b'}', b',', 0, b' ',
+];
+
+/// One line: a course request with its changes, then byte mutations.
+fn request_line() -> impl Strategy<Value = Vec<u8>> {
+    let requests = course_requests();
+    let mutation = (
+        any::<prop::sample::Index>(),
+        0..3u8,
+        prop::sample::select(HOSTILE_BYTES.to_vec()),
+    );
+    (
+        prop::sample::select(requests),
+        prop::collection::vec(change(), 0..3),
+        prop::collection::vec(mutation, 0..3),
+    )
+        .prop_map(|(request, changes, mutations)| {
+            let Value::Object(request) = request else {
+                unreachable!()
+            };
+            let request = changes.into_iter().fold(request, apply);
+            let mut bytes = Value::Object(request).to_string().into_bytes();
+            for (at, op, byte) in mutations {
+                let i = at.index(bytes.len() + 1);
+                match op {
+                    0 => bytes.insert(i, byte),
+                    1 if i < bytes.len() => drop(bytes.remove(i)),
+                    _ => bytes.truncate(i),
+                }
+            }
+            bytes
+        })
+}
+
+/// An input of a few lines, `\n` or `\r\n` between them, with or without
+/// a last newline.
+fn batch_input() -> impl Strategy<Value = Vec<u8>> {
+    (
+        prop::collection::vec(request_line(), 1..6),
+        any::<bool>(),
+        any::<bool>(),
+    )
+        .prop_map(|(lines, crlf, last)| {
+            let end: &[u8] = if crlf { b"\r\n" } else { b"\n" };
+            let mut input = lines.join(end);
+            if last {
+                input.extend_from_slice(end);
+            }
+            input
+        })
+}
+
+/// The lines the reader will see: `\n`-separated, a last empty one not.
+fn lines_of(input: &[u8]) -> Vec<&[u8]> {
+    let mut lines: Vec<&[u8]> = input.split(|&b| b == b'\n').collect();
+    if lines.last().is_some_and(|l| l.is_empty()) {
+        lines.pop();
+    }
+    lines
+}
+
+fn check_batch(input: &[u8], block: u32, coverage: &Coverage) -> Result<(), TestCaseError> {
+    let mut output = Vec::new();
+    let args = BatchArgs { block };
+    let run = batch::run(&args, input, &mut output, Lang::En);
+    prop_assert!(
+        run.is_ok(),
+        "{:?} on {:?}",
+        run.err(),
+        String::from_utf8_lossy(input)
+    );
+    let text = String::from_utf8(output).expect("the output is UTF-8");
+    let records: Vec<&str> = text.lines().collect();
+    let lines = lines_of(input);
+    prop_assert_eq!(records.len(), lines.len(), "one record per line");
+    for (i, (record, line)) in records.iter().zip(lines).enumerate() {
+        let record: Value = serde_json::from_str(record).expect("each record is JSON");
+        let Some(error) = record.get("error") else {
+            coverage.answer();
+            check_record(&record, coverage)?;
+            continue;
+        };
+        coverage.error(error);
+        prop_assert_eq!(&record["line"], &json!(i + 1));
+        let given: Vec<String> = serde_json::from_slice::<Map<String, Value>>(line)
+            .map(|m| m.keys().cloned().collect())
+            .unwrap_or_default();
+        let law = record["law"].as_str().unwrap_or_default();
+        check_error_field(error, &given, law, str::to_owned)?;
+    }
+    Ok(())
+}
+
+/// Runs the target; `Err` with the first failing case, shrunk.
+fn fuzz(cases: u32, coverage: &Coverage) -> Result<(), String> {
+    let strategy = (batch_input(), 1..4u32);
+    runner(cases)
+        .run(&strategy, |(input, block)| {
+            check_batch(&input, block, coverage)
+        })
+        .map_err(|e| e.to_string())
+}
+
+#[test]
+fn batch_lines_keep_their_promises() {
+    let (cases, coverage) = (super::cases(), Coverage::default());
+    let start = std::time::Instant::now();
+    let outcome = fuzz(cases, &coverage);
+    coverage.print("batch lines", cases, start.elapsed().as_secs_f64());
+    outcome.unwrap();
+}
+
+#[test]
+fn batch_lines_find_a_reader_that_stops_at_bytes_that_are_not_utf8() {
+    NOT_UTF8_STOPS_THE_RUN.set(true);
+    let outcome = fuzz(256, &Coverage::default());
+    NOT_UTF8_STOPS_THE_RUN.set(false);
+    let failure = outcome.expect_err("the reverted fix is found");
+    assert!(failure.contains("ReadLine"), "{failure}");
+}

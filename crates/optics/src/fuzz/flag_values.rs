@@ -1,0 +1,180 @@
+//! Flag values: every law's command line with numbers at the edges of
+//! `f64`, typed as people type them, through the parser and the law.
+
+use super::{check_error_field, check_record, number_text, runner, Coverage, SCHEMA, VECTORS};
+use crate::lang::Lang;
+use clap::{CommandFactory, FromArgMatches};
+use proptest::prelude::*;
+use proptest::test_runner::TestCaseError;
+
+/// The words before the flags: `fresnel`, `quiz f0`, ….
+fn subcommand(law: &str) -> Vec<String> {
+    match law {
+        "fresnel" | "refract" | "reflect" | "shade" => vec![law.into()],
+        quiz => vec!["quiz".into(), quiz.replace('_', "-")],
+    }
+}
+
+fn flag(field: &str) -> String {
+    format!("--{}", field.replace('_', "-"))
+}
+
+/// Text that is not a value of the flag it is given to.
+const NOT_VALUES: [&str; 10] = [
+    "", "-", "--", "abc", "1,2", "1e", "-1e", "0x10", "1,,2,3", "--eta",
+];
+
+/// A command line: the law's flags with values typed as numbers, vectors
+/// and models; `clean` when every value is one the flag takes.
+#[derive(Clone, Debug)]
+struct Line {
+    law: &'static str,
+    args: Vec<String>,
+    clean: bool,
+}
+
+fn value(field: &'static str, law: &str) -> BoxedStrategy<String> {
+    match field {
+        "model" if law == "fresnel" => prop::sample::select(vec!["exact", "schlick"])
+            .prop_map(str::to_owned)
+            .boxed(),
+        "model" => prop::sample::select(vec![
+            "lambert",
+            "course-lambert",
+            "phong",
+            "blinn-phong",
+            "blinn-phong-reciprocal",
+        ])
+        .prop_map(str::to_owned)
+        .boxed(),
+        _ if VECTORS.contains(&field) => prop::array::uniform3(number_text())
+            .prop_map(|v| v.join(","))
+            .boxed(),
+        _ => number_text().boxed(),
+    }
+}
+
+/// Whether the flag has a default.
+fn optional(law: &str, field: &str) -> bool {
+    match law {
+        "fresnel" | "f0" => ["kappa", "model"].contains(&field),
+        "shade" => ["model", "kd", "ks", "shine"].contains(&field),
+        "critical_angle" => field == "n_outside",
+        "blinn_phong" => field == "kd",
+        _ => false,
+    }
+}
+
+fn command_line() -> impl Strategy<Value = Line> {
+    (0..SCHEMA.len()).prop_flat_map(|i| {
+        let (law, fields) = SCHEMA[i];
+        let values: Vec<_> = fields
+            .iter()
+            .map(|&field| (Just(field), value(field, law), any::<bool>()))
+            .collect();
+        let spoil = (
+            any::<prop::sample::Index>(),
+            prop::sample::select(NOT_VALUES.to_vec()),
+        );
+        (values, prop::option::weighted(0.2, spoil), any::<bool>()).prop_map(
+            move |(values, spoil, json)| {
+                let mut args = vec!["optics".to_owned()];
+                args.extend(json.then(|| "--json".to_owned()));
+                args.extend(subcommand(law));
+                let mut given = Vec::new();
+                for (field, text, optional_given) in values {
+                    // Fresnel's incidence is one of two flags.
+                    let wanted = match field {
+                        "cos_i" => optional_given,
+                        "theta_i_deg" => !given.contains(&"cos_i"),
+                        _ if optional(law, field) => optional_given,
+                        _ => true,
+                    };
+                    if wanted {
+                        given.push(field);
+                        args.extend([flag(field), text]);
+                    }
+                }
+                let clean = spoil.is_none();
+                if let Some((at, text)) = spoil {
+                    let i = 2 + json as usize + at.index(args.len() - 2 - json as usize);
+                    args[i] = text.to_owned();
+                }
+                Line { law, args, clean }
+            },
+        )
+    })
+}
+
+/// The parser as built, or with the fix for negative exponents reverted:
+/// numbers no longer take values that start with `-`, as before it.
+fn parse(args: &[String], reverted: bool) -> Result<crate::Cli, clap::Error> {
+    let mut command = crate::Cli::command();
+    if reverted {
+        let numbers_refuse_hyphens = |mut c: clap::Command| {
+            let ids: Vec<String> = c.get_arguments().map(|a| a.get_id().to_string()).collect();
+            for id in ids.iter().filter(|id| !VECTORS.contains(&id.as_str())) {
+                c = c.mut_arg(id, |a| a.allow_hyphen_values(false));
+            }
+            c
+        };
+        for name in ["fresnel", "refract", "reflect", "shade"] {
+            command = command.mut_subcommand(name, numbers_refuse_hyphens);
+        }
+        command = command.mut_subcommand("quiz", |quiz| {
+            ["f0", "lambert", "critical-angle", "blinn-phong"]
+                .into_iter()
+                .fold(quiz, |q, name| {
+                    q.mut_subcommand(name, numbers_refuse_hyphens)
+                })
+        });
+    }
+    crate::Cli::from_arg_matches(&command.try_get_matches_from(args)?)
+}
+
+fn check_line(line: &Line, reverted: bool, coverage: &Coverage) -> Result<(), TestCaseError> {
+    // The parser may name any argument given, a value taken for a flag too.
+    let given = &line.args;
+    let outcome = parse(&line.args, reverted)
+        .map_err(|usage| crate::Error::from(crate::ErrorKind::Usage(usage)))
+        .and_then(|cli| crate::law_record(&cli.command, Lang::En).expect("a law's command"));
+    match outcome {
+        Ok(record) => {
+            coverage.answer();
+            check_record(
+                &serde_json::to_value(&record).expect("a record is JSON"),
+                coverage,
+            )
+        }
+        Err(error) => {
+            let json = error.to_json(Lang::En);
+            coverage.error(&json);
+            let usage = matches!(error.kind(), crate::ErrorKind::Usage(_));
+            prop_assert!(!(usage && line.clean), "{:?} refused: {json}", line.args);
+            check_error_field(&json, given, line.law, flag)
+        }
+    }
+}
+
+fn fuzz(cases: u32, reverted: bool, coverage: &Coverage) -> Result<(), String> {
+    runner(cases)
+        .run(&command_line(), |line| {
+            check_line(&line, reverted, coverage)
+        })
+        .map_err(|e| e.to_string())
+}
+
+#[test]
+fn flag_values_keep_their_promises() {
+    let (cases, coverage) = (super::cases(), Coverage::default());
+    let start = std::time::Instant::now();
+    let outcome = fuzz(cases, false, &coverage);
+    coverage.print("flag values", cases, start.elapsed().as_secs_f64());
+    outcome.unwrap();
+}
+
+#[test]
+fn flag_values_find_numbers_that_refuse_a_leading_hyphen() {
+    let failure = fuzz(256, true, &Coverage::default()).expect_err("the reverted fix is found");
+    assert!(failure.contains("refused"), "{failure}");
+}
