@@ -116,7 +116,7 @@ fn measure(
     runs: &AtomicU64,
     progress: &(dyn Fn(usize) + Sync),
 ) -> error::Result<Rendered> {
-    let mut render = || {
+    let render = || {
         let rendered = job.render_with(machinery, None, progress);
         runs.fetch_add(1, Ordering::Relaxed);
         rendered

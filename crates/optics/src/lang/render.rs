@@ -69,8 +69,8 @@ fn scene_kind_hu(kind: &Scene) -> String {
             format!("nincs {name:?} nevű anyag; a jelenet anyagai: {defined:?}")
         }
         Scene::RadianceOverflow { bound } => format!(
-            "a jelenet számai együtt legfeljebb {bound:e} W/(sr·m²) sugársűrűséget adnak, \
-             ami kívül esik az f32 tartományán ({:e}): a fényeket vagy az együtthatókat \
+            "a jelenet számai együtt legfeljebb {bound:.3e} W/(sr·m²) sugársűrűséget adnak, \
+             ami kívül esik az f32 tartományán ({:.3e}): a fényeket vagy az együtthatókat \
              kisebbre kell venni",
             f32::MAX
         ),

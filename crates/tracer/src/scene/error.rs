@@ -274,8 +274,8 @@ impl fmt::Display for ErrorKind {
             ),
             ErrorKind::RadianceOverflow { bound } => write!(
                 f,
-                "the scene's numbers together give radiance up to {bound:e} W/(sr·m²), \
-                 beyond f32 ({:e}): scale the lights or the coefficients down",
+                "the scene's numbers together give radiance up to {bound:.3e} W/(sr·m²), \
+                 beyond f32 ({:.3e}): scale the lights or the coefficients down",
                 f32::MAX
             ),
             ErrorKind::TooExpensive { rays } => write!(
