@@ -244,13 +244,19 @@ pub const WARN_RAYS: f64 = 1e10;
 impl Needs {
     /// An upper estimate of the rays a render casts, before it starts, from
     /// the branching the scene allows: a primary ray per sample, each
-    /// followed to the reachable depth `D` (one branch per bounce, or at
+    /// followed to the reachable depth `D` (the reflection depth, or under
+    /// the path tracer `max_depth` where rough surfaces bounce light; one
+    /// branch per bounce, or at
     /// glass under Whitted two, so up to `2^k` at depth `k`, capped by the
     /// throughput cutoff at `g / cutoff` branches, `g` the largest radiance
     /// gain `η²` a crossing gives), and each ray that ends at a rough
     /// surface followed by a shadow ray per used light.
     pub fn rays(&self, scene: &Scene, machinery: &Machinery, settings: &Settings) -> f64 {
         let depth = match self.reflection_depth {
+            // The path tracer bounces off rough surfaces too.
+            _ if settings.integrator == IntegratorKind::Path && self.rough_surfaces => {
+                settings.max_depth
+            }
             ReflectionDepth::None => 0,
             ReflectionDepth::One => 1,
             ReflectionDepth::UpToMaxDepth(d) => d,
