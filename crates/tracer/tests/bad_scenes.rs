@@ -233,7 +233,7 @@ fn a_missing_file_is_named() {
 fn each_refusal_carries_its_field_and_kind() {
     type Kind = fn(&ErrorKind) -> bool;
     let cases: Vec<(&str, String, &str, Kind)> = vec![
-        ("syntax", "{\"version\": 1,".into(), "?", |k| {
+        ("syntax", "{\"version\": 1,".into(), ".", |k| {
             matches!(k, ErrorKind::Syntax { line: 1, .. })
         }),
         (

@@ -77,7 +77,11 @@ fn the_estimate_bounds_the_rays_cast() {
     .iter()
     .map(|name| common::course_scene(name, 16, 12))
     .collect();
-    scenes.extend([glass_scene(0.0, 8), glass_scene(1e-3, 11), glass_scene(0.1, 40)]);
+    scenes.extend([
+        glass_scene(0.0, 8),
+        glass_scene(1e-3, 11),
+        glass_scene(0.1, 40),
+    ]);
     let mut cases = 0;
     for scene in &scenes {
         for integrator in [
@@ -99,7 +103,11 @@ fn the_estimate_bounds_the_rays_cast() {
                 continue; // glass under the course's shader
             };
             let cast = job.render(Some(1), &|_| {}).unwrap().rays.total() as f64;
-            assert!(cast <= job.rays(), "{integrator}: cast {cast} > estimated {}", job.rays());
+            assert!(
+                cast <= job.rays(),
+                "{integrator}: cast {cast} > estimated {}",
+                job.rays()
+            );
             cases += 1;
         }
     }

@@ -68,9 +68,24 @@ fn shapes_beyond_the_schema_are_refused_by_path() {
     };
     let whole_as_array = Value::Array(file.as_object().unwrap().values().cloned().collect());
     let cases = [
-        ("the scene as an array", whole_as_array.to_string(), ".", JsonType::Object),
-        ("the image as an array", set("image", json!([8, 6])), "image", JsonType::Object),
-        ("the render as an array", set("render", json!([])), "render", JsonType::Object),
+        (
+            "the scene as an array",
+            whole_as_array.to_string(),
+            ".",
+            JsonType::Object,
+        ),
+        (
+            "the image as an array",
+            set("image", json!([8, 6])),
+            "image",
+            JsonType::Object,
+        ),
+        (
+            "the render as an array",
+            set("render", json!([])),
+            "render",
+            JsonType::Object,
+        ),
         (
             "an integrator as an object",
             set("render", json!({ "integrator": { "path": null } })),
@@ -117,7 +132,13 @@ fn bytes_that_are_not_utf8_are_refused_with_their_position() {
     assert_eq!(error.field(), ".");
     // Line 2: `  "vers`, é (one character of two bytes), `ion": `, the bad byte.
     assert!(
-        matches!(error.kind(), ErrorKind::NotUtf8 { line: 2, column: 15 }),
+        matches!(
+            error.kind(),
+            ErrorKind::NotUtf8 {
+                line: 2,
+                column: 15
+            }
+        ),
         "{:?}",
         error.kind()
     );
@@ -136,9 +157,17 @@ fn a_byte_order_mark_is_ignored_and_the_nan_hint_is_given_only_for_nan() {
     scene::parse(&format!("\u{feff}{text}")).expect("as text too");
     let hint = "NaN and Infinity are not numbers";
     let nan = text.replacen("0.8", "NaN", 1);
-    assert!(refused(&nan).to_string().contains(hint), "{}", refused(&nan));
+    assert!(
+        refused(&nan).to_string().contains(hint),
+        "{}",
+        refused(&nan)
+    );
     let inf = text.replacen("0.8", "-Infinity", 1);
-    assert!(refused(&inf).to_string().contains(hint), "{}", refused(&inf));
+    assert!(
+        refused(&inf).to_string().contains(hint),
+        "{}",
+        refused(&inf)
+    );
     for other in ["{,}", "\u{1}", &text.replacen("0.8", "x", 1)] {
         let message = refused(other).to_string();
         assert!(!message.contains(hint), "{other:?}: {message}");
@@ -153,7 +182,11 @@ fn a_read_error_gives_the_reason_once() {
     assert!(message.starts_with("cannot be read: "), "{message}");
     // Told once, in the message; no cause chain to print it again.
     assert!(std::error::Error::source(&error).is_none());
-    assert_eq!(message.matches("os error").count(), 1, "{message} ({reason})");
+    assert_eq!(
+        message.matches("os error").count(),
+        1,
+        "{message} ({reason})"
+    );
 }
 
 /// The cases: products of accepted numbers beyond `f32`, refused
@@ -174,8 +207,16 @@ fn products_of_scene_numbers_beyond_f32_are_refused_at_the_material() {
     near["lights"] = json!([{ "type": "point", "position": on, "intensity": [1, 1, 1] }]);
     let near_material = format!("materials.{}", sphere["material"].as_str().unwrap());
     for (name, file, field) in [
-        ("kd 3.4e38 under a point light", lit, "materials.green".to_owned()),
-        ("ambient 1e20 and ka 1e20", ambient, format!("materials.{rough}")),
+        (
+            "kd 3.4e38 under a point light",
+            lit,
+            "materials.green".to_owned(),
+        ),
+        (
+            "ambient 1e20 and ka 1e20",
+            ambient,
+            format!("materials.{rough}"),
+        ),
         ("a point light on a lit sphere", near, near_material),
     ] {
         let error = refused(&file.to_string());
@@ -223,7 +264,11 @@ fn a_render_that_leaves_f32_is_refused_before_writing() {
         Err(RenderError::NotFinite { x, y }) => assert!(x < 4 && y < 3),
         other => panic!("rendered: {:?}", other.map(|r| r.image.pixels)),
     }
-    assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 0, "nothing written");
+    assert_eq!(
+        std::fs::read_dir(dir.path()).unwrap().count(),
+        0,
+        "nothing written"
+    );
 }
 
 /// Every course scene is within the bound and renders finite, under every

@@ -23,9 +23,9 @@ pub fn scene_hu(file: &Path, error: &SceneError) -> String {
 fn scene_kind_hu(kind: &Scene) -> String {
     match kind {
         Scene::Read { source, .. } => format!("nem olvasható: {source}"),
-        Scene::NotUtf8 { line, column } => format!(
-            "nem UTF-8 szöveg: nem UTF-8 bájt a(z) {line}. sor {column}. oszlopában"
-        ),
+        Scene::NotUtf8 { line, column } => {
+            format!("nem UTF-8 szöveg: nem UTF-8 bájt a(z) {line}. sor {column}. oszlopában")
+        }
         Scene::WrongShape { expected, got } => format!(
             "a várt JSON-típus: {}, a kapott: {}",
             json_type_hu(*expected),

@@ -25,6 +25,9 @@ use crate::geometry::Object;
 
 /// Refuses a scene whose rough surfaces can send radiance beyond `f32`.
 pub(super) fn check(scene: &Scene) -> Result<(), SceneError> {
+    if super::faults::undone(super::faults::Fault::RadianceUnbounded) {
+        return Ok(());
+    }
     let irradiance = lights_irradiance(scene);
     for (name, material) in scene.material_names.iter().zip(&scene.materials) {
         let bound = material_bound(material, scene.ambient, irradiance);
@@ -99,10 +102,13 @@ fn nearest_surface(objects: &[Object], p: DVec3) -> f64 {
                 (((p - c).length() - s.radius as f64).abs(), size)
             }
             Object::Plane(q) => (plane(q.point, q.normal), q.point.abs().max_element() as f64),
-            Object::Tube(t) => t.faces.iter().fold((f64::INFINITY, 0.0_f64), |(d, size), f| {
-                let size = size.max(f.point.abs().max_element() as f64);
-                (d.min(plane(f.point, f.normal)), size)
-            }),
+            Object::Tube(t) => t
+                .faces
+                .iter()
+                .fold((f64::INFINITY, 0.0_f64), |(d, size), f| {
+                    let size = size.max(f.point.abs().max_element() as f64);
+                    (d.min(plane(f.point, f.normal)), size)
+                }),
         };
         nearest = nearest.min(d);
         scale = scale.max(size);

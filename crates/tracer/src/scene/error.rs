@@ -188,10 +188,11 @@ impl SceneError {
         }
     }
 
-    /// The JSON path of the bad value: `.` for the whole file (or a file
-    /// that cannot be read), `?` where the JSON breaks off before a value
-    /// could be named; settings given beside the file are under
-    /// `overrides`.
+    /// The JSON path of the bad value: `.` for the whole file (a file that
+    /// cannot be read, text that is not one JSON value, JSON that breaks
+    /// off before a value could be named); settings given beside the file
+    /// are under `overrides`. A field the schema does not have (an unknown
+    /// field, or a syntax error in its value) is named as the file spells it.
     pub fn field(&self) -> &str {
         &self.field
     }

@@ -5,13 +5,12 @@
 
 use serde_json::Value;
 
+use super::faults::{self, Fault};
 use super::schema::SceneFile;
-use super::{shape, ErrorKind, SceneError};
+use super::{fields, shape, ErrorKind, SceneError};
 
-/// Bytes to text: UTF-8, a leading byte-order mark ignored (RFC 8259 §8.1
-/// lets a parser ignore it; editors on some systems write one).
+/// Bytes to text: UTF-8, or the position of the first byte that is not.
 pub(super) fn text(bytes: &[u8]) -> Result<&str, SceneError> {
-    let bytes = bytes.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(bytes);
     std::str::from_utf8(bytes).map_err(|err| {
         let good = &bytes[..err.valid_up_to()];
         let line = good.iter().filter(|&&b| b == b'\n').count() + 1;
@@ -22,15 +21,21 @@ pub(super) fn text(bytes: &[u8]) -> Result<&str, SceneError> {
     })
 }
 
-/// Parses JSON text into the schema's types; errors name the JSON path.
+/// Parses JSON text into the schema's types; errors name the JSON path. One
+/// leading byte-order mark is ignored (RFC 8259 §8.1 lets a parser ignore
+/// it; editors on some systems write one).
 pub(super) fn scene_file(text: &str) -> Result<SceneFile, SceneError> {
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     let de = &mut serde_json::Deserializer::from_str(text);
     let mut value: Value = serde_path_to_error::deserialize(&mut *de)
-        .map_err(|err| syntax(text, err.path().to_string(), err.into_inner()))?;
+        .map_err(|err| syntax(text, json_path(err.path()), err.into_inner()))?;
     // One scene per file: text after it is an error, not ignored.
-    de.end().map_err(|err| syntax(text, ".".to_owned(), err))?;
-    shape::check(&value)?;
+    if !faults::undone(Fault::TrailingTextIgnored) {
+        de.end().map_err(|err| syntax(text, ".".to_owned(), err))?;
+    }
+    if !faults::undone(Fault::ShapesUnchecked) {
+        shape::check(&value)?;
+    }
     let tagged = retag(&mut value)?;
     serde_path_to_error::deserialize(value).map_err(|err| {
         let mut path = json_path(err.path());
@@ -43,9 +48,11 @@ pub(super) fn scene_file(text: &str) -> Result<SceneFile, SceneError> {
     })
 }
 
-/// A syntax error at `path`, with its position, and the hint about NaN and
-/// Infinity only where the text there spells one.
+/// A syntax error at `path` (its part that is a field of the schema: the
+/// text may break off in a key it does not have), with its position, and
+/// the hint about NaN and Infinity only where the text there spells one.
 fn syntax(text: &str, path: String, err: serde_json::Error) -> SceneError {
+    let path = fields::known_prefix(&path).to_owned();
     let mut message = without_position(&err);
     let here = text
         .lines()

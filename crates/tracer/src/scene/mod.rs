@@ -12,6 +12,7 @@
 //! | module | what |
 //! |---|---|
 //! | [`schema`] | the file as written |
+//! | [`fields`] | the schema's fields, as the JSON paths errors name |
 //! | `json` | bytes to text to the schema, errors with their JSON path |
 //! | `shape` | the shapes serde would accept beyond the schema, refused |
 //! | [`validate`] | the schema to the model, each value in its domain |
@@ -20,13 +21,16 @@
 //! | [`settings`] | render settings as given and as settled |
 //! | [`error`] | the kinds of refusal |
 
-pub mod error;
-mod json;
-mod shape;
 pub mod bound;
+pub mod error;
+#[doc(hidden)]
+pub mod faults;
+pub mod fields;
+mod json;
 pub mod model;
 pub mod schema;
 pub mod settings;
+mod shape;
 pub mod validate;
 
 pub use error::{ErrorKind, SceneError};

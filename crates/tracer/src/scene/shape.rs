@@ -47,6 +47,9 @@ fn expect(path: &str, value: &Value, expected: JsonType) -> Result<(), SceneErro
     if got == expected {
         Ok(())
     } else {
-        Err(SceneError::new(path, ErrorKind::WrongShape { expected, got }))
+        Err(SceneError::new(
+            path,
+            ErrorKind::WrongShape { expected, got },
+        ))
     }
 }

@@ -232,7 +232,11 @@ pub fn examples() -> Vec<(ErrorKind, Vec<String>)> {
             Scene::RadianceOverflow { bound: 1e40 },
             &[],
         ),
-        scene(".", Scene::TooExpensive { rays: 1e13 }, &["--allow-expensive"]),
+        scene(
+            ".",
+            Scene::TooExpensive { rays: 1e13 },
+            &["--allow-expensive"],
+        ),
         (ErrorKind::RadianceNotFinite { x: 3, y: 4 }, vec![]),
     ]
 }
