@@ -107,7 +107,12 @@ fn matches(pattern: &str, path: &str) -> bool {
 
 /// The schema's field that `path` is, if any.
 pub fn field_of(path: &str) -> Option<&'static str> {
-    FIELDS.iter().copied().find(|f| matches(f, path))
+    // The longest pattern that matches: `materials.*.eta` over `materials.*`.
+    FIELDS
+        .iter()
+        .copied()
+        .filter(|f| matches(f, path))
+        .max_by_key(|f| f.len())
 }
 
 /// The longest part of `path`, whole segments from the start, that is a
@@ -136,11 +141,12 @@ mod tests {
         let doc = include_str!("../../../../docs/scene-schema.md");
         for field in FIELDS {
             let name = field
-                .rsplit(['.', ']'])
-                .find(|s| !s.is_empty() && *s != "*")
+                .split(['.', '[', ']'])
+                .rfind(|s| !s.is_empty() && *s != "*")
                 .unwrap();
+            let named = [format!("`{name}`"), format!("`{name}."), format!(".{name}`")];
             assert!(
-                doc.contains(&format!("`{name}`")),
+                named.iter().any(|n| doc.contains(n.as_str())),
                 "{field}: `{name}` undocumented"
             );
         }
