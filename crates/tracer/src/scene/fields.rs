@@ -144,7 +144,11 @@ mod tests {
                 .split(['.', '[', ']'])
                 .rfind(|s| !s.is_empty() && *s != "*")
                 .unwrap();
-            let named = [format!("`{name}`"), format!("`{name}."), format!(".{name}`")];
+            let named = [
+                format!("`{name}`"),
+                format!("`{name}."),
+                format!(".{name}`"),
+            ];
             assert!(
                 named.iter().any(|n| doc.contains(n.as_str())),
                 "{field}: `{name}` undocumented"
