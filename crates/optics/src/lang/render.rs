@@ -16,6 +16,7 @@ pub fn scene_hu(file: &Path, error: &SceneError) -> String {
     let what = scene_kind_hu(error.kind());
     match error.kind() {
         Scene::Read { .. } | Scene::Domain(_) => format!("a(z) {file} jelenet: {what}"),
+        _ if error.field() == "." => format!("a(z) {file} jelenet: {what}"),
         _ => format!("a(z) {file} jelenet: {}: {what}", error.field()),
     }
 }

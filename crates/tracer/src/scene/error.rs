@@ -219,6 +219,8 @@ impl fmt::Display for SceneError {
         match &self.kind {
             // These name their subject themselves.
             ErrorKind::Read { .. } | ErrorKind::Domain(_) => write!(f, "{}", self.kind),
+            // The whole file is the file the caller names.
+            kind if self.field == "." => write!(f, "{kind}"),
             kind => write!(f, "{}: {kind}", self.field),
         }
     }

@@ -235,7 +235,7 @@ pub fn examples() -> Vec<(ErrorKind, Vec<String>)> {
         scene(
             ".",
             Scene::TooExpensive { rays: 1e13 },
-            &["--allow-expensive"],
+            &["--allow-expensive", "max_depth", "throughput_cutoff"],
         ),
         (ErrorKind::RadianceNotFinite { x: 3, y: 4 }, vec![]),
     ]
