@@ -200,7 +200,10 @@ fn byte_edit() -> impl Strategy<Value = ByteEdit> {
 }
 
 /// A case: a course scene, its JSON edits, then its byte edits (often none).
-fn case() -> impl Strategy<Value = (usize, Vec<Edit>, Vec<ByteEdit>)> {
+type Case = (usize, Vec<Edit>, Vec<ByteEdit>);
+
+/// Generates a [`Case`].
+fn case() -> impl Strategy<Value = Case> {
     (
         0..SCENES.len(),
         prop::collection::vec(edit(), 0..6),
@@ -307,7 +310,7 @@ fn apply_bytes(bytes: &mut Vec<u8>, edit: &ByteEdit, scene: &[u8]) {
 }
 
 /// The file a case writes.
-fn file_of(case: &(usize, Vec<Edit>, Vec<ByteEdit>)) -> Vec<u8> {
+fn file_of(case: &Case) -> Vec<u8> {
     let (index, edits, byte_edits) = case;
     let mut value = course_value(*index);
     for edit in edits {
@@ -427,10 +430,7 @@ fn cases() -> u32 {
         .unwrap_or(1000)
 }
 
-fn run(
-    cases: u32,
-    coverage: &Mutex<Coverage>,
-) -> Result<(), TestError<(usize, Vec<Edit>, Vec<ByteEdit>)>> {
+fn run(cases: u32, coverage: &Mutex<Coverage>) -> Result<(), TestError<Case>> {
     let config = Config {
         cases,
         failure_persistence: None,

@@ -16,7 +16,7 @@
 //! What the bound does not cover, the gain of a path (a glass sphere's
 //! `η²`, a path tracer's `π f_r / cos`-weighted bounces), depends on the
 //! paths taken: a render that still leaves `f32` is refused after tracing
-//! and before writing ([`crate::render::check_finite`]).
+//! and before writing ([`RenderError::NotFinite`](crate::job::RenderError::NotFinite)).
 
 use glam::{DVec3, Vec3};
 
@@ -31,7 +31,7 @@ pub(super) fn check(scene: &Scene) -> Result<(), SceneError> {
     let irradiance = lights_irradiance(scene);
     for (name, material) in scene.material_names.iter().zip(&scene.materials) {
         let bound = material_bound(material, scene.ambient, irradiance);
-        if !(bound <= f32::MAX as f64) {
+        if bound > f32::MAX as f64 || bound.is_nan() {
             return Err(SceneError::new(
                 format!("materials.{name}"),
                 ErrorKind::RadianceOverflow { bound },
