@@ -148,6 +148,13 @@ pub enum ErrorKind {
     Output(OutputError),
     /// The render's worker threads could not be started; rayon's message.
     Threads(rayon::ThreadPoolBuildError),
+    /// A rendered pixel that is not finite in `f32`; nothing is written.
+    RadianceNotFinite {
+        /// Column, from 0 at the left.
+        x: u32,
+        /// Row, from 0 at the top.
+        y: u32,
+    },
     /// No usable checkout of the suite (`--checkout`, `OPTICS_CHECKOUT`).
     #[cfg(feature = "harness")]
     Checkout(validation::checkout::CheckoutError),
@@ -206,6 +213,7 @@ impl From<RenderError> for Error {
         match error {
             RenderError::Threads(error) => ErrorKind::Threads(error).into(),
             RenderError::Output(error) => ErrorKind::Output(error).into(),
+            RenderError::NotFinite { x, y } => ErrorKind::RadianceNotFinite { x, y }.into(),
         }
     }
 }
@@ -239,6 +247,7 @@ impl ErrorKind {
             ErrorKind::Scene { error, .. } => render::scene_name(error.kind()),
             ErrorKind::Output(error) => render::output_name(error),
             ErrorKind::Threads(_) => "threads",
+            ErrorKind::RadianceNotFinite { .. } => "render.not_finite",
             #[cfg(feature = "harness")]
             ErrorKind::Checkout(error) => harness::checkout_name(error),
             #[cfg(feature = "harness")]
@@ -270,7 +279,8 @@ impl ErrorKind {
             | ErrorKind::NotUtf8 { .. }
             | ErrorKind::Write(_)
             | ErrorKind::Encode(_)
-            | ErrorKind::Threads(_) => None,
+            | ErrorKind::Threads(_)
+            | ErrorKind::RadianceNotFinite { .. } => None,
             ErrorKind::Scene { error, .. } => Some(error.field().to_owned()),
             ErrorKind::Output(_) => Some("--output".to_owned()),
             #[cfg(feature = "harness")]
@@ -375,6 +385,11 @@ impl fmt::Display for ErrorKind {
             ErrorKind::Threads(error) => {
                 write!(f, "cannot start the render's threads: {error}")
             }
+            ErrorKind::RadianceNotFinite { x, y } => write!(
+                f,
+                "the radiance at pixel ({x}, {y}) is not finite in f32: the paths' gain \
+                 exceeds f32 there; nothing was written"
+            ),
             #[cfg(feature = "harness")]
             ErrorKind::Checkout(error) => write!(f, "{error}"),
             #[cfg(feature = "harness")]

@@ -2,6 +2,7 @@
 //! each skipped part would have cost, measured by rendering with it on.
 
 use std::path::PathBuf;
+use std::sync::atomic::{AtomicU64, Ordering};
 
 use serde_json::{json, Value};
 use tracer::integrator::Machinery;
@@ -39,11 +40,35 @@ pub fn run(args: &InspectArgs, ui: &Ui) -> error::Result<()> {
     let job = args.job.job(&args.scene)?;
     let (scene, settings, needs) = (job.scene(), job.settings(), job.needs());
     let lang = ui.lang;
-    let base = measure(&job, job.machinery())?;
+    crate::render::warn_if_long(&job, lang);
+    let parts = skipped_parts(&job);
+    // Every measuring render's rows on one bar, shown from the start.
+    let rows = scene.height as u64;
+    let bar = crate::render::progress_bar(rows * RUNS * (1 + parts.len() as u64));
+    let runs = AtomicU64::new(0);
+    let progress = |done: usize| {
+        if let Some(bar) = &bar {
+            let before = runs.load(Ordering::Relaxed);
+            bar.set_position(before * rows + done as u64);
+        }
+    };
+    let measure = |machinery: &Machinery| measure(&job, machinery, &runs, &progress);
+    let base = measure(job.machinery());
+    let full: error::Result<Vec<(&str, Rendered)>> = match &base {
+        Ok(_) => parts
+            .iter()
+            .map(|(name, machinery)| Ok((*name, measure(machinery)?)))
+            .collect(),
+        Err(_) => Ok(Vec::new()),
+    };
+    if let Some(bar) = &bar {
+        bar.finish_and_clear();
+    }
+    let base = base?;
     let mut costs = Vec::new();
     let mut lines = Vec::new();
-    for (name, machinery) in skipped_parts(&job) {
-        let (cost, line) = cost_of(name, &measure(&job, &machinery)?, &base, lang);
+    for (name, full) in full? {
+        let (cost, line) = cost_of(name, &full, &base, lang);
         costs.push(cost);
         lines.push(line);
     }
@@ -79,13 +104,26 @@ pub fn run(args: &InspectArgs, ui: &Ui) -> error::Result<()> {
     ui.show_steps(&record)
 }
 
-/// The best of three renders with `machinery`, so that the time
-/// differences are not scheduling noise.
-fn measure(job: &RenderJob, machinery: &Machinery) -> error::Result<Rendered> {
-    let quiet = |_: usize| {};
-    let mut best = job.render_with(machinery, None, &quiet)?;
-    for _ in 0..2 {
-        let again = job.render_with(machinery, None, &quiet)?;
+/// How many times each machinery is rendered.
+const RUNS: u64 = 3;
+
+/// The best of [`RUNS`] renders with `machinery`, so that the time
+/// differences are not scheduling noise; `runs` counts the renders done,
+/// for `progress`.
+fn measure(
+    job: &RenderJob,
+    machinery: &Machinery,
+    runs: &AtomicU64,
+    progress: &(dyn Fn(usize) + Sync),
+) -> error::Result<Rendered> {
+    let render = || {
+        let rendered = job.render_with(machinery, None, progress);
+        runs.fetch_add(1, Ordering::Relaxed);
+        rendered
+    };
+    let mut best = render()?;
+    for _ in 1..RUNS {
+        let again = render()?;
         if again.elapsed < best.elapsed {
             best = again;
         }

@@ -107,6 +107,7 @@ fn hungarian(kind: &ErrorKind) -> String {
         ErrorKind::Scene { file, error } => render::scene_hu(file, error),
         ErrorKind::Output(error) => format!("--output: {}", render::output_hu(error)),
         ErrorKind::Threads(error) => format!("a renderelés szálai nem indíthatók: {error}"),
+        ErrorKind::RadianceNotFinite { x, y } => render::not_finite_hu(*x, *y),
         #[cfg(feature = "harness")]
         ErrorKind::Checkout(error) => harness::checkout_hu(error),
         #[cfg(feature = "harness")]

@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 use serde::Serialize;
 use tracer::integrator::Machinery;
 use tracer::job::{Overrides, RenderJob};
-use tracer::needs::Needs;
+use tracer::needs::{Needs, WARN_RAYS};
 use tracer::output::Destination;
 use tracer::render::Rendered;
 use tracer::scene::{FresnelModel, IntegratorKind, RenderSpec, Settings};
@@ -74,6 +74,11 @@ pub struct JobArgs {
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=MAX_IMAGE_SIDE as i64))]
     #[serde(skip_serializing_if = "Option::is_none")]
     pub height: Option<u32>,
+    /// Render even when the estimate of the rays cast is past 10¹² (hours);
+    /// past 10¹⁰ the estimate is shown before the render starts.
+    #[arg(long)]
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub allow_expensive: bool,
 }
 
 impl JobArgs {
@@ -90,6 +95,7 @@ impl JobArgs {
             },
             width: self.width,
             height: self.height,
+            allow_expensive: self.allow_expensive,
         };
         RenderJob::load(path, &overrides).map_err(|error| {
             ErrorKind::Scene {
@@ -105,14 +111,8 @@ pub fn run(args: &RenderArgs, ui: &Ui) -> error::Result<()> {
     let job = args.job.job(&args.scene)?;
     // Refuse an unwritable destination before spending the render on it.
     let destination = Destination::new(&args.output).map_err(ErrorKind::Output)?;
-    let bar = std::io::stderr().is_terminal().then(|| {
-        let bar = indicatif::ProgressBar::new(job.scene().height as u64);
-        bar.set_style(
-            indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} rows, {eta} left")
-                .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
-        );
-        bar
-    });
+    warn_if_long(&job, ui.lang);
+    let bar = progress_bar(job.scene().height as u64);
     let progress = |rows: usize| {
         if let Some(bar) = &bar {
             bar.set_position(rows as u64);
@@ -123,6 +123,36 @@ pub fn run(args: &RenderArgs, ui: &Ui) -> error::Result<()> {
         bar.finish_and_clear();
     }
     ui.show_steps(&record(args, &job, &destination, &rendered?, ui.lang))
+}
+
+/// Past [`WARN_RAYS`], the estimate on stderr before the work starts.
+pub(crate) fn warn_if_long(job: &RenderJob, lang: Lang) {
+    if job.rays() > WARN_RAYS {
+        eprintln!(
+            "{}",
+            say!(
+                lang,
+                "warning: this may cast up to {:.2e} rays (more than {:e}): it may take long",
+                "figyelem: ez legfeljebb {:.2e} sugarat indíthat (több, mint {:e}): sokáig tarthat",
+                job.rays(),
+                WARN_RAYS
+            )
+        );
+    }
+}
+
+/// A bar of `rows` on a terminal's stderr, drawn at once and redrawn
+/// while a slow first row is traced.
+pub(crate) fn progress_bar(rows: u64) -> Option<indicatif::ProgressBar> {
+    std::io::stderr().is_terminal().then(|| {
+        let bar = indicatif::ProgressBar::new(rows);
+        bar.set_style(
+            indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} rows, {eta} left")
+                .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+        );
+        bar.enable_steady_tick(std::time::Duration::from_millis(250));
+        bar
+    })
 }
 
 /// The render's record: the files written as the answer, the summary line
@@ -170,6 +200,7 @@ fn record(
         .detail("seconds", seconds)
         .detail("rays", rendered.rays)
         .detail("rays_total", rays)
+        .detail("rays_estimated_at_most", job.rays())
         .detail("rays_per_second", rate)
         .detail("samples_per_pixel_taken", machinery.spp)
         .detail("shadow_rays", machinery.shadow_rays);

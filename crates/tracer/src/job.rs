@@ -32,6 +32,8 @@ pub struct Overrides {
     pub width: Option<u32>,
     /// Image height, pixels.
     pub height: Option<u32>,
+    /// Render even past [`needs::MAX_RAYS`] (`--allow-expensive`).
+    pub allow_expensive: bool,
 }
 
 /// A scene ready to render: settings settled, integrator checked, needs
@@ -42,6 +44,7 @@ pub struct RenderJob {
     settings: Settings,
     needs: Needs,
     machinery: Machinery,
+    rays: f64,
 }
 
 /// Why a render did not complete.
@@ -53,6 +56,19 @@ pub enum RenderError {
     /// An image could not be written.
     #[error(transparent)]
     Output(#[from] OutputError),
+    /// A pixel's radiance left `f32` (infinite, or NaN from infinities),
+    /// though the scene's numbers are bounded (a path's gain beyond the
+    /// bound of `scene::bound`); nothing is written.
+    #[error(
+        "the radiance at pixel ({x}, {y}) is not finite in f32: the paths' gain \
+         exceeds f32 there; nothing was written"
+    )]
+    NotFinite {
+        /// Column, from 0 at the left.
+        x: u32,
+        /// Row, from 0 at the top.
+        y: u32,
+    },
 }
 
 impl RenderJob {
@@ -72,20 +88,28 @@ impl RenderJob {
             }
         };
         let settings = scene.settings.settle("overrides", &overrides.render)?;
-        RenderJob::with_settings(scene, settings)
+        let job = RenderJob::with_settings(scene, settings)?;
+        if job.rays > needs::MAX_RAYS && !overrides.allow_expensive {
+            let rays = job.rays;
+            return Err(SceneError::new(".", ErrorKind::TooExpensive { rays }));
+        }
+        Ok(job)
     }
 
     /// `scene` with settings already settled (a variation of a settled
-    /// job's, or of [`Scene::settings`]).
+    /// job's, or of [`Scene::settings`]), at whatever cost: a caller that
+    /// chose the settings itself is not refused by [`RenderJob::rays`].
     pub fn with_settings(scene: Scene, settings: Settings) -> Result<Self, SceneError> {
         renderable(&scene, &settings)?;
         let needs = needs::analyse(&scene, &settings);
         let machinery = needs.machinery(&settings);
+        let rays = needs.rays(&scene, &machinery, &settings);
         Ok(RenderJob {
             scene,
             settings,
             needs,
             machinery,
+            rays,
         })
     }
 
@@ -107,6 +131,14 @@ impl RenderJob {
     /// The machinery a render runs: only what the scene needs.
     pub fn machinery(&self) -> &Machinery {
         &self.machinery
+    }
+
+    /// The estimate, before rendering, of the rays the render casts at
+    /// most ([`Needs::rays`]): past [`needs::WARN_RAYS`] a front end says
+    /// so, past [`needs::MAX_RAYS`] [`RenderJob::new`] refuses unless
+    /// allowed.
+    pub fn rays(&self) -> f64 {
+        self.rays
     }
 
     /// Everything switched on, the reference against which skipping is
@@ -138,7 +170,9 @@ impl RenderJob {
             settings: self.settings,
             machinery: machinery.clone(),
         };
-        Ok(render::render(&tracer, threads, progress)?)
+        let rendered = render::render(&tracer, threads, progress)?;
+        render::check_finite(&rendered.image)?;
+        Ok(rendered)
     }
 
     /// Renders and writes the PNG and the PFM of `destination`.

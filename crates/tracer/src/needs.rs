@@ -231,3 +231,74 @@ impl Needs {
         }
     }
 }
+
+/// The most rays a render may cast without the caller allowing more
+/// (`optics render --allow-expensive`): 10¹², hours at the tracer's
+/// 10⁷–10⁸ rays per second.
+pub const MAX_RAYS: f64 = 1e12;
+
+/// Past this many rays a render is announced as long before it starts:
+/// 10¹⁰, minutes.
+pub const WARN_RAYS: f64 = 1e10;
+
+impl Needs {
+    /// An upper estimate of the rays a render casts, before it starts, from
+    /// the branching the scene allows: a primary ray per sample, each
+    /// followed to the reachable depth `D` (the reflection depth, or under
+    /// the path tracer `max_depth` where rough surfaces bounce light; one
+    /// branch per bounce, or at
+    /// glass under Whitted two, so up to `2^k` at depth `k`, capped by the
+    /// throughput cutoff at `g / cutoff` branches, `g` the largest radiance
+    /// gain `η²` a crossing gives), and each ray that ends at a rough
+    /// surface followed by a shadow ray per used light.
+    pub fn rays(&self, scene: &Scene, machinery: &Machinery, settings: &Settings) -> f64 {
+        let depth = match self.reflection_depth {
+            // The path tracer bounces off rough surfaces too.
+            _ if settings.integrator == IntegratorKind::Path && self.rough_surfaces => {
+                settings.max_depth
+            }
+            ReflectionDepth::None => 0,
+            ReflectionDepth::One => 1,
+            ReflectionDepth::UpToMaxDepth(d) => d,
+        };
+        let lights = machinery.lights.iter().filter(|on| **on).count();
+        let shadow = if machinery.shadow_rays { lights } else { 0 } as f64;
+        let per_sample = match settings.integrator {
+            IntegratorKind::Local => 1.0 + shadow,
+            IntegratorKind::Course => 1.0 + depth as f64,
+            IntegratorKind::Path => (1.0 + depth as f64) * (1.0 + shadow),
+            IntegratorKind::Whitted => {
+                let branches = if self.refraction {
+                    whitted_branches(depth, scene, settings.throughput_cutoff)
+                } else {
+                    depth as f64
+                };
+                (1.0 + branches) * (1.0 + shadow)
+            }
+        };
+        let pixels = scene.width as f64 * scene.height as f64;
+        (pixels * machinery.spp as f64 * per_sample).min(f64::MAX)
+    }
+}
+
+/// `Σ_{k=1..depth} min(2^k, cap)`: the rays a primary ray's tree through
+/// glass can hold, `cap` the branches a cutoff lets live at one depth.
+fn whitted_branches(depth: u32, scene: &Scene, cutoff: f32) -> f64 {
+    let gain = scene
+        .materials
+        .iter()
+        .filter_map(|m| match *m {
+            Material::Dielectric { eta } => {
+                let e2 = (eta as f64).powi(2);
+                Some(e2.max(1.0 / e2))
+            }
+            _ => None,
+        })
+        .fold(1.0, f64::max);
+    let cap = if cutoff > 0.0 {
+        gain / cutoff as f64
+    } else {
+        f64::INFINITY
+    };
+    (1..=depth).map(|k| 2f64.powi(k as i32).min(cap)).sum()
+}

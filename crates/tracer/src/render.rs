@@ -8,6 +8,7 @@ use glam::{DVec3, Vec3};
 use rayon::prelude::*;
 
 use crate::integrator::{RayCounts, Tracer};
+use crate::job::RenderError;
 use crate::rng::Pcg32;
 
 /// A linear-radiance image, W/(sr·m²) per channel, rows top to bottom.
@@ -52,8 +53,8 @@ pub struct Rendered {
 }
 
 /// Renders with `tracer` on `threads` threads (`None`: all cores).
-/// `progress` is called with the number of rows finished so far, from any
-/// thread. [`RenderJob`](crate::job::RenderJob) is the way in.
+/// `progress` is called with 0 as the render starts, then with the number
+/// of rows finished so far, from any thread. [`RenderJob`](crate::job::RenderJob) is the way in.
 pub(crate) fn render(
     tracer: &Tracer,
     threads: Option<usize>,
@@ -65,6 +66,8 @@ pub(crate) fn render(
     let rows_done = AtomicUsize::new(0);
     let start = Instant::now();
     let (width, height) = (tracer.scene.width, tracer.scene.height);
+    // Shown before the first row, which may be long in coming.
+    progress(0);
     let rows: Vec<(Vec<Vec3>, RayCounts)> = pool.install(|| {
         (0..height)
             .into_par_iter()
@@ -94,6 +97,19 @@ pub(crate) fn render(
         rays,
         elapsed,
     })
+}
+
+/// The last check before an image is written: every pixel finite. The
+/// scene's numbers are bounded at validation (`scene::bound`); this catches
+/// what the bound cannot see, a path's gain.
+pub(crate) fn check_finite(image: &Image) -> Result<(), RenderError> {
+    match image.pixels.iter().position(|p| !p.is_finite()) {
+        None => Ok(()),
+        Some(i) => Err(RenderError::NotFinite {
+            x: (i % image.width as usize) as u32,
+            y: (i / image.width as usize) as u32,
+        }),
+    }
 }
 
 /// One pixel: the mean of its samples, summed in `f64` so that the mean of

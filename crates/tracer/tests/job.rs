@@ -44,6 +44,7 @@ fn settings_are_the_defaults_under_the_scene_under_the_overrides() {
         },
         width: Some(4),
         height: None,
+        allow_expensive: false,
     };
     let job = RenderJob::new(scene, &overrides).unwrap();
     assert_eq!(

@@ -11,6 +11,8 @@ pub fn scene_name(kind: &Scene) -> &'static str {
     match kind {
         Scene::Read { .. } => "scene.read",
         Scene::Syntax { .. } => "scene.syntax",
+        Scene::NotUtf8 { .. } => "scene.not_utf8",
+        Scene::WrongShape { .. } => "scene.wrong_shape",
         Scene::Schema { .. } => "scene.schema",
         Scene::TypeMissing => "scene.type_missing",
         Scene::TypeNotString { .. } => "scene.type_not_a_string",
@@ -26,6 +28,8 @@ pub fn scene_name(kind: &Scene) -> &'static str {
         Scene::FieldOfView { .. } => "scene.field_of_view",
         Scene::FarNotBeyondNear { .. } => "scene.far_not_beyond_near",
         Scene::UnknownMaterial { .. } => "scene.unknown_material",
+        Scene::RadianceOverflow { .. } => "scene.radiance_overflow",
+        Scene::TooExpensive { .. } => "scene.too_expensive",
         Scene::DielectricWithoutInside => "scene.dielectric_without_inside",
         Scene::CourseHasNoRefraction => "scene.course_has_no_refraction",
     }

@@ -4,6 +4,7 @@
 use std::path::Path;
 
 use tracer::output::OutputError;
+use tracer::scene::error::JsonType;
 use tracer::scene::{ErrorKind as Scene, SceneError, MAX_PIXELS, SCHEMA_VERSION};
 
 use super::domain_hu;
@@ -15,13 +16,22 @@ pub fn scene_hu(file: &Path, error: &SceneError) -> String {
     let what = scene_kind_hu(error.kind());
     match error.kind() {
         Scene::Read { .. } | Scene::Domain(_) => format!("a(z) {file} jelenet: {what}"),
+        _ if error.field() == "." => format!("a(z) {file} jelenet: {what}"),
         _ => format!("a(z) {file} jelenet: {}: {what}", error.field()),
     }
 }
 
 fn scene_kind_hu(kind: &Scene) -> String {
     match kind {
-        Scene::Read { file, source } => format!("a(z) {file} fájl nem olvasható: {source}"),
+        Scene::Read { source, .. } => format!("nem olvasható: {source}"),
+        Scene::NotUtf8 { line, column } => {
+            format!("nem UTF-8 szöveg: nem UTF-8 bájt a(z) {line}. sor {column}. oszlopában")
+        }
+        Scene::WrongShape { expected, got } => format!(
+            "a várt JSON-típus: {}, a kapott: {}",
+            json_type_hu(*expected),
+            json_type_hu(*got)
+        ),
         Scene::Syntax {
             message,
             line,
@@ -59,6 +69,18 @@ fn scene_kind_hu(kind: &Scene) -> String {
         Scene::UnknownMaterial { name, defined } => {
             format!("nincs {name:?} nevű anyag; a jelenet anyagai: {defined:?}")
         }
+        Scene::RadianceOverflow { bound } => format!(
+            "a jelenet számai együtt legfeljebb {bound:.3e} W/(sr·m²) sugársűrűséget adnak, \
+             ami kívül esik az f32 tartományán ({:.3e}): a fényeket vagy az együtthatókat \
+             kisebbre kell venni",
+            f32::MAX
+        ),
+        Scene::TooExpensive { rays } => format!(
+            "ez a kép legfeljebb {rays:.3e} sugarat indíthat, több a --allow-expensive \
+             nélkül megengedett {:e}-nál: csökkentse a max_depth, az spp értékét vagy a \
+             méretet, vagy növelje a throughput_cutoff értékét",
+            tracer::needs::MAX_RAYS
+        ),
         Scene::DielectricWithoutInside => "a dielektrikumhoz belső térrel bíró zárt felület \
                                            kell: csak gömb lehet dielektrikum"
             .to_owned(),
@@ -66,6 +88,17 @@ fn scene_kind_hu(kind: &Scene) -> String {
                                          dielektrikumokat a --integrator whitted vagy path \
                                          kapcsolóval kell renderelni"
             .to_owned(),
+    }
+}
+
+fn json_type_hu(t: JsonType) -> &'static str {
+    match t {
+        JsonType::Null => "null",
+        JsonType::Bool => "logikai érték",
+        JsonType::Number => "szám",
+        JsonType::String => "szöveg",
+        JsonType::Array => "tömb",
+        JsonType::Object => "objektum",
     }
 }
 
@@ -83,4 +116,12 @@ pub fn output_hu(error: &OutputError) -> String {
             format!("a(z) {path} nem kódolható PNG-ként: {source}")
         }
     }
+}
+
+/// A rendered pixel that left `f32`.
+pub fn not_finite_hu(x: u32, y: u32) -> String {
+    format!(
+        "a(z) ({x}, {y}) képpont sugársűrűsége nem véges f32-ben: az utak erősítése ott \
+         meghaladja az f32 tartományát; semmi sem íródott ki"
+    )
 }

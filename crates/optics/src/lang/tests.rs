@@ -198,6 +198,7 @@ fn slot(kind: &ErrorKind) -> usize {
         ErrorKind::Scene { error, .. } => CALCULATOR + render_kinds::scene_slot(error.kind()),
         ErrorKind::Output(error) => CALCULATOR + render_kinds::output_slot(error),
         ErrorKind::Threads(_) => CALCULATOR + render_kinds::THREADS,
+        ErrorKind::RadianceNotFinite { .. } => CALCULATOR + render_kinds::NOT_FINITE,
         #[cfg(feature = "harness")]
         ErrorKind::Checkout(error) => {
             CALCULATOR + render_kinds::SLOTS + harness_kinds::checkout_slot(error)

@@ -36,6 +36,22 @@ pub enum ErrorKind {
         /// Column of the error, from 1.
         column: usize,
     },
+    /// Bytes that are not UTF-8 text (JSON is UTF-8, RFC 8259 §8.1): where
+    /// the first bad byte is.
+    NotUtf8 {
+        /// Line of the bad byte, from 1.
+        line: usize,
+        /// Column of the bad byte, from 1, counted in characters.
+        column: usize,
+    },
+    /// JSON of one type where the schema has another: an object given as an
+    /// array, a choice given as an object.
+    WrongShape {
+        /// What the schema has there.
+        expected: JsonType,
+        /// What the file has there.
+        got: JsonType,
+    },
     /// JSON, but not the schema: a wrong type, an unknown or missing field,
     /// an unknown kind (serde's description).
     Schema {
@@ -99,10 +115,68 @@ pub enum ErrorKind {
         /// The names the scene defines.
         defined: Vec<String>,
     },
+    /// Numbers each within `f32` whose product is not: the largest radiance
+    /// a surface can send, bounded from the scene's numbers (see
+    /// [`radiance_bound`](super::bound)), is beyond `f32`.
+    RadianceOverflow {
+        /// The bound, W/(sr·m²), computed in `f64`.
+        bound: f64,
+    },
+    /// A render whose bound on the rays it casts is past
+    /// [`MAX_RAYS`](crate::needs::MAX_RAYS), not allowed by the caller.
+    TooExpensive {
+        /// The bound on the rays cast.
+        rays: f64,
+    },
     /// A dielectric on a surface without an inside (a plane, the tube).
     DielectricWithoutInside,
     /// A dielectric under the course's shader, which has no refraction.
     CourseHasNoRefraction,
+}
+
+/// The types of JSON values, as the schema and the file have them.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum JsonType {
+    /// `null`.
+    Null,
+    /// `true` or `false`.
+    Bool,
+    /// A number.
+    Number,
+    /// A string (in the schema: the name of one of the choices).
+    String,
+    /// An array.
+    Array,
+    /// An object.
+    Object,
+}
+
+impl JsonType {
+    /// The type of `value`.
+    pub fn of(value: &serde_json::Value) -> Self {
+        use serde_json::Value;
+        match value {
+            Value::Null => JsonType::Null,
+            Value::Bool(_) => JsonType::Bool,
+            Value::Number(_) => JsonType::Number,
+            Value::String(_) => JsonType::String,
+            Value::Array(_) => JsonType::Array,
+            Value::Object(_) => JsonType::Object,
+        }
+    }
+}
+
+impl fmt::Display for JsonType {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            JsonType::Null => "null",
+            JsonType::Bool => "boolean",
+            JsonType::Number => "number",
+            JsonType::String => "string",
+            JsonType::Array => "array",
+            JsonType::Object => "object",
+        })
+    }
 }
 
 impl SceneError {
@@ -114,10 +188,11 @@ impl SceneError {
         }
     }
 
-    /// The JSON path of the bad value: `.` for the whole file (or a file
-    /// that cannot be read), `?` where the JSON breaks off before a value
-    /// could be named; settings given beside the file are under
-    /// `overrides`.
+    /// The JSON path of the bad value: `.` for the whole file (a file that
+    /// cannot be read, text that is not one JSON value, JSON that breaks
+    /// off before a value could be named); settings given beside the file
+    /// are under `overrides`. A field the schema does not have (an unknown
+    /// field, or a syntax error in its value) is named as the file spells it.
     pub fn field(&self) -> &str {
         &self.field
     }
@@ -144,6 +219,8 @@ impl fmt::Display for SceneError {
         match &self.kind {
             // These name their subject themselves.
             ErrorKind::Read { .. } | ErrorKind::Domain(_) => write!(f, "{}", self.kind),
+            // The whole file is the file the caller names.
+            kind if self.field == "." => write!(f, "{kind}"),
             kind => write!(f, "{}: {kind}", self.field),
         }
     }
@@ -152,12 +229,20 @@ impl fmt::Display for SceneError {
 impl fmt::Display for ErrorKind {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            ErrorKind::Read { file, source } => write!(f, "cannot read {file}: {source}"),
+            // The file is named by whoever names the scene; the kind keeps it.
+            ErrorKind::Read { source, .. } => write!(f, "cannot be read: {source}"),
             ErrorKind::Syntax {
                 message,
                 line,
                 column,
             } => write!(f, "{message} (line {line}, column {column})"),
+            ErrorKind::NotUtf8 { line, column } => write!(
+                f,
+                "not UTF-8 text: a byte that is not UTF-8 at line {line}, column {column}"
+            ),
+            ErrorKind::WrongShape { expected, got } => {
+                write!(f, "must be a JSON {expected}, got a JSON {got}")
+            }
             ErrorKind::Schema { message } => f.write_str(message),
             ErrorKind::TypeMissing => f.write_str(
                 "missing: every camera, material, object and light names its \"type\"",
@@ -190,6 +275,18 @@ impl fmt::Display for ErrorKind {
                 f,
                 "no material named {name:?}; the scene defines {defined:?}"
             ),
+            ErrorKind::RadianceOverflow { bound } => write!(
+                f,
+                "the scene's numbers together give radiance up to {bound:.3e} W/(sr·m²), \
+                 beyond f32 ({:.3e}): scale the lights or the coefficients down",
+                f32::MAX
+            ),
+            ErrorKind::TooExpensive { rays } => write!(
+                f,
+                "this render may cast up to {rays:.3e} rays, past the {:e} allowed without \
+                 --allow-expensive: lower max_depth, spp or the size, or raise throughput_cutoff",
+                crate::needs::MAX_RAYS
+            ),
             ErrorKind::DielectricWithoutInside => f.write_str(
                 "a dielectric needs a closed surface with an inside: only spheres may be dielectric",
             ),
@@ -201,12 +298,6 @@ impl fmt::Display for ErrorKind {
     }
 }
 
-impl std::error::Error for SceneError {
-    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
-        match &self.kind {
-            ErrorKind::Read { source, .. } => Some(source),
-            // A domain error is shown as itself, not as a cause.
-            _ => None,
-        }
-    }
-}
+// No `source`: the operating system's reason is part of the message, and
+// a reporter that also printed the chain would print it twice.
+impl std::error::Error for SceneError {}

@@ -1,38 +1,74 @@
-//! Scene text to a [`SceneFile`]: serde with the JSON path of every error,
-//! after rewriting the schema's `"type"` tags into serde's external tagging.
+//! Scene text to a [`SceneFile`]: bytes to UTF-8 text, text to one JSON
+//! value and nothing after it, its shapes checked ([`super::shape`]), then
+//! serde with the JSON path of every error, after rewriting the schema's
+//! `"type"` tags into serde's external tagging.
 
 use serde_json::Value;
 
+use super::faults::{self, Fault};
 use super::schema::SceneFile;
-use super::{ErrorKind, SceneError};
+use super::{fields, shape, ErrorKind, SceneError};
 
-/// Parses JSON text into the schema's types; errors name the JSON path.
+/// Bytes to text: UTF-8, or the position of the first byte that is not.
+pub(super) fn text(bytes: &[u8]) -> Result<&str, SceneError> {
+    std::str::from_utf8(bytes).map_err(|err| {
+        let good = &bytes[..err.valid_up_to()];
+        let line = good.iter().filter(|&&b| b == b'\n').count() + 1;
+        let start = good.iter().rposition(|&b| b == b'\n').map_or(0, |i| i + 1);
+        // The bytes before the bad one are valid, so this cannot fail.
+        let column = std::str::from_utf8(&good[start..]).map_or(1, |s| s.chars().count() + 1);
+        SceneError::new(".", ErrorKind::NotUtf8 { line, column })
+    })
+}
+
+/// Parses JSON text into the schema's types; errors name the JSON path. One
+/// leading byte-order mark is ignored (RFC 8259 §8.1 lets a parser ignore
+/// it; editors on some systems write one).
 pub(super) fn scene_file(text: &str) -> Result<SceneFile, SceneError> {
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     let de = &mut serde_json::Deserializer::from_str(text);
-    let mut value: Value = serde_path_to_error::deserialize(de).map_err(|err| {
-        let path = err.path().to_string();
-        let inner = err.into_inner();
-        let mut message = without_position(&inner);
-        if message == "expected value" {
-            message.push_str(" (JSON numbers are finite: NaN and Infinity are not numbers)");
-        }
-        let kind = ErrorKind::Syntax {
-            message,
-            line: inner.line(),
-            column: inner.column(),
-        };
-        SceneError::new(path, kind)
-    })?;
-    retag(&mut value)?;
+    let mut value: Value = serde_path_to_error::deserialize(&mut *de)
+        .map_err(|err| syntax(text, json_path(err.path()), err.into_inner()))?;
+    // One scene per file: text after it is an error, not ignored.
+    if !faults::undone(Fault::TrailingTextIgnored) {
+        de.end().map_err(|err| syntax(text, ".".to_owned(), err))?;
+    }
+    if !faults::undone(Fault::ShapesUnchecked) {
+        shape::check(&value)?;
+    }
+    let tagged = retag(&mut value)?;
     serde_path_to_error::deserialize(value).map_err(|err| {
         let mut path = json_path(err.path());
         let message = without_position(err.inner());
-        if message.starts_with("unknown variant") {
+        if message.starts_with("unknown variant") && tagged.contains(&path) {
             // The kind was the object's "type" before retagging.
             path.push_str(".type");
         }
         SceneError::new(path, ErrorKind::Schema { message })
     })
+}
+
+/// A syntax error at `path` (its part that is a field of the schema: the
+/// text may break off in a key it does not have), with its position, and
+/// the hint about NaN and Infinity only where the text there spells one.
+fn syntax(text: &str, path: String, err: serde_json::Error) -> SceneError {
+    let path = fields::known_prefix(&path).to_owned();
+    let mut message = without_position(&err);
+    let here = text
+        .lines()
+        .nth(err.line().saturating_sub(1))
+        .and_then(|line| line.get(err.column().saturating_sub(1)..))
+        .unwrap_or("");
+    let here = here.trim_start_matches(['-', '+']);
+    if here.starts_with("NaN") || here.starts_with("Infinity") || here.starts_with("inf") {
+        message.push_str(" (JSON numbers are finite: NaN and Infinity are not numbers)");
+    }
+    let kind = ErrorKind::Syntax {
+        message,
+        line: err.line(),
+        column: err.column(),
+    };
+    SceneError::new(path, kind)
 }
 
 fn without_position(err: &serde_json::Error) -> String {
@@ -70,9 +106,10 @@ fn json_path(path: &serde_path_to_error::Path) -> String {
 /// Rewrites each `{"type": "sphere", ...}` as `{"sphere": {...}}`, serde's
 /// external tagging. Serde's internally tagged enums buffer their content
 /// and lose the path of an error inside it; externally tagged ones keep it.
-fn retag(scene: &mut Value) -> Result<(), SceneError> {
+/// Returns the paths retagged, where an unknown kind is the `"type"`'s.
+fn retag(scene: &mut Value) -> Result<Vec<String>, SceneError> {
     let Some(top) = scene.as_object_mut() else {
-        return Ok(()); // serde reports the wrong type with its path
+        return Ok(Vec::new()); // serde reports the wrong type with its path
     };
     let mut places: Vec<(String, &mut Value)> = Vec::new();
     for (key, value) in top.iter_mut() {
@@ -91,10 +128,12 @@ fn retag(scene: &mut Value) -> Result<(), SceneError> {
             _ => {}
         }
     }
+    let mut tagged = Vec::new();
     for (path, value) in places {
         let Value::Object(fields) = value else {
             continue; // serde reports the wrong type with its path
         };
+        tagged.push(path.clone());
         let kind = match fields.remove("type") {
             Some(Value::String(kind)) => kind,
             Some(other) => {
@@ -115,5 +154,5 @@ fn retag(scene: &mut Value) -> Result<(), SceneError> {
         let body = Value::Object(std::mem::take(fields));
         *value = Value::Object(serde_json::Map::from_iter([(kind, body)]));
     }
-    Ok(())
+    Ok(tagged)
 }

@@ -12,17 +12,25 @@
 //! | module | what |
 //! |---|---|
 //! | [`schema`] | the file as written |
-//! | `json` | text to the schema, errors with their JSON path |
+//! | [`fields`] | the schema's fields, as the JSON paths errors name |
+//! | `json` | bytes to text to the schema, errors with their JSON path |
+//! | `shape` | the shapes serde would accept beyond the schema, refused |
 //! | [`validate`] | the schema to the model, each value in its domain |
+//! | [`bound`] | the largest radiance the scene's numbers can give, within `f32` |
 //! | [`model`] | the validated scene the integrators read |
 //! | [`settings`] | render settings as given and as settled |
 //! | [`error`] | the kinds of refusal |
 
+pub mod bound;
 pub mod error;
+#[doc(hidden)]
+pub mod faults;
+pub mod fields;
 mod json;
 pub mod model;
 pub mod schema;
 pub mod settings;
+mod shape;
 pub mod validate;
 
 pub use error::{ErrorKind, SceneError};
@@ -45,11 +53,17 @@ pub const MAX_PIXELS: u64 = 8192 * 8192;
 
 /// Reads and validates a scene file.
 pub fn load(path: &std::path::Path) -> Result<Scene, SceneError> {
-    let text = std::fs::read_to_string(path).map_err(|source| {
+    let bytes = std::fs::read(path).map_err(|source| {
         let file = path.display().to_string();
         SceneError::new(".", ErrorKind::Read { file, source })
     })?;
-    parse(&text)
+    parse_bytes(&bytes)
+}
+
+/// Parses and validates a scene from the bytes of a file: UTF-8 (a bad
+/// byte is refused with its line and column), one JSON object.
+pub fn parse_bytes(bytes: &[u8]) -> Result<Scene, SceneError> {
+    parse(json::text(bytes)?)
 }
 
 /// Parses and validates a scene from JSON text.

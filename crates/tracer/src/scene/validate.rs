@@ -135,7 +135,7 @@ impl SceneFile {
             .map(|(i, spec)| validate_light(&format!("lights[{i}]"), spec))
             .collect::<Result<_, _>>()?;
         let settings = Settings::default().settle("render", &self.render)?;
-        Ok(Scene {
+        let scene = Scene {
             width,
             height,
             camera,
@@ -146,7 +146,9 @@ impl SceneFile {
             objects,
             lights,
             settings,
-        })
+        };
+        super::bound::check(&scene)?;
+        Ok(scene)
     }
 }
 

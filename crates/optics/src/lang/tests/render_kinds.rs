@@ -29,6 +29,10 @@ pub fn scene_slot(kind: &Scene) -> usize {
         Scene::UnknownMaterial { .. } => 16,
         Scene::DielectricWithoutInside => 17,
         Scene::CourseHasNoRefraction => 18,
+        Scene::NotUtf8 { .. } => 24,
+        Scene::WrongShape { .. } => 25,
+        Scene::RadianceOverflow { .. } => 26,
+        Scene::TooExpensive { .. } => 27,
     }
 }
 
@@ -45,8 +49,11 @@ pub fn output_slot(error: &OutputError) -> usize {
 /// The slot of the threads' failure.
 pub const THREADS: usize = 23;
 
+/// The slot of a pixel that left `f32`.
+pub const NOT_FINITE: usize = 28;
+
 /// How many render slots there are.
-pub const SLOTS: usize = 24;
+pub const SLOTS: usize = 29;
 
 /// A thread pool that cannot start: its spawner fails.
 pub fn thread_pool_error() -> rayon::ThreadPoolBuildError {
@@ -211,5 +218,25 @@ pub fn examples() -> Vec<(ErrorKind, Vec<String>)> {
             &["a.png", &png().to_string()],
         ),
         (ErrorKind::Threads(threads), vec![threads_text]),
+        scene(".", Scene::NotUtf8 { line: 3, column: 7 }, &[]),
+        scene(
+            "image",
+            Scene::WrongShape {
+                expected: tracer::scene::error::JsonType::Object,
+                got: tracer::scene::error::JsonType::Array,
+            },
+            &[],
+        ),
+        scene(
+            "materials.red",
+            Scene::RadianceOverflow { bound: 1e40 },
+            &[],
+        ),
+        scene(
+            ".",
+            Scene::TooExpensive { rays: 1e13 },
+            &["--allow-expensive", "max_depth", "throughput_cutoff"],
+        ),
+        (ErrorKind::RadianceNotFinite { x: 3, y: 4 }, vec![]),
     ]
 }
