@@ -104,7 +104,7 @@ impl JobArgs {
 pub fn run(args: &RenderArgs, ui: &Ui) -> error::Result<()> {
     let job = args.job.job(&args.scene)?;
     // Refuse an unwritable destination before spending the render on it.
-    let destination = Destination::new(&args.output).map_err(ErrorKind::Output)?;
+    let destination = Destination::new(&args.output, &[&args.scene]).map_err(ErrorKind::Output)?;
     let bar = std::io::stderr().is_terminal().then(|| {
         let bar = indicatif::ProgressBar::new(job.scene().height as u64);
         bar.set_style(

@@ -58,6 +58,7 @@
 pub mod camera;
 pub mod geometry;
 pub mod integrator;
+pub mod interrupt;
 pub mod job;
 pub mod needs;
 pub mod output;

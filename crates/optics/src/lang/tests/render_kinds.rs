@@ -39,14 +39,17 @@ pub fn output_slot(error: &OutputError) -> usize {
         OutputError::NoDirectory { .. } => 20,
         OutputError::PfmIsPng { .. } => 21,
         OutputError::Png { .. } => 22,
+        OutputError::Unwritable { .. } => 23,
+        OutputError::NotARegularFile { .. } => 24,
+        OutputError::IsAnInput { .. } => 25,
     }
 }
 
 /// The slot of the threads' failure.
-pub const THREADS: usize = 23;
+pub const THREADS: usize = 26;
 
 /// How many render slots there are.
-pub const SLOTS: usize = 24;
+pub const SLOTS: usize = 27;
 
 /// A thread pool that cannot start: its spawner fails.
 pub fn thread_pool_error() -> rayon::ThreadPoolBuildError {
@@ -196,6 +199,26 @@ pub fn examples() -> Vec<(ErrorKind, Vec<String>)> {
                 dir: "nowhere".into(),
             },
             &["nowhere/a.png", "nowhere"],
+        ),
+        output(
+            OutputError::Unwritable {
+                dir: "/sys".into(),
+                source: os_error(),
+            },
+            &["/sys", &os],
+        ),
+        output(
+            OutputError::NotARegularFile {
+                path: "/dev/null".into(),
+            },
+            &["/dev/null"],
+        ),
+        output(
+            OutputError::IsAnInput {
+                path: "./scene.json".into(),
+                input: "scene.json".into(),
+            },
+            &["./scene.json", "scene.json"],
         ),
         output(
             OutputError::PfmIsPng {

@@ -1,0 +1,35 @@
+//! The pipeline's own promises: files replaced whole, destinations
+//! refused before any check runs, the report's pair never split.
+
+use super::*;
+
+#[test]
+fn writing_replaces_the_file_whole() {
+    let dir = tempfile::tempdir().unwrap();
+    write(dir.path(), "r.json", b"first").unwrap();
+    write(dir.path(), "r.json", b"second").unwrap();
+    assert_eq!(std::fs::read(dir.path().join("r.json")).unwrap(), b"second");
+    assert_eq!(
+        std::fs::read_dir(dir.path()).unwrap().count(),
+        1,
+        "no temporary file left"
+    );
+}
+
+#[test]
+fn an_output_path_that_is_a_file_is_refused_before_anything_runs() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("taken");
+    std::fs::write(&file, "x").unwrap();
+    let options = Options {
+        out: Some(file.clone()),
+        ..Options::quick(Checkout::at_build_time(), "test")
+    };
+    let mut steps = 0;
+    let error = run(&options, |_| steps += 1).unwrap_err();
+    assert!(
+        matches!(&error, PipelineError::OutNotADirectory { path } if *path == file),
+        "{error}"
+    );
+    assert_eq!(steps, 0);
+}
