@@ -178,6 +178,7 @@ fn install() {}
 #[cfg(unix)]
 fn end_by(signal: i32) {
     PENDING.store(true, Ordering::SeqCst);
+    let arrived = phase();
     let paths = TEMPORARIES.lock().unwrap_or_else(PoisonError::into_inner);
     for path in paths.iter() {
         let _ = std::fs::remove_file(path);
@@ -185,7 +186,7 @@ fn end_by(signal: i32) {
     if hooked().is_some() {
         eprintln!(
             "tracer: signal {signal} while {}: {} temporaries removed",
-            phase().name(),
+            arrived.name(),
             paths.len()
         );
     }
