@@ -27,7 +27,10 @@ fn refused(out: &Path) -> Value {
     let stderr = String::from_utf8_lossy(&run.stderr);
     assert_eq!(run.status.code(), Some(1), "{stderr}");
     assert!(!stderr.contains("panicked"), "{stderr}");
-    assert!(!out.join("report.json").exists(), "report.json without report.html");
+    assert!(
+        !out.join("report.json").exists(),
+        "report.json without report.html"
+    );
     let error: Value = serde_json::from_slice(&run.stdout)
         .unwrap_or_else(|e| panic!("{e}: {}", String::from_utf8_lossy(&run.stdout)));
     assert_eq!(error["error"]["field"], "--out", "{error}");

@@ -51,11 +51,17 @@ fn a_report_html_that_cannot_be_replaced_is_refused_before_any_check() {
     std::fs::create_dir(dir.path().join("report.html")).unwrap();
     let (error, steps) = refused(dir.path());
     assert!(
-        matches!(&error, PipelineError::Write(OutputError::NotARegularFile { .. })),
+        matches!(
+            &error,
+            PipelineError::Write(OutputError::NotARegularFile { .. })
+        ),
         "{error}"
     );
     assert_eq!(steps, 0, "checks ran before the refusal");
-    assert!(!dir.path().join("report.json").exists(), "report.json without report.html");
+    assert!(
+        !dir.path().join("report.json").exists(),
+        "report.json without report.html"
+    );
 }
 
 /// sysfs takes no new files, even from root: `figures` linked there is an
@@ -71,5 +77,8 @@ fn an_unwritable_figures_directory_is_refused_before_any_check() {
         "{error}"
     );
     assert_eq!(steps, 0, "checks ran before the refusal");
-    assert!(!dir.path().join("report.json").exists(), "report.json without report.html");
+    assert!(
+        !dir.path().join("report.json").exists(),
+        "report.json without report.html"
+    );
 }
