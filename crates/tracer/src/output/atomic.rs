@@ -98,21 +98,34 @@ pub fn write_all_atomically(files: &[(&Path, &[u8])]) -> Result<(), OutputError>
 fn stage<'a>(path: &'a Path, bytes: &[u8]) -> Result<Staged<'a>, OutputError> {
     let io = io_error(path);
     let mut temp = temporary(directory(path)?).map_err(&io)?;
+    if let Err(error) = fill(&mut temp, path, bytes) {
+        // Removed under the lock, so that no signal finds it registered and gone.
+        let mut registry = interrupt::lock();
+        registry.forget(temp.path());
+        drop(temp);
+        return Err(io(error));
+    }
+    Ok(Staged {
+        target: path,
+        temp: temp.into_temp_path(),
+    })
+}
+
+/// Writes `bytes` to `temp`, with the permissions of `path`'s previous
+/// file (an ordinary 0644 when there is none), and flushes it to disk.
+fn fill(temp: &mut tempfile::NamedTempFile, path: &Path, bytes: &[u8]) -> io::Result<()> {
     // Temporary files are private (0600); an image is an ordinary file.
     #[cfg(unix)]
     {
         use std::os::unix::fs::PermissionsExt;
         let mode = std::fs::metadata(path).map_or(0o644, |m| m.permissions().mode());
         temp.as_file()
-            .set_permissions(std::fs::Permissions::from_mode(mode))
-            .map_err(&io)?;
+            .set_permissions(std::fs::Permissions::from_mode(mode))?;
     }
-    temp.write_all(bytes).map_err(&io)?;
-    temp.as_file().sync_all().map_err(&io)?;
-    Ok(Staged {
-        target: path,
-        temp: temp.into_temp_path(),
-    })
+    #[cfg(not(unix))]
+    let _ = path;
+    temp.write_all(bytes)?;
+    temp.as_file().sync_all()
 }
 
 /// Renames every staged file into place with `rename`, under the
