@@ -15,11 +15,15 @@
 //!
 //! Every file is written to a temporary name beside it and renamed into
 //! place (`tracer::output::write_atomically`), so an interrupted run never
-//! leaves a partial report.
+//! leaves a partial report. The destinations are checked before any check
+//! runs ([`check_outputs`]), the figures are written before the report, and
+//! `report.json` and `report.html` are renamed into place as one pair
+//! (`tracer::output::write_all_atomically`): never one without the other.
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
+use tracer::output::{check_destination, writable_directory, write_all_atomically};
 use tracer::output::{write_atomically, OutputError};
 
 use crate::check::Check;
@@ -181,10 +185,7 @@ pub fn run(options: &Options, mut progress: impl FnMut(Step)) -> Result<Outcome,
         .out
         .clone()
         .unwrap_or_else(|| checkout.root().join("validation/out"));
-    if out.exists() && !out.is_dir() {
-        return Err(PipelineError::OutNotADirectory { path: out });
-    }
-    create_dir(&out)?;
+    check_outputs(&out)?;
     let python = match &options.python {
         Some(setup) => Some(set_up_python(checkout, setup, &mut progress)?),
         None => None,
@@ -218,7 +219,6 @@ pub fn run(options: &Options, mut progress: impl FnMut(Step)) -> Result<Outcome,
     }
     report.checks.splice(0..0, first_checks);
     report.summarise();
-    write(&out, "report.json", to_json(&report).as_bytes())?;
     let mut figures = match &python {
         Some(python) => {
             progress(Step::DrawingFigures);
@@ -227,12 +227,35 @@ pub fn run(options: &Options, mut progress: impl FnMut(Step)) -> Result<Outcome,
         None => Vec::new(),
     };
     figures.extend(write_render_figures(&out, &report)?);
-    write(&out, "report.html", to_html(&report, &figures).as_bytes())?;
+    let (json, html) = (to_json(&report), to_html(&report, &figures));
+    write_all_atomically(&[
+        (&out.join("report.json"), json.as_bytes()),
+        (&out.join("report.html"), html.as_bytes()),
+    ])?;
     Ok(Outcome {
         report,
         out,
         figures,
     })
+}
+
+/// Refuses, before any work, an output directory where the report or
+/// the figures could not be written: `out` and `out/figures` are created
+/// and take new files, and `report.json` and `report.html` are absent or
+/// regular files.
+pub fn check_outputs(out: &Path) -> Result<(), PipelineError> {
+    if out.exists() && !out.is_dir() {
+        return Err(PipelineError::OutNotADirectory {
+            path: out.to_owned(),
+        });
+    }
+    let figures = out.join("figures");
+    create_dir(&figures)?;
+    writable_directory(&figures)?;
+    for name in ["report.json", "report.html"] {
+        check_destination(&out.join(name), &[])?;
+    }
+    Ok(())
 }
 
 fn create_dir(path: &Path) -> Result<(), PipelineError> {
@@ -300,14 +323,18 @@ fn random_cases(
     ))
 }
 
-/// The figure script's figures; when it fails, a failed check in the
-/// report (rewritten) instead of figures.
+/// The figure script's figures, drawn from the report as it stands
+/// (written for the script to `out/exchange/report.json`); when it fails,
+/// a failed check in the report instead of figures.
 fn draw_figures_or_report(
     python: &Path,
     scripts: &Path,
     out: &Path,
     report: &mut Report,
 ) -> Result<Vec<String>, PipelineError> {
+    let exchange = out.join("exchange");
+    create_dir(&exchange)?;
+    write(&exchange, "report.json", to_json(report).as_bytes())?;
     match draw_figures(python, scripts, out) {
         Ok(figures) => Ok(figures),
         Err(error) => {
@@ -321,19 +348,18 @@ fn draw_figures_or_report(
             check.fail(error.to_string());
             report.checks.push(check);
             report.summarise();
-            write(out, "report.json", to_json(report).as_bytes())?;
             Ok(Vec::new())
         }
     }
 }
 
-/// Runs the figure script on `out/report.json`; the figure file names,
-/// relative to `out`.
+/// Runs the figure script on `out/exchange/report.json`; the figure file
+/// names, relative to `out`.
 fn draw_figures(python: &Path, scripts: &Path, out: &Path) -> Result<Vec<String>, ToolError> {
     let mut command = Command::new(python);
     command
         .arg(scripts.join("plot_report.py"))
-        .arg(out.join("report.json"))
+        .arg(out.join("exchange/report.json"))
         .arg(out.join("figures"));
     let listed = run_tool(command, Task::Script("python-checks/plot_report.py".into()))?;
     Ok(listed
@@ -356,37 +382,4 @@ fn write_render_figures(out: &Path, report: &Report) -> Result<Vec<String>, Pipe
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn writing_replaces_the_file_whole() {
-        let dir = tempfile::tempdir().unwrap();
-        write(dir.path(), "r.json", b"first").unwrap();
-        write(dir.path(), "r.json", b"second").unwrap();
-        assert_eq!(std::fs::read(dir.path().join("r.json")).unwrap(), b"second");
-        assert_eq!(
-            std::fs::read_dir(dir.path()).unwrap().count(),
-            1,
-            "no temporary file left"
-        );
-    }
-
-    #[test]
-    fn an_output_path_that_is_a_file_is_refused_before_anything_runs() {
-        let dir = tempfile::tempdir().unwrap();
-        let file = dir.path().join("taken");
-        std::fs::write(&file, "x").unwrap();
-        let options = Options {
-            out: Some(file.clone()),
-            ..Options::quick(Checkout::at_build_time(), "test")
-        };
-        let mut steps = 0;
-        let error = run(&options, |_| steps += 1).unwrap_err();
-        assert!(
-            matches!(&error, PipelineError::OutNotADirectory { path } if *path == file),
-            "{error}"
-        );
-        assert_eq!(steps, 0);
-    }
-}
+mod tests;

@@ -110,7 +110,7 @@ impl JobArgs {
 pub fn run(args: &RenderArgs, ui: &Ui) -> error::Result<()> {
     let job = args.job.job(&args.scene)?;
     // Refuse an unwritable destination before spending the render on it.
-    let destination = Destination::new(&args.output).map_err(ErrorKind::Output)?;
+    let destination = Destination::new(&args.output, &[&args.scene]).map_err(ErrorKind::Output)?;
     warn_if_long(&job, ui.lang);
     let bar = progress_bar(job.scene().height as u64);
     let progress = |rows: usize| {

@@ -39,7 +39,8 @@
 //! | [`needs`] | what a scene needs, so the renderer runs only that |
 //! | [`render`] | the image, in parallel, identical for any thread count |
 //! | [`rng`] | PCG32 streams, one per pixel |
-//! | [`output`] | PNG (sRGB, stated tone mapping) and PFM, written atomically |
+//! | [`output`] | PNG (sRGB, stated tone mapping) and PFM, the destination checked before the render, the pair written atomically |
+//! | [`interrupt`] | SIGINT and SIGTERM while writing: temporaries removed, a commit finished first |
 //!
 //! # Precision
 //!
@@ -58,6 +59,7 @@
 pub mod camera;
 pub mod geometry;
 pub mod integrator;
+pub mod interrupt;
 pub mod job;
 pub mod needs;
 pub mod output;

@@ -8,9 +8,17 @@
 //!
 //! A file is written to a temporary file in the destination's directory and
 //! renamed over the destination only once complete, so an interrupted or
-//! failed write never leaves a partial image.
+//! failed write never leaves a partial image; the PNG and its PFM are
+//! renamed as one set, so they are never of two renders
+//! ([`write_all_atomically`], and [`crate::interrupt`] for signals). The
+//! destination is checked before the render ([`Destination::new`],
+//! [`check_destination`]).
 
-use std::io::Write;
+mod atomic;
+mod check;
+
+pub use atomic::{write_all_atomically, write_atomically};
+pub use check::{check_destination, writable_directory};
 
 use image::ImageEncoder;
 use std::path::{Path, PathBuf};
@@ -35,6 +43,29 @@ pub enum OutputError {
         path: String,
         /// Its directory.
         dir: String,
+    },
+    /// A directory in which no file can be created.
+    #[error("cannot write into the directory {dir}: {source}")]
+    Unwritable {
+        /// The directory.
+        dir: String,
+        /// The reason.
+        source: std::io::Error,
+    },
+    /// A destination that exists and is not a regular file (a directory,
+    /// FIFO, device, socket or symbolic link), which writing would replace.
+    #[error("{path} exists and is not a regular file; it is not replaced")]
+    NotARegularFile {
+        /// The destination.
+        path: String,
+    },
+    /// A destination that is one of the files being read.
+    #[error("{path} is {input}, which is being read; give another output")]
+    IsAnInput {
+        /// The destination.
+        path: String,
+        /// The input, as given.
+        input: String,
     },
     /// A PNG's name whose PFM would be itself (it ends in `.pfm`).
     #[error("{path}: give the PNG's name (the PFM is written beside it)")]
@@ -86,7 +117,7 @@ pub fn pfm_bytes(image: &Image) -> Vec<u8> {
 }
 
 /// The directory `path` is written into, which must exist.
-fn directory(path: &Path) -> Result<&Path, OutputError> {
+pub(crate) fn directory(path: &Path) -> Result<&Path, OutputError> {
     let dir = match path.parent() {
         Some(d) if !d.as_os_str().is_empty() => d,
         _ => Path::new("."),
@@ -101,8 +132,9 @@ fn directory(path: &Path) -> Result<&Path, OutputError> {
 }
 
 /// Where a render is written: a PNG and, beside it, the PFM of the same
-/// name. Checked when made, so that an unwritable destination is refused
-/// before the render is spent on it.
+/// name. Checked when made ([`check_destination`], for each), so that a
+/// destination that cannot or must not be written is refused before the
+/// render is spent on it.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Destination {
     png: PathBuf,
@@ -110,15 +142,17 @@ pub struct Destination {
 }
 
 impl Destination {
-    /// The PNG at `png`, the PFM beside it; its directory must exist.
-    pub fn new(png: &Path) -> Result<Self, OutputError> {
+    /// The PNG at `png`, the PFM beside it, neither one of `inputs` (the
+    /// scene read).
+    pub fn new(png: &Path, inputs: &[&Path]) -> Result<Self, OutputError> {
         let pfm = png.with_extension("pfm");
         if pfm == png {
             return Err(OutputError::PfmIsPng {
                 path: png.display().to_string(),
             });
         }
-        directory(png)?;
+        check_destination(png, inputs)?;
+        check_destination(&pfm, inputs)?;
         Ok(Destination {
             png: png.to_owned(),
             pfm,
@@ -135,47 +169,22 @@ impl Destination {
         &self.pfm
     }
 
-    /// Writes `image` to both, each atomically.
+    /// Writes `image` to both, atomically as a pair: after a write error
+    /// or SIGINT/SIGTERM both are the previous render's (or absent), never
+    /// one of each.
     pub fn write(&self, image: &Image) -> Result<(), OutputError> {
-        write_png(&self.png, image)?;
-        write_pfm(&self.pfm, image)
+        let png = png_bytes(&self.png, image)?;
+        write_all_atomically(&[(&self.png, &png), (&self.pfm, &pfm_bytes(image))])
     }
-}
-
-/// Writes `bytes` to `path` atomically: a temporary file beside it, renamed.
-pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), OutputError> {
-    let io = |source| OutputError::Io {
-        path: path.display().to_string(),
-        source,
-    };
-    let dir = directory(path)?;
-    let mut temp = tempfile::NamedTempFile::new_in(dir).map_err(|e| {
-        io(std::io::Error::new(
-            e.kind(),
-            e.to_string()
-                .split(" at path ")
-                .next()
-                .unwrap_or_default()
-                .to_owned(),
-        ))
-    })?;
-    // Temporary files are private (0600); an image is an ordinary file.
-    #[cfg(unix)]
-    {
-        use std::os::unix::fs::PermissionsExt;
-        let mode = std::fs::metadata(path).map_or(0o644, |m| m.permissions().mode());
-        temp.as_file()
-            .set_permissions(std::fs::Permissions::from_mode(mode))
-            .map_err(io)?;
-    }
-    temp.write_all(bytes).map_err(io)?;
-    temp.as_file().sync_all().map_err(io)?;
-    temp.persist(path).map_err(|e| io(e.error))?;
-    Ok(())
 }
 
 /// Writes the image as an sRGB PNG, atomically.
 pub fn write_png(path: &Path, image: &Image) -> Result<(), OutputError> {
+    write_atomically(path, &png_bytes(path, image)?)
+}
+
+/// The image encoded as an sRGB PNG (`path` names it in an error).
+fn png_bytes(path: &Path, image: &Image) -> Result<Vec<u8>, OutputError> {
     let mut encoded = Vec::new();
     image::codecs::png::PngEncoder::new(&mut encoded)
         .write_image(
@@ -188,7 +197,7 @@ pub fn write_png(path: &Path, image: &Image) -> Result<(), OutputError> {
             path: path.display().to_string(),
             source,
         })?;
-    write_atomically(path, &encoded)
+    Ok(encoded)
 }
 
 /// Writes the image as a PFM, atomically.

@@ -259,7 +259,7 @@ fn a_render_that_leaves_f32_is_refused_before_writing() {
     let job = RenderJob::new(scene, &Overrides::default()).unwrap();
     let dir = tempfile::tempdir().unwrap();
     let png = dir.path().join("out.png");
-    let destination = tracer::output::Destination::new(&png).unwrap();
+    let destination = tracer::output::Destination::new(&png, &[]).unwrap();
     match job.render_to(&destination, Some(1), &|_| {}) {
         Err(RenderError::NotFinite { x, y }) => assert!(x < 4 && y < 3),
         other => panic!("rendered: {:?}", other.map(|r| r.image.pixels)),

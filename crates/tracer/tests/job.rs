@@ -153,16 +153,16 @@ fn a_destination_is_refused_before_the_render() {
     let dir = tempfile::tempdir().unwrap();
     let pfm = dir.path().join("out.pfm");
     assert!(matches!(
-        Destination::new(&pfm),
+        Destination::new(&pfm, &[]),
         Err(OutputError::PfmIsPng { .. })
     ));
     let nowhere = dir.path().join("no/such/dir/out.png");
     assert!(matches!(
-        Destination::new(&nowhere),
+        Destination::new(&nowhere, &[]),
         Err(OutputError::NoDirectory { .. })
     ));
     let png = dir.path().join("out.png");
-    let destination = Destination::new(&png).unwrap();
+    let destination = Destination::new(&png, &[]).unwrap();
     let job = RenderJob::new(glass_scene(), &Overrides::default()).unwrap();
     let rendered = job.render_to(&destination, Some(1), &|_| {}).unwrap();
     assert_eq!(destination.pfm(), dir.path().join("out.pfm"));

@@ -40,6 +40,9 @@ pub fn output_name(error: &OutputError) -> &'static str {
     match error {
         OutputError::Io { .. } => "output.io",
         OutputError::NoDirectory { .. } => "output.no_directory",
+        OutputError::Unwritable { .. } => "output.unwritable",
+        OutputError::NotARegularFile { .. } => "output.not_a_regular_file",
+        OutputError::IsAnInput { .. } => "output.is_an_input",
         OutputError::PfmIsPng { .. } => "output.pfm_is_png",
         OutputError::Png { .. } => "output.png",
     }

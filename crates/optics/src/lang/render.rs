@@ -109,6 +109,15 @@ pub fn output_hu(error: &OutputError) -> String {
         OutputError::NoDirectory { path, dir } => {
             format!("a(z) {path} nem írható: a(z) {dir} könyvtár nem létezik")
         }
+        OutputError::Unwritable { dir, source } => {
+            format!("a(z) {dir} könyvtárba nem írható fájl: {source}")
+        }
+        OutputError::NotARegularFile { path } => {
+            format!("a(z) {path} létezik, és nem közönséges fájl; nem íródik felül")
+        }
+        OutputError::IsAnInput { path, input } => {
+            format!("a(z) {path} azonos a beolvasott {input} fájllal; más kimenetet kell megadni")
+        }
         OutputError::PfmIsPng { path } => {
             format!("{path}: a PNG nevét kell megadni (a PFM mellé kerül)")
         }

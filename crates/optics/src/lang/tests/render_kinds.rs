@@ -29,31 +29,34 @@ pub fn scene_slot(kind: &Scene) -> usize {
         Scene::UnknownMaterial { .. } => 16,
         Scene::DielectricWithoutInside => 17,
         Scene::CourseHasNoRefraction => 18,
-        Scene::NotUtf8 { .. } => 24,
-        Scene::WrongShape { .. } => 25,
-        Scene::RadianceOverflow { .. } => 26,
-        Scene::TooExpensive { .. } => 27,
+        Scene::NotUtf8 { .. } => 19,
+        Scene::WrongShape { .. } => 20,
+        Scene::RadianceOverflow { .. } => 21,
+        Scene::TooExpensive { .. } => 22,
     }
 }
 
 /// The place of an output error's kind among the render slots.
 pub fn output_slot(error: &OutputError) -> usize {
     match error {
-        OutputError::Io { .. } => 19,
-        OutputError::NoDirectory { .. } => 20,
-        OutputError::PfmIsPng { .. } => 21,
-        OutputError::Png { .. } => 22,
+        OutputError::Io { .. } => 23,
+        OutputError::NoDirectory { .. } => 24,
+        OutputError::PfmIsPng { .. } => 25,
+        OutputError::Png { .. } => 26,
+        OutputError::Unwritable { .. } => 27,
+        OutputError::NotARegularFile { .. } => 28,
+        OutputError::IsAnInput { .. } => 29,
     }
 }
 
 /// The slot of the threads' failure.
-pub const THREADS: usize = 23;
+pub const THREADS: usize = 30;
 
 /// The slot of a pixel that left `f32`.
-pub const NOT_FINITE: usize = 28;
+pub const NOT_FINITE: usize = 31;
 
 /// How many render slots there are.
-pub const SLOTS: usize = 29;
+pub const SLOTS: usize = 32;
 
 /// A thread pool that cannot start: its spawner fails.
 pub fn thread_pool_error() -> rayon::ThreadPoolBuildError {
@@ -203,6 +206,26 @@ pub fn examples() -> Vec<(ErrorKind, Vec<String>)> {
                 dir: "nowhere".into(),
             },
             &["nowhere/a.png", "nowhere"],
+        ),
+        output(
+            OutputError::Unwritable {
+                dir: "/sys".into(),
+                source: os_error(),
+            },
+            &["/sys", &os],
+        ),
+        output(
+            OutputError::NotARegularFile {
+                path: "/dev/null".into(),
+            },
+            &["/dev/null"],
+        ),
+        output(
+            OutputError::IsAnInput {
+                path: "./scene.json".into(),
+                input: "scene.json".into(),
+            },
+            &["./scene.json", "scene.json"],
         ),
         output(
             OutputError::PfmIsPng {
