@@ -176,7 +176,7 @@ impl Coverage {
     fn print(&self, target: &str, cases: u32, seconds: f64) {
         let answers = self.answers.lock().unwrap();
         let limits = self.known_limits.lock().unwrap();
-        println!("{target}: {cases} cases in {seconds:.1} s, {answers} answers, {limits} at the refraction's known limit");
+        println!("{target}: {cases} cases in {seconds:.1} s, {answers} answers, {limits} of the refraction's open defect");
         println!("  error kinds: {:?}", self.kinds.lock().unwrap());
         println!("  fields named: {:?}", self.fields.lock().unwrap());
     }
@@ -251,9 +251,10 @@ fn check_record(record: &Value, coverage: &Coverage) -> Result<(), TestCaseError
             .sqrt();
         // 4 ulp: each component rounded once, the check's squares again.
         let off = (length - 1.0).abs() > 4.0 * f64::EPSILON;
-        // A known limit of `radiometry::specular`, counted, not hidden:
-        // where cos θi rounds to ±1 the law's cos θt is ±1 too, while
-        // sin θi / η' (η' = 3e-42) is not small, and ωt is off unit length.
+        // An open defect of `radiometry::specular` (the README's "open
+        // defect"), counted, not hidden: where cos θi rounds to ±1 the
+        // law's cos θt is ±1 too, while sin θi / η' is not small, and ωt is
+        // off unit length.
         if off && law == "refract" && record["details"]["cos_t"].as_f64().map(f64::abs) == Some(1.0)
         {
             coverage.known_limit();
