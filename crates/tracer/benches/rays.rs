@@ -10,17 +10,7 @@ use criterion::{criterion_group, Criterion, Throughput};
 use tracer::job::RenderJob;
 use tracer::scene::{self, IntegratorKind, Settings};
 
-const SCENES: [&str; 9] = [
-    "first_red_sphere",
-    "normals",
-    "diffuse",
-    "blinn_phong",
-    "shadow",
-    "gold_spheres",
-    "kaleidoscope",
-    "kaleidoscope_lit",
-    "webgl_seven_spheres",
-];
+const SCENES: [&str; 9] = scene::COURSE_SCENES;
 
 /// The integrators each scene is benched with, and their samples per pixel.
 fn runs(name: &str) -> [(IntegratorKind, u32); 2] {

@@ -336,3 +336,22 @@ fn each_refusal_carries_its_field_and_kind() {
         assert!(kind(error.kind()), "{name}: {:?}", error.kind());
     }
 }
+
+/// `scene::COURSE_SCENES` names every scene file in `crates/tracer/scenes/`
+/// and nothing else, so a scene added or removed there is seen by every
+/// test, bench and example that walks the list.
+#[test]
+fn the_course_scene_list_is_the_scene_folder() {
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes");
+    let mut on_disk: Vec<String> = std::fs::read_dir(dir)
+        .expect("the scene folder")
+        .filter_map(|e| {
+            let name = e.expect("a directory entry").file_name();
+            name.to_str()?.strip_suffix(".json").map(str::to_owned)
+        })
+        .collect();
+    on_disk.sort();
+    let mut listed: Vec<String> = tracer::scene::COURSE_SCENES.map(String::from).to_vec();
+    listed.sort();
+    assert_eq!(on_disk, listed);
+}

@@ -63,20 +63,10 @@ fn an_exponential_render_is_refused_before_it_starts_unless_allowed() {
 /// scene, under every integrator, no render casts more rays than it said.
 #[test]
 fn the_estimate_bounds_the_rays_cast() {
-    let mut scenes: Vec<Scene> = [
-        "first_red_sphere",
-        "normals",
-        "diffuse",
-        "blinn_phong",
-        "shadow",
-        "gold_spheres",
-        "kaleidoscope",
-        "kaleidoscope_lit",
-        "webgl_seven_spheres",
-    ]
-    .iter()
-    .map(|name| common::course_scene(name, 16, 12))
-    .collect();
+    let mut scenes: Vec<Scene> = tracer::scene::COURSE_SCENES
+        .iter()
+        .map(|name| common::course_scene(name, 16, 12))
+        .collect();
     scenes.extend([
         glass_scene(0.0, 8),
         glass_scene(1e-3, 11),

@@ -29,17 +29,7 @@ use tracer::job::{Overrides, RenderError, RenderJob};
 use tracer::scene::faults::{self, Fault};
 use tracer::scene::{self, IntegratorKind, RenderSpec};
 
-const SCENES: [&str; 9] = [
-    "first_red_sphere",
-    "normals",
-    "diffuse",
-    "blinn_phong",
-    "shadow",
-    "gold_spheres",
-    "kaleidoscope",
-    "kaleidoscope_lit",
-    "webgl_seven_spheres",
-];
+const SCENES: [&str; 9] = scene::COURSE_SCENES;
 
 use tracer::scene::fields::{field_of, FIELDS};
 

@@ -42,6 +42,22 @@ pub use settings::{MAX_DEPTH, MAX_SPP};
 /// The only schema version this crate reads.
 pub const SCHEMA_VERSION: u32 = 1;
 
+/// The course's scenes that ship with the tracer, as
+/// `crates/tracer/scenes/<name>.json`, in the order the course meets them:
+/// the inputs of the tracer's tests, benches and examples and of the
+/// harness's render references.
+pub const COURSE_SCENES: [&str; 9] = [
+    "first_red_sphere",
+    "normals",
+    "diffuse",
+    "blinn_phong",
+    "shadow",
+    "gold_spheres",
+    "kaleidoscope",
+    "kaleidoscope_lit",
+    "webgl_seven_spheres",
+];
+
 /// The largest image side accepted, in pixels. 16384 is the largest texture
 /// side common GPUs allow and four times a 4K display; a larger image is
 /// almost certainly a typo, and 16384² RGB floats are already 3 GiB.
