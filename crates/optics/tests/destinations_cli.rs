@@ -4,6 +4,9 @@
 //! unwritable directory is reported as such instead of after the render.
 //! Each refusal names `--output`, exits non-zero and writes nothing.
 
+mod support;
+use support::listing;
+
 use std::path::Path;
 use std::process::{Command, Output};
 
@@ -42,16 +45,6 @@ fn refused(out: &Output) -> String {
         .as_str()
         .unwrap_or_default()
         .to_owned()
-}
-
-/// `dir`'s file names, sorted.
-fn listing(dir: &Path) -> Vec<String> {
-    let mut names: Vec<String> = std::fs::read_dir(dir)
-        .unwrap()
-        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
-        .collect();
-    names.sort();
-    names
 }
 
 #[cfg(unix)]

@@ -4,18 +4,12 @@
 //! its kind and field, no panic and no image; a long render is announced
 //! before it starts.
 
+mod support;
+use support::optics;
+
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
 
 use serde_json::{json, Value};
-
-fn optics(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_optics"))
-        .args(args)
-        .env_remove("OPTICS_CHECKOUT")
-        .output()
-        .expect("the optics binary runs")
-}
 
 fn course_scene(name: &str) -> Value {
     let path = format!(

@@ -6,6 +6,9 @@
 //! which each test asserts.
 #![cfg(unix)]
 
+mod support;
+use support::listing;
+
 use std::io::{BufRead, BufReader, Read};
 use std::os::unix::process::ExitStatusExt;
 use std::path::Path;
@@ -48,16 +51,6 @@ fn read_pair(png: &Path) -> (Vec<u8>, Vec<u8>) {
         std::fs::read(png).unwrap(),
         std::fs::read(png.with_extension("pfm")).unwrap(),
     )
-}
-
-/// `dir`'s file names, sorted.
-fn listing(dir: &Path) -> Vec<String> {
-    let mut names: Vec<String> = std::fs::read_dir(dir)
-        .unwrap()
-        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
-        .collect();
-    names.sort();
-    names
 }
 
 /// Runs `command` paused at `point`, sends `signal` once it says it has

@@ -2,18 +2,13 @@
 //! binary: a bad scene field, an unwritable output and a missing checkout,
 //! each as the JSON error object (kind, field, message) and in Hungarian.
 
+mod support;
+use support::optics;
+
 use std::path::Path;
 use std::process::{Command, Output};
 
 use serde_json::Value;
-
-fn optics(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_optics"))
-        .args(args)
-        .env_remove("OPTICS_CHECKOUT")
-        .output()
-        .expect("the optics binary runs")
-}
 
 fn text(bytes: &[u8]) -> String {
     String::from_utf8_lossy(bytes).into_owned()
