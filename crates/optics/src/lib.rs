@@ -107,8 +107,9 @@ fn print_out(text: &str) -> error::Result<()> {
     written.map_err(|e| ErrorKind::Write(e).into())
 }
 
-/// Writes `text` to stderr, where a failure has nowhere left to go.
-fn print_err(text: &str) {
+/// Writes `text` to stderr, where a failure has nowhere left to go: the
+/// one way the commands write to it, so a closed stderr never panics.
+pub(crate) fn print_err(text: &str) {
     let _ = std::io::stderr().lock().write_all(text.as_bytes());
 }
 

@@ -128,16 +128,13 @@ pub fn run(args: &RenderArgs, ui: &Ui) -> error::Result<()> {
 /// Past [`WARN_RAYS`], the estimate on stderr before the work starts.
 pub(crate) fn warn_if_long(job: &RenderJob, lang: Lang) {
     if job.rays() > WARN_RAYS {
-        eprintln!(
-            "{}",
-            say!(
-                lang,
-                "warning: this may cast up to {:.2e} rays (more than {:e}): it may take long",
-                "figyelem: ez legfeljebb {:.2e} sugarat indíthat (több, mint {:e}): sokáig tarthat",
-                job.rays(),
-                WARN_RAYS
-            )
-        );
+        crate::print_err(&say!(
+            lang,
+            "warning: this may cast up to {:.2e} rays (more than {:e}): it may take long\n",
+            "figyelem: ez legfeljebb {:.2e} sugarat indíthat (több, mint {:e}): sokáig tarthat\n",
+            job.rays(),
+            WARN_RAYS
+        ));
     }
 }
 

@@ -161,7 +161,7 @@ fn progress(ui: &Ui, bar: Option<&ProgressBar>, step: Step) {
         Step::DrawingFigures => say!(lang, "drawing the figures", "az ábrák rajzolása"),
     };
     if !ui.json {
-        eprintln!("optics validate: {message}");
+        crate::print_err(&format!("optics validate: {message}\n"));
     }
 }
 
