@@ -22,6 +22,7 @@ use tracer::job::RenderError;
 use tracer::output::OutputError;
 use tracer::scene::SceneError;
 
+mod english;
 #[cfg(feature = "harness")]
 pub mod harness;
 pub mod render;
@@ -317,92 +318,6 @@ pub(crate) fn usage_text(error: &clap::Error) -> String {
         .strip_prefix("error: ")
         .unwrap_or(&message)
         .to_owned()
-}
-
-impl fmt::Display for ErrorKind {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            ErrorKind::Domain(error) => write!(f, "{error}"),
-            ErrorKind::Usage(error) => write!(f, "{}", usage_text(error)),
-            ErrorKind::VectorParts { count } => write!(
-                f,
-                "expected three comma-separated numbers such as 0,3,4, got {count} part(s)"
-            ),
-            ErrorKind::VectorComponent { axis, text } => {
-                write!(f, "the {axis} component {text:?} is not a number")
-            }
-            ErrorKind::AngleDegrees { name, value } => {
-                write!(f, "{name} must be an angle in [0, 180] degrees, got {value}")
-            }
-            ErrorKind::CosineOrAngle { cosine, angle } => {
-                write!(f, "give exactly one of {cosine} and {angle}")
-            }
-            ErrorKind::ConductorFromInside { name, cos_i } => write!(
-                f,
-                "{name} must be ≥ 0 for a conductor (kappa > 0): light cannot arrive from inside a metal, got {cos_i}"
-            ),
-            ErrorKind::NoCriticalAngle {
-                name,
-                n,
-                name_outside,
-                n_outside,
-            } => write!(
-                f,
-                "{name} = {n} is not larger than {name_outside} = {n_outside}: light going into a denser (or equal) medium always refracts, there is no critical angle"
-            ),
-            ErrorKind::EmptyLine => write!(f, "empty line: every line holds one request"),
-            ErrorKind::MalformedJson(error) => write!(f, "malformed JSON: {error}"),
-            ErrorKind::NotAnObject => write!(f, "a request must be a JSON object"),
-            ErrorKind::LawMissing => write!(f, "law: missing; every request names its law"),
-            ErrorKind::LawNotString => write!(f, "law: must be a string"),
-            ErrorKind::UnknownLaw { law } => write!(
-                f,
-                "law: unknown law {law:?}, expected one of {}",
-                crate::batch::LAWS.join(", ")
-            ),
-            ErrorKind::Request {
-                path: Some(path),
-                message,
-            } => write!(f, "{path}: {message}"),
-            ErrorKind::Request {
-                path: None,
-                message,
-            } => write!(f, "{message}"),
-            ErrorKind::ReadLine { line, source } => write!(f, "reading line {line}: {source}"),
-            ErrorKind::NotUtf8 { column } => write!(
-                f,
-                "the line is not UTF-8 text: the byte at column {column} is not"
-            ),
-            ErrorKind::Overflow { quantity, inputs } => write!(
-                f,
-                "{quantity} overflows: it grows with {} past the largest finite number (1.8e308); give smaller values",
-                inputs.join(", ")
-            ),
-            ErrorKind::Write(error) => write!(f, "cannot write the output: {error}"),
-            ErrorKind::Encode(error) => write!(f, "cannot write the result as JSON: {error}"),
-            ErrorKind::Scene { file, error } => write!(f, "scene {}: {error}", file.display()),
-            ErrorKind::Output(error) => write!(f, "--output: {error}"),
-            ErrorKind::Threads(error) => {
-                write!(f, "cannot start the render's threads: {error}")
-            }
-            ErrorKind::RadianceNotFinite { x, y } => write!(
-                f,
-                "the radiance at pixel ({x}, {y}) is not finite in f32: the paths' gain \
-                 exceeds f32 there; nothing was written"
-            ),
-            #[cfg(feature = "harness")]
-            ErrorKind::Checkout(error) => write!(f, "{error}"),
-            #[cfg(feature = "harness")]
-            ErrorKind::Pipeline(error) => match harness::pipeline_lead(error) {
-                Some(lead) => write!(f, "{}: {error}", lead.en),
-                None => write!(f, "{error}"),
-            },
-            #[cfg(feature = "harness")]
-            ErrorKind::ChecksFailed { failed, checks } => {
-                write!(f, "{failed} of {checks} checks failed")
-            }
-        }
-    }
 }
 
 impl fmt::Display for Error {

@@ -6,7 +6,9 @@ mod support;
 use support::optics;
 
 use std::path::Path;
-use std::process::{Command, Output};
+#[cfg(feature = "harness")]
+use std::process::Command;
+use std::process::Output;
 
 use serde_json::Value;
 

@@ -1,0 +1,100 @@
+//! The English text of each kind: its `Display`, the one place the
+//! suite's own messages are worded in English (their Hungarian is in
+//! `crate::lang`).
+
+use std::fmt;
+
+#[cfg(feature = "harness")]
+use super::harness;
+use super::{usage_text, ErrorKind};
+
+impl fmt::Display for ErrorKind {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            ErrorKind::Domain(error) => write!(f, "{error}"),
+            ErrorKind::Usage(error) => write!(f, "{}", usage_text(error)),
+            ErrorKind::VectorParts { count } => write!(
+                f,
+                "expected three comma-separated numbers such as 0,3,4, got {count} part(s)"
+            ),
+            ErrorKind::VectorComponent { axis, text } => {
+                write!(f, "the {axis} component {text:?} is not a number")
+            }
+            ErrorKind::AngleDegrees { name, value } => {
+                write!(f, "{name} must be an angle in [0, 180] degrees, got {value}")
+            }
+            ErrorKind::CosineOrAngle { cosine, angle } => {
+                write!(f, "give exactly one of {cosine} and {angle}")
+            }
+            ErrorKind::ConductorFromInside { name, cos_i } => write!(
+                f,
+                "{name} must be ≥ 0 for a conductor (kappa > 0): light cannot arrive from inside a metal, got {cos_i}"
+            ),
+            ErrorKind::NoCriticalAngle {
+                name,
+                n,
+                name_outside,
+                n_outside,
+            } => no_critical_angle(f, (name, *n), (name_outside, *n_outside)),
+            ErrorKind::EmptyLine => write!(f, "empty line: every line holds one request"),
+            ErrorKind::MalformedJson(error) => write!(f, "malformed JSON: {error}"),
+            ErrorKind::NotAnObject => write!(f, "a request must be a JSON object"),
+            ErrorKind::LawMissing => write!(f, "law: missing; every request names its law"),
+            ErrorKind::LawNotString => write!(f, "law: must be a string"),
+            ErrorKind::UnknownLaw { law } => write!(
+                f,
+                "law: unknown law {law:?}, expected one of {}",
+                crate::batch::LAWS.join(", ")
+            ),
+            ErrorKind::Request { path, message } => match path {
+                Some(path) => write!(f, "{path}: {message}"),
+                None => write!(f, "{message}"),
+            },
+            ErrorKind::ReadLine { line, source } => write!(f, "reading line {line}: {source}"),
+            ErrorKind::NotUtf8 { column } => write!(
+                f,
+                "the line is not UTF-8 text: the byte at column {column} is not"
+            ),
+            ErrorKind::Overflow { quantity, inputs } => write!(
+                f,
+                "{quantity} overflows: it grows with {} past the largest finite number (1.8e308); give smaller values",
+                inputs.join(", ")
+            ),
+            ErrorKind::Write(error) => write!(f, "cannot write the output: {error}"),
+            ErrorKind::Encode(error) => write!(f, "cannot write the result as JSON: {error}"),
+            ErrorKind::Scene { file, error } => write!(f, "scene {}: {error}", file.display()),
+            ErrorKind::Output(error) => write!(f, "--output: {error}"),
+            ErrorKind::Threads(error) => {
+                write!(f, "cannot start the render's threads: {error}")
+            }
+            ErrorKind::RadianceNotFinite { x, y } => write!(
+                f,
+                "the radiance at pixel ({x}, {y}) is not finite in f32: the paths' gain \
+                 exceeds f32 there; nothing was written"
+            ),
+            #[cfg(feature = "harness")]
+            ErrorKind::Checkout(error) => write!(f, "{error}"),
+            #[cfg(feature = "harness")]
+            ErrorKind::Pipeline(error) => match harness::pipeline_lead(error) {
+                Some(lead) => write!(f, "{}: {error}", lead.en),
+                None => write!(f, "{error}"),
+            },
+            #[cfg(feature = "harness")]
+            ErrorKind::ChecksFailed { failed, checks } => {
+                write!(f, "{failed} of {checks} checks failed")
+            }
+        }
+    }
+}
+
+/// A critical angle asked for light going into a denser (or equal) medium.
+fn no_critical_angle(
+    f: &mut fmt::Formatter<'_>,
+    (name, n): (&str, f64),
+    (name_outside, n_outside): (&str, f64),
+) -> fmt::Result {
+    write!(
+        f,
+        "{name} = {n} is not larger than {name_outside} = {n_outside}: light going into a denser (or equal) medium always refracts, there is no critical angle"
+    )
+}
