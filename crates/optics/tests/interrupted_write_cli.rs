@@ -137,3 +137,22 @@ fn sigint_between_the_renames_waits_for_the_new_pair() {
     );
     assert!(read_pair(&png) == fresh, "the pair is not the new render's");
 }
+
+#[test]
+fn sigint_while_the_temporaries_are_written_removes_the_written_one_and_keeps_the_pair() {
+    let dir = tempfile::tempdir().unwrap();
+    let png = dir.path().join("out.png");
+    let previous = rendered("shadow", &png, "8");
+    let (status, stderr) = interrupted(render("diffuse", &png, "10"), "mid-stage", SIGINT);
+    assert_eq!(status.signal(), Some(SIGINT), "{status:?}: {stderr}");
+    assert!(
+        stderr.contains("signal 2 while staging: 1 temporaries removed"),
+        "the signal did not arrive with one temporary written and one to go: {stderr}"
+    );
+    assert_eq!(
+        listing(dir.path()),
+        ["out.pfm", "out.png"],
+        "a temporary was left"
+    );
+    assert!(read_pair(&png) == previous, "the previous pair was changed");
+}

@@ -86,6 +86,15 @@ fn snell_discriminant_in<T: Real>(x: T, y: T, n_i: T, c: T) -> T {
     sum([x2, -i2, ic2, -y2, ic2m, x2e, -i2e, ic2e, -y2e])
 }
 
+/// `n_t² − (n_i s)²` for a dielectric (`n_t` real), `= n_t² cos²θ_t` with
+/// `s = sin θ_i`: Snell's discriminant from the sine.
+#[inline]
+fn snell_discriminant_from_sine_in<T: Real>(n_t: T, n_i: T, s: T) -> T {
+    let (t2, t2e) = two_prod(n_t, n_t);
+    let [is2, is2m, is2e] = square_of_product(n_i, s);
+    sum([t2, -is2, t2e, -is2m, -is2e])
+}
+
 /// `(c x)² − (c y)² + (c n_i)² − n_i²`, the real part of
 /// `c² (n_t² + n_i²) − n_i²`, which vanishes at Brewster's angle.
 #[inline]
@@ -113,6 +122,16 @@ pub(crate) fn snell_discriminant<T: Real>(x: T, y: T, n_i: T, c: T) -> T {
         y.widen(),
         n_i.widen(),
         c.widen(),
+    ))
+}
+
+/// `n_t² − (n_i sin θ_i)²`; see [`snell_discriminant_from_sine_in`].
+#[inline]
+pub(crate) fn snell_discriminant_from_sine<T: Real>(n_t: T, n_i: T, sin_i: T) -> T {
+    T::narrow(snell_discriminant_from_sine_in(
+        n_t.widen(),
+        n_i.widen(),
+        sin_i.widen(),
     ))
 }
 

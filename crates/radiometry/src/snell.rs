@@ -47,6 +47,14 @@ pub struct Incidence<T> {
     pub n_t: T,
     /// Whether the light arrives from the inside (`cos_i < 0`).
     pub from_inside: bool,
+    /// `sin θ_i` as measured from the directions, where it says more than
+    /// the cosine: near normal incidence (`|cos θ_i| ≥ 1/√2`, θ_i ≤ π/4),
+    /// where the cosine is flat and one of its ulps spans many of θ's, so
+    /// `1 − cos²θ_i` keeps few of `sin²θ_i`'s digits. Set only by
+    /// [`Incidence::resolve_measured`]; `None` where the cosine is all that
+    /// was given or is the better of the two. Snell's discriminant is taken
+    /// from it when present.
+    pub sin_i: Option<T>,
 }
 
 impl<T: Real> Incidence<T> {
@@ -81,7 +89,31 @@ impl<T: Real> Incidence<T> {
             n_i,
             n_t,
             from_inside,
+            sin_i: None,
         })
+    }
+
+    /// [`Incidence::resolve`] for a caller that can also measure `sin θ_i`
+    /// (from the directions, `|n × (n × ω_i)|`, or from the angle): `sin_i` is
+    /// called, and kept, only near normal incidence (`|cos θ_i| ≥ 1/√2`),
+    /// where it determines Snell's discriminant `n_t² − (n_i sin θ_i)²` to
+    /// more digits than the cosine does. This is the one place that choice
+    /// is made.
+    ///
+    /// ```
+    /// use radiometry::snell::Incidence;
+    /// // Near normal incidence the sine is kept; at 60° the cosine suffices.
+    /// let near = Incidence::resolve_measured(0.999_f64, 1.5, || 0.0447).unwrap();
+    /// assert_eq!(near.sin_i, Some(0.0447));
+    /// assert_eq!(Incidence::resolve_measured(0.5_f64, 1.5, || 0.866).unwrap().sin_i, None);
+    /// ```
+    #[inline]
+    pub fn resolve_measured(cos_i: T, eta: T, sin_i: impl FnOnce() -> T) -> Option<Self> {
+        let mut incidence = Self::resolve(cos_i, eta)?;
+        if incidence.abs_cos_i >= T::FRAC_1_SQRT_2() {
+            incidence.sin_i = Some(clamp_unit(sin_i()));
+        }
+        Some(incidence)
     }
 
     /// The relative index along the path, `n_t / n_i` (rounded once).
@@ -95,7 +127,10 @@ impl<T: Real> Incidence<T> {
     /// internal reflection).
     #[inline]
     pub(crate) fn discriminant(&self) -> T {
-        compensated::snell_discriminant(self.n_t, T::zero(), self.n_i, self.abs_cos_i)
+        match self.sin_i {
+            Some(sin_i) => compensated::snell_discriminant_from_sine(self.n_t, self.n_i, sin_i),
+            None => compensated::snell_discriminant(self.n_t, T::zero(), self.n_i, self.abs_cos_i),
+        }
     }
 
     /// `cos θ_t ≥ 0` on the far side, or `None` under total internal
@@ -145,7 +180,9 @@ impl<T: Real> Incidence<T> {
     #[inline]
     pub fn sin_transmitted(&self) -> T {
         let c = self.abs_cos_i;
-        let sin_i = ((T::one() - c) * (T::one() + c)).sqrt();
+        let sin_i = self
+            .sin_i
+            .unwrap_or_else(|| ((T::one() - c) * (T::one() + c)).sqrt());
         self.n_i * sin_i / self.n_t
     }
 
@@ -158,6 +195,7 @@ impl<T: Real> Incidence<T> {
             n_i: T::nan(),
             n_t: T::nan(),
             from_inside: false,
+            sin_i: None,
         }
     }
 }
@@ -213,13 +251,8 @@ pub fn transmitted_angle<T: Real>(theta_i: T, eta_path: T) -> Option<T> {
     let (sin_i, cos_i) = theta_i.sin_cos();
     // From the outside of an interface of index eta_path (n_i = 1, n_t =
     // eta_path); resolving it also checks eta_path.
-    let incidence = Incidence::resolve(cos_i, eta_path)?;
-    let discriminant = if theta_i <= T::FRAC_PI_4() {
-        // η² − sin²θ_i: the same discriminant, from the sine.
-        compensated::index_contrast(eta_path, T::zero(), sin_i)
-    } else {
-        incidence.discriminant()
-    };
+    let incidence = Incidence::resolve_measured(cos_i, eta_path, || sin_i)?;
+    let discriminant = incidence.discriminant();
     if !(discriminant >= T::zero()) {
         return None;
     }

@@ -48,8 +48,41 @@ pub struct Refraction<V: Vector3> {
     pub cos_t: V::Scalar,
 }
 
-/// Refracts the incident direction `wi` through an interface with normal
-/// `n` and relative index `eta = n_inside / n_outside`.
+/// The incidence of direction `wi` on an interface with unit normal `n` and
+/// relative index `eta = n_inside / n_outside`, resolved from the vectors:
+/// the side and `|cos θ_i|` from `dot(n, wi)`, and near normal incidence
+/// also `sin θ_i = |n × (n × wi)|`, which there says more than the cosine
+/// ([`Incidence::resolve_measured`]). `None` for input that describes no
+/// interface (a NaN component, `eta` not positive and finite).
+///
+/// Every law that meets a pair of directions at an interface takes its
+/// incidence from here: [`refract`], and the Fresnel laws a renderer
+/// evaluates at the same hit ([`crate::fresnel::dielectric_resolved`],
+/// [`crate::fresnel::schlick_dielectric_resolved`]), so that the direction
+/// and the weight come from one `cos θ_t`.
+///
+/// ```
+/// use glam::DVec3;
+/// use radiometry::specular::incidence;
+/// let near_normal = incidence(DVec3::new(0.0, 0.6, 0.8), DVec3::Z, 1.5).unwrap();
+/// assert_eq!(near_normal.sin_i, Some(0.6));
+/// ```
+#[inline]
+pub fn incidence<V: Vector3>(wi: V, n: V, eta: V::Scalar) -> Option<Incidence<V::Scalar>> {
+    Incidence::resolve_measured(n.dot(wi), eta, || tangential(wi, n).length())
+}
+
+/// `n cos θ_i − wi`, the part of `wi` along the surface, negated, as
+/// `n × (n × wi)`: exactly perpendicular to `n` but for its last bits, and
+/// of length `sin θ_i` (for unit vectors) also where `wi` and `n` are so
+/// close that `n × wi` is mostly rounding.
+#[inline]
+fn tangential<V: Vector3>(wi: V, n: V) -> V {
+    n.cross(n.cross(wi))
+}
+
+/// Refracts the incident direction `wi` through an interface with unit
+/// normal `n` and relative index `eta = n_inside / n_outside`.
 ///
 /// The side is read from the sign of `dot(n, wi)`: from the outside the
 /// light bends by `eta`, from the inside by `1 / eta`. Returns `None` when no
@@ -57,12 +90,17 @@ pub struct Refraction<V: Vector3> {
 /// need `sin θ_t > 1`), and for inputs that describe no interface (a NaN
 /// component, `eta ≤ 0` or not finite).
 ///
-/// The side is resolved by [`Incidence::resolve`], `cos θ_t` comes from
+/// The incidence is resolved by [`incidence`], `cos θ_t` comes from
 /// [`Incidence::cos_transmitted`] (accurate near the critical angle), and the
 /// direction from [`refract_resolved`]: a caller that already holds the
 /// incidence and `cos θ_t` (a [`crate::fresnel::DielectricFresnel`], a
 /// [`crate::fresnel::SchlickDielectric`]) calls that instead and gets the
 /// same bits.
+///
+/// For unit `wi` and `n` the direction is a unit vector to a few ulps at any
+/// index, also going into a much rarer medium near normal incidence, where
+/// the tangential part grows by `n_i / n_t` and `cos θ_t` is taken from the
+/// same measured sine.
 ///
 /// ```
 /// use glam::DVec3;
@@ -73,27 +111,30 @@ pub struct Refraction<V: Vector3> {
 /// ```
 #[inline]
 pub fn refract<V: Vector3>(wi: V, n: V, eta: V::Scalar) -> Option<Refraction<V>> {
-    let incidence = Incidence::resolve(n.dot(wi), eta)?;
+    let incidence = incidence(wi, n, eta)?;
     let cos_t = incidence.cos_transmitted()?;
     Some(refract_resolved(wi, n, &incidence, cos_t))
 }
 
 /// The refracted ray for an incidence already resolved: `incidence` is
-/// [`Incidence::resolve`]`(dot(n, wi), eta)` and `cos_t` its
-/// [`Incidence::cos_transmitted`] (or the `cos_t` of a Fresnel law that
-/// returned them), so neither the side nor Snell's discriminant is decided
-/// again.
+/// [`incidence`]`(wi, n, eta)` (or [`Incidence::resolve`]`(dot(n, wi), eta)`)
+/// and `cos_t` its [`Incidence::cos_transmitted`] (or the `cos_t` of a
+/// Fresnel law that returned them), so neither the side nor Snell's
+/// discriminant is decided again.
 ///
 /// The transmitted direction is `−wi / η + (cos θ_i / η − cos θ_t) n'`, with
 /// `η` and `n'` the effective index and the normal on the incident side
-/// (pbrt-v4 §9.3, eq. 9.4).
+/// (pbrt-v4 §9.3, eq. 9.4). Where the incidence carries a measured
+/// `sin θ_i`, the tangential part `n' cos θ_i − wi` is formed as
+/// `n × (n × wi)`, whose length that sine is: the tangential and normal parts
+/// of the result then come from one sine and make a unit vector.
 ///
 /// ```
 /// use glam::DVec3;
-/// use radiometry::fresnel::dielectric_polarized;
-/// use radiometry::specular::{refract, refract_resolved};
+/// use radiometry::fresnel::dielectric_resolved;
+/// use radiometry::specular::{incidence, refract, refract_resolved};
 /// let (wi, n) = (DVec3::new(0.0, 0.6, 0.8), DVec3::Z);
-/// let f = dielectric_polarized(n.dot(wi), 1.5);
+/// let f = dielectric_resolved(&incidence(wi, n, 1.5).unwrap());
 /// let t = refract_resolved(wi, n, &f.incidence, f.cos_t.unwrap());
 /// assert_eq!(Some(t), refract(wi, n, 1.5));
 /// ```
@@ -105,8 +146,11 @@ pub fn refract_resolved<V: Vector3>(
     cos_t: V::Scalar,
 ) -> Refraction<V> {
     let n_facing = if incidence.from_inside { -n } else { n };
+    let tangential = match incidence.sin_i {
+        Some(_) => tangential(wi, n),
+        None => n_facing * incidence.abs_cos_i - wi,
+    };
     // The tangential part scales by n_i / n_t; one of the two is exactly 1.
-    let tangential = n_facing * incidence.abs_cos_i - wi;
     let tangential = if incidence.from_inside {
         tangential * incidence.n_i
     } else {

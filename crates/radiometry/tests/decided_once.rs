@@ -14,7 +14,7 @@ use radiometry::fresnel::{
     schlick_dielectric_resolved, schlick_dielectric_working, SchlickCosine,
 };
 use radiometry::snell::{cos_transmitted, Incidence};
-use radiometry::specular::{refract, Refraction};
+use radiometry::specular::{incidence, refract, Refraction};
 use radiometry::Vector3;
 
 mod common;
@@ -39,16 +39,16 @@ fn cos_bits(c: Option<f64>) -> Option<u64> {
 
 /// Refraction from a Fresnel law's decision is `refract`'s, in one tier.
 fn refraction_agrees<V: Vector3>(wi: V, n: V, eta: V::Scalar) -> Result<(), TestCaseError> {
-    let cos_i = n.dot(wi);
     let direct = bits(refract(wi, n, eta));
-    let exact = dielectric_polarized(cos_i, eta);
+    let at = incidence(wi, n, eta).expect("a valid interface");
+    let exact = dielectric_resolved(&at);
     prop_assert_eq!(
         bits(exact.refraction(wi, n)),
         direct,
         "exact law at {:?}",
         wi
     );
-    let working = schlick_dielectric_working(cos_i, eta).expect("a valid interface");
+    let working = schlick_dielectric_resolved(&at);
     prop_assert_eq!(
         bits(working.refraction(wi, n)),
         direct,
@@ -124,7 +124,8 @@ proptest! {
         prop_assert_eq!(used.unwrap_or(1.0).to_bits(), expected_r.to_bits());
     }
 
-    /// A refraction built from a Fresnel law's decision
+    /// A refraction built from a Fresnel law's decision at the incidence
+    /// `specular::incidence` resolved from the vectors
     /// (`DielectricFresnel::refraction`, `SchlickDielectric::refraction`,
     /// both through `refract_resolved`) is `refract`'s, bit for bit, in both
     /// tiers, total internal reflection included.

@@ -18,7 +18,8 @@ use radiometry::{fresnel, snell};
 
 mod common;
 use common::strategies::{
-    fraction, relative_index_log_uniform, unit_direction, unit_direction_above,
+    fraction, near_normal_incidence, relative_index_log_uniform, relative_index_wide,
+    unit_direction, unit_direction_above,
 };
 
 const EPS: f64 = f64::EPSILON;
@@ -57,6 +58,31 @@ proptest! {
             // On the far side: the cosines have opposite signs (or the ray is grazing).
             prop_assert!(wi.dot(n) * t.direction.dot(n) <= 0.0);
             prop_assert!((t.direction.dot(n).abs() - t.cos_t).abs() <= tol);
+        }
+    }
+
+    /// The refracted direction is a unit vector to 8ε at any index, also
+    /// near normal incidence going into a much rarer medium, where the
+    /// tangential part grows by `n_i / n_t` (up to 1e8 here) and a cosine of
+    /// incidence rounded to the nearest double would leave `cos θ_t` and the
+    /// tangential part disagreeing by thousands of ulps. 8ε: the normal is
+    /// unit to ε, the sine and each part round a few times. The same in the
+    /// f32 tier, to 8 of its ε. Normals of every orientation, since the
+    /// measured sine comes from cross products with them.
+    #[test]
+    fn refracted_direction_is_unit_at_any_index_near_normal_incidence(
+        (wi, n) in near_normal_incidence(),
+        eta in relative_index_wide(),
+    ) {
+        if let Some(t) = refract(wi, n, eta) {
+            let length = t.direction.length();
+            prop_assert!((length - 1.0).abs() <= 8.0 * EPS, "|wt| = {length} at η = {eta}");
+            prop_assert!((t.direction.dot(n).abs() - t.cos_t).abs() <= 8.0 * EPS);
+        }
+        let (wi, n) = (wi.as_vec3(), n.as_vec3());
+        if let Some(t) = refract(wi, n, eta as f32) {
+            let length = f64::from(t.direction.length());
+            prop_assert!((length - 1.0).abs() <= 8.0 * f64::from(f32::EPSILON), "f32 |wt| = {length} at η = {eta}");
         }
     }
 

@@ -8,8 +8,10 @@
 //! reference below does so with arbitrary-precision arithmetic, independent
 //! of the crate's compensated sums. The tests then walk the inputs ulp by ulp
 //! across the critical angle, in both tiers and from both sides, and require
-//! `refract`, `snell::cos_transmitted` and the Fresnel law to switch at the
-//! same double (or float) as the exact sign does. No tolerance: the crate
+//! `snell::cos_transmitted` and the Fresnel law to switch at the same double
+//! (or float) as the exact sign does, and `refract` too, against the exact
+//! sign of `n_t² − n_i² sin²θ_i` where it decides from the direction's
+//! measured sine. No tolerance: the crate
 //! sums the discriminant as if in twice the working precision (`f32` in
 //! `f64`, where its products are exact), so its sign can only be wrong where
 //! the exact value is below about ε² of its terms, which no input within
@@ -19,11 +21,11 @@ use std::cmp::Ordering;
 
 use glam::{DVec3, Vec3};
 use num_bigint::BigInt;
-use num_traits::{Float, One, Zero};
+use num_traits::{Float, FloatConst, One, ToPrimitive, Zero};
 use proptest::prelude::*;
 use radiometry::fresnel::dielectric_polarized;
 use radiometry::snell::cos_transmitted;
-use radiometry::specular::refract;
+use radiometry::specular::{incidence, refract};
 use radiometry::Vector3;
 
 mod common;
@@ -85,24 +87,50 @@ fn exactly_tir(cos_i: f64, eta: f64) -> bool {
     exact_sign(&[(1, &[n_t, n_t]), (-1, &[n_i, n_i]), (1, &[n_i, n_i, c, c])]) == Ordering::Less
 }
 
-/// The crate's three decisions, in either tier, for light with signed cosine
-/// `cos_i` (the direction `(√(1 − c²), 0, cos_i)` has exactly that dot
-/// product with +z); they must agree with each other.
+/// Whether Snell's law has no real solution for a direction whose
+/// `sin θ_i` is the double `sin_i`, on the side `cos_i` gives: exactly,
+/// `n_t² − n_i² sin_i² < 0`. `refract` decides from this sine near normal
+/// incidence, where the direction says more than its rounded cosine.
+fn exactly_tir_by_sine(cos_i: f64, sin_i: f64, eta: f64) -> bool {
+    let (n_i, n_t) = if cos_i < 0.0 { (eta, 1.0) } else { (1.0, eta) };
+    exact_sign(&[(1, &[n_t, n_t]), (-1, &[n_i, n_i, sin_i, sin_i])]) == Ordering::Less
+}
+
+/// The crate's decisions, in either tier, for light with signed cosine
+/// `cos_i`, each against its exact reference: the laws of a cosine
+/// (`snell::cos_transmitted`, the Fresnel law, which must agree) against
+/// [`exactly_tir`], and `refract` of the direction `(s, 0, cos_i)`,
+/// `s = √(1 − c²)` rounded, whose dot product with +z is exactly `cos_i`:
+/// against [`exactly_tir`] where the cosine decides, and where the law
+/// measures the sine (`|cos θ_i| ≥ 1/√2`; its sine is then exactly `s`,
+/// the tangential part being `(−s, 0, 0)`) against [`exactly_tir_by_sine`].
+/// Returns the cosine laws' decision.
 fn crate_tir<V: Vector3>(cos_i: V::Scalar, eta: V::Scalar) -> bool {
+    let wide = |x: V::Scalar| x.to_f64().expect("a finite float");
     let one = V::Scalar::one();
     let sin_i = (one - cos_i * cos_i).max(V::Scalar::zero()).sqrt();
     let (wi, n) = (
         V::new(sin_i, V::Scalar::zero(), cos_i),
         V::new(V::Scalar::zero(), V::Scalar::zero(), one),
     );
-    let by_refract = refract(wi, n, eta).is_none();
     let by_snell = cos_transmitted(cos_i, eta).is_none();
     let by_fresnel = dielectric_polarized(cos_i, eta).is_total_internal_reflection();
+    assert_eq!(by_snell, by_fresnel, "cos {cos_i:?}, eta {eta}");
     assert_eq!(
-        (by_refract, by_snell),
-        (by_fresnel, by_fresnel),
+        by_fresnel,
+        exactly_tir(wide(cos_i), wide(eta)),
         "cos {cos_i:?}, eta {eta}"
     );
+    let measured = cos_i.abs() >= V::Scalar::FRAC_1_SQRT_2();
+    let at = incidence(wi, n, eta).expect("a valid interface");
+    assert_eq!(at.sin_i, measured.then_some(sin_i), "the measured sine");
+    let by_refract = refract(wi, n, eta).is_none();
+    let expected = if measured {
+        exactly_tir_by_sine(wide(cos_i), wide(sin_i), wide(eta))
+    } else {
+        by_fresnel
+    };
+    assert_eq!(by_refract, expected, "refract at cos {cos_i:?}, eta {eta}");
     by_fresnel
 }
 

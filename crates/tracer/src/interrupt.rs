@@ -17,8 +17,10 @@
 //! the destination, under a name of its own; the destination itself is
 //! always either whole or absent.
 //!
-//! **Test hook.** With `TRACER_TEST_PAUSE=before-commit` the writer
-//! pauses once its temporaries are complete and before the first rename;
+//! **Test hook.** With `TRACER_TEST_PAUSE=mid-stage` the writer pauses
+//! after the first temporary of a set is written and before the next is
+//! begun; with `TRACER_TEST_PAUSE=before-commit`, once its temporaries are
+//! complete and before the first rename;
 //! with `TRACER_TEST_PAUSE=mid-commit`, between the renames of a set of
 //! several files, until a signal is pending. Each pause is announced on
 //! stderr as `tracer: paused <point>`, and, with the hook set, the signal's
@@ -66,6 +68,8 @@ impl Phase {
 /// Where the test hook can pause the writer.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum PausePoint {
+    /// One temporary of a set written, the next not yet begun.
+    MidStage,
     /// Temporaries complete, before the first rename.
     BeforeCommit,
     /// Between two renames of one set.
@@ -75,6 +79,7 @@ pub(crate) enum PausePoint {
 impl PausePoint {
     fn name(self) -> &'static str {
         match self {
+            PausePoint::MidStage => "mid-stage",
             PausePoint::BeforeCommit => "before-commit",
             PausePoint::MidCommit => "mid-commit",
         }

@@ -65,7 +65,54 @@ fn optional(law: &str, field: &str) -> bool {
     }
 }
 
+/// A command line: one in eight a refraction near normal incidence, the
+/// rest any law's flags.
 fn command_line() -> impl Strategy<Value = Line> {
+    prop_oneof![7 => any_law(), 1 => near_normal_refraction()]
+}
+
+/// `optics refract` within 1e-12 to 1 rad of the normal, into a medium up
+/// to 1e50 times rarer or denser: where the tangential part of the
+/// direction grows by `n_i / n_t` and its length and `cos θt` must come
+/// from one sine to stay unit, which a uniform draw of `wi` almost never
+/// reaches.
+fn near_normal_refraction() -> impl Strategy<Value = Line> {
+    let component = || prop::array::uniform3(-1.0..1.0f64);
+    (
+        component(),
+        component(),
+        -12.0..0.0f64,
+        -50.0..50.0f64,
+        any::<bool>(),
+    )
+        .prop_map(|(normal, tangent, log_offset, log_eta, json)| {
+            let offset = 10f64.powf(log_offset);
+            let wi: Vec<String> = (0..3)
+                .map(|k| format!("{:e}", normal[k] + offset * tangent[k]))
+                .collect();
+            let normal: Vec<String> = normal.iter().map(|x| format!("{x:e}")).collect();
+            let mut args = vec!["optics".to_owned()];
+            args.extend(json.then(|| "--json".to_owned()));
+            args.extend(
+                [
+                    "refract",
+                    "--wi",
+                    &wi.join(","),
+                    "--normal",
+                    &normal.join(","),
+                ]
+                .map(String::from),
+            );
+            args.extend(["--eta".to_owned(), format!("{:e}", 10f64.powf(log_eta))]);
+            Line {
+                law: "refract",
+                args,
+                clean: true,
+            }
+        })
+}
+
+fn any_law() -> impl Strategy<Value = Line> {
     (0..SCHEMA.len()).prop_flat_map(|i| {
         let (law, fields) = SCHEMA[i];
         let values: Vec<_> = fields
@@ -141,10 +188,7 @@ fn check_line(line: &Line, reverted: bool, coverage: &Coverage) -> Result<(), Te
     match outcome {
         Ok(record) => {
             coverage.answer();
-            check_record(
-                &serde_json::to_value(&record).expect("a record is JSON"),
-                coverage,
-            )
+            check_record(&serde_json::to_value(&record).expect("a record is JSON"))
         }
         Err(error) => {
             let json = error.to_json(Lang::En);
@@ -171,6 +215,16 @@ fn flag_values_keep_their_promises() {
     let outcome = fuzz(cases, false, &coverage);
     coverage.print("flag values", cases, start.elapsed().as_secs_f64());
     outcome.unwrap();
+}
+
+#[test]
+fn flag_values_find_a_refraction_off_unit_length() {
+    use crate::laws::refract::FROM_THE_COSINE_ALONE;
+    FROM_THE_COSINE_ALONE.set(true);
+    let outcome = fuzz(256, false, &Coverage::default());
+    FROM_THE_COSINE_ALONE.set(false);
+    let failure = outcome.expect_err("the reverted fix is found");
+    assert!(failure.contains("|answer| = "), "{failure}");
 }
 
 #[test]

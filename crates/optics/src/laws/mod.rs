@@ -9,7 +9,7 @@
 
 mod fresnel;
 mod reflect;
-mod refract;
+pub(crate) mod refract;
 mod shade;
 
 pub use fresnel::{FresnelArgs, FresnelModel};

@@ -7,7 +7,7 @@ use crate::lang::{say, Lang};
 use crate::record::{number, vector, Answer, Record};
 use glam::DVec3;
 use radiometry::snell::Incidence;
-use radiometry::specular::{reflect, refract_resolved};
+use radiometry::specular::{incidence, reflect, refract_resolved};
 use serde::Deserialize;
 
 /// The refracted direction (Snell's law in vector form).
@@ -54,7 +54,7 @@ impl RefractArgs {
         let cos_i = wi.dot(n);
         // The side and Snell's law are decided here, once; the direction is
         // built from that decision (`refract` would decide them again).
-        let incidence = Incidence::resolve(cos_i, eta)
+        let incidence = resolve(wi, n, eta)
             .expect("wi, normal and eta were validated by radiometry::domain above");
         record.step(format!("cos θi = n · ωi = {}", number(cos_i)));
         narrate_side(&mut record, lang, &incidence);
@@ -67,6 +67,29 @@ impl RefractArgs {
             None => totally_reflected(&mut record, lang, &incidence, reflect(wi, n)),
         }
         Ok(record)
+    }
+}
+
+/// The incidence, from the directions.
+#[cfg(not(test))]
+fn resolve(wi: DVec3, n: DVec3, eta: f64) -> Option<Incidence<f64>> {
+    incidence(wi, n, eta)
+}
+
+#[cfg(test)]
+thread_local! {
+    /// A test-only switch that reverts the fix for unit directions: the
+    /// incidence from the rounded cosine alone, as before it, for the
+    /// flag-values fuzz target to find.
+    pub(crate) static FROM_THE_COSINE_ALONE: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+}
+
+#[cfg(test)]
+fn resolve(wi: DVec3, n: DVec3, eta: f64) -> Option<Incidence<f64>> {
+    if FROM_THE_COSINE_ALONE.get() {
+        Incidence::resolve(n.dot(wi), eta)
+    } else {
+        incidence(wi, n, eta)
     }
 }
 

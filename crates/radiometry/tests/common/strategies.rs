@@ -71,6 +71,35 @@ pub fn relative_index_with_extremes() -> impl Strategy<Value = f64> {
     ]
 }
 
+/// A unit normal of any orientation and a unit direction within a small
+/// angle of it, on either side: the angle log-uniform from 1e-12 rad to
+/// 1 rad, where near normal incidence a direction refracts into a rarer
+/// medium of up to 1e-8 times the index.
+pub fn near_normal_incidence() -> impl Strategy<Value = (DVec3, DVec3)> {
+    (
+        unit_direction(),
+        unit_direction(),
+        -12.0..=0.0f64,
+        any::<bool>(),
+    )
+        .prop_map(|(n, other, log_angle, below)| {
+            let tangent = n
+                .cross(other)
+                .try_normalize()
+                .unwrap_or_else(|| n.any_orthonormal_vector());
+            let angle = 10f64.powf(log_angle);
+            let normal_part = if below { -angle.cos() } else { angle.cos() };
+            let wi = (n * normal_part + tangent * angle.sin()).normalize();
+            (wi, n)
+        })
+}
+
+/// A relative index of refraction from 1e-8 to 1e8, log-uniform: the
+/// extremes where refraction magnifies the tangential part the most.
+pub fn relative_index_wide() -> impl Strategy<Value = f64> {
+    (-8.0 * 10f64.ln()..=8.0 * 10f64.ln()).prop_map(f64::exp)
+}
+
 /// A fraction in [0, 1], uniform: a reflectance coefficient.
 pub fn fraction() -> impl Strategy<Value = f64> {
     0.0..=1.0f64

@@ -98,7 +98,7 @@ impl Tracer<'_> {
     }
 
     fn dielectric_lobes(&self, hit: &Hit, n: Vec3, wo: Vec3, eta: f32) -> Lobes {
-        let interface = self.dielectric(n.dot(wo), eta);
+        let interface = self.dielectric(specular::incidence(wo, n, eta), eta);
         let outward = if interface.incidence.from_inside {
             -n
         } else {
@@ -142,27 +142,29 @@ impl Tracer<'_> {
         })
     }
 
-    /// A dielectric interface met at signed `cos_i`, resolved once by the
-    /// chosen law: the side, the indices and `cos θ_t` the law decided, and
-    /// its reflectance and transmittance.
-    fn dielectric(&self, cos_i: f32, eta: f32) -> Interface {
+    /// A dielectric interface met at `incidence` (resolved once, from the
+    /// directions, by [`specular::incidence`]), evaluated by the chosen
+    /// law: `cos θ_t` the law decided, and its reflectance and
+    /// transmittance, for the scene's `eta`. `None` in is input that
+    /// describes no interface (a NaN direction).
+    fn dielectric(&self, incidence: Option<Incidence<f32>>, eta: f32) -> Interface {
+        let Some(incidence) = incidence else {
+            return Interface::undefined();
+        };
         match self.settings.fresnel {
             FresnelModel::Exact => {
-                let f = fresnel::dielectric_polarized(cos_i, eta);
+                let f = fresnel::dielectric_resolved(&incidence);
                 Interface::new(f.incidence, f.cos_t, f.reflectance(), f.transmittance())
             }
-            FresnelModel::Schlick => match fresnel::schlick_dielectric_working(cos_i, eta) {
-                Some(w) => Interface::new(w.incidence, w.cos_t(), w.reflectance, w.transmittance()),
-                None => Interface::undefined(),
-            },
+            FresnelModel::Schlick => {
+                let w = fresnel::schlick_dielectric_resolved(&incidence);
+                Interface::new(w.incidence, w.cos_t(), w.reflectance, w.transmittance())
+            }
             // The course has no glass; its formula with the incident cosine.
-            FresnelModel::Course => match Incidence::resolve(cos_i, eta) {
-                Some(incidence) => {
-                    let r = course::fresnel_000_glsl(fresnel::f0(eta, 0.0), incidence.abs_cos_i);
-                    Interface::new(incidence, incidence.cos_transmitted(), r, 1.0 - r)
-                }
-                None => Interface::undefined(),
-            },
+            FresnelModel::Course => {
+                let r = course::fresnel_000_glsl(fresnel::f0(eta, 0.0), incidence.abs_cos_i);
+                Interface::new(incidence, incidence.cos_transmitted(), r, 1.0 - r)
+            }
         }
     }
 }
@@ -202,6 +204,7 @@ impl Interface {
             n_i: f32::NAN,
             n_t: f32::NAN,
             from_inside: false,
+            sin_i: None,
         };
         Interface::new(incidence, None, f32::NAN, f32::NAN)
     }
@@ -223,8 +226,9 @@ mod tests {
 
     /// The hit, resolved once, hands out exactly the bits that deciding the
     /// side three times gave: the side from the cosine's sign, the law's R
-    /// and T, and `specular::refract`'s direction and index, for each Fresnel
-    /// model, from outside and from inside a glass sphere.
+    /// and T at the incidence of the directions (`specular::incidence`), and
+    /// `specular::refract`'s direction and index, for each Fresnel model,
+    /// from outside and from inside a glass sphere.
     #[test]
     fn a_dielectric_hit_resolved_once_gives_the_bits_of_each_law_alone() {
         let scene = scene::parse(
@@ -267,14 +271,15 @@ mod tests {
                 let (wo, n) = (-ray.direction, hit.shading_normal(ray.direction));
                 let lobes = tracer.lobes(&hit, n, wo, &Material::Dielectric { eta });
                 let cos_o = n.dot(wo);
+                let at = specular::incidence(wo, n, eta).expect("a valid interface");
                 let (r, t) = match model {
                     FresnelModel::Exact => {
-                        let f = fresnel::dielectric_polarized(cos_o, eta);
+                        let f = fresnel::dielectric_resolved(&at);
                         (f.reflectance(), f.transmittance())
                     }
                     FresnelModel::Schlick => {
-                        let r = fresnel::schlick_dielectric(cos_o, eta);
-                        (r, 1.0 - r)
+                        let w = fresnel::schlick_dielectric_resolved(&at);
+                        (w.reflectance, w.transmittance())
                     }
                     FresnelModel::Course => {
                         let r = course::fresnel_000_glsl(fresnel::f0(eta, 0.0), cos_o.abs());

@@ -66,7 +66,10 @@ pub fn write_all_atomically(files: &[(&Path, &[u8])]) -> Result<(), OutputError>
     interrupt::set_phase(Phase::Staging);
     let mut staged = Vec::with_capacity(files.len());
     let mut result = Ok(());
-    for (path, bytes) in files {
+    for (i, (path, bytes)) in files.iter().enumerate() {
+        if i > 0 {
+            interrupt::pause(PausePoint::MidStage);
+        }
         match stage(path, bytes) {
             Ok(file) => staged.push(file),
             Err(error) => {
