@@ -123,6 +123,7 @@ pub struct Settings {
     pub fresnel: FresnelModel,
     /// A branch whose throughput (largest channel) falls below this is cut
     /// (`whitted`) or continued with Russian roulette (`path`). 0 never cuts.
+    #[serde(serialize_with = "as_written")]
     pub throughput_cutoff: f32,
     /// Seed of the path tracer.
     pub seed: u64,
@@ -176,5 +177,27 @@ impl Settings {
             settled.ray_offset = offset;
         }
         Ok(settled)
+    }
+}
+
+/// An `f32` as the shortest decimal that reads back as it, `1e-3` for the
+/// float nearest 0.001: what the scene file said, not its widening to
+/// `f64` (`0.0010000000474974513`), once the number passes through JSON
+/// values of `f64`.
+fn as_written<S: serde::Serializer>(x: &f32, serializer: S) -> Result<S::Ok, S::Error> {
+    let shortest: f64 = x.to_string().parse().map_err(serde::ser::Error::custom)?;
+    serializer.serialize_f64(shortest)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Settings;
+
+    /// The settled cutoff is reported as the scene wrote it, through
+    /// `serde_json::Value` (whose numbers are `f64`) as `optics --json` does.
+    #[test]
+    fn the_cutoff_is_reported_as_written_not_widened() {
+        let value = serde_json::to_value(Settings::default()).unwrap();
+        assert_eq!(value["throughput_cutoff"], serde_json::json!(0.001));
     }
 }
