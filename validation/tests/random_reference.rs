@@ -90,7 +90,12 @@ fn the_laws_at_random_inputs_are_within_their_ulps_of_50_digits_and_1_5_bits_on_
     let regions = region_table(&checks, &sets);
     println!("{errors}\n{regions}");
     for (law, check) in random::LAWS.iter().zip(&checks) {
-        assert_eq!(check.cases, 20_000, "{}: 5000 per tier and sampling", law.name());
+        assert_eq!(
+            check.cases,
+            20_000,
+            "{}: 5000 per tier and sampling",
+            law.name()
+        );
         assert!(check.passed(), "{}: {:#?}", check.id, check.failures);
     }
     results::assert_settled(&results::Section::deterministic(

@@ -172,14 +172,18 @@ fn check_set(check: &mut Check, laws: &Laws, laws64: &Laws64, set: &CaseSet) {
         let label = format!("{prefix} #{i} {:?} = {x:?}", set.law.inputs());
         if let (Some(tir), Some(exact)) = (got.tir, set.tir.as_ref().map(|t| t[i])) {
             if tir != exact {
-                check.fail(format!("{label}: total internal reflection {tir}, exactly {exact}"));
+                check.fail(format!(
+                    "{label}: total internal reflection {tir}, exactly {exact}"
+                ));
             }
         }
         for (q, ((column, name), got)) in quantities.iter().zip(&got.values).enumerate() {
             let exact = set.column(column)[i];
             if exact.is_nan() || got.is_nan() {
                 if exact.is_nan() != got.is_nan() {
-                    check.fail(format!("{label}: {name} = {got:?}, exactly {exact:?} (NaN: none)"));
+                    check.fail(format!(
+                        "{label}: {name} = {got:?}, exactly {exact:?} (NaN: none)"
+                    ));
                 }
                 continue;
             }
@@ -203,7 +207,11 @@ fn check_set(check: &mut Check, laws: &Laws, laws64: &Laws64, set: &CaseSet) {
     }
     for ((_, name), (sum, n)) in quantities.iter().zip(sums) {
         let average = if n == 0 { 0.0 } else { sum / n as f64 };
-        check.measure(&format!("{prefix} {name} (bits, average)"), average, &format!("{n} values"));
+        check.measure(
+            &format!("{prefix} {name} (bits, average)"),
+            average,
+            &format!("{n} values"),
+        );
         if !(average <= AVERAGE_BITS) {
             check.fail(format!(
                 "{prefix} {name}: {average:.3} bits of error on average over {n} values, bound {AVERAGE_BITS}"

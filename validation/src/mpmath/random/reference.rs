@@ -179,7 +179,11 @@ impl CaseSet {
 
     /// The inputs of case `i`, in the order the law takes them.
     pub fn inputs(&self, i: usize) -> Vec<f64> {
-        self.law.inputs().iter().map(|c| self.column(c)[i]).collect()
+        self.law
+            .inputs()
+            .iter()
+            .map(|c| self.column(c)[i])
+            .collect()
     }
 }
 
@@ -198,13 +202,13 @@ pub fn decode(file: &Path, raw: &FresnelRandom) -> Result<Vec<CaseSet>, Referenc
     raw.sets
         .iter()
         .enumerate()
-        .map(|(index, set)| decode_set(set).map_err(|(field, message)| {
-            ReferenceError::Malformed {
+        .map(|(index, set)| {
+            decode_set(set).map_err(|(field, message)| ReferenceError::Malformed {
                 path: file.to_owned(),
                 field: format!("sets[{index}].{field}"),
                 message,
-            }
-        }))
+            })
+        })
         .collect()
 }
 
@@ -310,6 +314,9 @@ mod tests {
     #[test]
     fn f32_columns_widen_exactly() {
         let values = numbers(&encode(&[0.1, f32::MIN_POSITIVE / 8.0]), Tier::F32, 2).unwrap();
-        assert_eq!(values, [f64::from(0.1f32), f64::from(f32::MIN_POSITIVE / 8.0)]);
+        assert_eq!(
+            values,
+            [f64::from(0.1f32), f64::from(f32::MIN_POSITIVE / 8.0)]
+        );
     }
 }

@@ -26,7 +26,9 @@ type Region = (&'static str, fn(&CaseSet, usize) -> bool);
 fn regions_of(law: Law) -> &'static [Region] {
     match law {
         Law::Dielectric => &[
-            ("|cos θi| < 1e-3", |s, i| s.column("cos_i")[i].abs() < SMALL),
+            ("|cos θi| < 1e-3", |s, i| {
+                s.column("cos_i")[i].abs() < SMALL
+            }),
             ("within 1e-3 rad of the critical angle", |s, i| {
                 let (c, eta) = (s.column("cos_i")[i], s.column("eta")[i]);
                 let eta_path = if c >= 0.0 { eta } else { 1.0 / eta };
@@ -35,7 +37,9 @@ fn regions_of(law: Law) -> &'static [Region] {
             ("total internal reflection", |s, i| {
                 s.tir.as_ref().is_some_and(|t| t[i])
             }),
-            ("|η − 1| < 1e-3", |s, i| (s.column("eta")[i] - 1.0).abs() < SMALL),
+            ("|η − 1| < 1e-3", |s, i| {
+                (s.column("eta")[i] - 1.0).abs() < SMALL
+            }),
         ],
         Law::Conductor => &[
             ("cos θi < 1e-3", |s, i| s.column("cos_i")[i] < SMALL),
@@ -64,7 +68,9 @@ fn regions_of(law: Law) -> &'static [Region] {
         ],
         Law::Schlick => &[
             ("cos θi < 1e-3", |s, i| s.column("cos_i")[i] < SMALL),
-            ("1 − cos θi < 1e-3", |s, i| 1.0 - s.column("cos_i")[i] < SMALL),
+            ("1 − cos θi < 1e-3", |s, i| {
+                1.0 - s.column("cos_i")[i] < SMALL
+            }),
             ("F0 < 1e-3", |s, i| s.column("f0")[i] < SMALL),
         ],
     }
