@@ -12,7 +12,7 @@
 //! - **reals**: uniform over the real numbers of each argument's range,
 //!   where a renderer's inputs mostly are;
 //! - **floats**: uniform over the tier's numbers in the range, as Herbie
-//!   samples: most cosines and angles are below 1e-3 and many subnormal.
+//!   samples: most cosines and angles are below 1e-3, a few subnormal.
 //!
 //! Measured per law, quantity, tier and sampling: the worst number of
 //! floating-point values between the law's answer and the correctly rounded
