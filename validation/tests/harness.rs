@@ -54,7 +54,7 @@ fn every_check_passes_against_the_committed_references() {
     assert!(report.passed(), "{:#?}", report.checks);
     assert_eq!(report.summary.failed, 0);
     assert_eq!(report.summary.checks, report.checks.len());
-    assert_eq!(report.references.len(), 5, "{:?}", report.references.keys());
+    assert_eq!(report.references.len(), 6, "{:?}", report.references.keys());
     assert_eq!(report.fresnel_curves.len(), 9);
     assert!(report
         .fresnel_curves
@@ -98,6 +98,7 @@ fn a_malformed_reference_is_refused_naming_the_file_and_field() {
     let dir = tempfile::tempdir().unwrap();
     for name in [
         "fresnel_mpmath.json",
+        "fresnel_random.json",
         "mitsuba_laws.json",
         "colorimetry.json",
         "metals.json",
