@@ -33,6 +33,10 @@ def test_nearest_rounds_once_to_nearest_even_subnormals_included():
         assert fr.nearest(mpf(2) ** -149 * mpf("0.75"), "f32") == 2.0 ** -149
         assert fr.nearest(mpf(1) / 3, "f32") == fm.f32(1 / 3)
         assert fr.nearest(None, "f64") != fr.nearest(None, "f64")  # NaN
+        rng = fr.SplitMix64(3)
+        for _ in range(200):  # normal doubles: mpmath's own rounding to nearest agrees
+            x = mpf(rng.unit()) * mpf(2) ** (rng.below(2000) - 1000) * (1 + mpf(10) ** -60)
+            assert fr.nearest(x, "f64") == float(x)
 
 
 def test_the_floats_sampling_is_uniform_over_bit_patterns():

@@ -22,6 +22,9 @@
 //! subnormal. The workspace test `tests/fresnel_reference.rs` runs this
 //! check on the radiometry crate's laws and prints its table; a broken law
 //! injected through [`Laws`](crate::laws::Laws) / [`Laws64`] fails it.
+//!
+//! The same laws at seeded random inputs, uniform over the reals and over
+//! the floating-point numbers, are [`random`]'s (`fresnel_random.json`).
 
 mod angles;
 mod fresnel;
