@@ -46,9 +46,9 @@ pub const BOUND_ULPS: f64 = 8.0;
 /// the square doubles the ratio's relative error. The grid's worst is 6.6
 /// ulps (f32 `R_p`), but the random cases of [`random`] reach 9 numbers from
 /// the correctly rounded value (f32 `R_p` at `cos θi = 0.98775816`,
-/// `n = 0.53517735`, `κ = 5.7968769`, at least 8.5 ulps from exact), past
-/// [`BOUND_ULPS`]: 12 is a third above that, and a regression costing one
-/// digit still fails it.
+/// `n = 0.53517735`, `κ = 5.7968769`, at least 8.5 ulps from exact; `cargo
+/// test -p validation --test random_reference`), past [`BOUND_ULPS`]: 12 is
+/// a third above that, and a regression costing one digit still fails it.
 pub const CONDUCTOR_BOUND_ULPS: f64 = 12.0;
 
 /// The file name of the reference.
