@@ -126,3 +126,21 @@ fn the_floats_sampling_stresses_tiny_cosines_and_the_reals_sampling_does_not() {
         assert!(counts[2].1 > 0, "no total internal reflection");
     }
 }
+
+/// A reference that lacks a set (here the f32 floats of Schlick's) fails
+/// that law's check rather than passing on fewer cases.
+#[test]
+fn a_missing_set_fails_its_law() {
+    let (random, mut sets) = reference();
+    sets.retain(|s| {
+        !(s.law == Law::Schlick && s.tier == Tier::F32 && s.sampling == Sampling::Floats)
+    });
+    let checks = random::check_random(&Laws::radiometry(), &Laws64::radiometry(), &random, &sets);
+    for check in &checks {
+        if check.id == "laws.mpmath.random.schlick" {
+            assert_eq!(check.failures, ["f32 floats: no sets, expected one"]);
+        } else {
+            assert!(check.passed(), "{}: {:#?}", check.id, check.failures);
+        }
+    }
+}

@@ -146,8 +146,21 @@ pub fn check_random(
                      {AVERAGE_BITS} bits of error (Herbie's log2(1 + numbers between))"
                 ),
             );
-            for set in sets.iter().filter(|s| s.law == law) {
-                check_set(&mut check, laws, laws64, set);
+            for tier in [Tier::F64, Tier::F32] {
+                for sampling in [Sampling::Reals, Sampling::Floats] {
+                    let mut of = sets
+                        .iter()
+                        .filter(|s| s.law == law && s.tier == tier && s.sampling == sampling);
+                    match (of.next(), of.next()) {
+                        (Some(set), None) => check_set(&mut check, laws, laws64, set),
+                        (found, _) => check.fail(format!(
+                            "{} {}: {} sets, expected one",
+                            tier.name(),
+                            sampling.name(),
+                            if found.is_some() { "several" } else { "no" }
+                        )),
+                    }
+                }
             }
             check
         })
