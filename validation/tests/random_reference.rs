@@ -144,3 +144,90 @@ fn a_missing_set_fails_its_law() {
         }
     }
 }
+
+/// The textbook form (pbrt's `FrDielectric` shape: `cos θt` from
+/// `1 − sin²θt`, `T = 1 − R`) at the same random cases, in both tiers: what
+/// the reformulation buys, in Herbie's bits.
+fn textbook<T: validation::laws::Tier>(
+    cos_i: T,
+    eta: T,
+) -> radiometry::fresnel::DielectricFresnel<T> {
+    let mut f = radiometry::fresnel::dielectric_polarized(cos_i, eta);
+    let one = T::one();
+    let (c, eta) = if cos_i < T::zero() {
+        (-cos_i, one / eta)
+    } else {
+        (cos_i, eta)
+    };
+    let sin2_t = (one - c * c) / (eta * eta);
+    let (r_s, r_p) = if sin2_t >= one {
+        (one, one)
+    } else {
+        let cos_t = (one - sin2_t).sqrt();
+        let r_s = (c - eta * cos_t) / (c + eta * cos_t);
+        let r_p = (eta * c - cos_t) / (eta * c + cos_t);
+        (r_s * r_s, r_p * r_p)
+    };
+    (f.r_s, f.r_p, f.t_s, f.t_p) = (r_s, r_p, one - r_s, one - r_p);
+    f
+}
+
+#[test]
+fn the_textbook_dielectric_loses_bits_where_the_reformulation_does_not() {
+    let (random, sets) = reference();
+    let dielectric = |laws: &Laws, laws64: &Laws64| {
+        random::check_random(laws, laws64, &random, &sets)
+            .into_iter()
+            .find(|c| c.id == "laws.mpmath.random.fresnel_dielectric")
+            .expect("the dielectric check")
+    };
+    let ours = dielectric(&Laws::radiometry(), &Laws64::radiometry());
+    let foil = dielectric(
+        &Laws {
+            dielectric: textbook,
+            ..Laws::radiometry()
+        },
+        &Laws64 {
+            dielectric: textbook,
+            ..Laws64::radiometry()
+        },
+    );
+    let mut table = String::from(
+        "| quantity | tier | sampling | ours: average bits | worst bits | textbook: average bits | worst bits |\n\
+         |---|---|---|---|---|---|---|\n",
+    );
+    for quantity in ["R", "T"] {
+        for tier in ["f64", "f32"] {
+            for sampling in ["reals", "floats"] {
+                let at = |check: &Check, what: &str| {
+                    worst(
+                        check,
+                        &format!("{tier} {sampling} {quantity} (bits, {what})"),
+                    )
+                };
+                table += &format!(
+                    "| {quantity} | {tier} | {sampling} | {:.3} | {:.2} | {:.3} | {:.2} |\n",
+                    at(&ours, "average"),
+                    at(&ours, "worst"),
+                    at(&foil, "average"),
+                    at(&foil, "worst")
+                );
+            }
+        }
+    }
+    println!("{table}");
+    assert!(ours.passed(), "{:#?}", ours.failures);
+    assert!(
+        !foil.passed(),
+        "the textbook form was expected to lose digits"
+    );
+    assert!(
+        worst(&foil, "f32 floats T (bits, average)") > 10.0,
+        "the textbook T cancels at the floats sampling's tiny cosines"
+    );
+    results::assert_settled(&results::Section::deterministic(
+        "random-50-digits-textbook",
+        COMMAND,
+        &table,
+    ));
+}
