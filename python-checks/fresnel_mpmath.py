@@ -90,6 +90,12 @@ def conductor(cos_i, n, kappa):
     return R_s, R_p, (R_s + R_p) / 2
 
 
+def schlick(cos_i, f0):
+    """Schlick's approximation as defined, F0 + (1 - F0)(1 - cos_i)^5, exactly."""
+    cos_i, f0 = mpf(cos_i), mpf(f0)
+    return f0 + (1 - f0) * (1 - cos_i) ** 5
+
+
 def conductor_tir(cos_i, n, kappa):
     """Total internal reflection in the conductor law: kappa = 0, n < 1, beyond the
     critical angle (1 - c^2 > n^2). There R_s = R_p = R = 1 exactly."""

@@ -181,8 +181,7 @@ def mitsuba_curve(n, kappa, side):
 
 
 def exact_schlick(cos_i, f0):
-    cos_i, f0 = mpf(cos_i), mpf(f0)
-    return float(f0 + (1 - f0) * (1 - cos_i) ** 5)
+    return float(fm.schlick(cos_i, f0))
 
 
 # Document -------------------------------------------------------------------

@@ -12,8 +12,9 @@ use crate::python::{run_tool, Task, ToolError};
 
 /// The reference generators and the files each writes, in the order the
 /// full run regenerates them.
-pub const GENERATORS: [(&str, &[&str]); 5] = [
+pub const GENERATORS: [(&str, &[&str]); 6] = [
     ("fresnel_mpmath.py", &["fresnel_mpmath.json"]),
+    ("fresnel_random.py", &["fresnel_random.json"]),
     ("mitsuba_laws.py", &["mitsuba_laws.json"]),
     ("colorimetry.py", &["colorimetry.json", "cie_tables.rs"]),
     ("metals.py", &["metals.json"]),

@@ -60,6 +60,11 @@ impl CheckKind for LawChecks {
         report
             .checks
             .push(mpmath::check_angles(&self.0, &self.1, &exact));
+        let (random, sets) = mpmath::random::FresnelRandom::load(&context.reference_dir)?;
+        report.note_reference(&context.reference_dir, mpmath::random::FILE)?;
+        report.checks.extend(mpmath::random::check_random(
+            &self.0, &self.1, &random, &sets,
+        ));
         let reference = MitsubaLaws::load(&context.reference_dir)?;
         report.note_reference(&context.reference_dir, laws::FILE)?;
         report.checks.extend(laws::check_all(&self.0, &reference));

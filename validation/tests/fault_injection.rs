@@ -204,3 +204,142 @@ fn broken_angle_laws_are_caught_by_the_50_digit_check() {
     let unbroken = mpmath::check_angles(&Laws::radiometry(), &Laws64::radiometry(), &exact);
     assert!(unbroken.passed(), "{:#?}", unbroken.failures);
 }
+
+/// The random cases of `laws.mpmath.random.*`, decoded.
+fn random_reference() -> (
+    validation::mpmath::random::FresnelRandom,
+    Vec<validation::mpmath::random::CaseSet>,
+) {
+    validation::mpmath::random::FresnelRandom::load(&committed_dir())
+        .expect("committed random reference")
+}
+
+/// The random checks of `broken` (f32) and `broken64`, by law name.
+fn random_check(broken: &Laws, broken64: &validation::mpmath::Laws64, law: &str) -> Check {
+    let (random, sets) = random_reference();
+    validation::mpmath::random::check_random(broken, broken64, &random, &sets)
+        .into_iter()
+        .find(|c| c.id == format!("laws.mpmath.random.{law}"))
+        .expect("a check per law")
+}
+
+/// A cosine clamped at machine epsilon, as renderers do to avoid a division
+/// by zero: a law that loses precision at tiny cosines. T ∝ cos θ there,
+/// so it is off by up to 2^126 times in f32. Uniform over the reals, the
+/// random cases almost never draw a cosine below ε (none of 5000 do), so
+/// only the sampling uniform over the floats catches it, in both tiers.
+#[test]
+fn a_cosine_clamped_at_epsilon_is_caught_by_the_floats_sampling_only() {
+    use validation::mpmath::Laws64;
+    fn clamped(cos_i: f32, eta: f32) -> DielectricFresnel<f32> {
+        let c = if cos_i.abs() < f32::EPSILON {
+            f32::EPSILON.copysign(cos_i)
+        } else {
+            cos_i
+        };
+        fresnel::dielectric_polarized(c, eta)
+    }
+    fn clamped64(cos_i: f64, eta: f64) -> DielectricFresnel<f64> {
+        let c = if cos_i.abs() < f64::EPSILON {
+            f64::EPSILON.copysign(cos_i)
+        } else {
+            cos_i
+        };
+        fresnel::dielectric_polarized(c, eta)
+    }
+    let broken = Laws {
+        dielectric: clamped,
+        ..Laws::radiometry()
+    };
+    let check = random_check(&broken, &Laws64::radiometry(), "fresnel_dielectric");
+    caught_only(&check, |f| f.starts_with("f32 floats"));
+    assert!(
+        check.failures.iter().any(|f| f.contains("T = ")),
+        "{:#?}",
+        check.failures
+    );
+    let broken64 = Laws64 {
+        dielectric: clamped64,
+        ..Laws64::radiometry()
+    };
+    let check = random_check(&Laws::radiometry(), &broken64, "fresnel_dielectric");
+    caught_only(&check, |f| f.starts_with("f64 floats"));
+}
+
+/// T as the textbook's `1 − R` in f32, which cancels wherever R is near 1:
+/// at grazing incidence, most of the floats sampling, and near the
+/// critical angle.
+#[test]
+fn the_textbook_transmittance_is_caught_by_the_random_cases() {
+    use validation::mpmath::Laws64;
+    fn one_minus_r(cos_i: f32, eta: f32) -> DielectricFresnel<f32> {
+        let mut f = fresnel::dielectric_polarized(cos_i, eta);
+        (f.t_s, f.t_p) = (1.0 - f.r_s, 1.0 - f.r_p);
+        f
+    }
+    let broken = Laws {
+        dielectric: one_minus_r,
+        ..Laws::radiometry()
+    };
+    let check = random_check(&broken, &Laws64::radiometry(), "fresnel_dielectric");
+    caught_only(&check, |f| f.starts_with("f32") && f.contains(" T"));
+    caught_at(&check, |f| f.starts_with("f32 floats"));
+}
+
+/// Snell's law for angles through `acos √(1 − sin²θ_t)`, which loses every
+/// digit of a small refracted angle (its cosine rounds to 1): caught where
+/// the angles are tiny, which is most of the floats sampling.
+#[test]
+fn a_transmitted_angle_through_its_cosine_is_caught_at_tiny_angles() {
+    use validation::mpmath::Laws64;
+    fn through_cosine(theta_i: f32, eta_path: f32) -> Option<f32> {
+        let s = theta_i.sin() / eta_path;
+        (s <= 1.0).then(|| (1.0 - s * s).sqrt().acos())
+    }
+    let broken = Laws {
+        transmitted_angle: through_cosine,
+        ..Laws::radiometry()
+    };
+    let check = random_check(&broken, &Laws64::radiometry(), "transmitted_angle");
+    caught_at(&check, |f| {
+        f.starts_with("f32 floats") && f.contains("on average")
+    });
+    let tiny = |f: &String| f.starts_with("f32 floats #") && f.contains("θ_t");
+    assert!(
+        check.failures.iter().filter(|f| tiny(f)).count() > 4000,
+        "{}",
+        check.failures.len()
+    );
+}
+
+/// A law within its per-case bound everywhere but three numbers off on
+/// every case is caught by the average alone: Brewster's angle, correctly
+/// rounded almost everywhere (worst 1), moved three floats up.
+#[test]
+fn a_law_off_by_three_floats_everywhere_is_caught_by_the_average_bits() {
+    use validation::mpmath::Laws64;
+    fn three_up(eta_path: f32) -> Option<f32> {
+        radiometry::snell::brewster_angle(eta_path).map(|b| f32::from_bits(b.to_bits() + 3))
+    }
+    let broken = Laws {
+        brewster_angle: three_up,
+        ..Laws::radiometry()
+    };
+    let check = random_check(&broken, &Laws64::radiometry(), "brewster_angle");
+    caught_only(&check, |f| f.starts_with("f32") && f.contains("on average"));
+    assert_eq!(check.failures.len(), 2, "{:#?}", check.failures);
+    let (random, sets) = random_reference();
+    for unbroken in validation::mpmath::random::check_random(
+        &Laws::radiometry(),
+        &Laws64::radiometry(),
+        &random,
+        &sets,
+    ) {
+        assert!(
+            unbroken.passed(),
+            "{}: {:#?}",
+            unbroken.id,
+            unbroken.failures
+        );
+    }
+}

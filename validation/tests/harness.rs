@@ -54,7 +54,7 @@ fn every_check_passes_against_the_committed_references() {
     assert!(report.passed(), "{:#?}", report.checks);
     assert_eq!(report.summary.failed, 0);
     assert_eq!(report.summary.checks, report.checks.len());
-    assert_eq!(report.references.len(), 5, "{:?}", report.references.keys());
+    assert_eq!(report.references.len(), 6, "{:?}", report.references.keys());
     assert_eq!(report.fresnel_curves.len(), 9);
     assert!(report
         .fresnel_curves
@@ -98,6 +98,7 @@ fn a_malformed_reference_is_refused_naming_the_file_and_field() {
     let dir = tempfile::tempdir().unwrap();
     for name in [
         "fresnel_mpmath.json",
+        "fresnel_random.json",
         "mitsuba_laws.json",
         "colorimetry.json",
         "metals.json",
@@ -112,6 +113,30 @@ fn a_malformed_reference_is_refused_naming_the_file_and_field() {
     let message = err.to_string();
     assert!(
         message.contains("mitsuba_laws.json") && message.contains("dielectric[0].mitsuba.f"),
+        "{message}"
+    );
+}
+
+#[test]
+fn a_malformed_random_reference_is_refused_naming_the_set_and_column() {
+    let dir = tempfile::tempdir().unwrap();
+    for name in ["fresnel_mpmath.json", "fresnel_random.json"] {
+        std::fs::copy(committed_dir().join(name), dir.path().join(name)).unwrap();
+    }
+    let path = dir.path().join("fresnel_random.json");
+    let text = std::fs::read_to_string(&path).unwrap();
+    // The first set's first column, cos_i, cut to a few bytes.
+    let at = text.find("\"cos_i\": \"").unwrap() + "\"cos_i\": \"".len();
+    let end = at + text[at..].find('"').unwrap();
+    std::fs::write(
+        &path,
+        format!("{}AAAAAAAAAAA={}", &text[..at], &text[end..]),
+    )
+    .unwrap();
+    let err = run(&suite::standard_kinds(), dir.path()).unwrap_err();
+    let message = err.to_string();
+    assert!(
+        message.contains("fresnel_random.json") && message.contains("sets[0].columns.cos_i"),
         "{message}"
     );
 }

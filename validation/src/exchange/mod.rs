@@ -9,8 +9,11 @@
 //! compares with [`check_random`].
 //!
 //! The radiometry crate's `f64` laws stand in for the exact values here:
-//! they are within 8 `f64` ulps of 50-digit references (check
-//! `laws.mpmath.*`), eight orders of magnitude below the `f32` tolerances.
+//! their reflectances are within 8 `f64` ulps of 50-digit references, on
+//! the grid and at random inputs of their own (checks `laws.mpmath.*` and
+//! `laws.mpmath.random.*`), eight orders of magnitude below the `f32`
+//! tolerances. This check is the one against Mitsuba; the one against an
+//! independent exact value is `laws.mpmath.random.*`.
 //! The tolerances and the rule separating failures from findings are those
 //! of [`crate::laws`].
 

@@ -8,7 +8,8 @@
 //! `η = 1e-3` and `1e3`, `n = 1e3`, `κ = 1e3`).
 //!
 //! Tolerance: [`BOUND_ULPS`] ulps of the exact value in the tier's own
-//! precision. Every input is exactly representable, so a correctly rounded
+//! precision ([`CONDUCTOR_BOUND_ULPS`] for the conductor law, whose random
+//! cases reach past it). Every input is exactly representable, so a correctly rounded
 //! law would be within 0.5 ulp; each quantity is a handful of roundings from
 //! that (a square root, a few products and quotients, a sum carried in twice
 //! the precision). The bound is just above the worst error measured (6.6
@@ -21,9 +22,13 @@
 //! subnormal. The workspace test `tests/fresnel_reference.rs` runs this
 //! check on the radiometry crate's laws and prints its table; a broken law
 //! injected through [`Laws`](crate::laws::Laws) / [`Laws64`] fails it.
+//!
+//! The same laws at seeded random inputs, uniform over the reals and over
+//! the floating-point numbers, are [`random`]'s (`fresnel_random.json`).
 
 mod angles;
 mod fresnel;
+pub mod random;
 mod reference;
 
 pub use angles::{check_angles, transmitted_angle_bound_ulps};
@@ -34,6 +39,17 @@ use crate::check::Check;
 
 /// The bound, in ulps of the tier.
 pub const BOUND_ULPS: f64 = 8.0;
+
+/// The conductor law's bound, in ulps of the tier. Its `R_p` is the square
+/// of a ratio of two `hypot`s, a product and a sum of three rounded terms,
+/// each after compensated discriminants, about ten roundings of order one;
+/// the square doubles the ratio's relative error. The grid's worst is 6.6
+/// ulps (f32 `R_p`), but the random cases of [`random`] reach 9 numbers from
+/// the correctly rounded value (f32 `R_p` at `cos θi = 0.98775816`,
+/// `n = 0.53517735`, `κ = 5.7968769`, at least 8.5 ulps from exact; `cargo
+/// test -p validation --test random_reference`), past [`BOUND_ULPS`]: 12 is
+/// a third above that, and a regression costing one digit still fails it.
+pub const CONDUCTOR_BOUND_ULPS: f64 = 12.0;
 
 /// The file name of the reference.
 pub const FILE: &str = "fresnel_mpmath.json";
@@ -67,8 +83,19 @@ fn measure(
 
 /// [`measure`], failing above [`BOUND_ULPS`].
 fn compare(check: &mut Check, tier: &str, quantity: &str, label: &str, got: f64, exact: Exact) {
+    compare_within(check, BOUND_ULPS, (tier, quantity, label), got, exact)
+}
+
+/// [`measure`], failing above `bound` ulps.
+fn compare_within(
+    check: &mut Check,
+    bound: f64,
+    (tier, quantity, label): (&str, &str, &str),
+    got: f64,
+    exact: Exact,
+) {
     let ulps = measure(check, tier, quantity, label, got, exact);
-    if !(ulps <= BOUND_ULPS) {
+    if !(ulps <= bound) {
         check.fail(format!(
             "{tier} {quantity} at {label}: got {got:e}, exact {:e} ({ulps:.1} ulps)",
             exact.0
