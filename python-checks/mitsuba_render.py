@@ -138,6 +138,8 @@ SCENES = [
     ("kaleidoscope", False),  # its only light is outside the closed tube: the path render is black
     ("kaleidoscope_lit", True),
     ("webgl_seven_spheres", True),
+    ("glass_spheres", True),  # a solid ball, and a hollow one (air in glass: total internal reflection)
+    ("inside_water", True),  # the camera inside water: the eta^2 of radiance does not cancel
 ]
 EXCLUDED = {
     "normals": "shows the normal as a colour: not a radiance, nothing to compare",
