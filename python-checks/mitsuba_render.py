@@ -449,6 +449,9 @@ class Whitted:
                 reflected = self.spawn(si, mi.reflect(wo, n))
                 total += r * self.radiance(reflected, depth + 1, throughput * r, signature)
             if cos_t != 0.0:
+                # Radiance across the interface: L / n^2 is conserved, so
+                # the refracted branch carries (1 - R) / eta_it^2, Mitsuba's
+                # own eta_ti^2 (dielectric.cpp, `sample`, TransportMode::Radiance).
                 weight = (1.0 - r) / (eta_it * eta_it)
                 if max(throughput) * weight >= self.cutoff:
                     refracted = self.spawn(si, mi.refract(wo, n, cos_t, eta_ti))
