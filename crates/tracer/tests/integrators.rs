@@ -1,8 +1,9 @@
 //! The integrators against known answers: an analytic Lambert plane, a
 //! point light's inverse square and its shadow ray stopping at the light,
 //! the path tracer converging to Whitted's answer, images independent of the
-//! thread count, and robust ray offsets where a fixed epsilon fails
-//! (what a scene needs and what the renderer skips: `machinery.rs`).
+//! thread count, robust ray offsets where a fixed epsilon fails, and glass
+//! in a uniform sky, invisible from outside and `η²` times the sky from
+//! inside (what a scene needs and what the renderer skips: `machinery.rs`).
 
 mod common;
 
