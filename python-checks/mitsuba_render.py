@@ -147,7 +147,7 @@ SCENES = [
     ("kaleidoscope_lit", True),
     ("webgl_seven_spheres", True),
     ("glass_spheres", True),  # a solid ball, and a hollow one (air in glass: total internal reflection)
-    ("inside_water", True),  # the camera inside water: the eta^2 of radiance does not cancel
+    ("inside_water", True),  # the camera inside water: eta^2 does not cancel; TIR beyond Snell's window
 ]
 EXCLUDED = {
     "normals": "shows the normal as a colour: not a radiance, nothing to compare",
