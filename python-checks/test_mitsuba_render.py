@@ -146,3 +146,31 @@ def test_glass_in_a_uniform_sky_is_invisible():
         assert abs(value[0] - 1.0) < 1e-3, (x, value)
         hits += 0 in signature
     assert hits >= 3, "the centre row crosses the sphere"
+
+
+def test_a_camera_inside_glass_in_a_uniform_sky_sees_eta_squared_times_the_sky():
+    # In a lossless medium of index n in equilibrium with a sky of radiance
+    # L the radiance is n^2 L (L / n^2 is conserved along a path): the eta^2
+    # a camera inside glass must record, and that Mitsuba's dielectric
+    # records (its `sample` scales a transmission by eta_ti^2 in
+    # TransportMode::Radiance). The Whitted integrator written here gets it
+    # from (1 - R) / eta_it^2 at the way out, less what its cut loses; every
+    # sample of Mitsuba's path integrator is exactly eta^2 L (a reflection
+    # weighs 1, the crossing out eta^2).
+    s = scene({"type": "course_pinhole"}, [], {"type": "dielectric", "eta": 1.5},
+              objects=[{"type": "sphere", "center": [0, 0, -1.5], "radius": 3, "material": "m"}], width=9, height=9)
+    s["background"] = [1, 1, 1]
+    # 40 bounces: a path that reflects inside the sphere still gets out.
+    m = mi.load_dict(mr.mitsuba_scene(s, 9, 9, 40), optimize=False)
+    whitted = mr.Whitted(s, m, 40, 1e-4)
+    integrator = m.integrator()
+    sampler = mi.load_dict({"type": "independent"})
+    sampler.seed(0)
+    for x in range(9):
+        ray = mr.pixel_ray(m.sensors()[0], x, 4, 9, 9)
+        value = whitted.radiance(ray, 0, mi.Color3f(1.0), [])
+        assert abs(value[0] - 2.25) < 2.25e-3, (x, value)
+        for _ in range(16):
+            sample, _, _ = integrator.sample(m, sampler, mi.RayDifferential3f(ray))
+            sampler.advance()
+            assert abs(sample[0] - 2.25) < 2.25 * F32_TOLERANCE, (x, sample)

@@ -1,13 +1,15 @@
 //! The tracer's renders against Mitsuba 3's (`mitsuba_renders.json`): every
 //! physically based course scene agrees, Whitted per pixel and path by the
-//! per-pixel t-test; a doubled light, a mirrored camera and a path tracer
-//! stopped after one bounce are caught; a damaged reference is refused with
+//! per-pixel t-test; a doubled light, a mirrored camera, a path tracer
+//! stopped after one bounce, glass 2 % too dense and radiance carried across
+//! glass without its `1/η²` are caught; a damaged reference is refused with
 //! its field named.
 
 mod tables;
 
 use tracer::render::Image;
-use tracer::scene::{IntegratorKind, Light, Scene, Settings};
+use tracer::scene::faults::{self, Fault};
+use tracer::scene::{IntegratorKind, Light, Material, Scene, Settings};
 use validation::checkout::Checkout;
 use validation::reference::{committed_dir, ReferenceError};
 use validation::renders::{self, MitsubaRenders, RenderChecks, Renderer};
@@ -34,13 +36,13 @@ fn run(render: Renderer) -> Vec<Check> {
 fn tracer_renders_agree_with_mitsuba() {
     let checks = run(renders::tracer_render);
     tables::print(&checks);
-    // Eight scenes by Whitted (the normals scene shows no radiance), seven by
+    // Ten scenes by Whitted (the normals scene shows no radiance), nine by
     // path (the kaleidoscope's only light cannot reach into its tube).
     assert_eq!(
         checks.iter().filter(|c| c.id.ends_with(".whitted")).count(),
-        8
+        10
     );
-    assert_eq!(checks.iter().filter(|c| c.id.ends_with(".path")).count(), 7);
+    assert_eq!(checks.iter().filter(|c| c.id.ends_with(".path")).count(), 9);
     for c in &checks {
         assert!(c.passed(), "{}: {:#?}", c.id, c.failures);
     }
@@ -193,14 +195,117 @@ fn missing_multiple_bounces_are_caught_by_the_t_test() {
         .collect();
     // The path renders that receive light after two or more bounces: the
     // background in the gold mirrors' scene, the lit kaleidoscope's mirror
-    // chains, the seven spheres over their ground. (In `shadow` light that
+    // chains, the seven spheres over their ground, everything seen through
+    // glass (in and out is two bounces already). (In `shadow` light that
     // bounces twice between the two spheres is below what 256 samples see.)
     assert_eq!(
         failed,
         [
             "renders.mitsuba.gold_spheres.path",
             "renders.mitsuba.kaleidoscope_lit.path",
-            "renders.mitsuba.webgl_seven_spheres.path"
+            "renders.mitsuba.webgl_seven_spheres.path",
+            "renders.mitsuba.glass_spheres.path",
+            "renders.mitsuba.inside_water.path"
         ]
+    );
+}
+
+/// How many failures `check` recorded: the first ten are listed, then
+/// "… and N more".
+fn failed_cases(check: &Check) -> usize {
+    let listed = check.failures.len();
+    match check.failures.last().and_then(|f| f.strip_prefix("… and ")) {
+        Some(rest) => listed - 1 + rest.trim_end_matches(" more").parse::<usize>().unwrap(),
+        None => listed,
+    }
+}
+
+/// The ids of the checks that failed (printed with their failed cases).
+fn failed(checks: &[Check]) -> Vec<&str> {
+    let failed: Vec<&Check> = checks.iter().filter(|c| !c.passed()).collect();
+    for c in &failed {
+        println!("{}: {} of {} failed", c.id, failed_cases(c), c.cases);
+    }
+    failed.iter().map(|c| c.id.as_str()).collect()
+}
+
+/// The tracer with every dielectric's index 2 % too high.
+fn index_two_percent_high(scene: &Scene, settings: &Settings) -> Result<Image, String> {
+    let mut scene = scene.clone();
+    for material in &mut scene.materials {
+        if let Material::Dielectric { eta } = material {
+            *eta *= 1.02;
+        }
+    }
+    renders::tracer_render(&scene, settings)
+}
+
+#[test]
+fn a_two_percent_index_error_is_caught_in_every_glass_scene() {
+    let checks = run(index_two_percent_high);
+    // Whitted's comparison fails in both scenes with glass: the balls'
+    // refracted images move, and inside the water the radiance's η² grows
+    // by 4 % on every pixel, which the path comparison sees too. The balls'
+    // moved images, a few pixels each at 64 × 48 and mostly at the edges
+    // that are masked, are below what 256 path samples resolve. The other
+    // scenes have no glass to change.
+    assert_eq!(
+        failed(&checks),
+        [
+            "renders.mitsuba.glass_spheres.whitted",
+            "renders.mitsuba.inside_water.whitted",
+            "renders.mitsuba.inside_water.path"
+        ]
+    );
+}
+
+/// The tracer carrying radiance across a dielectric interface by the
+/// transmittance alone, without `1/η²` (planted in the tracer, read by the
+/// render on the thread that starts it).
+fn radiance_not_scaled(scene: &Scene, settings: &Settings) -> Result<Image, String> {
+    faults::with(Fault::RadianceNotScaledAcrossInterfaces, || {
+        renders::tracer_render(scene, settings)
+    })
+}
+
+#[test]
+fn radiance_carried_across_glass_without_eta_squared_is_caught_by_the_camera_inside_water() {
+    let checks = run(radiance_not_scaled);
+    // Only the camera inside the water sees the missing η² (1.33² = 1.77),
+    // on every lit pixel, by both comparisons (beyond Snell's window the
+    // light is trapped by total internal reflection: black, nothing to
+    // scale). With the camera and the lights
+    // outside the glass every path crosses in as often as out and the
+    // factors cancel: the balls' path render passes as it would with the
+    // law right, and their Whitted render fails only where a branch is cut,
+    // since the cut compares the throughput inside the glass with
+    // `throughput_cutoff` (with no cutoff the two renders of the balls
+    // agree to 5e-7).
+    assert_eq!(
+        failed(&checks),
+        [
+            "renders.mitsuba.glass_spheres.whitted",
+            "renders.mitsuba.inside_water.whitted",
+            "renders.mitsuba.inside_water.path"
+        ]
+    );
+    let check = |id: &str| checks.iter().find(|c| c.id == id).unwrap();
+    // The lit pixel-channels: those where the path samples vary.
+    let lit = check("renders.mitsuba.inside_water.path")
+        .worst("pixel-channel t-tests m")
+        .unwrap()
+        .worst as usize;
+    for id in [
+        "renders.mitsuba.inside_water.whitted",
+        "renders.mitsuba.inside_water.path",
+    ] {
+        let failed = failed_cases(check(id));
+        assert!(failed * 100 >= lit * 99, "{id}: {failed} of {lit} fail");
+    }
+    let balls = check("renders.mitsuba.glass_spheres.whitted");
+    let failed = failed_cases(balls);
+    assert!(
+        failed * 20 < 3 * balls.cases,
+        "glass_spheres: {failed} fail"
     );
 }

@@ -165,11 +165,7 @@ impl RenderJob {
         threads: Option<usize>,
         progress: &(dyn Fn(usize) + Sync),
     ) -> Result<Rendered, RenderError> {
-        let tracer = Tracer {
-            scene: &self.scene,
-            settings: self.settings,
-            machinery: machinery.clone(),
-        };
+        let tracer = Tracer::new(&self.scene, self.settings, machinery.clone());
         let rendered = render::render(&tracer, threads, progress)?;
         render::check_finite(&rendered.image)?;
         Ok(rendered)

@@ -1,8 +1,9 @@
 //! The integrators against known answers: an analytic Lambert plane, a
 //! point light's inverse square and its shadow ray stopping at the light,
 //! the path tracer converging to Whitted's answer, images independent of the
-//! thread count, and robust ray offsets where a fixed epsilon fails
-//! (what a scene needs and what the renderer skips: `machinery.rs`).
+//! thread count, robust ray offsets where a fixed epsilon fails, and glass
+//! in a uniform sky, invisible from outside and `η²` times the sky from
+//! inside (what a scene needs and what the renderer skips: `machinery.rs`).
 
 mod common;
 
@@ -15,6 +16,7 @@ use serde_json::{json, Value};
 use tracer::geometry::Ray;
 use tracer::integrator::RayCounts;
 use tracer::rng::Pcg32;
+use tracer::scene::faults::{self, Fault};
 use tracer::scene::{FresnelModel, IntegratorKind, RayOffset, Scene, Settings};
 
 fn settings(integrator: IntegratorKind) -> Settings {
@@ -409,6 +411,59 @@ fn glass_sphere_in_a_uniform_sky_is_invisible() {
                 "{fresnel:?} whitted: {p}"
             );
         }
+    }
+}
+
+/// A camera inside a glass sphere in a uniform sky of radiance L: in a
+/// lossless medium of index n in equilibrium with the sky the radiance is
+/// `n² L` (`L/n²` is conserved along a path), so every pixel shows
+/// `2.25 L`. The path tracer's samples are exactly that (a reflection inside
+/// weighs 1, the way out `η²`); Whitted's branches sum to it less what falls
+/// under the cutoff or past `max_depth`. Without the `η²` the image would
+/// show the sky itself.
+#[test]
+fn a_camera_inside_glass_in_a_uniform_sky_sees_eta_squared_times_the_sky() {
+    let scene = pinhole_scene(
+        24,
+        18,
+        json!({
+            "background": [0.5, 0.5, 0.5],
+            "materials": { "glass": { "type": "dielectric", "eta": 1.5 } },
+            "objects": [ { "type": "sphere", "center": [0, 0, -1.5], "radius": 3, "material": "glass" } ]
+        }),
+    );
+    let expected = 0.5 * 2.25;
+    let path = Settings {
+        spp: 4,
+        max_depth: 64,
+        ..settings(IntegratorKind::Path)
+    };
+    for p in render_with(&scene, &path, None).pixels {
+        // A few dozen f32 products along a path: relative 1e-5.
+        assert!(
+            (p - Vec3::splat(expected)).abs().max_element() < expected * 1e-5,
+            "path: {p}"
+        );
+    }
+    let whitted = Settings {
+        max_depth: 12,
+        throughput_cutoff: 1e-4,
+        ..settings(IntegratorKind::Whitted)
+    };
+    for p in render_with(&scene, &whitted, None).pixels {
+        // Lost: branches under 1e-4 of weight and past 12 bounces, R ≈ 0.04
+        // each time a branch stays inside: well under 1 %.
+        assert!(
+            p.max_element() <= expected * (1.0 + 1e-5) && p.min_element() > expected * 0.99,
+            "whitted: {p}"
+        );
+    }
+    // The η² left out (a test-only switch): the sky, not its η² times.
+    let unscaled = faults::with(Fault::RadianceNotScaledAcrossInterfaces, || {
+        render_with(&scene, &path, None)
+    });
+    for p in unscaled.pixels {
+        assert!((p - Vec3::splat(0.5)).abs().max_element() < 5e-6, "{p}");
     }
 }
 

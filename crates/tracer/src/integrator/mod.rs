@@ -21,6 +21,7 @@ use glam::Vec3;
 
 use crate::geometry::{Hit, Object, Ray};
 use crate::rng::Pcg32;
+use crate::scene::faults::{self, Fault};
 use crate::scene::{IntegratorKind, Scene, Settings};
 
 pub mod course;
@@ -108,11 +109,27 @@ pub struct Tracer<'a> {
     pub settings: Settings,
     /// What runs.
     pub machinery: Machinery,
+    /// A law left out on purpose (`scene::faults`, tests only): read once
+    /// from the thread that built the tracer.
+    pub(crate) fault: Option<Fault>,
 }
 
 /// A colour from a function of its channel index.
 pub(crate) fn rgb(f: impl Fn(usize) -> f32) -> Vec3 {
     Vec3::new(f(0), f(1), f(2))
+}
+
+impl<'a> Tracer<'a> {
+    /// The tracer of `scene` under `settings`, running `machinery`, with
+    /// the fault planted on this thread, if any (`scene::faults`).
+    pub fn new(scene: &'a Scene, settings: Settings, machinery: Machinery) -> Self {
+        Tracer {
+            scene,
+            settings,
+            machinery,
+            fault: faults::current(),
+        }
+    }
 }
 
 impl Tracer<'_> {

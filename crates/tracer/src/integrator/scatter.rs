@@ -14,6 +14,7 @@ use radiometry::{course, fresnel, radiance, specular};
 
 use super::Tracer;
 use crate::geometry::{Hit, Ray};
+use crate::scene::faults::Fault;
 use crate::scene::{FresnelModel, Material};
 use crate::spawn;
 
@@ -117,10 +118,7 @@ impl Tracer<'_> {
                     spawn::origin(hit, -outward, self.settings.ray_offset),
                     t.direction,
                 ),
-                weight: Vec3::splat(radiance::across_interface(
-                    interface.transmittance,
-                    t.eta_path,
-                )),
+                weight: Vec3::splat(self.across_interface(interface.transmittance, t.eta_path)),
             };
             (lobe, reflectance)
         });
@@ -128,6 +126,16 @@ impl Tracer<'_> {
             reflection: mirror(reflected, Vec3::splat(reflectance)),
             refraction,
         }
+    }
+
+    /// The radiance carried across the interface per unit arriving,
+    /// `T/η²` (`radiance::across_interface`); `T` alone with that law
+    /// planted out (`Fault::RadianceNotScaledAcrossInterfaces`).
+    fn across_interface(&self, transmitted: f32, eta_path: f32) -> f32 {
+        if self.fault == Some(Fault::RadianceNotScaledAcrossInterfaces) {
+            return transmitted;
+        }
+        radiance::across_interface(transmitted, eta_path)
     }
 
     /// Conductor reflectance per channel at `cos_i`, by the chosen law.
@@ -249,11 +257,7 @@ mod tests {
                 fresnel: model,
                 ..Settings::default()
             };
-            let tracer = Tracer {
-                scene: &scene,
-                settings,
-                machinery: Machinery::everything(&scene, &settings),
-            };
+            let tracer = Tracer::new(&scene, settings, Machinery::everything(&scene, &settings));
             for i in 0..400 {
                 // Rays from outside (origin at z = −3) and from the centre
                 // outwards, over a spread of angles.

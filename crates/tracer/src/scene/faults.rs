@@ -1,7 +1,11 @@
-//! Test-only switches that undo one of the reader's fixes on the current
-//! thread, so that the fuzz target (`crates/tracer/tests/fuzz_scenes.rs`)
-//! can show it finds the case each fix handles: a target that passes with a
-//! fix undone would pass without the fix. Off unless a test turns one on.
+//! Test-only switches that undo one of the reader's fixes, or leave one law
+//! out of the tracer, on the current thread, so that a check can show it
+//! finds the case: the fuzz target (`crates/tracer/tests/fuzz_scenes.rs`)
+//! each fix of the reader, the harness's render comparison
+//! (`validation/tests/renders_vs_mitsuba.rs`) the law. A check that passes
+//! with the fix undone would pass without it. Off unless a test turns one
+//! on. A render reads the switch once, on the thread that starts it, so it
+//! holds for every row whichever thread traces it.
 
 use std::cell::Cell;
 
@@ -14,6 +18,9 @@ pub enum Fault {
     ShapesUnchecked,
     /// Products of scene numbers not bounded within `f32`.
     RadianceUnbounded,
+    /// Radiance carried across a dielectric interface without its `1/η²`
+    /// (`radiometry::radiance::across_interface`): the transmittance alone.
+    RadianceNotScaledAcrossInterfaces,
 }
 
 thread_local! {
@@ -30,5 +37,10 @@ pub fn with<T>(fault: Fault, f: impl FnOnce() -> T) -> T {
 
 /// Whether `fault`'s fix is undone on this thread.
 pub(crate) fn undone(fault: Fault) -> bool {
-    UNDONE.with(|u| u.get()) == Some(fault)
+    current() == Some(fault)
+}
+
+/// The fault planted on this thread, if any.
+pub(crate) fn current() -> Option<Fault> {
+    UNDONE.with(|u| u.get())
 }

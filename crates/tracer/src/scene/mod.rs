@@ -43,10 +43,11 @@ pub use settings::{MAX_DEPTH, MAX_SPP};
 pub const SCHEMA_VERSION: u32 = 1;
 
 /// The course's scenes that ship with the tracer, as
-/// `crates/tracer/scenes/<name>.json`, in the order the course meets them:
+/// `crates/tracer/scenes/<name>.json`, in the order the course meets them
+/// (then the glass the course leaves out, for its cross-check):
 /// the inputs of the tracer's tests, benches and examples and of the
 /// harness's render references.
-pub const COURSE_SCENES: [&str; 9] = [
+pub const COURSE_SCENES: [&str; 11] = [
     "first_red_sphere",
     "normals",
     "diffuse",
@@ -56,6 +57,8 @@ pub const COURSE_SCENES: [&str; 9] = [
     "kaleidoscope",
     "kaleidoscope_lit",
     "webgl_seven_spheres",
+    "glass_spheres",
+    "inside_water",
 ];
 
 /// The largest image side accepted, in pixels. 16384 is the largest texture

@@ -65,11 +65,7 @@ pub fn render_with(scene: &Scene, settings: &Settings, threads: Option<usize>) -
 
 /// A tracer of `scene` running everything, whatever the scene needs.
 pub fn tracer(scene: &Scene, settings: Settings) -> Tracer<'_> {
-    Tracer {
-        scene,
-        settings,
-        machinery: Machinery::everything(scene, &settings),
-    }
+    Tracer::new(scene, settings, Machinery::everything(scene, &settings))
 }
 
 /// The radiance along one `ray`, from the first pixel's random stream.
