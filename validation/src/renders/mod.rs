@@ -75,7 +75,7 @@ pub struct Compared {
 }
 
 fn tolerance(mitsuba: f64) -> f64 {
-    TOLERANCE_ABSOLUTE + TOLERANCE_RELATIVE * mitsuba.abs()
+    crate::compare::Tolerance::RENDERS.at(mitsuba)
 }
 
 fn pixel_label(width: u32, i: usize) -> String {
