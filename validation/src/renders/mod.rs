@@ -34,7 +34,7 @@ pub use path::compare_path;
 pub use reference::{
     decode, Decoded, MitsubaRenders, PathImages, PathRender, SceneRenders, Tool, WhittedRender,
 };
-pub use runner::{path_statistics, tracer_render, Renderer};
+pub use runner::{path_statistics, sample_statistics, tracer_render, Renderer};
 pub use whitted::compare_whitted;
 
 use tracer::render::Image;
