@@ -313,6 +313,9 @@ fn bad_inputs_are_refused_by_kind_and_field() {
     ]);
     assert_eq!(out.status.code(), Some(1));
     let stderr = text(&out.stderr);
-    assert!(stderr.starts_with("hiba: a kép ") && stderr.contains("helyen eltér"), "{stderr}");
+    assert!(
+        stderr.starts_with("hiba: a kép ") && stderr.contains("helyen eltér"),
+        "{stderr}"
+    );
     assert!(Path::new(&diff).is_file());
 }
