@@ -11,7 +11,7 @@
 
 mod reference;
 mod report;
-mod user_image;
+pub(crate) mod user_image;
 
 use std::path::PathBuf;
 use std::process::ExitCode;
