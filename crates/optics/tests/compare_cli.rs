@@ -71,8 +71,8 @@ fn compare(image: &Path, scene: &str, extra: &[&str]) -> Value {
     record
 }
 
-/// The region of `record` named `name` (`object 2 (sphere, gold)`).
-fn region<'a>(record: &'a Value, object: u64) -> &'a Value {
+/// The region of `record` that is object `object`.
+fn region(record: &Value, object: u64) -> &Value {
     record["details"]["regions"]
         .as_array()
         .unwrap()

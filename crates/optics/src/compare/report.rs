@@ -21,7 +21,6 @@ pub(crate) fn record(
 ) -> Record {
     let (summary, verdicts) = (&outcome.summary, &outcome.verdicts);
     let job = &reference.job;
-    let scene = job.scene();
     let names = reference::region_names(job, lang);
     let unit = verdicts.unit;
     let mut record = Record::new("compare", String::new(), unit);
@@ -64,6 +63,29 @@ pub(crate) fn record(
             diff.display()
         ));
     }
+    if reference.noise.is_some() && outcome.tests.is_none() {
+        record.step(say!(
+            lang,
+            "the reference is Monte Carlo and the image is held to its noise alone: an image with noise of its own needs --variance and --samples",
+            "a referencia Monte Carlo-becslés, a képet csak a referencia zajához méri: saját zajjal bíró képhez a --variance és a --samples kell"
+        ));
+    }
+    details(&mut record, args, reference, outcome, masked);
+    record
+}
+
+/// Every number of the comparison, for scripts.
+fn details(
+    record: &mut Record,
+    args: &CompareArgs,
+    reference: &Reference,
+    outcome: &Outcome,
+    masked: usize,
+) {
+    let (summary, verdicts) = (&outcome.summary, &outcome.verdicts);
+    let job = &reference.job;
+    let scene = job.scene();
+    let unit = verdicts.unit;
     let names_en = reference::region_names(job, Lang::En);
     let regions: Vec<Value> = summary
         .regions
@@ -104,7 +126,6 @@ pub(crate) fn record(
             json!({ "path": diff.display().to_string(), "legend": LEGEND }),
         );
     }
-    record
 }
 
 fn reference_line(reference: &Reference, lang: Lang) -> String {
@@ -184,7 +205,10 @@ fn region_line(name: &str, r: &Region, unit: &str, lang: Lang) -> String {
         r.pixels,
         number(r.mean_difference),
         unit,
-        percent(r.relative_difference, 2),
+        match r.relative_difference.is_finite() {
+            true => percent(r.relative_difference, 2),
+            false => lang.pick("reference black", "a referencia fekete").to_owned(),
+        },
         number(r.worst_difference),
         x,
         y,

@@ -19,6 +19,11 @@ fn pfm_hu(problem: PfmProblem) -> String {
     }
 }
 
+/// A file named by `field` and what is wrong with it.
+fn file_hu(field: &str, path: &std::path::Path, what: String) -> String {
+    format!("{field} {}: {what}", path.display())
+}
+
 /// An image that cannot be compared, or one that disagrees.
 pub fn compare_hu(error: &CompareError) -> String {
     match error {
@@ -26,37 +31,36 @@ pub fn compare_hu(error: &CompareError) -> String {
             field,
             path,
             source,
-        } => {
-            format!("{field} {}: nem olvasható: {source}", path.display())
-        }
-        CompareError::UnknownFormat { field, path } => format!(
-            "{field} {}: az első bájtjai szerint sem PNG, sem PFM",
-            path.display()
+        } => file_hu(field, path, format!("nem olvasható: {source}")),
+        CompareError::UnknownFormat { field, path } => file_hu(
+            field,
+            path,
+            "az első bájtjai szerint sem PNG, sem PFM".to_owned(),
         ),
         CompareError::Png {
             field,
             path,
             message,
-        } => {
-            format!("{field} {}: nem olvasható PNG: {message}", path.display())
-        }
+        } => file_hu(field, path, format!("nem olvasható PNG: {message}")),
         CompareError::PngPixels {
             field,
             path,
             format,
-        } => format!(
-            "{field} {}: {format} képpontú PNG; az összevetés 8 bites sRGB képet olvas \
-             (RGB vagy RGBA)",
-            path.display()
+        } => file_hu(
+            field,
+            path,
+            format!(
+                "{format} képpontú PNG; az összevetés 8 bites sRGB képet olvas (RGB vagy RGBA)"
+            ),
         ),
         CompareError::Pfm {
             field,
             path,
             problem,
-        } => format!(
-            "{field} {}: nem olvasható PFM: {}",
-            path.display(),
-            pfm_hu(*problem)
+        } => file_hu(
+            field,
+            path,
+            format!("nem olvasható PFM: {}", pfm_hu(*problem)),
         ),
         CompareError::BadValue {
             field,
@@ -72,14 +76,7 @@ pub fn compare_hu(error: &CompareError) -> String {
                 ""
             }
         ),
-        CompareError::VarianceNeedsPfm {
-            field: "--variance",
-        } => "--variance: a szórásnégyzetet lineáris értékek PFM-jeként kell megadni, nem PNG-ként"
-            .to_owned(),
-        CompareError::VarianceNeedsPfm { field } => format!(
-            "{field}: a PNG 8 bites kódokat tárol, nem sugársűrűséget; szórásnégyzet az átlag \
-             PFM-je mellé adható meg"
-        ),
+        CompareError::VarianceNeedsPfm { field } => variance_hu(field),
         CompareError::Size {
             width,
             height,
@@ -104,6 +101,21 @@ pub fn compare_hu(error: &CompareError) -> String {
         CompareError::Disagrees {
             disagreeing,
             pixels,
-        } => format!("a kép {pixels} képpontból {disagreeing} helyen eltér a referenciától"),
+        } => {
+            format!("a kép {pixels} képpontból {disagreeing} helyen eltér a referenciától")
+        }
+    }
+}
+
+/// A variance given as a PNG, or for one.
+fn variance_hu(field: &str) -> String {
+    match field {
+        "--variance" => "--variance: a szórásnégyzetet lineáris értékek PFM-jeként kell \
+                         megadni, nem PNG-ként"
+            .to_owned(),
+        _ => format!(
+            "{field}: a PNG 8 bites kódokat tárol, nem sugársűrűséget; szórásnégyzet az átlag \
+             PFM-je mellé adható meg"
+        ),
     }
 }
