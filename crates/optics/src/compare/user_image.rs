@@ -267,6 +267,35 @@ mod tests {
         );
     }
 
+    fn png(colour: image::ExtendedColorType, bytes: &[u8]) -> Vec<u8> {
+        use image::ImageEncoder;
+        let mut out = Vec::new();
+        image::codecs::png::PngEncoder::new(&mut out)
+            .write_image(bytes, 2, 1, colour)
+            .unwrap();
+        out
+    }
+
+    #[test]
+    fn an_rgba_png_is_its_colour_and_a_16_bit_one_is_refused() {
+        let rgba = png(image::ExtendedColorType::Rgba8, &[1, 2, 3, 0, 4, 5, 6, 255]);
+        let decoded = decode("IMAGE", Path::new("a.png"), &rgba).unwrap();
+        let codes = vec![1, 2, 3, 4, 5, 6];
+        assert_eq!(
+            decoded,
+            UserImage::Codes {
+                width: 2,
+                height: 1,
+                codes
+            }
+        );
+        let deep = png(image::ExtendedColorType::Rgb16, &[0; 12]);
+        match decode("IMAGE", Path::new("b.png"), &deep) {
+            Err(CompareError::PngPixels { format, .. }) => assert_eq!(format, "Rgb16"),
+            other => panic!("{other:?}"),
+        }
+    }
+
     #[test]
     fn malformed_pfms_say_what_is_wrong() {
         let path = Path::new("bad.pfm");

@@ -18,7 +18,7 @@ fn scene() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../tracer/scenes/first_red_sphere.json")
 }
 
-/// The unmutated images: 4 × 3 pixels each.
+/// The unmutated images: 4 × 3 pixels each, and one too wide to render.
 fn seeds() -> Vec<Vec<u8>> {
     let pixels: Vec<f32> = (0..36).map(|i| i as f32 / 36.0).collect();
     let mut png = Vec::new();
@@ -45,6 +45,8 @@ fn seeds() -> Vec<Vec<u8>> {
         floats("PF\n4 3\n-1.0\n", &pixels, false),
         floats("PF 4 3 1\n", &pixels, true),
         floats("Pf\n4 3\n-1\n", &pixels[..12], false),
+        // One column wider than the tracer renders: refused by its size.
+        floats("Pf\n16385 1\n-1\n", &[0.5; 16385], false),
     ]
 }
 
