@@ -31,6 +31,7 @@
 pub mod check;
 pub mod checkout;
 pub mod colorimetry;
+pub mod compare;
 pub mod exchange;
 pub mod laws;
 pub mod metals;

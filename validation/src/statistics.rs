@@ -59,6 +59,29 @@ pub fn student_t_two_sided(t: f64, dof: f64) -> f64 {
     regularized_incomplete_beta(dof / (dof + t * t), dof / 2.0, 0.5)
 }
 
+/// The two-sided quantile: the `t ≥ 0` with `P(|T| ≥ t) = p` for Student's
+/// t with `dof` degrees of freedom, by bisection on
+/// [`student_t_two_sided`] (monotone in `t`) to a relative 1e-12.
+pub fn student_t_quantile(p: f64, dof: f64) -> f64 {
+    if !(p < 1.0) {
+        return 0.0;
+    }
+    let mut high = 1.0;
+    while student_t_two_sided(high, dof) > p && high < 1e300 {
+        high *= 2.0;
+    }
+    let mut low = 0.0;
+    while high - low > 1e-12 * high {
+        let middle = 0.5 * (low + high);
+        if student_t_two_sided(middle, dof) > p {
+            low = middle;
+        } else {
+            high = middle;
+        }
+    }
+    0.5 * (low + high)
+}
+
 /// `I_x(a, b)`, by the continued fraction of Abramowitz and Stegun 26.5.8,
 /// evaluated with the modified Lentz method (Press et al., *Numerical
 /// Recipes*, 3rd ed., §6.4), on the side of `x` where it converges fast.
@@ -172,6 +195,22 @@ mod tests {
             let got = student_t_two_sided(t, dof);
             assert!((got - p).abs() < tol, "t = {t}, dof = {dof}: {got}");
         }
+    }
+
+    #[test]
+    fn student_t_quantiles_match_printed_tables() {
+        // The same printed critical values, read the other way; 1e-3 covers
+        // their three decimals.
+        for (p, dof, t) in [
+            (0.05, 10.0, 2.228),
+            (0.01, 10.0, 3.169),
+            (0.01, 100.0, 2.626),
+            (0.05, 1e9, 1.960),
+        ] {
+            let got = student_t_quantile(p, dof);
+            assert!((got - t).abs() < 1e-3, "p = {p}, dof = {dof}: {got}");
+        }
+        assert_eq!(student_t_quantile(1.0, 5.0), 0.0);
     }
 
     #[test]

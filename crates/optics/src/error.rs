@@ -22,6 +22,8 @@ use tracer::job::RenderError;
 use tracer::output::OutputError;
 use tracer::scene::SceneError;
 
+#[cfg(feature = "harness")]
+pub mod compare;
 mod english;
 #[cfg(feature = "harness")]
 pub mod harness;
@@ -170,6 +172,9 @@ pub enum ErrorKind {
         /// All checks run.
         checks: usize,
     },
+    /// `optics compare` could not compare, or found the image different.
+    #[cfg(feature = "harness")]
+    Compare(compare::CompareError),
 }
 
 impl Error {
@@ -200,6 +205,13 @@ impl From<ErrorKind> for Error {
         Self {
             kind: Box::new(kind),
         }
+    }
+}
+
+#[cfg(feature = "harness")]
+impl From<compare::CompareError> for Error {
+    fn from(error: compare::CompareError) -> Self {
+        ErrorKind::Compare(error).into()
     }
 }
 
@@ -255,6 +267,8 @@ impl ErrorKind {
             ErrorKind::Pipeline(error) => harness::pipeline_name(error),
             #[cfg(feature = "harness")]
             ErrorKind::ChecksFailed { .. } => "harness.checks_failed",
+            #[cfg(feature = "harness")]
+            ErrorKind::Compare(error) => error.name(),
         }
     }
 
@@ -290,6 +304,8 @@ impl ErrorKind {
             ErrorKind::Pipeline(error) => harness::pipeline_field(error),
             #[cfg(feature = "harness")]
             ErrorKind::ChecksFailed { .. } => None,
+            #[cfg(feature = "harness")]
+            ErrorKind::Compare(error) => error.field(),
         }
     }
 }

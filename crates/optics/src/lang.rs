@@ -6,6 +6,8 @@ use clap::ValueEnum;
 use radiometry::domain::{self, DomainError, Expected};
 
 #[cfg(feature = "harness")]
+mod compare;
+#[cfg(feature = "harness")]
 mod harness;
 pub mod needs;
 mod render;
@@ -116,6 +118,8 @@ fn hungarian(kind: &ErrorKind) -> String {
         ErrorKind::ChecksFailed { failed, checks } => {
             format!("{checks} ellenőrzésből {failed} sikertelen")
         }
+        #[cfg(feature = "harness")]
+        ErrorKind::Compare(error) => compare::compare_hu(error),
     }
 }
 

@@ -10,6 +10,8 @@
 //! syntax, as reported by the argument parser).
 
 pub mod batch;
+#[cfg(feature = "harness")]
+mod compare;
 pub mod error;
 #[cfg(test)]
 mod fuzz;
@@ -162,6 +164,9 @@ enum Command {
     /// Cross-check the laws, spectra and renders against the references.
     #[cfg(feature = "harness")]
     Validate(validate::ValidateArgs),
+    /// Check a render of a scene (PNG or PFM) against the tracer's reference.
+    #[cfg(feature = "harness")]
+    Compare(compare::CompareArgs),
 }
 
 /// The record of a command that evaluates one law with its flags; `None`
@@ -221,6 +226,8 @@ fn run(command: &Command, ui: &Ui) -> error::Result<ExitCode> {
         Command::Inspect(args) => inspect::run(args, ui)?,
         #[cfg(feature = "harness")]
         Command::Validate(args) => return validate::run(args, ui),
+        #[cfg(feature = "harness")]
+        Command::Compare(args) => return compare::run(args, ui),
         // Evaluated by `law_record` above.
         Command::Fresnel(_) | Command::Refract(_) | Command::Reflect(_) | Command::Shade(_) => {}
     }

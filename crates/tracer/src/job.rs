@@ -171,6 +171,26 @@ impl RenderJob {
         Ok(rendered)
     }
 
+    /// What the camera sees at each pixel, rows top to bottom: the index
+    /// (into [`Scene::objects`]) of the object the primary ray through the
+    /// pixel's centre meets first, by the physical integrators'
+    /// intersection, or `None` where it escapes to the background.
+    pub fn first_hits(&self) -> Vec<Option<u32>> {
+        let tracer = Tracer {
+            scene: &self.scene,
+            settings: self.settings,
+            machinery: self.machinery.clone(),
+        };
+        let (width, height) = (self.scene.width, self.scene.height);
+        (0..height)
+            .flat_map(|y| (0..width).map(move |x| (x, y)))
+            .map(|(x, y)| {
+                let ray = self.scene.camera.ray(x, y);
+                tracer.intersect(&ray).map(|hit| hit.object)
+            })
+            .collect()
+    }
+
     /// Renders and writes the PNG and the PFM of `destination`.
     pub fn render_to(
         &self,

@@ -170,3 +170,30 @@ fn a_destination_is_refused_before_the_render() {
     assert_eq!(tracer::output::read_pfm(&pfm), Some(rendered.image));
     assert!(png.is_file());
 }
+
+#[test]
+fn first_hits_name_the_object_seen_through_each_pixel_centre() {
+    // Two spheres side by side at z = 4 (the course pinhole at z = −2 sees
+    // y ∈ [−1, 1] at z = 0, so x ∈ [−3, 3] at z = 4 spans the 8 columns
+    // at 0.75 m each): the left one (object 0) covers the centres of
+    // columns 2 and 3, the right one (object 1) those of 4 and 5; the
+    // corners see the background.
+    let scene = common::pinhole_scene(
+        8,
+        6,
+        json!({
+            "materials": { "grey": { "type": "lambert", "albedo": [0.5, 0.5, 0.5] } },
+            "objects": [
+                { "type": "sphere", "center": [-1.1, 0, 4], "radius": 1, "material": "grey" },
+                { "type": "sphere", "center": [1.1, 0, 4], "radius": 1, "material": "grey" }
+            ]
+        }),
+    );
+    let job = RenderJob::new(scene, &Overrides::default()).unwrap();
+    let hits = job.first_hits();
+    assert_eq!(hits.len(), 8 * 6);
+    let row: Vec<Option<u32>> = hits[2 * 8..3 * 8].to_vec();
+    let (n, s0, s1) = (None, Some(0), Some(1));
+    assert_eq!(row, [n, n, s0, s0, s1, s1, n, n]);
+    assert_eq!(hits[0], None);
+}

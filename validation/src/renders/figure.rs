@@ -3,6 +3,8 @@
 use tracer::render::Image;
 use tracer::scene::Scene;
 
+use crate::compare::map::heat_colour;
+
 /// A triptych for the report: ours | Mitsuba | the difference in units of
 /// the tolerance, each panel enlarged.
 #[derive(Clone, Debug)]
@@ -14,8 +16,9 @@ pub struct RenderFigure {
 }
 
 /// Ours | Mitsuba | heat map, each panel enlarged 4×. The heat map shows a
-/// pixel's largest channel in units of its tolerance: black (0) through red
-/// to yellow (1, at tolerance), magenta beyond; masked pixels dark blue.
+/// pixel's largest channel in units of its tolerance on the scale of
+/// [`crate::compare::map`]: black (0) through red to yellow (1, at
+/// tolerance), magenta beyond; masked pixels dark blue.
 pub(super) fn triptych(
     name: &str,
     integrator: &str,
@@ -44,20 +47,7 @@ pub(super) fn triptych(
             pixels[(y * width + x) as usize] = match panel {
                 0 => rgb(ours, p),
                 1 => rgb(mitsuba, p),
-                _ => {
-                    let worst = heat[3 * p..3 * p + 3]
-                        .iter()
-                        .copied()
-                        .fold(f64::NAN, f64::max);
-                    if worst.is_nan() {
-                        glam::Vec3::new(0.0, 0.0, 0.08)
-                    } else if worst > 1.0 {
-                        glam::Vec3::new(1.0, 0.0, 1.0)
-                    } else {
-                        let t = worst as f32;
-                        glam::Vec3::new(t.sqrt(), t * t, 0.0)
-                    }
-                }
+                _ => heat_colour(&heat[3 * p..3 * p + 3]),
             };
         }
     }

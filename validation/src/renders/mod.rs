@@ -34,7 +34,7 @@ pub use path::compare_path;
 pub use reference::{
     decode, Decoded, MitsubaRenders, PathImages, PathRender, SceneRenders, Tool, WhittedRender,
 };
-pub use runner::{path_statistics, tracer_render, Renderer};
+pub use runner::{path_statistics, sample_statistics, tracer_render, Renderer};
 pub use whitted::compare_whitted;
 
 use tracer::render::Image;
@@ -75,7 +75,7 @@ pub struct Compared {
 }
 
 fn tolerance(mitsuba: f64) -> f64 {
-    TOLERANCE_ABSOLUTE + TOLERANCE_RELATIVE * mitsuba.abs()
+    crate::compare::Tolerance::RENDERS.at(mitsuba)
 }
 
 fn pixel_label(width: u32, i: usize) -> String {

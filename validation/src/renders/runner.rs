@@ -31,15 +31,28 @@ pub fn path_statistics(
     let mut settings = scene.settings;
     settings.integrator = IntegratorKind::Path;
     settings.max_depth = max_depth;
+    sample_statistics(render, scene, settings, 0..u64::from(samples))
+}
+
+/// Per-pixel mean and unbiased variance of one sample under `settings`,
+/// from one render at 1 sample per pixel for each seed of `seeds` (at
+/// least two).
+pub fn sample_statistics(
+    render: Renderer,
+    scene: &Scene,
+    mut settings: Settings,
+    seeds: std::ops::Range<u64>,
+) -> Result<(Vec<f64>, Vec<f64>), String> {
     settings.spp = 1;
     let n = (3 * scene.width * scene.height) as usize;
+    let samples = seeds.end - seeds.start;
     // Welford's running mean and sum of squared deviations: exact zero
     // variance where every sample is the same, no cancellation elsewhere.
     let (mut mean, mut squares) = (vec![0.0; n], vec![0.0; n]);
-    for seed in 0..samples as u64 {
+    for (k, seed) in seeds.enumerate() {
         settings.seed = seed;
         let image = flatten(&render(scene, &settings)?);
-        let count = (seed + 1) as f64;
+        let count = (k + 1) as f64;
         for (i, v) in image.into_iter().enumerate() {
             let delta = v - mean[i];
             mean[i] += delta / count;

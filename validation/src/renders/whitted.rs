@@ -1,14 +1,15 @@
 //! Whitted against Whitted: deterministic renders compared per pixel, away
-//! from the edges the reference masks.
+//! from the edges the reference masks, by [`crate::compare::tolerance`].
 
 use tracer::render::Image;
 
 use super::figure::triptych;
 use super::{
-    flatten, pixel_label, summarise_failures, tolerance, Compared, Decoded, TOLERANCE_ABSOLUTE,
+    flatten, pixel_label, summarise_failures, Compared, Decoded, ALPHA, TOLERANCE_ABSOLUTE,
     TOLERANCE_RELATIVE,
 };
 use crate::check::Check;
+use crate::compare::{tolerance, Tolerance};
 
 /// Whitted against Whitted, per pixel away from edges.
 pub fn compare_whitted(name: &str, reference: &Decoded, ours: &Image) -> Compared {
@@ -31,23 +32,27 @@ pub fn compare_whitted(name: &str, reference: &Decoded, ours: &Image) -> Compare
             reference.whitted.len()
         ));
     }
-    let mut heat = vec![f64::NAN; ours.len()];
-    let (mut sum, mut compared) = (0.0, 0usize);
+    let verdicts = tolerance::radiance(
+        &ours,
+        &reference.whitted,
+        None,
+        Tolerance::RENDERS,
+        ALPHA,
+        Some(&reference.edges),
+    );
     let masked = reference.edges.iter().filter(|&&e| e).count();
-    for (i, (&a, &b)) in ours.iter().zip(&reference.whitted).enumerate() {
-        if reference.edges[i / 3] {
-            continue;
-        }
-        let d = (a - b).abs();
-        heat[i] = d / tolerance(b);
+    let (mut sum, mut compared) = (0.0, 0usize);
+    for i in (0..verdicts.score.len()).filter(|&i| verdicts.compared[i]) {
+        let d = verdicts.difference[i].abs();
         sum += d;
         compared += 1;
         let at = pixel_label(scene.width, i);
         check.measure("|ours − Mitsuba|, W/(sr m²)", d, &at);
-        check.measure("|ours − Mitsuba| / tolerance", heat[i], &at);
-        if !(d <= tolerance(b)) {
+        check.measure("|ours − Mitsuba| / tolerance", verdicts.score[i], &at);
+        if verdicts.disagrees(i) {
             check.fail(format!(
-                "{at}: ours {a:.7}, Mitsuba {b:.7}, difference {d:.3e}"
+                "{at}: ours {:.7}, Mitsuba {:.7}, difference {d:.3e}",
+                ours[i], reference.whitted[i]
             ));
         }
     }
@@ -59,6 +64,13 @@ pub fn compare_whitted(name: &str, reference: &Decoded, ours: &Image) -> Compare
         "",
     );
     summarise_failures(&mut check);
-    let figure = triptych(name, "whitted", scene, &ours, &reference.whitted, &heat);
+    let figure = triptych(
+        name,
+        "whitted",
+        scene,
+        &ours,
+        &reference.whitted,
+        &verdicts.score,
+    );
     Compared { check, figure }
 }

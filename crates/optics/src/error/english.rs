@@ -83,6 +83,8 @@ impl fmt::Display for ErrorKind {
             ErrorKind::ChecksFailed { failed, checks } => {
                 write!(f, "{failed} of {checks} checks failed")
             }
+            #[cfg(feature = "harness")]
+            ErrorKind::Compare(error) => write!(f, "{error}"),
         }
     }
 }

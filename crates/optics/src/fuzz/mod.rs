@@ -1,5 +1,6 @@
 //! Fuzz targets of the calculator's inputs, run by `cargo test` on stable
-//! Rust: batch lines (`batch_lines`) and flag values (`flag_values`).
+//! Rust: batch lines (`batch_lines`), flag values (`flag_values`) and the
+//! images `optics compare` reads (`compare_images`).
 //!
 //! Each target generates inputs from the course's own requests, mutates
 //! them (numbers at the edges of `f64`, wrong types, missing and unknown
@@ -12,6 +13,8 @@
 //! runs longer and prints which error kinds and fields the cases reached.
 
 mod batch_lines;
+#[cfg(feature = "harness")]
+mod compare_images;
 mod flag_values;
 
 use proptest::prelude::*;

@@ -21,7 +21,7 @@ pub fn scene_hu(file: &Path, error: &SceneError) -> String {
     }
 }
 
-fn scene_kind_hu(kind: &Scene) -> String {
+pub(super) fn scene_kind_hu(kind: &Scene) -> String {
     match kind {
         Scene::Read { source, .. } => format!("nem olvasható: {source}"),
         Scene::NotUtf8 { line, column } => {

@@ -7,6 +7,8 @@ use clap::Parser;
 use std::collections::BTreeSet;
 
 #[cfg(feature = "harness")]
+mod compare_kinds;
+#[cfg(feature = "harness")]
 mod harness_kinds;
 mod render_kinds;
 
@@ -148,6 +150,8 @@ fn every_kind() -> Vec<(Error, Vec<String>)> {
     kinds.extend(render_kinds::examples());
     #[cfg(feature = "harness")]
     kinds.extend(harness_kinds::examples());
+    #[cfg(feature = "harness")]
+    kinds.extend(compare_kinds::examples());
     for expected in Expected::ALL {
         let error = DomainError::OutOfRange {
             name: "--eta".into(),
@@ -211,6 +215,13 @@ fn slot(kind: &ErrorKind) -> usize {
         ErrorKind::ChecksFailed { .. } => {
             CALCULATOR + render_kinds::SLOTS + harness_kinds::CHECKS_FAILED
         }
+        #[cfg(feature = "harness")]
+        ErrorKind::Compare(error) => {
+            CALCULATOR
+                + render_kinds::SLOTS
+                + harness_kinds::SLOTS
+                + compare_kinds::compare_slot(error)
+        }
     }
 }
 
@@ -218,7 +229,7 @@ fn slot(kind: &ErrorKind) -> usize {
 const CALCULATOR: usize = 22;
 
 #[cfg(feature = "harness")]
-const SLOTS: usize = CALCULATOR + render_kinds::SLOTS + harness_kinds::SLOTS;
+const SLOTS: usize = CALCULATOR + render_kinds::SLOTS + harness_kinds::SLOTS + compare_kinds::SLOTS;
 #[cfg(not(feature = "harness"))]
 const SLOTS: usize = CALCULATOR + render_kinds::SLOTS;
 

@@ -1,0 +1,126 @@
+//! Monte Carlo against Monte Carlo: Welch's t per pixel-channel with both
+//! sides' per-sample variances ([`crate::statistics::welch`]),
+//! Bonferroni-corrected over the `m` tests: a pixel-channel disagrees when
+//! `p < α/m` **and** the means differ by more than the deterministic
+//! tolerance, which no number of samples removes (float32 differences
+//! between renderers). Where neither side varies, the deterministic test
+//! alone decides.
+//!
+//! The score is `min(ln p / ln(α/m), |Δ| / tolerance)`: above 1 exactly
+//! when both conditions hold.
+
+use super::{masked, Estimate, Tolerance, Verdicts};
+use crate::statistics::{self, Sample};
+
+/// The t-tests made: how many, and the per-test threshold `α/m`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Tests {
+    /// `m`, the pixel-channels where some side varies.
+    pub count: usize,
+    /// `α/m`.
+    pub threshold: f64,
+}
+
+/// Welch's t per pixel-channel of `image` against `reference`, away from
+/// `mask`.
+pub fn welch(
+    image: &Estimate,
+    reference: &Estimate,
+    tolerance: Tolerance,
+    alpha: f64,
+    mask: Option<&[bool]>,
+) -> (Verdicts, Tests) {
+    let side = |e: &Estimate, i: usize| Sample {
+        mean: e.mean[i],
+        variance: e.variance[i],
+        count: f64::from(e.samples),
+    };
+    let n = reference.mean.len();
+    let outcomes: Vec<Option<Option<statistics::Welch>>> = (0..n)
+        .map(|i| (!masked(mask, i)).then(|| statistics::welch(side(image, i), side(reference, i))))
+        .collect();
+    let count = outcomes
+        .iter()
+        .filter(|o| matches!(o, Some(Some(_))))
+        .count();
+    let threshold = alpha / count.max(1) as f64;
+    let test = format!(
+        "Welch's t per pixel-channel ({count} tests): disagrees when p < α/m = {threshold:.3e} \
+         (α = {alpha}, Bonferroni) and |image − reference| > {:e} + {:e} · |reference|",
+        tolerance.absolute, tolerance.relative
+    );
+    let mut verdicts = Verdicts::new(n, "W/(sr m²)", test);
+    for (i, outcome) in outcomes.into_iter().enumerate() {
+        let Some(outcome) = outcome else { continue };
+        let d = image.mean[i] - reference.mean[i];
+        let beyond = d.abs() / tolerance.at(reference.mean[i]);
+        verdicts.compared[i] = true;
+        verdicts.difference[i] = d;
+        verdicts.score[i] = match outcome {
+            // ln p / ln(α/m): 1 at the threshold; p underflowing to 0 is 1e-300.
+            Some(w) => (w.p.max(1e-300).ln() / threshold.ln()).min(beyond),
+            None => beyond,
+        };
+    }
+    (verdicts, Tests { count, threshold })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn estimate<'a>(mean: &'a [f64], variance: &'a [f64], samples: u32) -> Estimate<'a> {
+        Estimate {
+            mean,
+            variance,
+            samples,
+        }
+    }
+
+    #[test]
+    fn means_several_standard_errors_apart_disagree() {
+        // Standard error of the difference: √(1/100 + 1/100) = 0.1414. One
+        // test: threshold 0.01, |t| ≈ 2.63 at 100+ dof. Δ = 0.2 is t = 1.41
+        // (agrees), Δ = 0.6 is t = 4.24 (disagrees); both beyond the
+        // deterministic tolerance.
+        let reference = estimate(&[1.0, 1.0, 1.0], &[1.0, 0.0, 0.0], 100);
+        for (shift, disagrees) in [(0.2, false), (0.6, true)] {
+            let mean = [1.0 + shift, 1.0, 1.0];
+            let image = estimate(&mean, &[1.0, 0.0, 0.0], 100);
+            let (v, tests) = welch(&image, &reference, Tolerance::RENDERS, 0.01, None);
+            assert_eq!(tests.count, 1);
+            assert_eq!(v.disagrees(0), disagrees, "Δ = {shift}: {v:?}");
+            assert_eq!(v.disagreeing_count(), usize::from(disagrees));
+        }
+    }
+
+    #[test]
+    fn a_significant_difference_within_the_tolerance_agrees() {
+        // Millions of samples resolve a 1e-4 difference, which the float32
+        // tolerance (1e-3 relative) allows.
+        let reference = estimate(&[1.0, 1.0, 1.0], &[1e-6; 3], 1_000_000);
+        let image = estimate(&[1.0001, 1.0, 1.0], &[1e-6; 3], 1_000_000);
+        let (v, _) = welch(&image, &reference, Tolerance::RENDERS, 0.01, None);
+        assert!(v.score[0] < 1.0 && !v.disagrees(0), "{v:?}");
+    }
+
+    #[test]
+    fn the_bonferroni_threshold_divides_alpha_by_the_tests() {
+        let variance = [1.0; 12];
+        let reference = estimate(&[0.5; 12], &variance, 64);
+        let (_, tests) = welch(
+            &reference,
+            &reference,
+            Tolerance::RENDERS,
+            0.01,
+            Some(&[false, true, false, false]),
+        );
+        assert_eq!(
+            tests,
+            Tests {
+                count: 9,
+                threshold: 0.01 / 9.0
+            }
+        );
+    }
+}
