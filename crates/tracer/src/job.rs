@@ -176,11 +176,7 @@ impl RenderJob {
     /// pixel's centre meets first, by the physical integrators'
     /// intersection, or `None` where it escapes to the background.
     pub fn first_hits(&self) -> Vec<Option<u32>> {
-        let tracer = Tracer {
-            scene: &self.scene,
-            settings: self.settings,
-            machinery: self.machinery.clone(),
-        };
+        let tracer = Tracer::new(&self.scene, self.settings, self.machinery.clone());
         let (width, height) = (self.scene.width, self.scene.height);
         (0..height)
             .flat_map(|y| (0..width).map(move |x| (x, y)))
