@@ -44,7 +44,7 @@ pub struct RenderArgs {
 
 /// The settings `render` and `inspect` take over the scene's own; as
 /// JSON, those given.
-#[derive(clap::Args, Debug, Serialize)]
+#[derive(clap::Args, Clone, Debug, Serialize)]
 pub struct JobArgs {
     /// Light transport (default: the scene's).
     #[arg(long, value_enum)]

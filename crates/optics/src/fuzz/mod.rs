@@ -1,5 +1,6 @@
 //! Fuzz targets of the calculator's inputs, run by `cargo test` on stable
-//! Rust: batch lines (`batch_lines`) and flag values (`flag_values`).
+//! Rust: batch lines (`batch_lines`), flag values (`flag_values`) and the
+//! render settings' choices (`render_flags`).
 //!
 //! Each target generates inputs from the course's own requests, mutates
 //! them (numbers at the edges of `f64`, wrong types, missing and unknown
@@ -13,6 +14,7 @@
 
 mod batch_lines;
 mod flag_values;
+mod render_flags;
 
 use proptest::prelude::*;
 use proptest::test_runner::{Config, TestCaseError, TestRunner};
