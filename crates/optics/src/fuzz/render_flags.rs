@@ -25,7 +25,16 @@ const INTEGRATORS: [&str; 4] = ["local", "whitted", "path", "course"];
 const FILTERS: [&str; 2] = ["box", "center"];
 const FRESNELS: [&str; 3] = ["exact", "schlick", "course"];
 /// Text that is no choice of these flags: near misses and others' values.
-const NOT_CHOICES: [&str; 8] = ["", "Box", "centre", "gaussian", "1", "--spp", "box,center", "path"];
+const NOT_CHOICES: [&str; 8] = [
+    "",
+    "Box",
+    "centre",
+    "gaussian",
+    "1",
+    "--spp",
+    "box,center",
+    "path",
+];
 
 /// A command line and the choices it gives, `None` for a flag not given.
 #[derive(Clone, Debug)]
