@@ -6,9 +6,15 @@ Regenerate (from the repository root; the output is byte-for-byte stable):
     .venv/bin/python python-checks/mitsuba_render.py
 
 writes ``validation/reference/mitsuba_renders.json`` (schema
-``mitsuba-renders/1``, described in ``validation/README.md``). It takes about
-two minutes on a 2-core machine (Mitsuba's ``scalar_rgb`` variant, one ray at a
-time from Python).
+``mitsuba-renders/2``, described in ``validation/README.md``). It takes about
+two and a half minutes on a 2-core machine (Mitsuba's ``scalar_rgb`` variant:
+the Whitted renders one ray at a time from Python, the path renders through
+``mi.render``, two scenes at a time).
+
+The scenes are the tracer's list, ``tracer::scene::COURSE_SCENES``: a scene
+added there gets its references here, compared by both integrators unless
+a material of it is not a radiance (``NOT_A_RADIANCE``) or it is listed in
+``PATH_SKIPPED``.
 
 One scene, one place: each Mitsuba scene is built here from the suite's own
 scene file in ``crates/tracer/scenes/``, whose text the reference embeds, so the
