@@ -34,6 +34,7 @@
 //! | [`scene`] | the JSON scene schema, parsing and validation (`docs/scene-schema.md`), the settings |
 //! | [`geometry`] | rays, spheres, two-sided planes, the kaleidoscope's mirror tube |
 //! | [`camera`] | the course's pinhole and the look-at camera unprojected through the inverse view-projection |
+//! | [`filter`] | the pixel filter: stratified, jittered rays over the pixel (box) or its centre |
 //! | [`spawn`] | where secondary rays start: the hit's error bound, or the course's fixed epsilon |
 //! | [`integrator`] | `local`, `whitted`, `path` and the course shader's loop, one file each, and the shared scatter step |
 //! | [`needs`] | what a scene needs, so the renderer runs only that |
@@ -57,6 +58,7 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 pub mod camera;
+pub mod filter;
 pub mod geometry;
 pub mod integrator;
 pub mod interrupt;

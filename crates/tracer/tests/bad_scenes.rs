@@ -167,6 +167,11 @@ fn bad_scenes_are_refused_with_the_path_of_the_bad_value() {
             &["render.spp", "from 1"],
         ),
         (
+            "an unknown pixel filter",
+            with("/render/pixel_filter", json!("gaussian")),
+            &["render.pixel_filter", "gaussian", "box", "center"],
+        ),
+        (
             "unknown material",
             with("/objects/0/material", json!("blue")),
             &["objects[0].material", "\"blue\""],

@@ -27,7 +27,7 @@ use proptest::test_runner::{Config, RngAlgorithm, TestCaseError, TestError, Test
 use serde_json::Value;
 use tracer::job::{Overrides, RenderError, RenderJob};
 use tracer::scene::faults::{self, Fault};
-use tracer::scene::{self, IntegratorKind, RenderSpec};
+use tracer::scene::{self, IntegratorKind, PixelFilter, RenderSpec};
 
 const SCENES: [&str; 11] = scene::COURSE_SCENES;
 
@@ -165,6 +165,7 @@ fn edit() -> impl Strategy<Value = Edit> {
         Just("type".to_owned()),
         Just("fixed".to_owned()),
         Just("zoom".to_owned()),
+        Just("pixel_filter".to_owned()),
         "[a-z_]{1,10}"
     ];
     prop_oneof![
@@ -345,11 +346,10 @@ fn check(bytes: &[u8], coverage: &Mutex<Coverage>) -> Result<(), String> {
                 return Ok(());
             }
             if let scene::ErrorKind::Schema { message } = error.kind() {
+                // serde writes "unknown field `KEY`, expected …": the key
+                // ends at "`, " (a key may hold a backtick itself).
                 let key = message
                     .strip_prefix("unknown field `")
-                    // serde's "unknown field `KEY`, expected ..." (or ", there
-                    // are no fields"): the key ends at the first "`, ", since
-                    // a key may hold a backtick itself.
                     .and_then(|m| m.split_once("`, "));
                 if key.is_some_and(|(key, _)| under_a_field(field, key)) {
                     return Ok(());
@@ -363,16 +363,20 @@ fn check(bytes: &[u8], coverage: &Mutex<Coverage>) -> Result<(), String> {
     };
     coverage.accepted += 1;
     accepted_is_the_schema(bytes)?;
-    for integrator in [
-        IntegratorKind::Local,
-        IntegratorKind::Whitted,
-        IntegratorKind::Path,
+    // Each integrator under its default pixel filter, and Whitted under the
+    // box filter too (its jittered rays meet what the centre's do not).
+    for (integrator, pixel_filter) in [
+        (IntegratorKind::Local, None),
+        (IntegratorKind::Whitted, None),
+        (IntegratorKind::Whitted, Some(PixelFilter::Box)),
+        (IntegratorKind::Path, None),
     ] {
         let overrides = Overrides {
             render: RenderSpec {
                 integrator: Some(integrator),
                 spp: Some(2.0),
                 max_depth: Some(4.0),
+                pixel_filter,
                 ..RenderSpec::default()
             },
             width: Some(4),

@@ -44,7 +44,7 @@ use crate::check::Check;
 /// The reference file.
 pub const FILE: &str = "mitsuba_renders.json";
 /// Its schema.
-pub const SCHEMA: &str = "mitsuba-renders/1";
+pub const SCHEMA: &str = "mitsuba-renders/2";
 
 /// Family-wise false-alarm rate of a path comparison: one correct render in
 /// a hundred may fail by chance.

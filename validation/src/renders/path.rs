@@ -28,7 +28,9 @@ struct Verdicts {
     offset_example: Option<String>,
 }
 
-/// Path against path: Welch's t per pixel and channel, Bonferroni-corrected.
+/// Path against path: Welch's t per pixel and channel, Bonferroni-corrected,
+/// over every pixel of Mitsuba's box-filtered render (no edge is masked:
+/// both sides integrate the same pixel).
 pub fn compare_path(
     name: &str,
     reference: &Decoded,
@@ -37,7 +39,7 @@ pub fn compare_path(
     our_samples: u32,
 ) -> Option<Compared> {
     let mitsuba = reference.path.as_ref()?;
-    let scene = &reference.scene;
+    let scene = &mitsuba.scene;
     let sides = Sides {
         ours,
         our_samples,
@@ -46,43 +48,36 @@ pub fn compare_path(
         width: scene.width,
     };
     let mut check = new_check(name);
-    let mut tests = Vec::new();
-    let mut deterministic = Vec::new();
-    let (mut sum, mut compared) = (0.0, 0usize);
-    for i in 0..mitsuba.mean.len() {
-        if reference.edges[i / 3] {
-            continue;
-        }
-        compared += 1;
-        let (a, b) = (ours.0[i], mitsuba.mean[i]);
-        sum += (a - b).abs();
-        check.measure(
-            "|mean ours − mean Mitsuba|, W/(sr m²)",
-            (a - b).abs(),
-            &pixel_label(scene.width, i),
-        );
-        let side = |mean, variance, count: u32| Sample {
-            mean,
-            variance,
-            count: count as f64,
-        };
-        match statistics::welch(
-            side(a, ours.1[i], our_samples),
-            side(b, mitsuba.variance[i], mitsuba_samples),
-        ) {
-            Some(w) => tests.push((i, w)),
-            None => deterministic.push(i),
-        }
+    if ours.0.len() != mitsuba.mean.len() {
+        check.fail(format!(
+            "the render has {} values, the reference {}",
+            ours.0.len(),
+            mitsuba.mean.len()
+        ));
     }
+    let Split {
+        tests,
+        deterministic,
+        sum,
+        compared,
+    } = split(&mut check, &sides);
     let mut heat = vec![f64::NAN; mitsuba.mean.len()];
     let verdicts = judge_tests(&mut check, &sides, &tests, &mut heat);
     judge_deterministic(&mut check, &sides, &deterministic, &mut heat);
     check.cases = compared / 3;
     record_metrics(&mut check, &sides, &tests, &verdicts, deterministic.len());
+    let pixels = (scene.width * scene.height) as f64;
     check.measure(
-        "masked edge pixels",
-        reference.edges.iter().filter(|&&e| e).count() as f64,
+        "compared pixel fraction",
+        compared as f64 / 3.0 / pixels,
         "",
+    );
+    record_power(
+        &mut check,
+        &sides,
+        &tests,
+        &deterministic,
+        verdicts.threshold,
     );
     check.measure(
         "mean |mean ours − mean Mitsuba|, W/(sr m²)",
@@ -101,16 +96,117 @@ pub fn compare_path(
     Some(Compared { check, figure })
 }
 
+/// Every pixel-channel, as a t-test or, where neither side varies, a
+/// deterministic comparison; with the sum of the differences of the means.
+struct Split {
+    tests: Vec<(usize, Welch)>,
+    deterministic: Vec<usize>,
+    sum: f64,
+    compared: usize,
+}
+
+fn split(check: &mut Check, sides: &Sides) -> Split {
+    let (ours, mitsuba) = (sides.ours, sides.mitsuba);
+    let mut split = Split {
+        tests: Vec::new(),
+        deterministic: Vec::new(),
+        sum: 0.0,
+        compared: 0,
+    };
+    for i in 0..mitsuba.mean.len().min(ours.0.len()) {
+        split.compared += 1;
+        let (a, b) = (ours.0[i], mitsuba.mean[i]);
+        split.sum += (a - b).abs();
+        check.measure(
+            "|mean ours − mean Mitsuba|, W/(sr m²)",
+            (a - b).abs(),
+            &pixel_label(sides.width, i),
+        );
+        let side = |mean, variance, count: u32| Sample {
+            mean,
+            variance,
+            count: count as f64,
+        };
+        match statistics::welch(
+            side(a, ours.1[i], sides.our_samples),
+            side(b, mitsuba.variance[i], sides.mitsuba_samples),
+        ) {
+            Some(w) => split.tests.push((i, w)),
+            None => split.deterministic.push(i),
+        }
+    }
+    split
+}
+
+/// The test's power: the relative shift of a pixel-channel's mean at which
+/// it would fail half the time, `(t_c · SE + tolerance + offset) / |mean|`:
+/// `SE` the two sides' standard error, `t_c` Student's `|t|` at the
+/// Bonferroni threshold with the test's Welch degrees of freedom rounded
+/// down (which only raises `t_c`: the shift is, if anything, overstated),
+/// and the Whitted tolerance and Mitsuba's offset sensitivity the allowance
+/// a failure must clear ([`judge_tests`]); where neither side varies, the
+/// Whitted tolerance. Recorded: the median
+/// over the pixel-channels of nonzero mean, and the least, which is the
+/// smallest uniform relative shift of the whole image (a light's power, a
+/// BRDF's scale) that the comparison detects.
+fn record_power(
+    check: &mut Check,
+    sides: &Sides,
+    tests: &[(usize, Welch)],
+    deterministic: &[usize],
+    threshold: f64,
+) {
+    let mut critical = std::collections::BTreeMap::new();
+    let mut critical_at = |dof: f64| {
+        *critical
+            .entry(dof.floor().max(1.0) as u64)
+            .or_insert_with_key(|&d| {
+                statistics::student_t_critical(threshold, d as f64).unwrap_or(f64::INFINITY)
+            })
+    };
+    let m = &sides.mitsuba.mean;
+    let standard_error = |i: usize| {
+        (sides.ours.1[i] / sides.our_samples as f64
+            + sides.mitsuba.variance[i] / sides.mitsuba_samples as f64)
+            .sqrt()
+    };
+    let mut shifts: Vec<(f64, usize)> = tests
+        .iter()
+        .map(|&(i, w)| {
+            let allowance = tolerance(m[i]) + sides.mitsuba.offset_sensitivity[i];
+            (critical_at(w.dof) * standard_error(i) + allowance, i)
+        })
+        .chain(deterministic.iter().map(|&i| (tolerance(m[i]), i)))
+        .filter(|&(_, i)| m[i].abs() > 0.0)
+        .map(|(shift, i)| (shift / m[i].abs(), i))
+        .collect();
+    if shifts.is_empty() {
+        return;
+    }
+    shifts.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let (least, at) = shifts[0];
+    check.measure(
+        "power: least relative shift detected (a uniform shift of the image)",
+        least,
+        &pixel_label(sides.width, at),
+    );
+    check.measure(
+        "power: median relative shift detected per pixel-channel",
+        shifts[shifts.len() / 2].0,
+        "",
+    );
+}
+
 fn new_check(name: &str) -> Check {
     Check::new(
         &format!("renders.mitsuba.{name}.path"),
         &format!("{name}: the tracer's path against Mitsuba's path integrator, per-pixel Welch t-test"),
-        "Mitsuba 3 path integrator (scalar_rgb), pixel centres (mitsuba_renders.json)",
+        "Mitsuba 3 path integrator through mi.render (scalar_rgb), box filter (mitsuba_renders.json)",
         &format!(
             "a pixel-channel fails when p < α/m, α = {ALPHA} over the m t-tests (Bonferroni: one correct \
              render in {:.0} fails by chance), and its means differ by more than the Whitted tolerance \
              {TOLERANCE_ABSOLUTE:e} + {TOLERANCE_RELATIVE:e} · |Mitsuba| (float32 differences, which no \
-             number of samples removes); edges masked",
+             number of samples removes); every pixel, both sides box filtered",
             1.0 / ALPHA
         ),
     )

@@ -59,6 +59,11 @@ pub fn compare_whitted(name: &str, reference: &Decoded, ours: &Image) -> Compare
     check.cases = compared / 3;
     check.measure("masked edge pixels", masked as f64, "");
     check.measure(
+        "masked pixel fraction",
+        masked as f64 / reference.edges.len().max(1) as f64,
+        "",
+    );
+    check.measure(
         "mean |ours − Mitsuba|, W/(sr m²)",
         sum / compared.max(1) as f64,
         "",

@@ -79,6 +79,7 @@ pub const FIELDS: &[&str] = &[
     "render.seed",
     "render.ray_offset",
     "render.ray_offset.fixed",
+    "render.pixel_filter",
 ];
 
 /// Whether `path` matches `pattern`: `[]` an index `[digits]`, `*` one or

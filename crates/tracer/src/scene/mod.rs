@@ -36,7 +36,7 @@ pub mod validate;
 pub use error::{ErrorKind, SceneError};
 pub use model::{Light, Material, Scene};
 pub use schema::SceneFile;
-pub use settings::{FresnelModel, IntegratorKind, RayOffset, RenderSpec, Settings};
+pub use settings::{FresnelModel, IntegratorKind, PixelFilter, RayOffset, RenderSpec, Settings};
 pub use settings::{MAX_DEPTH, MAX_SPP};
 
 /// The only schema version this crate reads.

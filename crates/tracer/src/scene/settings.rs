@@ -77,6 +77,54 @@ impl fmt::Display for FresnelModel {
     }
 }
 
+/// Where in a pixel its primary rays pass: the pixel filter.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, Serialize)]
+#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
+#[serde(rename_all = "snake_case")]
+pub enum PixelFilter {
+    /// A box over the pixel: each sample's ray through a point jittered
+    /// within its own stratum of the pixel (`crate::camera::Strata`), the
+    /// pixel the samples' unweighted mean. Mitsuba's `box` filter of
+    /// radius ½ pixel. The `path` integrator's default.
+    #[cfg_attr(
+        feature = "clap",
+        value(help = "Jittered, stratified rays over the pixel, averaged (path's default)")
+    )]
+    Box,
+    /// Every ray through the pixel's centre, as the course's fragment
+    /// shaders cast them (`gl_FragCoord`): no anti-aliasing. The default of
+    /// `local`, `whitted` and `course`, which compare pixel centres.
+    #[cfg_attr(
+        feature = "clap",
+        value(
+            help = "Rays through the pixel centre, as the course's shaders (the others' default)"
+        )
+    )]
+    Center,
+}
+
+impl PixelFilter {
+    /// The filter an integrator renders with when none is given: `box` for
+    /// the Monte Carlo `path`, `center` for the deterministic ones.
+    pub fn default_for(integrator: IntegratorKind) -> Self {
+        match integrator {
+            IntegratorKind::Path => PixelFilter::Box,
+            IntegratorKind::Local | IntegratorKind::Whitted | IntegratorKind::Course => {
+                PixelFilter::Center
+            }
+        }
+    }
+}
+
+impl fmt::Display for PixelFilter {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            PixelFilter::Box => "box",
+            PixelFilter::Center => "center",
+        })
+    }
+}
+
 /// How a secondary ray's origin is moved off the surface it leaves.
 #[derive(Clone, Copy, Debug, PartialEq, Deserialize, Serialize)]
 #[serde(rename_all = "snake_case", deny_unknown_fields)]
@@ -107,6 +155,8 @@ pub struct RenderSpec {
     pub seed: Option<u64>,
     /// How secondary rays leave a surface.
     pub ray_offset: Option<RayOffset>,
+    /// Where primary rays pass through their pixel.
+    pub pixel_filter: Option<PixelFilter>,
 }
 
 /// Settled render settings.
@@ -129,6 +179,10 @@ pub struct Settings {
     pub seed: u64,
     /// How secondary rays leave a surface.
     pub ray_offset: RayOffset,
+    /// Where primary rays pass through their pixel. Decided here and
+    /// nowhere else: as given, else [`PixelFilter::default_for`] the
+    /// integrator given beside it (see [`Settings::settle`]).
+    pub pixel_filter: PixelFilter,
 }
 
 impl Default for Settings {
@@ -141,6 +195,7 @@ impl Default for Settings {
             throughput_cutoff: 1e-3,
             seed: 0,
             ray_offset: RayOffset::Robust,
+            pixel_filter: PixelFilter::default_for(IntegratorKind::Whitted),
         }
     }
 }
@@ -148,11 +203,21 @@ impl Default for Settings {
 impl Settings {
     /// These settings with `spec`'s given values over them, each checked
     /// against its domain and named `{path}.{field}` when refused.
+    ///
+    /// The pixel filter is the one place a default follows another
+    /// setting: a `spec` that gives an integrator without a filter gets
+    /// that integrator's [`PixelFilter::default_for`]; one that gives a
+    /// filter gets it, whatever the integrator; one that gives neither
+    /// keeps the filter settled before.
     pub fn settle(&self, path: &str, spec: &RenderSpec) -> Result<Settings, SceneError> {
         let field = |name: &str| format!("{path}.{name}");
         let mut settled = *self;
         if let Some(integrator) = spec.integrator {
             settled.integrator = integrator;
+            settled.pixel_filter = PixelFilter::default_for(integrator);
+        }
+        if let Some(filter) = spec.pixel_filter {
+            settled.pixel_filter = filter;
         }
         if let Some(spp) = spec.spp {
             settled.spp = count(&field("spp"), spp, 1, MAX_SPP)?;
