@@ -202,7 +202,7 @@ fn check(images: &[Image]) -> Result<f64, String> {
             let allowed = T * se[c] + bias + 2e-4 * r.exact[c];
             let error = (mean[c] - r.exact[c]).abs();
             worst = worst.max((error - bias).max(0.0) / se[c].max(1e-12));
-            if !(error <= allowed) {
+            if error > allowed || error.is_nan() {
                 return Err(format!(
                     "region {i} channel {c}: mean {:.5} vs the method of images' {:.5} \
                      (relative {:+.4}), allowed {:.5} ({T} × standard error {:.5} + kernel bias {:.5})",
@@ -270,4 +270,31 @@ fn photon_render_is_identical_on_one_and_several_threads() {
         };
         assert_eq!(bits(&one), bits(&many), "{threads} threads");
     }
+}
+
+/// Where no mirror or glass can start a caustic, the photon integrator is
+/// the path tracer, bit for bit: nothing is added, and no random number
+/// is drawn for a pass.
+#[test]
+fn without_mirrors_or_glass_the_photon_integrator_is_the_path_tracer() {
+    let scene = common::course_scene("shadow", 40, 30);
+    let image = |integrator| {
+        let s = Settings {
+            spp: 4,
+            ..settings(integrator, 1)
+        };
+        job(&scene, &s).render(Some(2), &|_| {}).unwrap().image
+    };
+    let (photon, path) = (image(IntegratorKind::Photon), image(IntegratorKind::Path));
+    let differ = photon
+        .pixels
+        .iter()
+        .zip(&path.pixels)
+        .position(|(a, b)| a != b);
+    assert_eq!(
+        differ,
+        None,
+        "{:?}",
+        differ.map(|i| (photon.pixels[i], path.pixels[i]))
+    );
 }

@@ -38,7 +38,8 @@ impl Tracer<'_> {
                 Surface::Rough => {
                     sum += beta * self.direct(&hit, n, wo, material, counts);
                     if let Some(pass) = caustics {
-                        sum += beta * pass.radiance(&hit, n, wo, material);
+                        let bounces = self.settings.max_depth.saturating_sub(depth);
+                        sum += beta * pass.radiance(&hit, n, wo, material, bounces);
                     }
                     if depth >= self.settings.max_depth {
                         return sum;

@@ -10,6 +10,12 @@
 //! one: `L D`) and the map (`L S+ D`); a path's first vertex after the
 //! light is either rough or smooth, so each light path is counted by one.
 //!
+//! A light path has as many surface vertices as the path tracer allows
+//! its camera paths, `max_depth + 1`: a camera path's rough vertex after
+//! `d` bounces looks up only the photons that met at most `max_depth − d`
+//! mirrors or glass (a path tracer with the lights made small spheres
+//! would find the same paths, up to the same length).
+//!
 //! The estimate at a point `x` is the photons' flux within radius `r` on
 //! the same object, `Σ f_r(ωp, ωo) Φp / (π r²)`: biased by the kernel,
 //! which progressive radius reduction removes (Knaus and Zwicker,
@@ -49,6 +55,8 @@ pub struct Photon {
     pub flux: Vec3,
     /// The object it landed on.
     pub object: u32,
+    /// The mirrors and glass it met on its way, at least 1.
+    pub bounces: u32,
 }
 
 /// One pass's caustic map and its gather radius.
@@ -84,31 +92,30 @@ pub fn radii(first: f32, passes: u32) -> Vec<f32> {
 
 impl Caustics {
     /// The maps of `tracer`'s settings: every pass's photons traced in
-    /// parallel, each on its own stream, gathered in emission order.
+    /// parallel, each on its own stream, gathered in emission order. No
+    /// pass where no light can start a caustic (no mirror or glass, or no
+    /// light): the camera paths are then the path tracer's, bit for bit.
     pub fn build(tracer: &Tracer) -> Caustics {
         let settings = tracer.settings.photon;
         let emitter = emit::Emitter::new(tracer);
         let mut rays = RayCounts::default();
         let mut passes = Vec::with_capacity(settings.passes as usize);
-        for (pass, radius) in radii(settings.radius, settings.passes)
-            .into_iter()
-            .enumerate()
-        {
-            let traced: Vec<(Option<Photon>, RayCounts)> = if emitter.is_empty() {
-                Vec::new()
-            } else {
-                (0..settings.photons)
-                    .into_par_iter()
-                    .map(|i| {
-                        let mut rng = Pcg32::for_photon(tracer.settings.seed, pass as u32, i);
-                        let mut counts = RayCounts::default();
-                        let photon = emitter
-                            .emit(&mut rng, settings.photons)
-                            .and_then(|e| tracer.trace_photon(e, &mut rng, &mut counts));
-                        (photon, counts)
-                    })
-                    .collect()
-            };
+        if emitter.is_empty() {
+            return Caustics { passes, rays };
+        }
+        let radii = radii(settings.radius, settings.passes);
+        for (pass, radius) in radii.into_iter().enumerate() {
+            let traced: Vec<(Option<Photon>, RayCounts)> = (0..settings.photons)
+                .into_par_iter()
+                .map(|i| {
+                    let mut rng = Pcg32::for_photon(tracer.settings.seed, pass as u32, i);
+                    let mut counts = RayCounts::default();
+                    let photon = emitter
+                        .emit(&mut rng, settings.photons)
+                        .and_then(|e| tracer.trace_photon(e, &mut rng, &mut counts));
+                    (photon, counts)
+                })
+                .collect();
             let mut photons = Vec::new();
             for (photon, counts) in traced {
                 rays.add(&counts);
@@ -126,11 +133,19 @@ impl Caustics {
 impl Pass {
     /// The caustic radiance leaving `hit` (shading normal `n`) towards
     /// `wo`, by `material`'s BRDF: the photons on the same object within
-    /// the radius, `Σ f_r Φ / (π r²)`.
-    pub fn radiance(&self, hit: &Hit, n: Vec3, wo: Vec3, material: &Material) -> Vec3 {
+    /// the radius that met at most `bounces` mirrors or glass, `Σ f_r Φ /
+    /// (π r²)`.
+    pub fn radiance(
+        &self,
+        hit: &Hit,
+        n: Vec3,
+        wo: Vec3,
+        material: &Material,
+        bounces: u32,
+    ) -> Vec3 {
         let mut flux = Vec3::ZERO;
         self.map.within(hit.point, self.radius, |p| {
-            if p.object == hit.object {
+            if p.object == hit.object && p.bounces <= bounces {
                 flux += material.brdf(n, p.towards_source, wo) * p.flux;
             }
         });
@@ -157,8 +172,8 @@ impl Tracer<'_> {
     /// Follows one photon through mirrors and glass, one lobe at a time
     /// (chosen with the Fresnel probability at glass, as the camera paths
     /// choose), to the first rough surface: the photon left there, if it
-    /// met a smooth one first, within `max_depth + 1` smooth bounces, and
-    /// Russian roulette below `throughput_cutoff`.
+    /// met from 1 to `max_depth` smooth ones first; Russian roulette below
+    /// `throughput_cutoff`.
     fn trace_photon(
         &self,
         emitted: emit::Emitted,
@@ -174,7 +189,7 @@ impl Tracer<'_> {
         let (mut ray, mut flux) = (emitted.ray, emitted.flux);
         let start = flux.max_element();
         let stored_before_any_mirror = self.fault == Some(Fault::PhotonsStoredBeforeAnyMirror);
-        for bounces in 0..=self.settings.max_depth + 1 {
+        for bounces in 0..=self.settings.max_depth {
             counts.photon += 1;
             let hit = self.intersect(&ray)?;
             let material = &self.scene.materials[hit.material as usize];
@@ -188,8 +203,10 @@ impl Tracer<'_> {
                         towards_source: wo,
                         flux,
                         object: hit.object,
+                        bounces,
                     });
                 }
+                Surface::Smooth if bounces == self.settings.max_depth => return None,
                 Surface::Smooth => {
                     let lobes = self.lobes(&hit, n, wo, material);
                     let (lobe, chance) = match lobes.refraction {

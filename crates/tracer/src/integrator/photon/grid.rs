@@ -120,6 +120,7 @@ mod tests {
             towards_source: Vec3::Y,
             flux: Vec3::ONE,
             object: 0,
+            bounces: 1,
         }
     }
 
