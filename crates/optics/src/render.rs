@@ -258,7 +258,7 @@ pub(crate) fn steps(
         ));
     }
     if machinery.spp < settings.spp {
-        steps.push(if settings.integrator == IntegratorKind::Path {
+        steps.push(if settings.integrator.samples() {
             say!(
                 lang,
                 "{} samples per pixel reduced to 1: every path is deterministic",
