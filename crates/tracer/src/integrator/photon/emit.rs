@@ -275,3 +275,84 @@ fn around(axis: Vec3, cos: f32, u: f32) -> Vec3 {
     let (t, b) = axis.any_orthonormal_pair();
     (t * (sin * phi.cos()) + b * (sin * phi.sin()) + axis * cos).normalize()
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::integrator::Machinery;
+    use crate::scene::{self, Settings};
+
+    /// The flux the emitter sends, summed over `n` photons, for `light`
+    /// (JSON) and mirror spheres at `centres` of radius 1.
+    fn emitted_flux(light: &str, centres: &[[f32; 3]], n: u32) -> f64 {
+        let spheres: Vec<String> = centres
+            .iter()
+            .map(|c| {
+                format!(
+                    r#"{{ "type": "sphere", "center": [{}, {}, {}], "radius": 1, "material": "mirror" }}"#,
+                    c[0], c[1], c[2]
+                )
+            })
+            .collect();
+        let text = format!(
+            r#"{{ "version": 1, "image": {{ "width": 2, "height": 2 }},
+                 "camera": {{ "type": "course_pinhole" }},
+                 "materials": {{ "mirror": {{ "type": "conductor", "n": [0.2, 0.2, 0.2], "kappa": [3, 3, 3] }},
+                                 "floor": {{ "type": "lambert", "albedo": [0.5, 0.5, 0.5] }} }},
+                 "objects": [ {}, {{ "type": "sphere", "center": [0, -50, 0], "radius": 1, "material": "floor" }} ],
+                 "lights": [ {light} ] }}"#,
+            spheres.join(", ")
+        );
+        let scene = scene::parse(&text).unwrap();
+        let settings = Settings::default();
+        let tracer = Tracer::new(&scene, settings, Machinery::everything(&scene, &settings));
+        let emitter = Emitter::new(&tracer);
+        let mut rng = Pcg32::new(11, 13);
+        (0..n)
+            .filter_map(|_| emitter.emit(&mut rng, n))
+            .map(|e| e.flux.x as f64)
+            .sum()
+    }
+
+    /// Relative error of a sum of 200 000 photons: the draws that meet two
+    /// targets carry half, so the sum varies; 1 % is over 10 of its
+    /// standard deviations.
+    const TOLERANCE: f64 = 0.01;
+
+    /// A directional light sends `E A` through the shadow discs, `A` the
+    /// area of their union: for two discs of radius 1 whose centres are 1
+    /// apart, `2π − (2 acos ½ − √3/2)`; for two discs on one another, `π`.
+    #[test]
+    fn a_directional_light_sends_its_irradiance_times_the_discs_union() {
+        let light = r#"{ "type": "directional", "towards": [0, 1, 0], "irradiance": [2, 2, 2] }"#;
+        let lens = 2.0 * 0.5_f64.acos() - 3.0_f64.sqrt() / 2.0;
+        for (centres, union) in [
+            (
+                vec![[0.0, 0.0, 0.0], [1.0, 0.0, 0.0]],
+                std::f64::consts::TAU - lens,
+            ),
+            (vec![[0.0, 0.0, 0.0], [0.0, 3.0, 0.0]], std::f64::consts::PI),
+        ] {
+            let flux = emitted_flux(light, &centres, 200_000);
+            let want = 2.0 * union;
+            assert!((flux / want - 1.0).abs() < TOLERANCE, "{flux} vs {want}");
+        }
+    }
+
+    /// A point light sends `I Ω` into the cones of the spheres, `Ω` their
+    /// union's solid angle: one sphere of radius 1 at distance 4, `2π (1 −
+    /// √15/4)`, alone or with a second sphere just like it (counted once).
+    #[test]
+    fn a_point_light_sends_its_intensity_times_the_cones_union() {
+        let light = r#"{ "type": "point", "position": [0, 0, 0], "intensity": [3, 3, 3] }"#;
+        let omega = std::f64::consts::TAU * (1.0 - 15.0_f64.sqrt() / 4.0);
+        for centres in [
+            vec![[4.0, 0.0, 0.0]],
+            vec![[4.0, 0.0, 0.0], [4.0, 0.0, 0.0]],
+        ] {
+            let flux = emitted_flux(light, &centres, 200_000);
+            let want = 3.0 * omega;
+            assert!((flux / want - 1.0).abs() < TOLERANCE, "{flux} vs {want}");
+        }
+    }
+}

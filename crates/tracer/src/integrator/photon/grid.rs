@@ -73,7 +73,8 @@ impl Grid {
         for dz in -1..=1 {
             for dy in -1..=1 {
                 for dx in -1..=1 {
-                    buckets[i] = bucket(centre + IVec3::new(dx, dy, dz), self.mask);
+                    let cell = centre.wrapping_add(IVec3::new(dx, dy, dz));
+                    buckets[i] = bucket(cell, self.mask);
                     i += 1;
                 }
             }
@@ -97,7 +98,8 @@ impl Grid {
 }
 
 /// The cell holding `x` (float-to-integer casts saturate, so a point far
-/// outside `i32` cells lands in an edge cell, never wraps).
+/// outside `i32` cells lands in an edge cell; its neighbours wrap, and
+/// the distance test keeps only the photons within the radius).
 fn cell_of(x: Vec3, inverse_cell: f32) -> IVec3 {
     (x * inverse_cell).floor().as_ivec3()
 }
