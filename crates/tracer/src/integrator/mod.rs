@@ -177,7 +177,9 @@ impl Tracer<'_> {
         best
     }
 
-    /// The radiance arriving along a primary ray, by the chosen integrator.
+    /// The radiance arriving along a primary ray, by the chosen integrator
+    /// (`photon` looks up the maps of [`Tracer::with_caustics`]; a tracer
+    /// without them traces the path tracer's paths alone).
     pub fn radiance(&self, ray: &Ray, rng: &mut Pcg32, counts: &mut RayCounts) -> Vec3 {
         counts.primary += 1;
         match self.settings.integrator {
