@@ -205,13 +205,16 @@ impl RenderJob {
     }
 }
 
-/// `tracer` with its caustic maps built on `threads` threads, and the time
-/// that took.
+/// `tracer` with its caustic maps built on `threads` threads, where its
+/// integrator has them, and the time that took.
 fn caustics(
     tracer: Tracer<'_>,
     threads: Option<usize>,
 ) -> Result<(Tracer<'_>, std::time::Duration), rayon::ThreadPoolBuildError> {
     let start = std::time::Instant::now();
+    if tracer.settings.integrator != IntegratorKind::Photon {
+        return Ok((tracer, start.elapsed()));
+    }
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(threads.unwrap_or(0))
         .build()?;
