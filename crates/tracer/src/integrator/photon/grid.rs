@@ -55,6 +55,11 @@ impl Grid {
         self.photons.len()
     }
 
+    /// The photons held, bucket by bucket.
+    pub fn photons(&self) -> &[Photon] {
+        &self.photons
+    }
+
     /// Whether no photon is held.
     pub fn is_empty(&self) -> bool {
         self.photons.is_empty()
