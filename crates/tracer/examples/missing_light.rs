@@ -3,10 +3,10 @@
 //! integrator's mean radiance over the `path` integrator's, both at
 //! 160 × 120, 256 samples per pixel, Russian roulette off, seed 0, the
 //! photon map at its defaults (16 passes of 100 000 photons from a 5 cm
-//! radius), at each scene's `max_depth` unless the table says otherwise
-//! (a light path then has at most `max_depth + 1` surface vertices, both
-//! ways: Mitsuba's `max_depth` of `max_depth + 2`, which counts the
-//! segments to the camera and the light too).
+//! radius), at each scene's `max_depth` and that radius unless the table
+//! says otherwise (a light path then has at most `max_depth + 1` surface
+//! vertices, both ways: Mitsuba's `max_depth` of `max_depth + 2`, which
+//! counts the segments to the camera and the light too).
 //!
 //! `cargo run --release -p tracer --example missing_light`
 //!
@@ -51,7 +51,16 @@ fn scene_file(name: &str, lambert: bool) -> Value {
     file
 }
 
-fn draw(file: &Value, integrator: IntegratorKind, depth: Option<u32>) -> (RenderJob, Image) {
+/// One row's variation of a scene's settings.
+#[derive(Clone, Copy, Default)]
+struct Vary {
+    /// Course rough made Lambert.
+    lambert: bool,
+    max_depth: Option<u32>,
+    photon_radius: Option<f64>,
+}
+
+fn draw(file: &Value, integrator: IntegratorKind, vary: Vary) -> (RenderJob, Image) {
     let scene = scene::parse(&file.to_string()).expect("course scene");
     let overrides = Overrides {
         render: RenderSpec {
@@ -59,7 +68,8 @@ fn draw(file: &Value, integrator: IntegratorKind, depth: Option<u32>) -> (Render
             spp: Some(256.0),
             throughput_cutoff: Some(0.0),
             seed: Some(0),
-            max_depth: depth.map(f64::from),
+            max_depth: vary.max_depth.map(f64::from),
+            photon_radius: vary.photon_radius,
             ..RenderSpec::default()
         },
         width: Some(160),
@@ -71,13 +81,13 @@ fn draw(file: &Value, integrator: IntegratorKind, depth: Option<u32>) -> (Render
     (job, image)
 }
 
-fn row(name: &str, lambert: bool, depth: Option<u32>) -> String {
-    let file = scene_file(name, lambert);
+fn row(name: &str, vary: Vary) -> String {
+    let file = scene_file(name, vary.lambert);
     let mut unlit = file.clone();
     unlit["ambient"] = serde_json::json!([0, 0, 0]);
-    let (job, path) = draw(&file, IntegratorKind::Path, depth);
-    let (_, photon) = draw(&file, IntegratorKind::Photon, depth);
-    let (_, local) = draw(&unlit, IntegratorKind::Local, depth);
+    let (job, path) = draw(&file, IntegratorKind::Path, vary);
+    let (_, photon) = draw(&file, IntegratorKind::Photon, vary);
+    let (_, local) = draw(&unlit, IntegratorKind::Local, vary);
     let materials = &job.scene().materials;
     let objects = &job.scene().objects;
     let lit: Vec<usize> = job
@@ -97,10 +107,14 @@ fn row(name: &str, lambert: bool, depth: Option<u32>) -> String {
             / lit.len().max(1) as f64
     };
     let (p, q) = (mean(&path), mean(&photon));
-    let model = if lambert { "Lambert" } else { "as written" };
-    let depth = job.settings().max_depth;
+    let model = if vary.lambert {
+        "Lambert"
+    } else {
+        "as written"
+    };
+    let (depth, radius) = (job.settings().max_depth, job.settings().photon.radius);
     format!(
-        "| {name} | {model} | {depth} | {} | {p:.4} | {q:.4} | {:.3} |\n",
+        "| {name} | {model} | {depth} | {radius} | {} | {p:.4} | {q:.4} | {:.3} |\n",
         lit.len(),
         q / p
     )
@@ -108,23 +122,37 @@ fn row(name: &str, lambert: bool, depth: Option<u32>) -> String {
 
 fn table() -> String {
     let mut table = String::from(
-        "| scene | rough surfaces | max_depth | directly lit rough pixels | path | photon | photon / path |\n\
-         |---|---|---|---|---|---|---|\n",
+        "| scene | rough surfaces | max_depth | photon_radius | directly lit rough pixels | path | photon | photon / path |\n\
+         |---|---|---|---|---|---|---|---|\n",
     );
-    for (name, lambert, depth) in [
-        ("kaleidoscope_lit", false, None),
-        ("kaleidoscope_lit", true, None),
-        ("kaleidoscope_lit", true, Some(1)),
-        ("kaleidoscope_lit", true, Some(2)),
-        ("kaleidoscope_lit", true, Some(3)),
-        ("kaleidoscope_lit", true, Some(4)),
-        ("glass_spheres", false, None),
-        ("gold_spheres", false, None),
-        ("webgl_seven_spheres", false, None),
-        ("shadow", false, None),
-        ("diffuse", false, None),
+    let lambert = Vary {
+        lambert: true,
+        ..Vary::default()
+    };
+    let depth = |d| Vary {
+        max_depth: Some(d),
+        ..lambert
+    };
+    let radius = |r| Vary {
+        photon_radius: Some(r),
+        ..lambert
+    };
+    for (name, vary) in [
+        ("kaleidoscope_lit", Vary::default()),
+        ("kaleidoscope_lit", lambert),
+        ("kaleidoscope_lit", depth(1)),
+        ("kaleidoscope_lit", depth(2)),
+        ("kaleidoscope_lit", depth(3)),
+        ("kaleidoscope_lit", depth(4)),
+        ("kaleidoscope_lit", radius(0.025)),
+        ("kaleidoscope_lit", radius(0.1)),
+        ("glass_spheres", Vary::default()),
+        ("gold_spheres", Vary::default()),
+        ("webgl_seven_spheres", Vary::default()),
+        ("shadow", Vary::default()),
+        ("diffuse", Vary::default()),
     ] {
-        table.push_str(&row(name, lambert, depth));
+        table.push_str(&row(name, vary));
     }
     table
 }
