@@ -19,9 +19,10 @@ pub const MAX_SPP: u32 = 1 << 20;
 pub const MAX_DEPTH: u32 = 1024;
 
 /// The most photons a render emits, over all its passes: 2^22. Each lands
-/// at most once, so the maps hold at most this many (about 40 bytes each,
-/// 170 MB), and the photon pass casts at most this many times
-/// `max_depth + 1` rays (`needs::Needs::rays`).
+/// at most once, so the maps hold at most this many (44 bytes each, 185
+/// MB, twice that while a pass's grid is sorted), and the photon pass
+/// casts at most this many times `max_depth + 3` rays
+/// (`needs::Needs::rays`).
 pub const MAX_PHOTONS: u32 = 1 << 22;
 
 /// The most photon passes, each with its own map and radius: 2^16.
