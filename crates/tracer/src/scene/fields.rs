@@ -79,6 +79,9 @@ pub const FIELDS: &[&str] = &[
     "render.seed",
     "render.ray_offset",
     "render.ray_offset.fixed",
+    "render.photons",
+    "render.photon_passes",
+    "render.photon_radius",
 ];
 
 /// Whether `path` matches `pattern`: `[]` an index `[digits]`, `*` one or
