@@ -57,6 +57,10 @@ def test_a_sphere_of_radiance_i_over_pi_r_squared_lights_as_a_point_of_intensity
     area, se = centre_radiance(scene, "area", 4096)
     # Five standard errors, and the sphere's own emission sampling's float32.
     assert abs(area - expected) < 5 * se + 1e-5, (area, expected, se)
+    # The test's power: a sphere of a quarter of that radiance (I / (4 pi r^2),
+    # its intensity taken for its power per steradian of the whole sphere's
+    # area) is far outside it.
+    assert abs(area - expected / 4) > 5 * se + 1e-5
 
 
 def test_a_distant_disk_of_radiance_e_over_pi_sin2_alpha_lights_as_a_directional_light():
