@@ -20,6 +20,9 @@
 //!   a tube can (its sides see each other);
 //! - an opaque enclosure's mirror sends light back to the side it came from.
 //!
+//! Past [`MAX_TESTS`] enclosure tests (a scene of thousands of mirrors)
+//! the enclosures are not tested: more chains are named, none missed.
+//!
 //! A light the needs analysis finds unused ([`crate::needs::Unused`]) has no
 //! chain. Chains are found breadth first, so each names the fewest delta
 //! surfaces that connect the light to a rough surface; chains that differ
@@ -70,6 +73,8 @@ pub fn find(scene: &Scene, needs: &Needs) -> Vec<Chain> {
     let rough: Vec<usize> = (0..scene.objects.len())
         .filter(|&i| material(i).is_rough())
         .collect();
+    let enclosures = enclosures(scene, needs, delta.len(), rough.len());
+    let enclosures = enclosures.as_slice();
     let mut chains = Vec::new();
     for use_ in needs.lights.iter().filter(|l| l.used) {
         let light = &scene.lights[use_.index];
@@ -80,7 +85,7 @@ pub fn find(scene: &Scene, needs: &Needs) -> Vec<Chain> {
         let mut frontier: Vec<usize> = delta
             .iter()
             .copied()
-            .filter(|&d| light_reaches(scene, light, d))
+            .filter(|&d| light_reaches(scene, enclosures, light, d))
             .collect();
         for &d in &frontier {
             paths[d] = Some((vec![d], side(scene, d, Thing::Light(light))));
@@ -90,7 +95,7 @@ pub fn find(scene: &Scene, needs: &Needs) -> Vec<Chain> {
             for &a in &frontier {
                 for &b in &delta {
                     let arrives = paths[a].as_ref().map_or(Side::Both, |p| p.1);
-                    if paths[b].is_none() && passes(scene, a, arrives, b) {
+                    if paths[b].is_none() && passes(scene, enclosures, a, arrives, b) {
                         let mut path = paths[a].clone().map(|p| p.0).unwrap_or_default();
                         path.push(b);
                         paths[b] = Some((path, side(scene, b, Thing::Object(a))));
@@ -104,7 +109,10 @@ pub fn find(scene: &Scene, needs: &Needs) -> Vec<Chain> {
             let Some((path, arrives)) = path else {
                 continue;
             };
-            for &r in rough.iter().filter(|&&r| passes(scene, last, *arrives, r)) {
+            for &r in rough
+                .iter()
+                .filter(|&&r| passes(scene, enclosures, last, *arrives, r))
+            {
                 let chain = Chain {
                     light: use_.index,
                     kind: use_.kind,
@@ -123,8 +131,35 @@ pub fn find(scene: &Scene, needs: &Needs) -> Vec<Chain> {
     chains
 }
 
+/// The most enclosure tests an analysis makes; past it the enclosures are
+/// dropped, which names more chains and misses none.
+pub const MAX_TESTS: f64 = 1e7;
+
+/// The objects that can enclose (opaque spheres, tubes), or none where
+/// testing them would cost more than [`MAX_TESTS`].
+fn enclosures(scene: &Scene, needs: &Needs, delta: usize, rough: usize) -> Vec<usize> {
+    let enclosing: Vec<usize> = (0..scene.objects.len())
+        .filter(|&e| match &scene.objects[e] {
+            Object::Sphere(_) => !matches!(
+                scene.materials[scene.objects[e].material() as usize],
+                crate::scene::Material::Dielectric { .. }
+            ),
+            Object::Tube(_) => true,
+            Object::Plane(_) => false,
+        })
+        .collect();
+    let lights = needs.lights.iter().filter(|l| l.used).count() as f64;
+    let (d, r) = (delta as f64, rough as f64);
+    let tests = lights * (d * d + d * r + d) * enclosing.len() as f64;
+    if tests > MAX_TESTS {
+        Vec::new()
+    } else {
+        enclosing
+    }
+}
+
 /// Whether `light` can shine on object `o`.
-fn light_reaches(scene: &Scene, light: &Light, o: usize) -> bool {
+fn light_reaches(scene: &Scene, enclosures: &[usize], light: &Light, o: usize) -> bool {
     if let Object::Plane(p) = &scene.objects[o] {
         let edge_on = match *light {
             Light::Point { position, .. } => (position - p.point).dot(p.normal) == 0.0,
@@ -134,13 +169,13 @@ fn light_reaches(scene: &Scene, light: &Light, o: usize) -> bool {
             return false;
         }
     }
-    !separated(scene, Thing::Light(light), Thing::Object(o))
+    !separated(scene, enclosures, Thing::Light(light), Thing::Object(o))
 }
 
 /// Whether light leaving object `a`, which it reached on side `arrives` of
 /// `a`, can reach object `b`: an opaque enclosure reflects light back to
 /// the side it came from.
-fn passes(scene: &Scene, a: usize, arrives: Side, b: usize) -> bool {
+fn passes(scene: &Scene, enclosures: &[usize], a: usize, arrives: Side, b: usize) -> bool {
     if a == b && scene.objects[a].is_convex() {
         return false;
     }
@@ -148,13 +183,13 @@ fn passes(scene: &Scene, a: usize, arrives: Side, b: usize) -> bool {
         (arrives, side(scene, a, Thing::Object(b))),
         (Side::Inside, Side::Outside) | (Side::Outside, Side::Inside)
     );
-    !opposite && !separated(scene, Thing::Object(a), Thing::Object(b))
+    !opposite && !separated(scene, enclosures, Thing::Object(a), Thing::Object(b))
 }
 
 /// Whether an enclosure has one of `a`, `b` strictly inside and the other
 /// strictly outside.
-fn separated(scene: &Scene, a: Thing, b: Thing) -> bool {
-    (0..scene.objects.len()).any(|e| {
+fn separated(scene: &Scene, enclosures: &[usize], a: Thing, b: Thing) -> bool {
+    enclosures.iter().any(|&e| {
         let (sa, sb) = (side(scene, e, a), side(scene, e, b));
         matches!(
             (sa, sb),

@@ -106,3 +106,30 @@ fn a_point_light_inside_a_closed_mirror_sphere_reaches_nothing_outside() {
     // The ball inside is lit through the mirror's inside; the sphere outside is not.
     assert_eq!(named(&scene), ["point 0 → gold → ball"]);
 }
+
+#[test]
+fn a_scene_of_many_mirrors_is_analysed_without_its_enclosures_and_misses_no_chain() {
+    // 400 small gold spheres in a row, a floor and a point light: past the
+    // test budget the enclosures are dropped, and every chain is still named.
+    let spheres: Vec<String> = (0..400)
+        .map(|i| format!(r#"{{ "type": "sphere", "center": [{}, 1, 5], "radius": 0.1, "material": "gold" }}"#, i as f32 * 0.3))
+        .collect();
+    let text = format!(
+        r#"{{
+        "version": 1,
+        "image": {{ "width": 4, "height": 3 }},
+        "camera": {{ "type": "course_pinhole" }},
+        "materials": {{
+            "gold": {{ "type": "conductor", "n": [0.17, 0.35, 1.5], "kappa": [3.1, 2.7, 1.9] }},
+            "floor": {{ "type": "lambert", "albedo": [0.5, 0.5, 0.5] }}
+        }},
+        "objects": [ {}, {{ "type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "material": "floor" }} ],
+        "lights": [ {{ "type": "point", "position": [0, 5, 5], "intensity": [1, 1, 1] }} ]
+    }}"#,
+        spheres.join(", ")
+    );
+    let scene = scene::parse(&text).unwrap();
+    // 400² · 400 enclosures ≫ chains::MAX_TESTS.
+    assert!(400f64.powi(3) > chains::MAX_TESTS);
+    assert_eq!(named(&scene), ["point 0 → gold → floor"]);
+}
