@@ -8,6 +8,9 @@ Regenerate (from the repository root; the output is byte-for-byte stable):
 
 writes ``validation/reference/mitsuba_full_light.json`` (schema
 ``mitsuba-full-light/1``, described in ``validation/README.md``).
+``mitsuba_full_light.py --deeper SCENE SPP`` prints the light tracer's and
+the area lights' means on the ``diffuse`` region at SPP samples per pixel
+and pass instead, for a comparison of more power than the reference's.
 
 A point or directional light is a delta light, a mirror, a conductor or
 smooth glass a delta surface: a path light -> delta surfaces -> diffuse
@@ -331,7 +334,28 @@ def build(scenes=SCENES):
     }
 
 
+def deeper(name, spp):
+    """Prints the ``diffuse`` region's mean (R + G + B) and standard error of
+    the light tracer and the area lights at ``spp`` samples per pixel and
+    pass: the independent check's two sides with more power than the
+    reference's, written nowhere."""
+    global SPP
+    mi.set_log_level(mi.LogLevel.Warn)
+    with open(os.path.join(ROOT, f"crates/tracer/scenes/{name}.json"), encoding="utf-8") as f:
+        scene = measured_scene(json.load(f))
+    masks = regions(scene, mi.load_dict(mitsuba_dict(scene, "path"), optimize=False))
+    SPP = spp
+    for estimate in ("ptracer", "area"):
+        values = [sum(p) for p in render_estimate(scene, estimate, masks)["passes_region_mean"]["diffuse"]]
+        mean = sum(values) / len(values)
+        se = math.sqrt(sum((v - mean) ** 2 for v in values) / (len(values) - 1) / len(values))
+        print(f"{name} {estimate} {spp} spp x {PASSES} passes: {mean:.6f} +- {se:.6f}")
+
+
 def main(argv):
+    if len(argv) == 4 and argv[1] == "--deeper":
+        deeper(argv[2], int(argv[3]))
+        return 0
     path = argv[1] if len(argv) > 1 else DEFAULT_PATH
     try:
         document = build()
