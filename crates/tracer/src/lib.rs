@@ -38,6 +38,7 @@
 //! | [`spawn`] | where secondary rays start: the hit's error bound, or the course's fixed epsilon |
 //! | [`integrator`] | `local`, `whitted`, `path`, `photon` (the path tracer plus a caustic photon map) and the course shader's loop, one file each, and the shared scatter step |
 //! | [`needs`] | what a scene needs, so the renderer runs only that |
+//! | [`chains`] | which delta lights reach a rough surface through mirrors or glass: the light no integrator computes |
 //! | [`render`] | the image, in parallel, identical for any thread count |
 //! | [`rng`] | PCG32 streams, one per pixel and one per photon |
 //! | [`output`] | PNG (sRGB, stated tone mapping) and PFM, the destination checked before the render, the pair written atomically |
@@ -58,6 +59,7 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 pub mod camera;
+pub mod chains;
 pub mod geometry;
 pub mod integrator;
 pub mod interrupt;
