@@ -10,8 +10,8 @@ mod caught;
 
 use caught::failures_of;
 use validation::full_light::{
-    self, check_all_the_light, check_independent, check_missing_share, check_same_missing_light,
-    DecodedLight, Estimate, FullLight, TracerRender,
+    self, check_all_the_light, check_all_the_light_in, check_independent, check_missing_share,
+    check_same_missing_light, DecodedLight, Estimate, FullLight, Region, TracerRender,
 };
 use validation::reference::committed_dir;
 use validation::renders::{path_statistics, tracer_render};
@@ -162,6 +162,16 @@ fn the_tracers_path_does_not_hold_all_the_light_of_the_kaleidoscope() {
     let failures = failures_of(&check);
     // Every region and channel against every full estimate: 3 · (2 + 1).
     assert_eq!(failures, 9, "{:#?}", check.failures);
+    // The diffuse pixels alone, as `optics validate` holds the `photon`
+    // integrator to them: all 3 · 2 fail.
+    let diffuse = check_all_the_light_in(
+        "kaleidoscope_lit",
+        "path",
+        &decoded,
+        ours,
+        &[Region::Diffuse],
+    );
+    assert_eq!(failures_of(&diffuse), 6, "{:#?}", diffuse.failures);
     // And it passes where there is nothing to miss.
     let control = scene("shadow");
     let (mean, variance) = tracer_path(&control, samples);

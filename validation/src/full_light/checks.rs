@@ -7,7 +7,7 @@ use super::statistics::{share, RegionMean};
 use super::{Estimate, Region, ALPHA, FINDING_RELATIVE, POWER, TOLERANCE_RELATIVE};
 use crate::check::Check;
 use crate::reference::ReferenceError;
-use crate::renders::{path_statistics, tracer_render, Renderer};
+use crate::renders::{path_statistics, sample_statistics, tracer_render, Renderer};
 use crate::suite::Context;
 use tracer::scene::IntegratorKind;
 
@@ -150,13 +150,24 @@ pub fn check_all_the_light(
     decoded: &DecodedLight,
     ours: TracerRender,
 ) -> Check {
+    check_all_the_light_in(name, integrator, decoded, ours, &Region::ALL)
+}
+
+/// [`check_all_the_light`] over `regions` only.
+pub fn check_all_the_light_in(
+    name: &str,
+    integrator: &str,
+    decoded: &DecodedLight,
+    ours: TracerRender,
+    regions: &[Region],
+) -> Check {
     let mut check = Check::new(
         &format!("full_light.tracer.{name}.{integrator}.all_the_light"),
         &format!("{name}: the tracer's {integrator} against all the light (Mitsuba's light tracer and area lights)"),
         "Mitsuba 3 ptracer and path with area lights (scalar_rgb), mitsuba_full_light.json",
         &tolerance_text(),
     );
-    let pairs: Vec<(Region, Estimate)> = Region::ALL
+    let pairs: Vec<(Region, Estimate)> = regions
         .iter()
         .flat_map(|&r| r.full_light().iter().map(move |&e| (r, e)))
         .collect();
@@ -353,20 +364,67 @@ impl FullLightChecks {
                             samples,
                         },
                     ),
-                    Err(e) => {
-                        let mut check = Check::new(
-                            &format!("full_light.tracer.{}.path.missing_share", s.name),
-                            &format!("{}: the tracer's path render", s.name),
-                            "mitsuba_full_light.json",
-                            "the render succeeds",
-                        );
-                        check.cases = 1;
-                        check.fail(format!("the render failed: {e}"));
-                        check
-                    }
+                    Err(e) => render_failed(&s.name, "path.missing_share", &e),
                 },
             );
+            let diffuse = Estimate::ALL
+                .iter()
+                .any(|&e| decoded.passes.contains_key(&(e, Region::Diffuse)));
+            if has_delta_surface(&decoded.scene) && diffuse {
+                checks.push(self.all_the_light(&s.name, &decoded, samples));
+            }
         }
         Ok(())
     }
+
+    /// The tracer's `photon` integrator, which claims all the light that
+    /// reaches diffuse surfaces, against Mitsuba's two full-light estimates
+    /// on the pixels that see one: `samples` renders of one sample per pixel
+    /// through the pixel centres, each with [`PHOTONS_PER_PASS`] photons in
+    /// each of [`PHOTON_PASSES`] passes. The pixels that see a mirror or
+    /// glass are not compared: they hold the delta lights' own images
+    /// (light → mirrors or glass → camera), a point of unbounded radiance
+    /// that no integrator of a delta light draws and the stand-in area
+    /// lights spread over a disk.
+    fn all_the_light(&self, name: &str, decoded: &DecodedLight, samples: u32) -> Check {
+        let mut settings = decoded.scene.settings;
+        settings.integrator = IntegratorKind::Photon;
+        settings.photon.photons = PHOTONS_PER_PASS;
+        settings.photon.passes = PHOTON_PASSES;
+        let integrator = IntegratorKind::Photon.to_string();
+        match sample_statistics(self.render, &decoded.scene, settings, 0..u64::from(samples)) {
+            Ok((mean, variance)) => check_all_the_light_in(
+                name,
+                &integrator,
+                decoded,
+                TracerRender {
+                    mean: &mean,
+                    variance: &variance,
+                    samples,
+                },
+                &[Region::Diffuse],
+            ),
+            Err(e) => render_failed(name, "photon.all_the_light", &e),
+        }
+    }
+}
+
+/// Photons per pass of each `photon` render of the check: each of the
+/// check's renders builds its own maps, so fewer than a picture's.
+const PHOTONS_PER_PASS: u32 = 20_000;
+
+/// Photon passes of each `photon` render of the check.
+const PHOTON_PASSES: u32 = 4;
+
+/// A check that failed because its render did.
+fn render_failed(name: &str, what: &str, error: &str) -> Check {
+    let mut check = Check::new(
+        &format!("full_light.tracer.{name}.{what}"),
+        &format!("{name}: the tracer's render"),
+        "mitsuba_full_light.json",
+        "the render succeeds",
+    );
+    check.cases = 1;
+    check.fail(format!("the render failed: {error}"));
+    check
 }

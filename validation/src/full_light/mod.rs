@@ -36,8 +36,8 @@ mod reference;
 mod statistics;
 
 pub use checks::{
-    box_filter_shift, check_all_the_light, check_independent, check_missing_share,
-    check_same_missing_light, FullLightChecks, TracerRender,
+    box_filter_shift, check_all_the_light, check_all_the_light_in, check_independent,
+    check_missing_share, check_same_missing_light, FullLightChecks, TracerRender,
 };
 pub use reference::{decode, DecodedLight, EstimateRender, FullLight, RegionMask, SceneLight};
 pub use statistics::{share, RegionMean, Share};
