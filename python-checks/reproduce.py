@@ -63,14 +63,24 @@ import zlib
 
 BLAS_TOLERANCE = 1e-12
 TOLERANT = ("colorimetry.json", "metals.json")
-F32_TOLERANT = {"mitsuba_renders.json": {
-    "mean_f16le_zlib": 1e-3, "std_bf16le_zlib": 1e-2, "offset_sensitivity_f16le_zlib": 0.0}}
+F32_TOLERANT = {
+    "mitsuba_renders.json": {
+        "mean_f16le_zlib": 1e-3, "std_bf16le_zlib": 1e-2, "offset_sensitivity_f16le_zlib": 0.0},
+    "mitsuba_full_light.json": {"mean_f32le": 1e-3},
+}
+# Files of Mitsuba renders whose plain numbers (a region's mean per pass)
+# may move as their float32 images do, across CPUs: ``mitsuba_renders.json``'s
+# mean tolerance, not yet measured on a second CPU for this file.
+FLOAT_TOLERANT = {"mitsuba_full_light.json": 1e-3}
 
 
 def tolerance_for(name):
     """The float tolerance of the reference file ``name``: 0 (byte for byte)
-    unless it is one of ``TOLERANT``."""
-    return BLAS_TOLERANCE if os.path.basename(name) in TOLERANT else 0.0
+    unless it is one of ``TOLERANT`` or ``FLOAT_TOLERANT``."""
+    base = os.path.basename(name)
+    if base in FLOAT_TOLERANT:
+        return FLOAT_TOLERANT[base]
+    return BLAS_TOLERANCE if base in TOLERANT else 0.0
 
 
 def f32_tolerances_for(name):

@@ -12,13 +12,14 @@ use crate::python::{run_tool, Task, ToolError};
 
 /// The reference generators and the files each writes, in the order the
 /// full run regenerates them.
-pub const GENERATORS: [(&str, &[&str]); 6] = [
+pub const GENERATORS: [(&str, &[&str]); 7] = [
     ("fresnel_mpmath.py", &["fresnel_mpmath.json"]),
     ("fresnel_random.py", &["fresnel_random.json"]),
     ("mitsuba_laws.py", &["mitsuba_laws.json"]),
     ("colorimetry.py", &["colorimetry.json", "cie_tables.rs"]),
     ("metals.py", &["metals.json"]),
     ("mitsuba_render.py", &["mitsuba_renders.json"]),
+    ("mitsuba_full_light.py", &["mitsuba_full_light.json"]),
 ];
 
 /// Why the regeneration could not be judged.

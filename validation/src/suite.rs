@@ -9,6 +9,7 @@
 use std::path::PathBuf;
 
 use crate::colorimetry::{self, Colorimetry, ColourLaws};
+use crate::full_light::{self, FullLight, FullLightChecks};
 use crate::laws::{self, Laws, Laws64, MitsubaLaws};
 use crate::metals::{self, MetalLaws, MetalsReference};
 use crate::mpmath::{self, FresnelMpmath};
@@ -205,6 +206,19 @@ impl CheckKind for RenderChecks {
     }
 }
 
+/// All the light against Mitsuba's light tracer and area lights.
+impl CheckKind for FullLightChecks {
+    fn name(&self) -> &'static str {
+        "all the light against Mitsuba 3"
+    }
+
+    fn run(&self, context: &Context, report: &mut Report) -> Result<(), ReferenceError> {
+        let reference = FullLight::load(&context.reference_dir)?;
+        report.note_reference(&context.reference_dir, full_light::FILE)?;
+        self.run_all(&reference, context, &mut report.checks)
+    }
+}
+
 /// The kinds of check `optics validate` runs, with the radiometry crate's laws.
 pub fn standard_kinds() -> Vec<Box<dyn CheckKind>> {
     vec![
@@ -212,6 +226,7 @@ pub fn standard_kinds() -> Vec<Box<dyn CheckKind>> {
         Box::new(ColourChecks(ColourLaws::radiometry())),
         Box::new(MetalChecks(MetalLaws::radiometry())),
         Box::new(RenderChecks::tracer()),
+        Box::new(FullLightChecks::tracer()),
     ]
 }
 

@@ -89,9 +89,11 @@ pub fn run(args: &InspectArgs, ui: &Ui) -> error::Result<()> {
         settings.integrator,
         base.rays.total()
     ));
+    let (missing, missing_detail) = crate::missing_light::report(&job, &args.scene, lang);
     for line in crate::render::steps(needs, job.machinery(), settings, lang)
         .into_iter()
         .chain(lines)
+        .chain(missing)
     {
         record.step(line);
     }
@@ -100,6 +102,7 @@ pub fn run(args: &InspectArgs, ui: &Ui) -> error::Result<()> {
         .detail("height", scene.height)
         .detail("settings", settings)
         .detail("skipped", costs)
+        .detail("missing_light", missing_detail)
         .detail("rays", base.rays);
     ui.show_steps(&record)
 }

@@ -19,6 +19,7 @@ pub mod input;
 mod inspect;
 pub mod lang;
 pub mod laws;
+mod missing_light;
 pub mod quiz;
 pub mod record;
 mod render;

@@ -23,6 +23,7 @@ use crate::Ui;
   optics render crates/tracer/scenes/kaleidoscope.json -o kaleidoscope.png
   optics render crates/tracer/scenes/gold_spheres.json -o gold.png --integrator course
   optics --json render scene.json -o out.png --integrator path --spp 64 --seed 7 --threads 2
+  optics render crates/tracer/scenes/glass_spheres.json -o caustics.png --integrator photon --spp 64
 
 Writes the PNG (sRGB, radiance clamped to [0, 1]: see docs/scene-schema.md)
 and, beside it, the linear radiance as a PFM with the same name.")]
@@ -71,6 +72,19 @@ pub struct JobArgs {
     #[arg(long)]
     #[serde(skip_serializing_if = "Option::is_none")]
     pub seed: Option<u64>,
+    /// Photons per pass of the photon integrator's caustic map.
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=MAX_PHOTONS as i64))]
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub photons: Option<u32>,
+    /// Passes of the caustic map, each with its own photons and a smaller
+    /// radius (photons × passes at most 2^22).
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=MAX_PHOTON_PASSES as i64))]
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub photon_passes: Option<u32>,
+    /// The caustic map's gather radius in the first pass, m.
+    #[arg(long)]
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub photon_radius: Option<f64>,
     /// Image width in pixels, overriding the scene's (the camera keeps its view).
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=MAX_IMAGE_SIDE as i64))]
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -97,6 +111,9 @@ impl JobArgs {
                 fresnel: self.fresnel,
                 seed: self.seed,
                 pixel_filter: self.pixel_filter,
+                photons: self.photons.map(f64::from),
+                photon_passes: self.photon_passes.map(f64::from),
+                photon_radius: self.photon_radius,
                 ..RenderSpec::default()
             },
             width: self.width,
@@ -247,7 +264,7 @@ pub(crate) fn steps(
         ));
     }
     if machinery.spp < settings.spp {
-        steps.push(if settings.integrator == IntegratorKind::Path {
+        steps.push(if settings.integrator.samples() {
             say!(
                 lang,
                 "{} samples per pixel reduced to 1: every path is deterministic and passes through the pixel centre",

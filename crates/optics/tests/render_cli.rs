@@ -313,6 +313,8 @@ fn zero_samples_and_absurd_sizes_on_the_command_line_are_refused() {
         ("--width", "1000000"),
         ("--threads", "0"),
         ("--max-depth", "-1"),
+        ("--photons", "0"),
+        ("--photon-passes", "0"),
     ] {
         let arg = format!("{flag}={value}");
         let out = optics(&[
@@ -326,6 +328,62 @@ fn zero_samples_and_absurd_sizes_on_the_command_line_are_refused() {
         assert!(text(&out.stderr).contains(flag), "{}", text(&out.stderr));
     }
     assert!(!png.exists());
+}
+
+/// The photon integrator from the command line: its settings in the
+/// record as settled, the photon pass's rays among the rays; a bad radius,
+/// or photons over the passes beyond what the maps hold, refused naming
+/// the flag's field, with no file written.
+#[test]
+fn photon_settings_are_taken_from_the_command_line_and_refused_by_name() {
+    let dir = tempfile::tempdir().unwrap();
+    let png = dir.path().join("glass.png");
+    let photon = [
+        "--integrator",
+        "photon",
+        "--spp",
+        "2",
+        "--photons",
+        "3000",
+        "--photon-passes",
+        "2",
+        "--photon-radius",
+        "0.1",
+    ];
+    let mut args = vec!["--json", "render", "-o", png.to_str().unwrap()];
+    let glass = scene("glass_spheres");
+    args.extend([glass.as_str(), "--width", "16", "--height", "12"]);
+    args.extend(photon);
+    let out = optics(&args);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let record: Value = serde_json::from_slice(&out.stdout).unwrap();
+    let settings = &record["details"]["settings"];
+    assert_eq!(settings["integrator"], "photon");
+    assert_eq!(settings["photon"]["photons"], 3000);
+    assert_eq!(settings["photon"]["passes"], 2);
+    assert_eq!(settings["photon"]["radius"], 0.1);
+    assert!(record["details"]["rays"]["photon"].as_u64().unwrap() > 0);
+    assert!(png.exists());
+    for (extra, field) in [
+        ("--photon-radius=-1", "overrides.photon_radius"),
+        ("--photon-radius=NaN", "overrides.photon_radius"),
+        ("--photons=4194304", "overrides.photons"),
+    ] {
+        let bad = dir.path().join("bad.png");
+        let out = render_small(&glass, &bad, &["--integrator", "photon", extra]);
+        assert!(!out.status.success(), "{extra:?}");
+        assert!(
+            text(&out.stderr).contains(field),
+            "{extra:?}: {}",
+            text(&out.stderr)
+        );
+        assert!(
+            !text(&out.stderr).contains("panicked"),
+            "{}",
+            text(&out.stderr)
+        );
+        assert!(!bad.exists(), "{extra:?}");
+    }
 }
 
 #[test]

@@ -166,7 +166,12 @@ impl RenderJob {
         progress: &(dyn Fn(usize) + Sync),
     ) -> Result<Rendered, RenderError> {
         let tracer = Tracer::new(&self.scene, self.settings, machinery.clone());
-        let rendered = render::render(&tracer, threads, progress)?;
+        let (tracer, photon_time) = caustics(tracer, threads)?;
+        let mut rendered = render::render(&tracer, threads, progress)?;
+        if let Some(caustics) = &tracer.caustics {
+            rendered.rays.add(&caustics.rays);
+            rendered.elapsed += photon_time;
+        }
         render::check_finite(&rendered.image)?;
         Ok(rendered)
     }
@@ -198,6 +203,23 @@ impl RenderJob {
         destination.write(&rendered.image)?;
         Ok(rendered)
     }
+}
+
+/// `tracer` with its caustic maps built on `threads` threads, where its
+/// integrator has them, and the time that took.
+fn caustics(
+    tracer: Tracer<'_>,
+    threads: Option<usize>,
+) -> Result<(Tracer<'_>, std::time::Duration), rayon::ThreadPoolBuildError> {
+    let start = std::time::Instant::now();
+    if tracer.settings.integrator != IntegratorKind::Photon {
+        return Ok((tracer, start.elapsed()));
+    }
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads.unwrap_or(0))
+        .build()?;
+    let tracer = pool.install(|| tracer.with_caustics());
+    Ok((tracer, start.elapsed()))
 }
 
 /// Refuses combinations an integrator cannot render.

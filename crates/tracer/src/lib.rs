@@ -1,7 +1,8 @@
 //! The course's ray tracers, built only from the laws of the `radiometry`
 //! crate: scene files, the course's primitives and cameras, three levels of
-//! light transport (`local`, `whitted`, `path`) and the course shader's own
-//! loop (`course`), images in PNG and PFM.
+//! light transport (`local`, `whitted`, `path`), the path tracer with a
+//! caustic photon map (`photon`) and the course shader's own loop
+//! (`course`), images in PNG and PFM.
 //!
 //! Every shading formula (BRDFs, Fresnel, irradiance of the lights, mirror
 //! and refraction directions, radiance across an interface) is a call into
@@ -36,10 +37,11 @@
 //! | [`camera`] | the course's pinhole and the look-at camera unprojected through the inverse view-projection |
 //! | [`filter`] | the pixel filter: stratified, jittered rays over the pixel (box) or its centre |
 //! | [`spawn`] | where secondary rays start: the hit's error bound, or the course's fixed epsilon |
-//! | [`integrator`] | `local`, `whitted`, `path` and the course shader's loop, one file each, and the shared scatter step |
+//! | [`integrator`] | `local`, `whitted`, `path`, `photon` (the path tracer plus a caustic photon map) and the course shader's loop, one file each, and the shared scatter step |
 //! | [`needs`] | what a scene needs, so the renderer runs only that |
+//! | [`chains`] | which delta lights reach a rough surface through mirrors or glass: the light no integrator computes |
 //! | [`render`] | the image, in parallel, identical for any thread count |
-//! | [`rng`] | PCG32 streams, one per pixel |
+//! | [`rng`] | PCG32 streams, one per pixel and one per photon |
 //! | [`output`] | PNG (sRGB, stated tone mapping) and PFM, the destination checked before the render, the pair written atomically |
 //! | [`interrupt`] | SIGINT and SIGTERM while writing: temporaries removed, a commit finished first |
 //!
@@ -59,6 +61,7 @@
 
 pub mod camera;
 pub mod filter;
+pub mod chains;
 pub mod geometry;
 pub mod integrator;
 pub mod interrupt;

@@ -124,7 +124,10 @@ pub fn analyse(scene: &Scene, settings: &Settings) -> Needs {
         .any(|o| matches!(material(o), Material::Conductor { .. }));
     let recursive = matches!(
         settings.integrator,
-        IntegratorKind::Whitted | IntegratorKind::Path | IntegratorKind::Course
+        IntegratorKind::Whitted
+            | IntegratorKind::Path
+            | IntegratorKind::Photon
+            | IntegratorKind::Course
     );
     let reflection_depth = if !recursive || specular.is_empty() || settings.max_depth == 0 {
         ReflectionDepth::None
@@ -165,9 +168,14 @@ pub fn analyse(scene: &Scene, settings: &Settings) -> Needs {
     // cos θ > 0 there, and the segment towards the light leaves it.
     let shadows = lit && (scene.objects.len() > 1 || scene.objects.iter().any(|o| !o.is_convex()));
     // The path tracer draws random numbers only at rough surfaces (when it
-    // may bounce on) and at glass.
-    let random_at_rough =
-        rough && settings.integrator == IntegratorKind::Path && settings.max_depth > 0;
+    // may bounce on) and at glass; the photon integrator's photons and the
+    // pass a camera path looks up are random wherever a surface is rough.
+    let random_at_rough = rough
+        && match settings.integrator {
+            IntegratorKind::Path => settings.max_depth > 0,
+            IntegratorKind::Photon => true,
+            _ => false,
+        };
     let deterministic = !(refraction || random_at_rough);
     Needs {
         reflection_depth,
@@ -224,10 +232,10 @@ impl Needs {
             shadow_rays: self.shadows,
             lights: self.lights.iter().map(|l| l.used).collect(),
             // A box filter's rays vary within the pixel whatever the
-            // integrator; through the centre, only the path tracer's vary,
-            // and not when every path is deterministic.
+            // integrator; through the centre, only a sampling integrator's
+            // vary, and not when every path is deterministic.
             spp: if settings.pixel_filter == PixelFilter::Box
-                || (settings.integrator == IntegratorKind::Path && !self.deterministic)
+                || (settings.integrator.samples() && !self.deterministic)
             {
                 settings.spp
             } else {
@@ -248,7 +256,7 @@ pub const WARN_RAYS: f64 = 1e10;
 
 impl Needs {
     /// An upper estimate of the rays a render casts, before it starts, from
-    /// the branching the scene allows: a primary ray per sample, each
+    /// the branching the scene allows (and the photon pass's rays): a primary ray per sample, each
     /// followed to the reachable depth `D` (the reflection depth, or under
     /// the path tracer `max_depth` where rough surfaces bounce light; one
     /// branch per bounce, or at
@@ -259,9 +267,7 @@ impl Needs {
     pub fn rays(&self, scene: &Scene, machinery: &Machinery, settings: &Settings) -> f64 {
         let depth = match self.reflection_depth {
             // The path tracer bounces off rough surfaces too.
-            _ if settings.integrator == IntegratorKind::Path && self.rough_surfaces => {
-                settings.max_depth
-            }
+            _ if settings.integrator.samples() && self.rough_surfaces => settings.max_depth,
             ReflectionDepth::None => 0,
             ReflectionDepth::One => 1,
             ReflectionDepth::UpToMaxDepth(d) => d,
@@ -271,7 +277,7 @@ impl Needs {
         let per_sample = match settings.integrator {
             IntegratorKind::Local => 1.0 + shadow,
             IntegratorKind::Course => 1.0 + depth as f64,
-            IntegratorKind::Path => (1.0 + depth as f64) * (1.0 + shadow),
+            IntegratorKind::Path | IntegratorKind::Photon => (1.0 + depth as f64) * (1.0 + shadow),
             IntegratorKind::Whitted => {
                 let branches = if self.refraction {
                     whitted_branches(depth, scene, settings.throughput_cutoff)
@@ -282,8 +288,19 @@ impl Needs {
             }
         };
         let pixels = scene.width as f64 * scene.height as f64;
-        (pixels * machinery.spp as f64 * per_sample).min(f64::MAX)
+        (pixels * machinery.spp as f64 * per_sample + photon_rays(settings)).min(f64::MAX)
     }
+}
+
+/// The photon pass's rays at most: each photon an escape test (directional
+/// lights) and up to `max_depth + 2` segments (`max_depth + 1` smooth
+/// bounces, then the rough surface it lands on).
+fn photon_rays(settings: &Settings) -> f64 {
+    if settings.integrator != IntegratorKind::Photon {
+        return 0.0;
+    }
+    let photon = settings.photon;
+    photon.photons as f64 * photon.passes as f64 * (settings.max_depth as f64 + 3.0)
 }
 
 /// `Σ_{k=1..depth} min(2^k, cap)`: the rays a primary ray's tree through

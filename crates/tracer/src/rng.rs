@@ -3,8 +3,10 @@
 //! Number Generation", 2014, `pcg32_random_r` of the reference C code),
 //! seeded through SplitMix64 (Steele, Lea and Flood, OOPSLA 2014).
 //!
-//! Each pixel gets its own stream from `(seed, pixel index)`, so an image
-//! depends on the seed only, never on how pixels are shared among threads.
+//! Each pixel gets its own stream from `(seed, pixel index)`, and each
+//! photon of the photon map its own from `(seed, pass, photon index)`, so
+//! an image depends on the seed only, never on how pixels or photons are
+//! shared among threads.
 
 /// A PCG32 generator: 64-bit LCG state, XSH-RR output.
 #[derive(Clone, Debug)]
@@ -14,6 +16,9 @@ pub struct Pcg32 {
 }
 
 const MULTIPLIER: u64 = 6364136223846793005;
+
+/// Keeps the photons' streams apart from the pixels' ("PHOTONS" in ASCII).
+const PHOTON_SALT: u64 = 0x0050_484F_544F_4E53;
 
 /// SplitMix64's step: a bijective 64-bit mixer.
 pub fn splitmix64(x: u64) -> u64 {
@@ -39,6 +44,13 @@ impl Pcg32 {
     /// The stream of one pixel of one render.
     pub fn for_pixel(seed: u64, pixel: u64) -> Self {
         Pcg32::new(splitmix64(seed ^ splitmix64(pixel)), splitmix64(pixel))
+    }
+
+    /// The stream of photon `index` of pass `pass` of one render, apart
+    /// from every pixel's (the key is salted before it is mixed).
+    pub fn for_photon(seed: u64, pass: u32, index: u32) -> Self {
+        let key = splitmix64(((pass as u64) << 32 | index as u64) ^ PHOTON_SALT);
+        Pcg32::new(splitmix64(seed ^ key), key)
     }
 
     /// The next 32 random bits.

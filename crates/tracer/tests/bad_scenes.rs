@@ -172,6 +172,24 @@ fn bad_scenes_are_refused_with_the_path_of_the_bad_value() {
             &["render.pixel_filter", "gaussian", "box", "center"],
         ),
         (
+            "no photons",
+            with("/render/photons", json!(0)),
+            &["render.photons", "from 1"],
+        ),
+        (
+            "a photon radius of 0",
+            with("/render/photon_radius", json!(0)),
+            &["render.photon_radius", "positive"],
+        ),
+        (
+            "more photons over the passes than the maps hold",
+            with(
+                "/render",
+                json!({ "photons": 1_048_576, "photon_passes": 5 }),
+            ),
+            &["render.photon_passes", "1 to 4", "got 5"],
+        ),
+        (
             "unknown material",
             with("/objects/0/material", json!("blue")),
             &["objects[0].material", "\"blue\""],

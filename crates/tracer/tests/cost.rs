@@ -60,7 +60,8 @@ fn an_exponential_render_is_refused_before_it_starts_unless_allowed() {
 }
 
 /// The estimate is an upper bound: for every course scene and the glass
-/// scene, under every integrator, no render casts more rays than it said.
+/// scene, under every integrator (the photon pass's rays included), no
+/// render casts more rays than it said.
 #[test]
 fn the_estimate_bounds_the_rays_cast() {
     let mut scenes: Vec<Scene> = tracer::scene::COURSE_SCENES
@@ -78,11 +79,14 @@ fn the_estimate_bounds_the_rays_cast() {
             IntegratorKind::Local,
             IntegratorKind::Whitted,
             IntegratorKind::Path,
+            IntegratorKind::Photon,
             IntegratorKind::Course,
         ] {
             let render = RenderSpec {
                 integrator: Some(integrator),
                 spp: Some(4.0),
+                photons: Some(2000.0),
+                photon_passes: Some(3.0),
                 ..RenderSpec::default()
             };
             let overrides = Overrides {

@@ -2,7 +2,8 @@
 //! (values replaced by hostile ones, fields removed, renamed or added,
 //! values wrapped in arrays) and then as bytes (flipped, inserted, cut,
 //! a scene appended, a byte-order mark), read through `scene::parse_bytes`
-//! and, when accepted, rendered at 4 × 3. The promises checked on every
+//! and, when accepted, rendered at 4 × 3 by each integrator (the photon
+//! map with 2 passes of 64 photons). The promises checked on every
 //! case:
 //!
 //! - no panic;
@@ -202,13 +203,24 @@ fn case() -> impl Strategy<Value = Case> {
     )
 }
 
+/// The course scene `index`, with the photon map's settings in its
+/// `render` (no course file has them), so that the edits reach them.
 fn course_value(index: usize) -> Value {
     let path = format!(
         "{}/scenes/{}.json",
         env!("CARGO_MANIFEST_DIR"),
         SCENES[index]
     );
-    serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
+    let mut value: Value = serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
+    let render = value
+        .as_object_mut()
+        .unwrap()
+        .entry("render")
+        .or_insert_with(|| serde_json::json!({}));
+    render["photons"] = serde_json::json!(1000);
+    render["photon_passes"] = serde_json::json!(4);
+    render["photon_radius"] = serde_json::json!(0.05);
+    value
 }
 
 /// The value at `path` (as [`paths`] writes it), as a JSON pointer.
@@ -370,6 +382,7 @@ fn check(bytes: &[u8], coverage: &Mutex<Coverage>) -> Result<(), String> {
         (IntegratorKind::Whitted, None),
         (IntegratorKind::Whitted, Some(PixelFilter::Box)),
         (IntegratorKind::Path, None),
+        (IntegratorKind::Photon, None),
     ] {
         let overrides = Overrides {
             render: RenderSpec {
@@ -377,6 +390,9 @@ fn check(bytes: &[u8], coverage: &Mutex<Coverage>) -> Result<(), String> {
                 spp: Some(2.0),
                 max_depth: Some(4.0),
                 pixel_filter,
+                // A small map: the file's own counts are validated, not spent.
+                photons: Some(64.0),
+                photon_passes: Some(2.0),
                 ..RenderSpec::default()
             },
             width: Some(4),

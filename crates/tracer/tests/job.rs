@@ -170,7 +170,7 @@ fn bad_overrides_are_refused_by_kind_and_field() {
         render,
         ..Overrides::default()
     };
-    let cases: [(&str, Overrides, &str, Kind); 4] = [
+    let cases: [(&str, Overrides, &str, Kind); 5] = [
         (
             "no samples",
             render(RenderSpec {
@@ -215,6 +215,17 @@ fn bad_overrides_are_refused_by_kind_and_field() {
             }),
             "overrides.throughput_cutoff",
             |k| matches!(k, ErrorKind::Domain(_)),
+        ),
+        (
+            // Only the photons given: the product is refused under their
+            // name, with the most the scene's 16 passes allow.
+            "photons beyond what 16 passes may hold",
+            render(RenderSpec {
+                photons: Some(300_000.0),
+                ..RenderSpec::default()
+            }),
+            "overrides.photons",
+            |k| matches!(k, ErrorKind::NotACount { max: 262_144, .. }),
         ),
     ];
     for (name, overrides, field, kind) in cases {

@@ -74,13 +74,13 @@ pub fn job(
 
 /// Renders the reference: one render of a deterministic integrator, or
 /// `samples` renders at one sample per pixel with seeds from
-/// [`FIRST_SEED`] for the path tracer where its paths vary.
+/// [`FIRST_SEED`] for the sampling integrators (`path`, `photon`) where their paths vary.
 pub fn render(job: RenderJob, samples: u32) -> error::Result<Reference> {
     let settings = *job.settings();
     let scene = job.scene();
     let mut probe = settings;
     probe.spp = 2;
-    let varies = settings.integrator == IntegratorKind::Path
+    let varies = settings.integrator.samples()
         && RenderJob::with_settings(scene.clone(), probe).is_ok_and(|j| j.machinery().spp > 1);
     let (mean, noise) = if varies {
         let seeds = FIRST_SEED..FIRST_SEED + u64::from(samples);

@@ -231,7 +231,7 @@ impl fmt::Display for CompareError {
             ),
             CompareError::CourseReference => write!(
                 f,
-                "--integrator: the reference is physical; give whitted, path or local, not course"
+                "--integrator: the reference is physical; give whitted, path, photon or local, not course"
             ),
             CompareError::Reference { message } => {
                 write!(f, "the reference render failed: {message}")

@@ -91,8 +91,8 @@ pub fn compare_hu(error: &CompareError) -> String {
             "a --variance {} × {} képpontos, az IMAGE {} × {}: egyforma méretűnek kell lenniük",
             got.0, got.1, expected.0, expected.1
         ),
-        CompareError::CourseReference => "--integrator: a referencia fizikai; whitted, path \
-                                          vagy local adható meg, a course nem"
+        CompareError::CourseReference => "--integrator: a referencia fizikai; whitted, path, \
+                                          photon vagy local adható meg, a course nem"
             .to_owned(),
         CompareError::Reference { message } => {
             format!("a referencia renderelése nem sikerült: {message}")

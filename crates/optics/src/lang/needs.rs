@@ -2,7 +2,9 @@
 //! of light and why a light is skipped. Each is an exhaustive `match` over
 //! the tracer's enums, so a new kind or reason has no English-only text.
 
+use tracer::chains::Chain;
 use tracer::needs::{LightKind, Unused};
+use tracer::scene::{Material, Scene};
 
 use super::Lang;
 
@@ -34,6 +36,44 @@ pub fn unused(reason: Unused, lang: Lang) -> &'static str {
             "a kamerát körülvevő zárt tükörcső kívül tartja a fényét"
         }
     }
+}
+
+/// A material's kind, as a chain names it.
+pub fn material_kind(material: &Material, lang: Lang) -> &'static str {
+    match (material, lang) {
+        (Material::Flat { .. }, Lang::En) => "flat",
+        (Material::NormalColour, Lang::En) => "normal_colour",
+        (Material::CourseRough { .. }, Lang::En) => "course_rough",
+        (Material::Lambert { .. }, Lang::En) => "lambert",
+        (Material::Conductor { .. }, Lang::En) => "conductor",
+        (Material::Dielectric { .. }, Lang::En) => "dielectric",
+        (Material::Flat { .. }, Lang::Hu) => "egyszínű",
+        (Material::NormalColour, Lang::Hu) => "normálszín",
+        (Material::CourseRough { .. }, Lang::Hu) => "érdes (a kurzusé)",
+        (Material::Lambert { .. }, Lang::Hu) => "Lambert-féle",
+        (Material::Conductor { .. }, Lang::Hu) => "vezető",
+        (Material::Dielectric { .. }, Lang::Hu) => "üveg",
+    }
+}
+
+/// A chain as `point light 0 → conductor 'gold' → lambert 'floor'`.
+pub fn chain(chain: &Chain, scene: &Scene, lang: Lang) -> String {
+    let light = match lang {
+        Lang::En => format!("{} light {}", light_kind(chain.kind, lang), chain.light),
+        Lang::Hu => format!("{} {}", chain.light, light_kind(chain.kind, lang)),
+    };
+    let surface = |m: usize| {
+        format!(
+            "{} '{}'",
+            material_kind(&scene.materials[m], lang),
+            scene.material_names[m]
+        )
+    };
+    std::iter::once(light)
+        .chain(chain.via.iter().map(|&m| surface(m)))
+        .chain(std::iter::once(surface(chain.to)))
+        .collect::<Vec<_>>()
+        .join(" → ")
 }
 
 #[cfg(test)]

@@ -7,6 +7,7 @@
 //! | [`local`] | ambient + direct light, shadow rays | background seen in the mirror direction is not traced: black | 1 ray + 1 per light |
 //! | [`whitted`] | ambient + direct light, shadow rays | recursion, Fresnel-weighted, to `max_depth`, cut below `throughput_cutoff` | grows with mirrors |
 //! | [`path`] | direct light + one cosine-sampled bounce (no ambient: the indirect light is computed) | one branch, chosen with the Fresnel probability | `spp` paths per pixel |
+//! | [`photon`] | as `path`, plus the caustic photon map's radiance (delta lights through mirrors and glass) | as `path`; photons follow one lobe each | `spp` paths per pixel + `photons × passes` photons |
 //! | [`course`] | the final GLSL shader of `000`, bugs included | | |
 //!
 //! The physical integrators never look at a material: they ask the hit
@@ -28,6 +29,7 @@ pub mod course;
 pub mod direct;
 pub mod local;
 pub mod path;
+pub mod photon;
 pub mod scatter;
 pub mod whitted;
 
@@ -46,6 +48,9 @@ pub struct RayCounts {
     pub shadow: u64,
     /// The path tracer's diffuse bounces.
     pub diffuse: u64,
+    /// The photon map's photons, each segment (and a directional light's
+    /// photon's escape test).
+    pub photon: u64,
     /// The most bounces any path took after its primary hit.
     pub deepest: u32,
 }
@@ -53,7 +58,7 @@ pub struct RayCounts {
 impl RayCounts {
     /// All rays.
     pub fn total(&self) -> u64 {
-        self.primary + self.reflection + self.refraction + self.shadow + self.diffuse
+        self.primary + self.reflection + self.refraction + self.shadow + self.diffuse + self.photon
     }
 
     /// Adds another tally.
@@ -63,6 +68,7 @@ impl RayCounts {
         self.refraction += other.refraction;
         self.shadow += other.shadow;
         self.diffuse += other.diffuse;
+        self.photon += other.photon;
         self.deepest = self.deepest.max(other.deepest);
     }
 
@@ -112,6 +118,8 @@ pub struct Tracer<'a> {
     /// A law left out on purpose (`scene::faults`, tests only): read once
     /// from the thread that built the tracer.
     pub(crate) fault: Option<Fault>,
+    /// The caustic photon maps (`photon` only, built by [`Tracer::with_caustics`]).
+    pub caustics: Option<photon::Caustics>,
 }
 
 /// A colour from a function of its channel index.
@@ -128,7 +136,16 @@ impl<'a> Tracer<'a> {
             settings,
             machinery,
             fault: faults::current(),
+            caustics: None,
         }
+    }
+
+    /// This tracer with its caustic maps built, where its integrator has them.
+    pub fn with_caustics(mut self) -> Self {
+        if self.settings.integrator == IntegratorKind::Photon {
+            self.caustics = Some(photon::Caustics::build(&self));
+        }
+        self
     }
 }
 
@@ -160,13 +177,16 @@ impl Tracer<'_> {
         best
     }
 
-    /// The radiance arriving along a primary ray, by the chosen integrator.
+    /// The radiance arriving along a primary ray, by the chosen integrator
+    /// (`photon` looks up the maps of [`Tracer::with_caustics`]; a tracer
+    /// without them traces the path tracer's paths alone).
     pub fn radiance(&self, ray: &Ray, rng: &mut Pcg32, counts: &mut RayCounts) -> Vec3 {
         counts.primary += 1;
         match self.settings.integrator {
             IntegratorKind::Local => self.local(ray, counts),
             IntegratorKind::Whitted => self.whitted(ray, 0, Vec3::ONE, counts),
-            IntegratorKind::Path => self.path(ray, rng, counts),
+            IntegratorKind::Path => self.path(ray, rng, counts, None),
+            IntegratorKind::Photon => self.photon(ray, rng, counts),
             IntegratorKind::Course => self.course(ray, counts),
         }
     }

@@ -1,10 +1,12 @@
 //! Path tracing (`003`, "globális illumináció"): at each rough surface the
 //! lights' direct light and one cosine-sampled bounce; at a smooth one a
 //! single lobe, chosen with the Fresnel probability; Russian roulette below
-//! `throughput_cutoff`.
+//! `throughput_cutoff`. With a caustic map's pass (the `photon`
+//! integrator), each rough vertex adds the map's radiance to its direct light.
 
 use glam::Vec3;
 
+use super::photon::Pass;
 use super::scatter::{Bounce, Lobe, Surface};
 use super::{cosine_sample, RayCounts, Tracer};
 use crate::geometry::{Hit, Ray};
@@ -13,7 +15,13 @@ use crate::scene::Material;
 use crate::spawn;
 
 impl Tracer<'_> {
-    pub(super) fn path(&self, primary: &Ray, rng: &mut Pcg32, counts: &mut RayCounts) -> Vec3 {
+    pub(super) fn path(
+        &self,
+        primary: &Ray,
+        rng: &mut Pcg32,
+        counts: &mut RayCounts,
+        caustics: Option<&Pass>,
+    ) -> Vec3 {
         let mut ray = *primary;
         let mut beta = Vec3::ONE;
         let mut sum = Vec3::ZERO;
@@ -29,6 +37,10 @@ impl Tracer<'_> {
                 Surface::Shows(radiance) => return sum + beta * radiance,
                 Surface::Rough => {
                     sum += beta * self.direct(&hit, n, wo, material, counts);
+                    if let Some(pass) = caustics {
+                        let bounces = self.settings.max_depth.saturating_sub(depth);
+                        sum += beta * pass.radiance(&hit, n, wo, material, bounces);
+                    }
                     if depth >= self.settings.max_depth {
                         return sum;
                     }

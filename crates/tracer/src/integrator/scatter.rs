@@ -62,6 +62,11 @@ pub struct Lobe {
     /// Radiance arriving along the ray times this is the radiance it
     /// carries back along the incident ray, per channel.
     pub weight: Vec3,
+    /// The fraction of the power arriving along the incident ray that
+    /// leaves along this one, per channel: `R`, or through a dielectric
+    /// `T` without the radiance's `1/η²` (the beam's solid angle changes,
+    /// its power does not; Veach's thesis §5.2). A photon carries this.
+    pub power: Vec3,
 }
 
 /// The lobes of a smooth surface.
@@ -119,6 +124,7 @@ impl Tracer<'_> {
                     t.direction,
                 ),
                 weight: Vec3::splat(self.across_interface(interface.transmittance, t.eta_path)),
+                power: Vec3::splat(interface.transmittance),
             };
             (lobe, reflectance)
         });
@@ -223,6 +229,7 @@ fn mirror(ray: Ray, weight: Vec3) -> Lobe {
         bounce: Bounce::Reflection,
         ray,
         weight,
+        power: weight,
     }
 }
 

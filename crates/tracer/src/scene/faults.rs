@@ -21,6 +21,11 @@ pub enum Fault {
     /// Radiance carried across a dielectric interface without its `1/η²`
     /// (`radiometry::radiance::across_interface`): the transmittance alone.
     RadianceNotScaledAcrossInterfaces,
+    /// Photons keep their flux at mirrors and glass: no Fresnel factor.
+    PhotonsUnweightedAtMirrors,
+    /// Photons that reach a rough surface straight from the light are put
+    /// in the caustic map too, so the direct light is counted twice.
+    PhotonsStoredBeforeAnyMirror,
 }
 
 thread_local! {

@@ -80,6 +80,9 @@ pub const FIELDS: &[&str] = &[
     "render.ray_offset",
     "render.ray_offset.fixed",
     "render.pixel_filter",
+    "render.photons",
+    "render.photon_passes",
+    "render.photon_radius",
 ];
 
 /// Whether `path` matches `pattern`: `[]` an index `[digits]`, `*` one or

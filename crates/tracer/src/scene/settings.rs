@@ -18,6 +18,16 @@ pub const MAX_SPP: u32 = 1 << 20;
 /// The deepest recursion accepted. The course's shaders use 12 and 64.
 pub const MAX_DEPTH: u32 = 1024;
 
+/// The most photons a render emits, over all its passes: 2^22. Each lands
+/// at most once, so the maps hold at most this many (44 bytes each, 185
+/// MB, twice that while a pass's grid is sorted), and the photon pass
+/// casts at most this many times `max_depth + 3` rays
+/// (`needs::Needs::rays`).
+pub const MAX_PHOTONS: u32 = 1 << 22;
+
+/// The most photon passes, each with its own map and radius: 2^16.
+pub const MAX_PHOTON_PASSES: u32 = 1 << 16;
+
 /// The light transport algorithm: the speed/accuracy ladder of `003`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, Serialize)]
 #[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
@@ -29,8 +39,18 @@ pub enum IntegratorKind {
     Whitted,
     /// Monte Carlo global illumination.
     Path,
+    /// The path tracer plus a caustic photon map: also the delta lights'
+    /// light through mirrors and glass onto rough surfaces.
+    Photon,
     /// What the course's final GLSL shader computes, bugs included.
     Course,
+}
+
+impl IntegratorKind {
+    /// Whether it samples (takes `spp` random paths per pixel).
+    pub fn samples(self) -> bool {
+        matches!(self, IntegratorKind::Path | IntegratorKind::Photon)
+    }
 }
 
 impl fmt::Display for IntegratorKind {
@@ -39,6 +59,7 @@ impl fmt::Display for IntegratorKind {
             IntegratorKind::Local => "local",
             IntegratorKind::Whitted => "whitted",
             IntegratorKind::Path => "path",
+            IntegratorKind::Photon => "photon",
             IntegratorKind::Course => "course",
         })
     }
@@ -105,13 +126,13 @@ pub enum PixelFilter {
 
 impl PixelFilter {
     /// The filter an integrator renders with when none is given: `box` for
-    /// the Monte Carlo `path`, `center` for the deterministic ones.
+    /// the Monte Carlo `path` and `photon`, `center` for the deterministic
+    /// ones.
     pub fn default_for(integrator: IntegratorKind) -> Self {
-        match integrator {
-            IntegratorKind::Path => PixelFilter::Box,
-            IntegratorKind::Local | IntegratorKind::Whitted | IntegratorKind::Course => {
-                PixelFilter::Center
-            }
+        if integrator.samples() {
+            PixelFilter::Box
+        } else {
+            PixelFilter::Center
         }
     }
 }
@@ -157,6 +178,35 @@ pub struct RenderSpec {
     pub ray_offset: Option<RayOffset>,
     /// Where primary rays pass through their pixel.
     pub pixel_filter: Option<PixelFilter>,
+    /// Photons emitted per pass (`photon`), 1 to [`MAX_PHOTONS`].
+    pub photons: Option<f64>,
+    /// Photon passes (`photon`), 1 to [`MAX_PHOTON_PASSES`], with
+    /// `photons × photon_passes` at most [`MAX_PHOTONS`].
+    pub photon_passes: Option<f64>,
+    /// The first pass's gather radius (`photon`), m, positive.
+    pub photon_radius: Option<f64>,
+}
+
+/// The caustic photon map's settings (the `photon` integrator).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct PhotonSettings {
+    /// Photons emitted per pass, over all lights.
+    pub photons: u32,
+    /// Passes, each with its own photons and its own, smaller, radius.
+    pub passes: u32,
+    /// The first pass's gather radius, m.
+    #[serde(serialize_with = "as_written")]
+    pub radius: f32,
+}
+
+impl Default for PhotonSettings {
+    fn default() -> Self {
+        PhotonSettings {
+            photons: 100_000,
+            passes: 16,
+            radius: 0.05,
+        }
+    }
 }
 
 /// Settled render settings.
@@ -183,6 +233,8 @@ pub struct Settings {
     /// nowhere else: as given, else [`PixelFilter::default_for`] the
     /// integrator given beside it (see [`Settings::settle`]).
     pub pixel_filter: PixelFilter,
+    /// The caustic photon map (`photon` only).
+    pub photon: PhotonSettings,
 }
 
 impl Default for Settings {
@@ -196,6 +248,7 @@ impl Default for Settings {
             seed: 0,
             ray_offset: RayOffset::Robust,
             pixel_filter: PixelFilter::default_for(IntegratorKind::Whitted),
+            photon: PhotonSettings::default(),
         }
     }
 }
@@ -240,6 +293,34 @@ impl Settings {
                 positive(&field("ray_offset.fixed"), eps)?;
             }
             settled.ray_offset = offset;
+        }
+        settled.photon = settled.photon.settle(path, spec)?;
+        Ok(settled)
+    }
+}
+
+impl PhotonSettings {
+    /// These with `spec`'s photon fields over them; the product of photons
+    /// and passes is refused under the name of the field given last.
+    fn settle(&self, path: &str, spec: &RenderSpec) -> Result<PhotonSettings, SceneError> {
+        let field = |name: &str| format!("{path}.{name}");
+        let mut settled = *self;
+        if let Some(photons) = spec.photons {
+            settled.photons = count(&field("photons"), photons, 1, MAX_PHOTONS)?;
+        }
+        if let Some(passes) = spec.photon_passes {
+            settled.passes = count(&field("photon_passes"), passes, 1, MAX_PHOTON_PASSES)?;
+        }
+        if let Some(radius) = spec.photon_radius {
+            settled.radius = positive(&field("photon_radius"), radius)?;
+        }
+        if settled.photons as u64 * settled.passes as u64 > MAX_PHOTONS as u64 {
+            // Named by the passes unless only the photons were given here.
+            let (name, value, other) = match (spec.photons, spec.photon_passes) {
+                (Some(_), None) => ("photons", settled.photons, settled.passes),
+                _ => ("photon_passes", settled.passes, settled.photons),
+            };
+            count(&field(name), value.into(), 1, MAX_PHOTONS / other)?;
         }
         Ok(settled)
     }

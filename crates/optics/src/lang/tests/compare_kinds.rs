@@ -133,7 +133,14 @@ pub fn examples() -> Vec<(ErrorKind, Vec<String>)> {
         ),
         compare(
             CompareError::CourseReference,
-            &["--integrator", "whitted", "path", "local", "course"],
+            &[
+                "--integrator",
+                "whitted",
+                "path",
+                "photon",
+                "local",
+                "course",
+            ],
         ),
         compare(
             CompareError::Reference {

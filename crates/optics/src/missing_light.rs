@@ -1,0 +1,115 @@
+//! The light `optics inspect` says the chosen integrator misses: each chain
+//! delta light → mirrors or glass → rough surface the scene holds
+//! (`tracer::chains`), and, where the harness's reference measured the
+//! scene (`mitsuba_full_light.json`), the share of the light Mitsuba's path
+//! tracer misses there, which the tracer's `path` misses too (the harness
+//! checks that they agree).
+
+use std::path::Path;
+
+use serde_json::{json, Value};
+use tracer::chains;
+use tracer::job::RenderJob;
+use tracer::scene::IntegratorKind;
+
+use crate::lang::{needs, say, Lang};
+
+/// The report's lines and its JSON detail.
+pub fn report(job: &RenderJob, scene_file: &Path, lang: Lang) -> (Vec<String>, Value) {
+    let scene = job.scene();
+    let found = chains::find(scene, job.needs());
+    let integrator = job.settings().integrator;
+    let mut lines: Vec<String> = found
+        .iter()
+        .map(|c| {
+            say!(
+                lang,
+                "light the {} integrator does not compute: {}",
+                "fény, amelyet a(z) {} integrátor nem számol: {}",
+                integrator,
+                needs::chain(c, scene, lang)
+            )
+        })
+        .collect();
+    let measured = if found.is_empty() {
+        None
+    } else {
+        measured_share(scene_file)
+    };
+    if let Some(m) = &measured {
+        let at_least = integrator != IntegratorKind::Path;
+        lines.push(say!(
+            lang,
+            "measured by Mitsuba ({}, course_rough as Lambert, black background): its path integrator misses {:.3} ± {:.3} of the light where the camera sees a surface, {} where it sees a diffuse one{}",
+            "Mitsuba mérése ({}, course_rough helyett Lambert, fekete háttér): útkövetője a fény {:.3} ± {:.3} részét nem látja, ahol a kamera felületet lát, {} ahol diffúz felületet{}",
+            m.file,
+            m.surface.0,
+            m.surface.1,
+            m.diffuse.map_or_else(|| lang.pick("none", "nincs ilyen").to_owned(), |d| format!("{:.3} ± {:.3}", d.0, d.1)),
+            if at_least { lang.pick("; this integrator misses at least as much", "; ez az integrátor legalább ennyit") } else { "" }
+        ));
+    }
+    let detail = json!({
+        "chains": found.iter().map(|c| json!({
+            "light": c.light,
+            "kind": c.kind,
+            "via": c.via.iter().map(|&m| &scene.material_names[m]).collect::<Vec<_>>(),
+            "to": &scene.material_names[c.to],
+        })).collect::<Vec<_>>(),
+        "measured": measured.map(|m| json!({
+            "reference": m.file,
+            "surface": {"share": m.surface.0, "standard_error": m.surface.1},
+            "diffuse": m.diffuse.map(|d| json!({"share": d.0, "standard_error": d.1})),
+        })),
+    });
+    (lines, detail)
+}
+
+/// A share and its standard error per region.
+struct Measured {
+    file: &'static str,
+    surface: (f64, f64),
+    diffuse: Option<(f64, f64)>,
+}
+
+/// The share Mitsuba's path misses, where the checkout's reference holds
+/// the scene file inspected; `None` without the harness, a checkout or an
+/// entry for it.
+#[cfg(feature = "harness")]
+fn measured_share(scene_file: &Path) -> Option<Measured> {
+    use validation::full_light::{self, Estimate, FullLight, Region, RegionMean};
+    let checkout = validation::checkout::Checkout::find(None).ok()?;
+    let reference = FullLight::load(&checkout.reference_dir()).ok()?;
+    let inspected = scene_file.canonicalize().ok()?;
+    let (index, s) = reference.scenes.iter().enumerate().find(|(_, s)| {
+        checkout
+            .root()
+            .join(&s.scene_file)
+            .canonicalize()
+            .ok()
+            .as_ref()
+            == Some(&inspected)
+    })?;
+    let file = checkout.reference_dir().join(full_light::FILE);
+    let decoded = full_light::decode(&file, index, s).ok()?;
+    let mean = |e: Estimate, r: Region| {
+        let passes = decoded.passes.get(&(e, r))?;
+        Some(RegionMean::from_passes(
+            passes.iter().map(|p| p.iter().sum()),
+        ))
+    };
+    let share = |r: Region, full: Estimate| {
+        let s = full_light::share(mean(Estimate::Path, r)?, mean(full, r)?);
+        Some((s.share, s.standard_error))
+    };
+    Some(Measured {
+        file: full_light::FILE,
+        surface: share(Region::Surface, Estimate::Area)?,
+        diffuse: share(Region::Diffuse, Estimate::Ptracer),
+    })
+}
+
+#[cfg(not(feature = "harness"))]
+fn measured_share(_: &Path) -> Option<Measured> {
+    None
+}

@@ -1,0 +1,101 @@
+//! `optics inspect` names the light the chosen integrator misses: each
+//! chain delta light → mirrors or glass → rough surface, in both languages,
+//! and the share of the light Mitsuba's path tracer misses where the
+//! checkout's reference (`mitsuba_full_light.json`) measured the scene.
+
+use std::process::{Command, Output};
+
+use serde_json::Value;
+
+fn optics(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_optics"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .expect("the optics binary runs")
+}
+
+fn scene(name: &str) -> String {
+    format!(
+        "{}/../tracer/scenes/{name}.json",
+        env!("CARGO_MANIFEST_DIR")
+    )
+}
+
+fn inspect(name: &str, extra: &[&str]) -> Output {
+    let path = scene(name);
+    let mut args = vec!["inspect", &path, "--width", "16", "--height", "12"];
+    args.extend_from_slice(extra);
+    optics(&args)
+}
+
+#[test]
+fn inspect_names_the_chain_from_the_light_through_the_mirror_to_the_rough_surface() {
+    let out = inspect("kaleidoscope_lit", &[]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let report = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        report.contains("light the whitted integrator does not compute: point light 0 → conductor 'gold' → course_rough 'green'"),
+        "{report}"
+    );
+    #[cfg(feature = "harness")]
+    assert!(
+        report.contains("measured by Mitsuba (mitsuba_full_light.json")
+            && report.contains("this integrator misses at least as much"),
+        "{report}"
+    );
+    let out = inspect("kaleidoscope_lit", &["--lang", "hu"]);
+    let report = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        report.contains("0 pontfény → vezető 'gold' → érdes (a kurzusé) 'green'"),
+        "{report}"
+    );
+}
+
+#[test]
+fn inspect_names_no_chain_where_there_is_no_mirror_or_glass() {
+    let out = inspect("shadow", &[]);
+    assert!(out.status.success());
+    let report = String::from_utf8_lossy(&out.stdout);
+    assert!(!report.contains("does not compute"), "{report}");
+}
+
+#[test]
+fn the_json_record_carries_the_chains_and_the_measured_share() {
+    let path = scene("glass_spheres");
+    let out = optics(&[
+        "--json",
+        "inspect",
+        &path,
+        "--width",
+        "16",
+        "--height",
+        "12",
+        "--integrator",
+        "path",
+        "--spp",
+        "1",
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let record: Value = serde_json::from_slice(&out.stdout).unwrap();
+    let missing = &record["details"]["missing_light"];
+    let chains = missing["chains"].as_array().unwrap();
+    assert_eq!(chains.len(), 6, "{chains:?}");
+    assert!(chains
+        .iter()
+        .any(|c| c["via"] == serde_json::json!(["glass"]) && c["to"] == "floor"));
+    #[cfg(feature = "harness")]
+    {
+        let share = missing["measured"]["surface"]["share"].as_f64().unwrap();
+        // The caustics under the glass balls: a few percent of the light.
+        assert!(share > 0.01 && share < 0.5, "{share}");
+    }
+}

@@ -1,0 +1,430 @@
+//! The checks of all the light: Mitsuba's two full-light estimates against
+//! each other, the missing share per scene, and a tracer render against the
+//! estimate it claims to match.
+
+use super::reference::{decode, DecodedLight, FullLight};
+use super::statistics::{share, RegionMean};
+use super::{Estimate, Region, ALPHA, FINDING_RELATIVE, POWER, TOLERANCE_RELATIVE};
+use crate::check::Check;
+use crate::reference::ReferenceError;
+use crate::renders::{path_statistics, sample_statistics, tracer_render, Renderer};
+use crate::suite::Context;
+use tracer::scene::IntegratorKind;
+
+/// A tracer render as the checks read it: per-pixel mean and unbiased
+/// variance of one sample (`3 · width · height` each, RGB) over `samples`
+/// independent samples per pixel.
+#[derive(Clone, Copy, Debug)]
+pub struct TracerRender<'a> {
+    /// Per-pixel mean.
+    pub mean: &'a [f64],
+    /// Per-pixel variance of one sample.
+    pub variance: &'a [f64],
+    /// Samples per pixel.
+    pub samples: u32,
+}
+
+const CHANNEL: [&str; 3] = ["R", "G", "B"];
+
+/// Whether an object of the scene is a mirror, a conductor or glass.
+fn has_delta_surface(scene: &tracer::scene::Scene) -> bool {
+    scene
+        .objects
+        .iter()
+        .any(|o| scene.materials[o.material() as usize].is_specular())
+}
+
+/// A region's mean over the channels' sum, from an estimate's passes.
+fn summed(decoded: &DecodedLight, estimate: Estimate, region: Region) -> Option<RegionMean> {
+    let passes = decoded.passes.get(&(estimate, region))?;
+    Some(RegionMean::from_passes(
+        passes.iter().map(|p| p.iter().sum()),
+    ))
+}
+
+fn per_channel(
+    decoded: &DecodedLight,
+    estimate: Estimate,
+    region: Region,
+    c: usize,
+) -> Option<RegionMean> {
+    let passes = decoded.passes.get(&(estimate, region))?;
+    Some(RegionMean::from_passes(passes.iter().map(|p| p[c])))
+}
+
+/// The light tracer against the area lights on the `diffuse` region: two
+/// independent estimates of all the light, which must agree within their
+/// noise (Welch's t on the channels' sum, p ≥ α). `None` where the camera
+/// sees no diffuse surface directly.
+pub fn check_independent(name: &str, decoded: &DecodedLight) -> Option<Check> {
+    let ptracer = summed(decoded, Estimate::Ptracer, Region::Diffuse)?;
+    let area = summed(decoded, Estimate::Area, Region::Diffuse)?;
+    let mut check = Check::new(
+        &format!("full_light.mitsuba.{name}.independent"),
+        &format!("{name}: Mitsuba's light tracer against its path tracer with area lights, where the camera sees a diffuse surface"),
+        "Mitsuba 3 ptracer and path (scalar_rgb), mitsuba_full_light.json",
+        &format!("Welch's t on the region's mean per pass (R + G + B): fails when p < α = {ALPHA}"),
+    );
+    check.cases = 1;
+    let detectable = ptracer.detectable_difference(area, ALPHA, POWER) / area.0.mean;
+    check.measure(
+        &format!("smallest detectable difference (power {POWER}), share of all the light"),
+        detectable,
+        "",
+    );
+    check.measure("ptracer / area", ptracer.0.mean / area.0.mean, "");
+    if let Some(w) = ptracer.welch(area) {
+        check.measure("|t|", w.t.abs(), "");
+        if w.p < ALPHA {
+            check.fail(format!(
+                "ptracer {:.6} ± {:.6}, area {:.6} ± {:.6}: t = {:.2}, p = {:.2e} < {ALPHA}",
+                ptracer.0.mean,
+                ptracer.standard_error(),
+                area.0.mean,
+                area.standard_error(),
+                w.t,
+                w.p
+            ));
+        }
+    }
+    Some(check)
+}
+
+/// The share of the light Mitsuba's `path` misses, per region and full-light
+/// estimate. A scene without delta surfaces misses nothing: there every
+/// share must be zero within its noise (Welch's t, p ≥ α / tests).
+pub fn check_missing_share(name: &str, decoded: &DecodedLight) -> Check {
+    let control = !has_delta_surface(&decoded.scene);
+    let mut check = Check::new(
+        &format!("full_light.mitsuba.{name}.missing_share"),
+        &format!(
+            "{name}: the share of the light Mitsuba's path integrator misses, 1 − path / full"
+        ),
+        "Mitsuba 3 ptracer and path with area lights (scalar_rgb), mitsuba_full_light.json",
+        &format!(
+            "measured; {}",
+            if control {
+                format!("no delta surface, so zero: fails when path differs from a full estimate at p < α = {ALPHA} over the tests")
+            } else {
+                "delta surfaces: any share, reported".to_owned()
+            }
+        ),
+    );
+    let pairs: Vec<(Region, Estimate)> = Region::ALL
+        .iter()
+        .flat_map(|&r| r.full_light().iter().map(move |&e| (r, e)))
+        .filter(|&(r, e)| decoded.passes.contains_key(&(e, r)))
+        .collect();
+    for &(region, estimate) in &pairs {
+        let (Some(path), Some(full)) = (
+            summed(decoded, Estimate::Path, region),
+            summed(decoded, estimate, region),
+        ) else {
+            continue;
+        };
+        check.cases += 1;
+        let s = share(path, full);
+        let at = format!("{} against {}", region.name(), estimate.name());
+        check.measure(&format!("missing share, {at}"), s.share, "");
+        check.measure(&format!("its standard error, {at}"), s.standard_error, "");
+        let Some(w) = path.welch(full) else { continue };
+        if control && w.p < ALPHA / pairs.len() as f64 {
+            check.fail(format!(
+                "{at}: a scene without delta surfaces misses {:.4} ± {:.4} of the light (t = {:.2}, p = {:.2e})",
+                s.share, s.standard_error, w.t, w.p
+            ));
+        }
+    }
+    check
+}
+
+/// A tracer render of an integrator that claims all the light (`integrator`
+/// names it), against Mitsuba's full-light estimates: per region and
+/// channel, Welch's t, failing where p < α / tests and the means differ by
+/// more than [`TOLERANCE_RELATIVE`] and what Mitsuba's box filter moves
+/// that region's mean. The tracer's `path` fails it
+/// wherever a delta light reaches a diffuse surface through a delta surface.
+pub fn check_all_the_light(
+    name: &str,
+    integrator: &str,
+    decoded: &DecodedLight,
+    ours: TracerRender,
+) -> Check {
+    check_all_the_light_in(name, integrator, decoded, ours, &Region::ALL)
+}
+
+/// [`check_all_the_light`] over `regions` only.
+pub fn check_all_the_light_in(
+    name: &str,
+    integrator: &str,
+    decoded: &DecodedLight,
+    ours: TracerRender,
+    regions: &[Region],
+) -> Check {
+    let mut check = Check::new(
+        &format!("full_light.tracer.{name}.{integrator}.all_the_light"),
+        &format!("{name}: the tracer's {integrator} against all the light (Mitsuba's light tracer and area lights)"),
+        "Mitsuba 3 ptracer and path with area lights (scalar_rgb), mitsuba_full_light.json",
+        &tolerance_text(),
+    );
+    let pairs: Vec<(Region, Estimate)> = regions
+        .iter()
+        .flat_map(|&r| r.full_light().iter().map(move |&e| (r, e)))
+        .collect();
+    for &(region, estimate) in &pairs {
+        compare(
+            &mut check,
+            decoded,
+            (estimate, region),
+            ours,
+            3 * pairs.len(),
+        );
+    }
+    check
+}
+
+/// A tracer render of an integrator that, like Mitsuba's `path`, misses the
+/// light of delta lights through delta surfaces, against Mitsuba's `path`
+/// on the same scene, through the same pixel centres: both must miss the
+/// same share.
+pub fn check_same_missing_light(
+    name: &str,
+    integrator: &str,
+    decoded: &DecodedLight,
+    ours: TracerRender,
+) -> Check {
+    let mut check = Check::new(
+        &format!("full_light.tracer.{name}.{integrator}.missing_share"),
+        &format!("{name}: the tracer's {integrator} misses what Mitsuba's path misses"),
+        "Mitsuba 3 path (scalar_rgb), mitsuba_full_light.json",
+        &tolerance_text(),
+    );
+    for region in Region::ALL {
+        let tests = 3 * Region::ALL.len();
+        compare(
+            &mut check,
+            decoded,
+            (Estimate::PathCentres, region),
+            ours,
+            tests,
+        );
+    }
+    if let (Some(path), Some(area)) = (
+        summed(decoded, Estimate::Path, Region::Surface),
+        summed(decoded, Estimate::Area, Region::Surface),
+    ) {
+        check.measure(
+            "Mitsuba path's missing share, surface",
+            share(path, area).share,
+            "",
+        );
+    }
+    check
+}
+
+fn tolerance_text() -> String {
+    format!(
+        "per region and channel, Welch's t of the region's mean: fails when p < α / tests (α = {ALPHA}) and \
+         the means differ by more than {TOLERANCE_RELATIVE} of Mitsuba's (float32), plus, against a \
+         box-filtered estimate, what the filter moves the region's mean (|path − path_centres|); a \
+         significant difference within {FINDING_RELATIVE} more is a finding"
+    )
+}
+
+/// The largest relative shift of a region's mean by Mitsuba's box filter,
+/// over the regions and channels (see [`TOLERANCE_RELATIVE`]).
+pub fn box_filter_shift(decoded: &DecodedLight) -> f64 {
+    Region::ALL
+        .iter()
+        .flat_map(|&r| (0..3).map(move |c| (r, c)))
+        .map(|(r, c)| filter_shift(decoded, Estimate::Path, r, c))
+        .fold(0.0, f64::max)
+}
+
+/// What Mitsuba's box filter moves a region's mean in one channel,
+/// relative: `|path − path_centres| / path`; zero for the centres themselves.
+fn filter_shift(decoded: &DecodedLight, estimate: Estimate, region: Region, c: usize) -> f64 {
+    // The estimate compared through the pixel centres has no shift to allow.
+    if estimate == Estimate::PathCentres {
+        return 0.0;
+    }
+    match (
+        per_channel(decoded, Estimate::Path, region, c),
+        per_channel(decoded, Estimate::PathCentres, region, c),
+    ) {
+        (Some(b), Some(p)) => (b.0.mean - p.0.mean).abs() / b.0.mean.abs(),
+        _ => 0.0,
+    }
+}
+
+fn compare(
+    check: &mut Check,
+    decoded: &DecodedLight,
+    (estimate, region): (Estimate, Region),
+    ours: TracerRender,
+    tests: usize,
+) {
+    let threshold = ALPHA / tests as f64;
+    for (c, channel) in CHANNEL.iter().enumerate() {
+        let Some(reference) = per_channel(decoded, estimate, region, c) else {
+            continue;
+        };
+        let mine = RegionMean::from_pixels(
+            ours.mean,
+            ours.variance,
+            &decoded.masks[&region],
+            c,
+            ours.samples,
+        );
+        check.cases += 1;
+        let at = format!("{} {channel} against {}", region.name(), estimate.name());
+        let relative = (mine.0.mean - reference.0.mean).abs() / reference.0.mean.abs();
+        let allowance = TOLERANCE_RELATIVE + filter_shift(decoded, estimate, region, c);
+        check.measure("|ours − Mitsuba| / Mitsuba", relative, &at);
+        check.measure("allowed |ours − Mitsuba| / Mitsuba", allowance, &at);
+        check.measure(
+            &format!("smallest detectable relative difference (power {POWER})"),
+            mine.detectable_difference(reference, threshold, POWER) / reference.0.mean.abs(),
+            &at,
+        );
+        let Some(w) = mine.welch(reference) else {
+            continue;
+        };
+        check.measure("|t|", w.t.abs(), &at);
+        if w.p < threshold && relative > allowance {
+            let message = format!(
+                "{at}: ours {:.6} ± {:.6}, Mitsuba {:.6} ± {:.6} (t = {:.2}, p = {:.2e} < {threshold:.2e}): \
+                 ours is {:.4} of it",
+                mine.0.mean,
+                mine.standard_error(),
+                reference.0.mean,
+                reference.standard_error(),
+                w.t,
+                w.p,
+                mine.0.mean / reference.0.mean
+            );
+            if relative <= allowance + FINDING_RELATIVE {
+                check.find(format!(
+                    "{message}, within {FINDING_RELATIVE} beyond the allowance"
+                ));
+            } else {
+                check.fail(message);
+            }
+        }
+    }
+}
+
+/// The checks of all the light, by a renderer under test.
+pub struct FullLightChecks {
+    /// The renderer.
+    pub render: Renderer,
+}
+
+impl FullLightChecks {
+    /// The tracer.
+    pub fn tracer() -> Self {
+        Self {
+            render: tracer_render,
+        }
+    }
+
+    /// Samples per pixel of the tracer's path renders: 64 with `--quick`,
+    /// 256 otherwise.
+    pub fn samples(quick: bool) -> u32 {
+        if quick {
+            64
+        } else {
+            256
+        }
+    }
+
+    /// Every scene of `reference` (read from `context`'s reference directory).
+    pub fn run_all(
+        &self,
+        reference: &FullLight,
+        context: &Context,
+        checks: &mut Vec<Check>,
+    ) -> Result<(), ReferenceError> {
+        let file = context.reference_dir.join(super::FILE);
+        for (index, s) in reference.scenes.iter().enumerate() {
+            let decoded = decode(&file, index, s)?;
+            checks.extend(check_independent(&s.name, &decoded));
+            checks.push(check_missing_share(&s.name, &decoded));
+            let samples = Self::samples(context.quick);
+            let max_depth = decoded.scene.settings.max_depth;
+            checks.push(
+                match path_statistics(self.render, &decoded.scene, max_depth, samples) {
+                    Ok((mean, variance)) => check_same_missing_light(
+                        &s.name,
+                        &IntegratorKind::Path.to_string(),
+                        &decoded,
+                        TracerRender {
+                            mean: &mean,
+                            variance: &variance,
+                            samples,
+                        },
+                    ),
+                    Err(e) => render_failed(&s.name, "path.missing_share", &e),
+                },
+            );
+            let diffuse = Estimate::ALL
+                .iter()
+                .any(|&e| decoded.passes.contains_key(&(e, Region::Diffuse)));
+            if has_delta_surface(&decoded.scene) && diffuse {
+                checks.push(self.all_the_light(&s.name, &decoded, samples));
+            }
+        }
+        Ok(())
+    }
+
+    /// The tracer's `photon` integrator, which claims all the light that
+    /// reaches diffuse surfaces, against Mitsuba's two full-light estimates
+    /// on the pixels that see one: `samples` renders of one sample per pixel
+    /// through the pixel centres, each with [`PHOTONS_PER_PASS`] photons in
+    /// each of [`PHOTON_PASSES`] passes. The pixels that see a mirror or
+    /// glass are not compared: they hold the delta lights' own images
+    /// (light → mirrors or glass → camera), a point of unbounded radiance
+    /// that no integrator of a delta light draws and the stand-in area
+    /// lights spread over a disk.
+    fn all_the_light(&self, name: &str, decoded: &DecodedLight, samples: u32) -> Check {
+        let mut settings = decoded.scene.settings;
+        settings.integrator = IntegratorKind::Photon;
+        settings.photon.photons = PHOTONS_PER_PASS;
+        settings.photon.passes = PHOTON_PASSES;
+        let integrator = IntegratorKind::Photon.to_string();
+        match sample_statistics(self.render, &decoded.scene, settings, 0..u64::from(samples)) {
+            Ok((mean, variance)) => check_all_the_light_in(
+                name,
+                &integrator,
+                decoded,
+                TracerRender {
+                    mean: &mean,
+                    variance: &variance,
+                    samples,
+                },
+                &[Region::Diffuse],
+            ),
+            Err(e) => render_failed(name, "photon.all_the_light", &e),
+        }
+    }
+}
+
+/// Photons per pass of each `photon` render of the check: each of the
+/// check's renders builds its own maps, so fewer than a picture's.
+const PHOTONS_PER_PASS: u32 = 20_000;
+
+/// Photon passes of each `photon` render of the check.
+const PHOTON_PASSES: u32 = 4;
+
+/// A check that failed because its render did.
+fn render_failed(name: &str, what: &str, error: &str) -> Check {
+    let mut check = Check::new(
+        &format!("full_light.tracer.{name}.{what}"),
+        &format!("{name}: the tracer's render"),
+        "mitsuba_full_light.json",
+        "the render succeeds",
+    );
+    check.cases = 1;
+    check.fail(format!("the render failed: {error}"));
+    check
+}
