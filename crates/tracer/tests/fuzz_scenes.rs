@@ -165,6 +165,7 @@ fn edit() -> impl Strategy<Value = Edit> {
     let field = prop_oneof![
         Just("type".to_owned()),
         Just("fixed".to_owned()),
+        Just("scaled".to_owned()),
         Just("zoom".to_owned()),
         Just("pixel_filter".to_owned()),
         "[a-z_]{1,10}"

@@ -126,6 +126,7 @@ fn shapes_beyond_the_schema_are_refused_by_path() {
         json!({ "integrator": "whitted", "pixel_filter": "box" }),
         json!({ "pixel_filter": "center" }),
         json!({ "ray_offset": { "fixed": 0.001 } }),
+        json!({ "ray_offset": { "scaled": 8.94e-5 } }),
     ] {
         scene::parse(&set("render", render)).expect("documented shape");
     }

@@ -5,11 +5,12 @@
 use std::path::Path;
 
 use tracer::render::Image;
-use tracer::scene::IntegratorKind;
+use tracer::scene::{IntegratorKind, RayOffset};
 
 use super::figure::RenderFigure;
 use super::{
-    compare_path, compare_whitted, decode, path_statistics, tracer_render, Compared,
+    compare_path, compare_whitted, decode, path_statistics, path_statistics_with, tracer_render,
+    Compared, MITSUBA_RAY_EPSILON,
     MitsubaRenders, Renderer, SceneRenders,
 };
 use crate::check::Check;
@@ -67,10 +68,24 @@ impl RenderChecks {
                 let Some(images) = &decoded.path else {
                     return None;
                 };
+                let under_mitsuba_offsets = || {
+                    path_statistics_with(
+                        self.render,
+                        &images.scene,
+                        p.max_depth,
+                        samples,
+                        Some(RayOffset::Scaled(MITSUBA_RAY_EPSILON)),
+                    )
+                };
                 match path_statistics(self.render, &images.scene, p.max_depth, samples) {
-                    Ok((mean, variance)) => {
-                        compare_path(&s.name, &decoded, p.samples, (&mean, &variance), samples)
-                    }
+                    Ok((mean, variance)) => compare_path(
+                        &s.name,
+                        &decoded,
+                        p.samples,
+                        (&mean, &variance),
+                        samples,
+                        &under_mitsuba_offsets,
+                    ),
                     Err(e) => Some(failed_render(&s.name, "path", e)),
                 }
             });

@@ -3,7 +3,7 @@
 
 use tracer::job::RenderJob;
 use tracer::render::Image;
-use tracer::scene::{IntegratorKind, PixelFilter, RenderSpec, Scene, Settings};
+use tracer::scene::{IntegratorKind, PixelFilter, RayOffset, RenderSpec, Scene, Settings};
 
 use super::flatten;
 
@@ -30,11 +30,24 @@ pub fn path_statistics(
     max_depth: u32,
     samples: u32,
 ) -> Result<(Vec<f64>, Vec<f64>), String> {
+    path_statistics_with(render, scene, max_depth, samples, None)
+}
+
+/// [`path_statistics`] with secondary rays started by `ray_offset` instead
+/// of the scene's rule, where one is given.
+pub fn path_statistics_with(
+    render: Renderer,
+    scene: &Scene,
+    max_depth: u32,
+    samples: u32,
+    ray_offset: Option<RayOffset>,
+) -> Result<(Vec<f64>, Vec<f64>), String> {
     let spec = RenderSpec {
         integrator: Some(IntegratorKind::Path),
         pixel_filter: Some(PixelFilter::Box),
         max_depth: Some(max_depth.into()),
         spp: Some(1.0),
+        ray_offset,
         ..RenderSpec::default()
     };
     let settings = scene

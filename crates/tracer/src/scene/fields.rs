@@ -79,6 +79,7 @@ pub const FIELDS: &[&str] = &[
     "render.seed",
     "render.ray_offset",
     "render.ray_offset.fixed",
+    "render.ray_offset.scaled",
     "render.pixel_filter",
     "render.photons",
     "render.photon_passes",

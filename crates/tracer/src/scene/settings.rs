@@ -154,6 +154,10 @@ pub enum RayOffset {
     Robust,
     /// Along the normal by a fixed distance in metres (the course: 0.001).
     Fixed(f64),
+    /// Along the normal by `ε (1 + max |p_i|)` m, a relative epsilon that
+    /// grows with the hit point's coordinates: Mitsuba 3's rule, with its
+    /// `RayEpsilon` ε = 1500 · 2⁻²⁴ ≈ 8.94e-5 in `float32`.
+    Scaled(f64),
 }
 
 /// Render settings as given, all optional: a scene file's `render`, or a
@@ -289,8 +293,14 @@ impl Settings {
             settled.seed = seed;
         }
         if let Some(offset) = spec.ray_offset {
-            if let RayOffset::Fixed(eps) = offset {
-                positive(&field("ray_offset.fixed"), eps)?;
+            match offset {
+                RayOffset::Robust => {}
+                RayOffset::Fixed(eps) => {
+                    positive(&field("ray_offset.fixed"), eps)?;
+                }
+                RayOffset::Scaled(eps) => {
+                    positive(&field("ray_offset.scaled"), eps)?;
+                }
             }
             settled.ray_offset = offset;
         }

@@ -31,8 +31,11 @@ pub(super) fn check(scene: &Value) -> Result<(), SceneError> {
         }
     }
     match render.get("ray_offset") {
-        // `{"fixed": metres}` is the one choice that carries a value.
-        Some(Value::Object(map)) if map.contains_key("fixed") => Ok(()),
+        // `{"fixed": metres}` and `{"scaled": ε}` are the choices that carry
+        // a value.
+        Some(Value::Object(map)) if map.contains_key("fixed") || map.contains_key("scaled") => {
+            Ok(())
+        }
         Some(value) => expect("render.ray_offset", value, JsonType::String),
         None => Ok(()),
     }
