@@ -22,8 +22,14 @@ fn run(render: Renderer) -> Vec<Check> {
     run_scenes(render, |_| true)
 }
 
-/// The checks of the scenes `wanted` names.
+/// The checks of the scenes `wanted` names, at the quick run's samples.
 fn run_scenes(render: Renderer, wanted: impl Fn(&str) -> bool) -> Vec<Check> {
+    run_scenes_with(render, wanted, true)
+}
+
+/// The checks of the scenes `wanted` names, at the quick run's samples or
+/// the full run's.
+fn run_scenes_with(render: Renderer, wanted: impl Fn(&str) -> bool, quick: bool) -> Vec<Check> {
     let mut reference = MitsubaRenders::load(&committed_dir()).expect("committed reference");
     reference.scenes.retain(|s| wanted(&s.name));
     let mut checks = Vec::new();
@@ -31,7 +37,7 @@ fn run_scenes(render: Renderer, wanted: impl Fn(&str) -> bool) -> Vec<Check> {
     let context = Context {
         reference_dir: committed_dir(),
         checkout: Checkout::at_build_time().root().to_owned(),
-        quick: true,
+        quick,
     };
     RenderChecks { render }
         .run_all(&reference, &context, &mut checks, &mut figures)
@@ -65,7 +71,7 @@ fn tracer_renders_agree_with_mitsuba() {
 /// and the path comparison's t-tests, in W/(sr m²) where a unit applies.
 fn scene_table(checks: &[Check]) -> String {
     let mut table = String::from(
-        "| scene | Whitted pixels compared | edge pixels masked | masked fraction | Whitted worst \\|Δ\\| | of the tolerance | Whitted mean \\|Δ\\| | path pixels compared | compared fraction | path worst \\|Δ mean\\| | path t-tests m | −log10 smallest p | threshold −log10 (α/m) | rejected | of them within Mitsuba's offsets (findings) | least relative shift detected | median per pixel-channel |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
+        "| scene | Whitted pixels compared | edge pixels masked | masked fraction | Whitted worst \\|Δ\\| | of the tolerance | Whitted mean \\|Δ\\| | path pixels compared | compared fraction | path worst \\|Δ mean\\| | path t-tests m | −log10 smallest p | threshold −log10 (α/m) | rejected | of them within Mitsuba's offsets (findings) | of them agreeing under Mitsuba's offset rule (findings) | least relative shift detected | median per pixel-channel |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
     );
     let value =
         |check: &Check, name: &str| tables::number(check.worst(name).map_or(f64::NAN, |m| m.worst));
@@ -85,9 +91,9 @@ fn scene_table(checks: &[Check]) -> String {
         );
         let path_id = format!("renders.mitsuba.{scene}.path");
         table += &match checks.iter().find(|c| c.id == path_id) {
-            None => " not compared | | | | | | | | | |\n".to_owned(),
+            None => " not compared | | | | | | | | | | |\n".to_owned(),
             Some(path) => format!(
-                " {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n",
+                " {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n",
                 path.cases,
                 value(path, "compared pixel fraction"),
                 value(path, "|mean ours − mean Mitsuba|, W/(sr m²)"),
@@ -98,6 +104,10 @@ fn scene_table(checks: &[Check]) -> String {
                 value(
                     path,
                     "rejected within Mitsuba's ray-offset sensitivity (findings)"
+                ),
+                value(
+                    path,
+                    "rejected, agreeing under Mitsuba's offset rule (findings)"
                 ),
                 value(
                     path,
@@ -309,18 +319,36 @@ fn radiance_carried_across_glass_without_eta_squared_is_caught_by_the_camera_ins
         ]
     );
     let check = |id: &str| checks.iter().find(|c| c.id == id).unwrap();
-    // The lit pixel-channels: those where the path samples vary.
-    let lit = check("renders.mitsuba.inside_water.path")
+    // The lit pixel-channels: of the path, those where the samples vary; of
+    // Whitted, the unmasked ones whose missing factor clears the tolerance.
+    let path_lit = check("renders.mitsuba.inside_water.path")
         .worst("pixel-channel t-tests m")
         .unwrap()
         .worst as usize;
-    for id in [
-        "renders.mitsuba.inside_water.whitted",
-        "renders.mitsuba.inside_water.path",
-    ] {
-        let failed = failed_cases(check(id));
-        assert!(failed * 100 >= lit * 99, "{id}: {failed} of {lit} fail");
-    }
+    let whitted_lit = {
+        let reference = MitsubaRenders::load(&committed_dir()).unwrap();
+        let index = reference
+            .scenes
+            .iter()
+            .position(|s| s.name == "inside_water")
+            .unwrap();
+        let file = committed_dir().join(renders::FILE);
+        let decoded = renders::decode(&file, index, &reference.scenes[index]).unwrap();
+        (0..decoded.whitted.len())
+            .filter(|&i| !decoded.edges[i / 3] && decoded.whitted[i] > 1e-4)
+            .count()
+    };
+    // Whitted is exact: every lit pixel fails. The path pixels fail where
+    // the test can see a shift of 1 − 1/1.33² = 44 %: at the quick run's 8
+    // samples the median pixel-channel needs 78 % (its stated power), so a
+    // third of them (measured: 35 %).
+    let whitted = failed_cases(check("renders.mitsuba.inside_water.whitted"));
+    assert!(
+        whitted * 100 >= whitted_lit * 99,
+        "Whitted: {whitted} of {whitted_lit} fail"
+    );
+    let path = failed_cases(check("renders.mitsuba.inside_water.path"));
+    assert!(path * 4 >= path_lit, "path: {path} of {path_lit} fail");
     let balls = check("renders.mitsuba.glass_spheres.whitted");
     let failed = failed_cases(balls);
     assert!(
@@ -344,10 +372,19 @@ fn path_rays_through_the_pixel_centres_are_caught_in_every_scene() {
     let checks = run(centre_rays);
     // Every path-compared scene has silhouettes, where the share of the
     // pixel covered is not the centre's 0 or 1; the Whitted checks are
-    // unchanged (pixel centres already).
+    // unchanged (pixel centres already). At the quick run's 16 samples the
+    // glass balls' heavy-tailed noise hides it (smallest p 1e-5 against a
+    // threshold of 4e-8); at the full run's, below.
     for c in &checks {
-        assert_eq!(c.passed(), c.id.ends_with(".whitted"), "{}", c.id);
+        let caught = !c.id.ends_with(".whitted") && c.id != "renders.mitsuba.glass_spheres.path";
+        assert_eq!(c.passed(), !caught, "{}", c.id);
     }
+}
+
+#[test]
+fn path_rays_through_the_pixel_centres_are_caught_behind_glass_at_the_full_runs_samples() {
+    let checks = run_scenes_with(centre_rays, |name| name == "glass_spheres", false);
+    assert_eq!(failed(&checks), ["renders.mitsuba.glass_spheres.path"]);
 }
 
 /// The factor [`brightened`] multiplies the path renders by.

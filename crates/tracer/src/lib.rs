@@ -60,8 +60,8 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 pub mod camera;
-pub mod filter;
 pub mod chains;
+pub mod filter;
 pub mod geometry;
 pub mod integrator;
 pub mod interrupt;

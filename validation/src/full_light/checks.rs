@@ -328,11 +328,11 @@ impl FullLightChecks {
         }
     }
 
-    /// Samples per pixel of the tracer's path renders: 64 with `--quick`,
+    /// Samples per pixel of the tracer's path renders: 16 with `--quick`,
     /// 256 otherwise.
     pub fn samples(quick: bool) -> u32 {
         if quick {
-            64
+            8
         } else {
             256
         }

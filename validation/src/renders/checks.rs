@@ -10,8 +10,7 @@ use tracer::scene::{IntegratorKind, RayOffset};
 use super::figure::RenderFigure;
 use super::{
     compare_path, compare_whitted, decode, path_statistics, path_statistics_with, tracer_render,
-    Compared, MITSUBA_RAY_EPSILON,
-    MitsubaRenders, Renderer, SceneRenders,
+    Compared, MitsubaRenders, Renderer, SceneRenders, MITSUBA_RAY_EPSILON,
 };
 use crate::check::Check;
 use crate::reference::ReferenceError;
@@ -36,7 +35,7 @@ impl RenderChecks {
     /// lit kaleidoscope's mirror chains), 128 otherwise.
     pub fn samples(quick: bool) -> u32 {
         if quick {
-            16
+            8
         } else {
             128
         }

@@ -41,7 +41,9 @@ pub use path::compare_path;
 pub use reference::{
     decode, Decoded, MitsubaRenders, PathImages, PathRender, SceneRenders, Tool, WhittedRender,
 };
-pub use runner::{path_statistics, path_statistics_with, sample_statistics, tracer_render, Renderer};
+pub use runner::{
+    path_statistics, path_statistics_with, sample_statistics, tracer_render, Renderer,
+};
 pub use whitted::compare_whitted;
 
 use tracer::render::Image;
