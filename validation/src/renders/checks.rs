@@ -5,7 +5,7 @@
 use std::path::Path;
 
 use tracer::render::Image;
-use tracer::scene::{IntegratorKind, RayOffset};
+use tracer::scene::{IntegratorKind, PixelFilter, RayOffset};
 
 use super::figure::RenderFigure;
 use super::{
@@ -73,6 +73,7 @@ impl RenderChecks {
                         &images.scene,
                         p.max_depth,
                         samples,
+                        PixelFilter::Box,
                         Some(RayOffset::Scaled(MITSUBA_RAY_EPSILON)),
                     )
                 };

@@ -30,21 +30,22 @@ pub fn path_statistics(
     max_depth: u32,
     samples: u32,
 ) -> Result<(Vec<f64>, Vec<f64>), String> {
-    path_statistics_with(render, scene, max_depth, samples, None)
+    path_statistics_with(render, scene, max_depth, samples, PixelFilter::Box, None)
 }
 
-/// [`path_statistics`] with secondary rays started by `ray_offset` instead
-/// of the scene's rule, where one is given.
+/// [`path_statistics`] through `pixel_filter`, with secondary rays started
+/// by `ray_offset` instead of the scene's rule where one is given.
 pub fn path_statistics_with(
     render: Renderer,
     scene: &Scene,
     max_depth: u32,
     samples: u32,
+    pixel_filter: PixelFilter,
     ray_offset: Option<RayOffset>,
 ) -> Result<(Vec<f64>, Vec<f64>), String> {
     let spec = RenderSpec {
         integrator: Some(IntegratorKind::Path),
-        pixel_filter: Some(PixelFilter::Box),
+        pixel_filter: Some(pixel_filter),
         max_depth: Some(max_depth.into()),
         spp: Some(1.0),
         ray_offset,
