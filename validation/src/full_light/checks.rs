@@ -332,7 +332,7 @@ impl FullLightChecks {
     /// 256 otherwise.
     pub fn samples(quick: bool) -> u32 {
         if quick {
-            8
+            16
         } else {
             256
         }
