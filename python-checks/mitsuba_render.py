@@ -6,9 +6,15 @@ Regenerate (from the repository root; the output is byte-for-byte stable):
     .venv/bin/python python-checks/mitsuba_render.py
 
 writes ``validation/reference/mitsuba_renders.json`` (schema
-``mitsuba-renders/1``, described in ``validation/README.md``). It takes about
-two minutes on a 2-core machine (Mitsuba's ``scalar_rgb`` variant, one ray at a
-time from Python).
+``mitsuba-renders/2``, described in ``validation/README.md``). It takes about
+two and a half minutes on a 2-core machine (Mitsuba's ``scalar_rgb`` variant:
+the Whitted renders one ray at a time from Python, the path renders through
+``mi.render``, two scenes at a time).
+
+The scenes are the tracer's list, ``tracer::scene::COURSE_SCENES``: a scene
+added there gets its references here, compared by both integrators unless
+a material of it is not a radiance (``NOT_A_RADIANCE``) or it is listed in
+``PATH_SKIPPED``.
 
 One scene, one place: each Mitsuba scene is built here from the suite's own
 scene file in ``crates/tracer/scenes/``, whose text the reference embeds, so the
@@ -27,9 +33,10 @@ comparison itself, and by ``test_mitsuba_render.py``):
 - ``look_at``: the OpenGL view of ``002`` is right-handed, Mitsuba's too; the
   same ``eye``, ``target``, ``up``, ``fov_y_deg`` (``fov_axis = "y"``) and
   ``near``/``far`` clip planes, no mirror.
-- Rays pass through pixel centres: rays come from the sensor's own
-  ``sample_ray`` at position ``((x + 0.5) / w, (y + 0.5) / h)``; Mitsuba's film
-  would jitter them over the pixel, which the suite's tracer does not.
+- The Whitted rays pass through pixel centres, as the suite's Whitted
+  integrator's (``pixel_filter: "center"``): they come from the sensor's own
+  ``sample_ray`` at position ``((x + 0.5) / w, (y + 0.5) / h)``. The path
+  renders are Mitsuba's film's, box filtered (below).
 - ``directional`` light: ``towards`` is the direction to the light, Mitsuba's
   ``direction`` the one the light travels, so its negative; the suite's
   ``irradiance`` (W/m^2 on a surface facing the light) is Mitsuba's
@@ -76,9 +83,15 @@ explains), ``mi.fresnel_conductor``, ``mi.fresnel``,
 irradiance of the two lights are the textbook definitions, written here
 from ``003`` independently of the radiometry crate.
 
-Monte Carlo: Mitsuba's ``path`` integrator (``integrator.sample``) at the
-pixel centres, ``PATH_SAMPLES`` independent samples per pixel, the per-pixel
-mean and the unbiased sample variance of one sample. Mitsuba's ``max_depth``
+Monte Carlo: Mitsuba's ``path`` integrator through Mitsuba's own renderer,
+``mi.render`` on the scene at ``PATH_WIDTH`` x ``PATH_HEIGHT``, its film's
+reconstruction filter the ``box`` (radius half a pixel: each sample is
+jittered over its pixel and counts in that pixel only, the suite's
+``pixel_filter: "box"``), ``PATH_SAMPLES`` independent passes of one sample
+per pixel with seeds 0, 1, ..., the per-pixel mean and the unbiased sample
+variance of one sample (Welford's, in float64). Each scene renders in its own
+process on one Mitsuba thread; the image does not depend on the thread count
+(each image block draws from a stream of its own). Mitsuba's ``max_depth``
 counts the segments of a path (1: emitters seen directly, 2: direct light);
 the suite's counts bounces after the primary hit and adds the direct light at
 the last vertex, so the suite's ``max_depth`` D is Mitsuba's D + 2.
@@ -91,8 +104,16 @@ the Whitted render with Mitsuba's ``si.spawn_ray`` and with ``spawn``
 (``offset_sensitivity``); the harness allows a path mean to differ by that
 much and reports it as a finding about the reference.
 
-Images are float32, little-endian, rows top to bottom, RGB interleaved, in
-base64 (``*_f32le``); the edge mask is one byte per pixel (1: masked). A pixel
+Images are little-endian, rows top to bottom, RGB interleaved, in base64:
+the Whitted images float32 (``*_f32le``); the path statistics, 320 x 240,
+zlib-compressed: the mean and the offset sensitivity as IEEE float16
+(``*_f16le_zlib``: 11 significant bits, within 2.4e-4 relative, a quarter of
+the deterministic pixels' tolerance and far below the statistical error of
+64 samples; a value beyond its range, 65504, is refused), the standard
+deviation of one sample as bfloat16 (``*_bf16le_zlib``: float32's range,
+which a firefly's standard deviation needs, and 8 significant bits, within
+2e-3 relative, against the 18 % statistical error of a standard deviation
+from 64 samples). The edge mask is one byte per pixel (1: masked). A pixel
 is an edge when one of its eight neighbours follows a different Whitted
 path: another object at any vertex of the specular chain, or another light
 blocked at a rough vertex.
@@ -100,26 +121,46 @@ blocked at a rough vertex.
 import base64
 import json
 import math
+import multiprocessing
 import os
+import re
 import struct
 import sys
+import zlib
 
-import drjit as dr  # noqa: F401  (Mitsuba's array library, imported first)
+import drjit as dr  # Mitsuba's array library, imported first
 import mitsuba as mi
+import numpy as np
 from atomic_write import write_text
 
 VARIANT = "scalar_rgb"
 mi.set_variant(VARIANT)
+# One Mitsuba thread: the path renders run the Python BSDF, which holds the
+# GIL; more threads only contend for it (``WORKERS`` processes instead).
+dr.set_thread_count(1)
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 DEFAULT_PATH = os.path.join(ROOT, "validation", "reference", "mitsuba_renders.json")
 REGENERATE = ".venv/bin/python python-checks/mitsuba_render.py"
-SCHEMA = "mitsuba-renders/1"
+SCHEMA = "mitsuba-renders/2"
 
+# The Whitted comparison's size: pixel centres, one Python call per pixel.
 WIDTH, HEIGHT = 64, 48
-# Samples per pixel of Mitsuba's path tracer: enough for a per-pixel variance
-# with a Student t of about 500 degrees of freedom, in about a minute.
-PATH_SAMPLES = 512
+# The path comparison's size: Mitsuba's own renderer (``mi.render``), box
+# filtered. Five times the Whitted size each way, so each path pixel lies
+# inside one Whitted pixel (``offset_sensitivity``).
+PATH_WIDTH, PATH_HEIGHT = 320, 240
+# Independent passes of ``mi.render`` at one sample per pixel, seeds 0, 1,
+# ...: a per-pixel mean and an unbiased per-sample variance with 63 degrees
+# of freedom. About two minutes of one core for the seven scenes
+# (kaleidoscope_lit 1.2 s a pass, webgl_seven_spheres 0.7 s).
+PATH_SAMPLES = 64
+# Worker processes, one scene each (Mitsuba's threads run the Python BSDF
+# under the GIL, so processes, each rendering on one thread, go faster).
+WORKERS = 2
+# Beyond everything a scene holds (the planes' disks reach 10^6 m): the
+# film's rays end no sooner than the tracer's.
+PATH_FAR_CLIP = 1.0e7
 # Bounces of the path tracer after the primary hit (the suite's count). The
 # two sides truncate differently only at the last vertex (the background is
 # reached there by Mitsuba's light sampling, not by the suite's), which 16
@@ -136,21 +177,13 @@ TUBE_SEGMENT_HALF_LENGTH = 0.5
 # point's rounding (see `spawn`).
 SPAWN_OFFSET = 2.0 ** -21
 
-# Which scenes are physically based, and why the others are not compared.
-SCENES = [
-    ("first_red_sphere", True),  # an emitter: tests the camera and the silhouette
-    ("diffuse", True),
-    ("blinn_phong", True),
-    ("shadow", True),
-    ("gold_spheres", True),
-    ("kaleidoscope", False),  # its only light is outside the closed tube: the path render is black
-    ("kaleidoscope_lit", True),
-    ("webgl_seven_spheres", True),
-    ("glass_spheres", True),  # a solid ball, and a hollow one (air in glass: total internal reflection)
-    ("inside_water", True),  # the camera inside water: eta^2 does not cancel; TIR beyond Snell's window
-]
-EXCLUDED = {
-    "normals": "shows the normal as a colour: not a radiance, nothing to compare",
+# The scenes: the tracer's one list, ``tracer::scene::COURSE_SCENES``, read
+# from its source, so a scene added there gets its references here. A scene
+# with a material that is not a radiance is not compared (``excluded``); one
+# listed in ``PATH_SKIPPED`` is compared by Whitted only.
+SCENE_LIST = "crates/tracer/src/scene/mod.rs"
+NOT_A_RADIANCE = {
+    "normal_colour": "shows the normal as a colour: not a radiance, nothing to compare",
 }
 PATH_SKIPPED = {
     "kaleidoscope": "the directional light cannot enter the closed mirror tube: without the ambient term the path render is black everywhere, a comparison that could not fail",
@@ -542,31 +575,56 @@ def edge_mask(signatures, width, height):
     return mask
 
 
-def render_path(mitsuba, width, height, samples):
-    """Per-pixel mean and unbiased variance of one sample of Mitsuba's path tracer."""
-    sensor = mitsuba.sensors()[0]
-    integrator = mitsuba.integrator()
-    sampler = mi.load_dict({"type": "independent"})
-    mean, variance = [], []
-    for y in range(height):
-        for x in range(width):
-            ray = pixel_ray(sensor, x, y, width, height)
-            sampler.seed(y * width + x)
-            # Welford's running mean and sum of squared deviations: no
-            # cancellation when every sample is the same.
-            count, running, squares = 0, [0.0] * 3, [0.0] * 3
-            for _ in range(samples):
-                value, _, _ = integrator.sample(mitsuba, sampler, mi.RayDifferential3f(ray))
-                count += 1
-                for c in range(3):
-                    v = float(value[c])
-                    delta = v - running[c]
-                    running[c] += delta / count
-                    squares[c] += delta * (v - running[c])
-                sampler.advance()
-            mean.extend(running)
-            variance.extend(q / (samples - 1) for q in squares)
-    return mean, variance
+def path_scene(scene, width=PATH_WIDTH, height=PATH_HEIGHT):
+    """The Mitsuba scene of the path comparison: ``PATH_WIDTH`` x
+    ``PATH_HEIGHT``, a box-filtered film, an independent sampler, and the
+    sensor's rays unclipped at ``PATH_FAR_CLIP``: the suite's far plane only
+    gives a ray's direction (``pixel_ray`` does the same for the Whitted
+    rays), and Mitsuba's film would end the rays there (100 m on
+    ``webgl_seven_spheres``, whose ground plane then stops short of the
+    horizon)."""
+    d = mitsuba_scene(scene, width, height, PATH_MAX_DEPTH)
+    d["sensor"]["far_clip"] = PATH_FAR_CLIP
+    d["sensor"]["film"]["rfilter"] = {"type": "box"}
+    d["sensor"]["sampler"] = {"type": "independent", "sample_count": 1}
+    return mi.load_dict(d, optimize=False)
+
+
+def render_path(mitsuba, samples):
+    """Per-pixel mean and unbiased variance of one sample of Mitsuba's path
+    tracer (float64 arrays of shape (height, width, 3)): ``samples`` passes of
+    ``mi.render`` at one sample per pixel, seeds 0 to ``samples - 1``."""
+    mean = squares = None
+    for seed in range(samples):
+        image = np.array(mi.render(mitsuba, seed=seed, spp=1), dtype=np.float64)
+        if mean is None:
+            mean, squares = np.zeros_like(image), np.zeros_like(image)
+        # Welford's running mean and sum of squared deviations: no
+        # cancellation when every sample is the same.
+        delta = image - mean
+        mean += delta / (seed + 1)
+        squares += delta * (image - mean)
+    return mean, squares / (samples - 1)
+
+
+def f16_zlib_base64(values, field):
+    """``values`` as little-endian IEEE float16 (round to nearest even),
+    zlib-compressed (level 9), base64. Refuses, naming ``field``, a value
+    float16 cannot hold."""
+    wide = np.asarray(values, dtype=np.float64).ravel()
+    if not np.all(np.abs(wide) <= 65504.0):
+        raise SceneError(f"{field}: {np.max(np.abs(wide)):.6g} is beyond float16")
+    half = wide.astype("<f2")
+    return base64.b64encode(zlib.compress(half.tobytes(), 9)).decode("ascii")
+
+
+def bf16_zlib_base64(values):
+    """``values`` as little-endian bfloat16 (float32's top 16 bits, rounded to
+    nearest even), zlib-compressed (level 9), base64: float32's range, 8
+    significant bits."""
+    bits = np.asarray(values, dtype="<f4").ravel().view("<u4").astype(np.uint64)
+    rounded = ((bits + 0x7FFF + ((bits >> 16) & 1)) >> 16).astype("<u2")
+    return base64.b64encode(zlib.compress(rounded.tobytes(), 9)).decode("ascii")
 
 
 def f32_base64(values):
@@ -577,11 +635,46 @@ def u8_base64(values):
     return base64.b64encode(bytes(values)).decode("ascii")
 
 
-def render_scene(name, path_too, width=WIDTH, height=HEIGHT, samples=PATH_SAMPLES):
+def course_scenes():
+    """``tracer::scene::COURSE_SCENES``, in its order."""
+    with open(os.path.join(ROOT, SCENE_LIST), encoding="utf-8") as f:
+        source = f.read()
+    found = re.search(r"pub const COURSE_SCENES: \[&str; \d+\] = \[(.*?)\];", source, re.S)
+    if not found:
+        raise SceneError(f"{SCENE_LIST}: no COURSE_SCENES list")
+    return re.findall(r'"([a-z0-9_]+)"', found.group(1))
+
+
+def scene_text(name):
     relative = f"crates/tracer/scenes/{name}.json"
     with open(os.path.join(ROOT, relative), encoding="utf-8") as f:
-        text = f.read()
+        return relative, f.read()
+
+
+def why_excluded(scene):
+    """Why a scene is not compared at all, or None."""
+    for material in scene["materials"].values():
+        if material.get("type") in NOT_A_RADIANCE:
+            return NOT_A_RADIANCE[material["type"]]
+    return None
+
+
+def upsampled_sensitivity(sensitivity, width, height):
+    """The Whitted-size offset sensitivity (flat RGB list) at the path size:
+    each path pixel lies inside one Whitted pixel (the sizes are a whole
+    factor apart); it takes the largest of that pixel and its eight
+    neighbours, since the Whitted value is known at their centres only."""
+    small = np.asarray(sensitivity, dtype=np.float64).reshape(height, width, 3)
+    padded = np.pad(small, ((1, 1), (1, 1), (0, 0)), mode="edge")
+    neighbourhood = np.max([padded[j:j + height, i:i + width] for j in range(3) for i in range(3)], axis=0)
+    factor = PATH_WIDTH // width
+    return np.repeat(np.repeat(neighbourhood, factor, axis=0), factor, axis=1)
+
+
+def render_scene(name, width=WIDTH, height=HEIGHT, samples=PATH_SAMPLES):
+    relative, text = scene_text(name)
     scene = json.loads(text)
+    path_too = name not in PATH_SKIPPED
     # optimize=False keeps every shape apart (Mitsuba merges meshes sharing a
     # BSDF otherwise), so a hit names the suite's object.
     mitsuba = mi.load_dict(mitsuba_scene(scene, width, height, PATH_MAX_DEPTH), optimize=False)
@@ -601,22 +694,38 @@ def render_scene(name, path_too, width=WIDTH, height=HEIGHT, samples=PATH_SAMPLE
         "edges_u8": u8_base64(edge_mask(signatures, width, height)),
     }
     if path_too:
-        mean, variance = render_path(mitsuba, width, height, samples)
+        mean, variance = render_path(path_scene(scene), samples)
         moved, _ = render_whitted(scene, mitsuba, width, height, mitsuba_offsets=True)
+        sensitivity = upsampled_sensitivity([abs(a - b) for a, b in zip(moved, image)], width, height)
         entry["path"] = {
+            "width": PATH_WIDTH,
+            "height": PATH_HEIGHT,
+            "pixel_filter": "box",
             "max_depth": PATH_MAX_DEPTH,
             "mitsuba_max_depth": PATH_MAX_DEPTH + 2,
             "samples": samples,
-            "mean_f32le": f32_base64(mean),
-            "variance_f32le": f32_base64(variance),
-            "offset_sensitivity_f32le": f32_base64([abs(a - b) for a, b in zip(moved, image)]),
+            "seeds": f"0 to {samples - 1}, one sample per pixel each",
+            "mean_f16le_zlib": f16_zlib_base64(mean, f"{name}: path.mean"),
+            "std_bf16le_zlib": bf16_zlib_base64(np.sqrt(variance)),
+            "offset_sensitivity_f16le_zlib": f16_zlib_base64(sensitivity, f"{name}: path.offset_sensitivity"),
         }
     else:
         entry["path_skipped"] = PATH_SKIPPED[name]
     return entry
 
 
-def build(scenes=SCENES):
+def build():
+    names = course_scenes()
+    excluded, compared = {}, []
+    for name in names:
+        reason = why_excluded(json.loads(scene_text(name)[1]))
+        if reason:
+            excluded[name] = reason
+        else:
+            compared.append(name)
+    # One process per scene at a time; the order of the entries is the list's.
+    with multiprocessing.get_context("spawn").Pool(WORKERS) as pool:
+        entries = pool.map(render_scene, compared, chunksize=1)
     return {
         "schema": SCHEMA,
         "generator": "python-checks/mitsuba_render.py",
@@ -624,12 +733,13 @@ def build(scenes=SCENES):
         "description": (
             f"The suite's physically based course scenes at {WIDTH}x{HEIGHT}, rendered by Mitsuba {mi.__version__} "
             f"({VARIANT}, float32): a Whitted integrator on Mitsuba's ray_intersect, fresnel_conductor, fresnel, "
-            f"reflect, refract, with each pixel's edge mask; Mitsuba's path integrator, {PATH_SAMPLES} samples "
-            "per pixel centre, mean and variance per pixel"
+            f"reflect, refract, with each pixel's edge mask; Mitsuba's path integrator through mi.render at "
+            f"{PATH_WIDTH}x{PATH_HEIGHT}, box filter, {PATH_SAMPLES} passes of one sample per pixel, "
+            "mean and standard deviation per pixel"
         ),
         "mitsuba": {"version": mi.__version__, "variant": VARIANT},
-        "excluded": EXCLUDED,
-        "scenes": [render_scene(name, path_too) for name, path_too in scenes],
+        "excluded": excluded,
+        "scenes": entries,
     }
 
 

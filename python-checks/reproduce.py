@@ -25,21 +25,26 @@ times the larger.
 
 Mitsuba's path renders (``F32_TOLERANT``) move too, across CPUs: Mitsuba
 traces through Embree, which picks its kernels by the instruction set it
-finds, and a last bit moved in one bounce changes a sample. The float32
-arrays of its path statistics (``mean_f32le``, ``variance_f32le``,
-base64) then reproduce within a tolerance of their own, element by element,
-``|a - b| <= tolerance * max(1, |a|, |b|)``; every other byte of the file
-must be identical (the Whitted images, the edge masks, the scene texts).
-The spread, measured between the committed file as written on an earlier
-machine and the same script at the same commit on an AVX-512 machine::
+finds, and a last bit moved in one bounce changes a sample. The arrays of
+its path statistics (base64, ``mean_f16le_zlib`` and ``std_bf16le_zlib``:
+zlib-compressed float16 and bfloat16) then reproduce within a tolerance of
+their own, element by element, ``|a - b| <= tolerance * max(1, |a|, |b|)``;
+the offset sensitivity (``offset_sensitivity_f16le_zlib``, from the Python
+Whitted integrator) must decode to the same values (tolerance 0), whatever
+bytes the local zlib compresses them to; every other byte of the file must be
+identical (the Whitted images, the edge masks, the scene texts). The spread,
+measured between the committed file as written on an earlier machine and
+the same script at the same commit on an AVX-512 machine (for the earlier
+64 x 48 float32 format, whose tolerances these keep)::
 
     .venv/bin/python python-checks/mitsuba_render.py /tmp/m.json
     .venv/bin/python python-checks/reproduce.py validation/reference/mitsuba_renders.json /tmp/m.json
 
 was 278 means of ``webgl_seven_spheres`` at most 5.8e-5 of max(1, |value|)
-and 590 variances at most 4.7e-4; the tolerances, 1e-3 and 1e-2, are about
-twenty times those. They bound the reproduction of the reference only: the
-harness compares the tracer with the committed file.
+and 590 variances at most 4.7e-4; the tolerances, 1e-3 (mean) and 1e-2
+(standard deviation), are about twenty times those. They bound the
+reproduction of the reference only: the harness compares the tracer with
+the committed file.
 
 Usage: ``reproduce.py COMMITTED FRESH [--as NAME]`` prints where FRESH departs
 from COMMITTED, and the spread of their numbers. It exits 0 if FRESH
@@ -54,11 +59,13 @@ import math
 import os
 import struct
 import sys
+import zlib
 
 BLAS_TOLERANCE = 1e-12
 TOLERANT = ("colorimetry.json", "metals.json")
 F32_TOLERANT = {
-    "mitsuba_renders.json": {"mean_f32le": 1e-3, "variance_f32le": 1e-2},
+    "mitsuba_renders.json": {
+        "mean_f16le_zlib": 1e-3, "std_bf16le_zlib": 1e-2, "offset_sensitivity_f16le_zlib": 0.0},
     "mitsuba_full_light.json": {"mean_f32le": 1e-3},
 }
 # Files of Mitsuba renders whose plain numbers (a region's mean per pass)
@@ -105,19 +112,34 @@ def differences(committed, fresh, float_tolerance=0.0, limit=5, f32_tolerances=N
     return found[:limit]
 
 
-def _f32_array(text):
+def _f32_array(text, key=""):
+    """The floats of a base64 array, by the format its key ends with:
+    ``_f16le_zlib`` (IEEE float16), ``_bf16le_zlib`` (bfloat16), both zlib
+    compressed, else float32."""
     raw = base64.b64decode(text, validate=True)
+    if key.endswith("_zlib"):
+        try:
+            raw = zlib.decompress(raw)
+        except zlib.error as e:
+            raise ValueError(f"not zlib: {e}") from e
+        if len(raw) % 2:
+            raise ValueError("not a whole number of 16-bit values")
+        if key.endswith("_bf16le_zlib"):
+            halves = struct.unpack(f"<{len(raw) // 2}H", raw)
+            return struct.unpack(f"<{len(halves)}f", struct.pack(f"<{len(halves)}I", *(h << 16 for h in halves)))
+        return struct.unpack(f"<{len(raw) // 2}e", raw)
     if len(raw) % 4:
         raise ValueError("not a whole number of float32 values")
     return struct.unpack(f"<{len(raw) // 4}f", raw)
 
 
 def _f32_walk(a, b, here, tolerance, found, diffs):
-    """Two base64 float32 arrays, element by element."""
+    """Two base64 float arrays, element by element."""
+    key = here.rsplit(".", 1)[-1]
     try:
-        x, y = _f32_array(a), _f32_array(b)
+        x, y = _f32_array(a, key), _f32_array(b, key)
     except ValueError as e:
-        found.append(f"{here}: not base64 float32 ({e})")
+        found.append(f"{here}: not a base64 float array ({e})")
         return
     if len(x) != len(y):
         found.append(f"{here}: {len(x)} values against {len(y)}")

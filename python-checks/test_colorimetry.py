@@ -66,38 +66,49 @@ def test_only_the_colour_science_files_are_compared_with_a_tolerance():
         assert reproduce.tolerance_for(exact) == 0.0, exact
 
 
-def test_only_mitsubas_path_statistics_are_float32_arrays_with_a_tolerance():
+def test_only_mitsubas_path_statistics_are_float_arrays_with_a_tolerance():
     assert reproduce.f32_tolerances_for("validation/reference/mitsuba_renders.json") == {
-        "mean_f32le": 1e-3, "variance_f32le": 1e-2}
+        "mean_f16le_zlib": 1e-3, "std_bf16le_zlib": 1e-2, "offset_sensitivity_f16le_zlib": 0.0}
     for exact in (colorimetry.DEFAULT_JSON, metals.DEFAULT_PATH, "fresnel_mpmath.json",
                   "mitsuba_laws.json"):
         assert reproduce.f32_tolerances_for(exact) == {}, exact
 
 
-def test_float32_arrays_reproduce_within_their_tolerance_and_nothing_else_moves():
+def test_float_arrays_reproduce_within_their_tolerance_and_nothing_else_moves():
     import base64
     import struct
-    f32 = lambda *v: base64.b64encode(struct.pack(f"<{len(v)}f", *v)).decode()
-    doc = {"path": {"mean_f32le": f32(0.5, 873.8), "variance_f32le": f32(0.0, 7.7e7)},
+    import zlib
+    f32 = lambda *v: base64.b64encode(struct.pack(f"<{len(v)}f", *v)).decode()  # noqa: E731
+    f16 = lambda *v, level=9: base64.b64encode(zlib.compress(struct.pack(f"<{len(v)}e", *v), level)).decode()  # noqa: E731
+
+    def bf16(*v, level=9):
+        bits = struct.unpack(f"<{len(v)}I", struct.pack(f"<{len(v)}f", *v))
+        raw = struct.pack(f"<{len(v)}H", *(b >> 16 for b in bits))
+        return base64.b64encode(zlib.compress(raw, level)).decode()
+
+    doc = {"path": {"mean_f16le_zlib": f16(0.5, 873.5), "std_bf16le_zlib": bf16(0.0, 7.7e7),
+                    "offset_sensitivity_f16le_zlib": f16(0.0, 0.25)},
            "whitted": {"radiance_f32le": f32(0.25)}}
     committed = json.dumps(doc).encode()
     rule = reproduce.f32_tolerances_for("mitsuba_renders.json")
-    moved = {"path": {"mean_f32le": f32(0.5 + 2e-5, 873.8 * (1 + 5e-5)),
-                      "variance_f32le": f32(0.0, 7.7e7 * (1 + 4e-4))},
+    # One float16 ulp of the mean (5.7e-4 relative), one bfloat16 ulp of
+    # the standard deviation at 7.7e7 (below 7.8e-3), the sensitivity
+    # compressed to other bytes (another zlib level).
+    moved = {"path": {"mean_f16le_zlib": f16(0.5, 874.0), "std_bf16le_zlib": bf16(0.0, 7.7e7 * (1 + 7e-3)),
+                      "offset_sensitivity_f16le_zlib": f16(0.0, 0.25, level=1)},
              "whitted": doc["whitted"]}
     assert reproduce.differences(committed, json.dumps(moved).encode(), f32_tolerances=rule) == []
     assert reproduce.differences(committed, json.dumps(moved).encode()) == ["the bytes differ"]
-    for changed in ({"path": dict(doc["path"], mean_f32le=f32(0.5 + 2e-3, 873.8)),
-                     "whitted": doc["whitted"]},  # a mean beyond 1e-3
-                    {"path": dict(doc["path"], variance_f32le=f32(0.02, 7.7e7)),
-                     "whitted": doc["whitted"]},  # a variance beyond 1e-2
-                    {"path": dict(doc["path"], mean_f32le=f32(float("nan"), 873.8)),
-                     "whitted": doc["whitted"]},  # NaN
-                    {"path": dict(doc["path"], mean_f32le=f32(0.5)),
-                     "whitted": doc["whitted"]},  # a value lost
-                    {"path": dict(doc["path"], mean_f32le="not base64!"),
-                     "whitted": doc["whitted"]},  # not an array
-                    {"path": doc["path"], "whitted": {"radiance_f32le": f32(0.25 + 1e-7)}}):
+    path = doc["path"]
+    for changed in ({"path": dict(path, mean_f16le_zlib=f16(0.5 + 2e-3, 873.5))},  # a mean beyond 1e-3
+                    {"path": dict(path, std_bf16le_zlib=bf16(0.02, 7.7e7))},  # a deviation beyond 1e-2
+                    {"path": dict(path, offset_sensitivity_f16le_zlib=f16(0.0, 0.2502))},  # any move
+                    {"path": dict(path, mean_f16le_zlib=f16(float("nan"), 873.5))},  # NaN
+                    {"path": dict(path, mean_f16le_zlib=f16(0.5))},  # a value lost
+                    {"path": dict(path, mean_f16le_zlib="not base64!")},  # not an array
+                    {"path": dict(path, mean_f16le_zlib=f32(0.5))},  # not zlib
+                    {"path": path, "whitted": {"radiance_f32le": f32(0.25 + 1e-7)}}):
+        changed.setdefault("whitted", doc["whitted"])
         found = reproduce.differences(committed, json.dumps(changed).encode(), f32_tolerances=rule)
         assert found, changed
 

@@ -12,6 +12,7 @@ import mitsuba_render as mr  # noqa: E402
 import reproduce  # noqa: E402
 
 import mitsuba as mi  # noqa: E402
+import numpy as np  # noqa: E402
 
 # Mitsuba computes in float32: a handful of roundings of order-one values.
 F32_TOLERANCE = 1e-5
@@ -118,6 +119,64 @@ def test_unphysical_material_is_refused_naming_it():
         assert "materials.m.type" in str(error)
     else:
         raise AssertionError("normal_colour accepted")
+
+
+def disk_coverage(x, y, width, height, radius, distance):
+    """The fraction of pixel (x, y) inside the image of a sphere of
+    ``radius`` centred on the course camera's axis ``distance`` from its eye:
+    the disk of radius 2 tan asin(radius / distance) on the plane z = 0
+    (y spanning [-1, 1] over the height), in pixels. Exact in y, a
+    1024-point midpoint rule in x."""
+    rho = 2 * math.tan(math.asin(radius / distance)) * height / 2
+    cx, cy, steps, area = width / 2, height / 2, 1024, 0.0
+    for i in range(steps):
+        px = x + (i + 0.5) / steps
+        half = rho * rho - (px - cx) ** 2
+        if half > 0:
+            h = math.sqrt(half)
+            area += max(min(cy + h, y + 1) - max(cy - h, y), 0.0) / steps
+    return area
+
+
+def test_box_filtered_film_integrates_the_pixel_coverage():
+    # A flat emitter of radiance 1 on black: a box-filtered pixel is the
+    # share of it the sphere covers. 256 independent samples per pixel: an
+    # edge pixel's standard deviation is at most 0.5 / 16 = 0.031, so every
+    # pixel lies within 0.16 (5 sigma) of its coverage, and the mean error over
+    # the edge pixels within 0.02; pixel centres (no filter) miss edge pixels
+    # by up to 0.5.
+    width, height = 24, 18
+    s = scene({"type": "course_pinhole"}, [], {"type": "flat", "radiance": [1, 1, 1]},
+              objects=[{"type": "sphere", "center": [0, 0, 4], "radius": 2, "material": "m"}],
+              width=width, height=height)
+    image = np.array(mi.render(mr.path_scene(s, width, height), seed=0, spp=256))
+    errors = []
+    for y in range(height):
+        for x in range(width):
+            c = disk_coverage(x, y, width, height, 2.0, 6.0)
+            assert abs(image[y, x, 0] - c) < 0.16, (x, y, image[y, x, 0], c)
+            if 0 < c < 1:
+                errors.append(abs(image[y, x, 0] - c))
+    assert len(errors) > 20 and sum(errors) / len(errors) < 0.02, errors
+
+
+def test_film_keeps_the_course_cameras_x_on_the_right():
+    # The first red sphere, up and to the right in the course's image, is
+    # there in Mitsuba's film too (its look_at mirrored).
+    width, height = 32, 24
+    s = scene({"type": "course_pinhole"}, [], {"type": "flat", "radiance": [1, 0, 0]},
+              objects=[{"type": "sphere", "center": [1, 1, 4], "radius": 0.8, "material": "m"}],
+              width=width, height=height)
+    image = np.array(mi.render(mr.path_scene(s, width, height), seed=0, spp=4))[:, :, 0]
+    rows, columns = np.nonzero(image > 0.5)
+    assert rows.mean() < height / 2 and columns.mean() > width / 2, (rows.mean(), columns.mean())
+
+
+def test_scene_list_is_the_tracers():
+    names = mr.course_scenes()
+    assert names[0] == "first_red_sphere" and "webgl_seven_spheres" in names
+    for name in names:
+        assert os.path.exists(os.path.join(mr.ROOT, "crates", "tracer", "scenes", f"{name}.json")), name
 
 
 def test_committed_reference_is_up_to_date(tmp_path):

@@ -64,17 +64,23 @@ impl Check {
     /// Records `value` for the quantity `name` at case `at`, keeping the worst.
     /// NaN counts as worse than any number.
     pub fn measure(&mut self, name: &str, value: f64, at: &str) {
+        self.measure_at(name, value, || at.to_owned());
+    }
+
+    /// [`Check::measure`] with the case named by `at`, called only when the
+    /// value is a new worst: for a measure taken at every pixel.
+    pub fn measure_at(&mut self, name: &str, value: f64, at: impl FnOnce() -> String) {
         let value = if value.is_nan() { f64::INFINITY } else { value };
         match self.metrics.iter_mut().find(|m| m.name == name) {
             Some(m) if value > m.worst => {
                 m.worst = value;
-                at.clone_into(&mut m.at);
+                m.at = at();
             }
             Some(_) => {}
             None => self.metrics.push(Metric {
                 name: name.to_owned(),
                 worst: value,
-                at: at.to_owned(),
+                at: at(),
             }),
         }
     }

@@ -9,12 +9,13 @@
 mod caught;
 
 use caught::failures_of;
+use tracer::scene::PixelFilter;
 use validation::full_light::{
     self, check_all_the_light, check_all_the_light_in, check_independent, check_missing_share,
     check_same_missing_light, DecodedLight, Estimate, FullLight, Region, TracerRender,
 };
 use validation::reference::committed_dir;
-use validation::renders::{path_statistics, tracer_render};
+use validation::renders::{path_statistics_with, tracer_render};
 use validation::Check;
 
 fn scenes() -> Vec<(String, DecodedLight)> {
@@ -115,11 +116,14 @@ fn area_lights_two_percent_too_bright_are_caught() {
 }
 
 fn tracer_path(decoded: &DecodedLight, samples: u32) -> (Vec<f64>, Vec<f64>) {
-    path_statistics(
+    // Through the pixel centres, as `path_centres` is rendered.
+    path_statistics_with(
         tracer_render,
         &decoded.scene,
         decoded.scene.settings.max_depth,
         samples,
+        PixelFilter::Center,
+        None,
     )
     .expect("renders")
 }

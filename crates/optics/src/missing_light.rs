@@ -19,16 +19,30 @@ pub fn report(job: &RenderJob, scene_file: &Path, lang: Lang) -> (Vec<String>, V
     let scene = job.scene();
     let found = chains::find(scene, job.needs());
     let integrator = job.settings().integrator;
+    // The photon map carries exactly these chains; every other integrator
+    // drops them.
+    let computes = integrator == IntegratorKind::Photon;
     let mut lines: Vec<String> = found
         .iter()
         .map(|c| {
-            say!(
-                lang,
-                "light the {} integrator does not compute: {}",
-                "fény, amelyet a(z) {} integrátor nem számol: {}",
-                integrator,
-                needs::chain(c, scene, lang)
-            )
+            let chain = needs::chain(c, scene, lang);
+            if computes {
+                say!(
+                    lang,
+                    "light the {} integrator computes by its caustic photon map: {}",
+                    "fény, amelyet a(z) {} integrátor a kausztikus fotontérképével számol: {}",
+                    integrator,
+                    chain
+                )
+            } else {
+                say!(
+                    lang,
+                    "light the {} integrator does not compute: {}",
+                    "fény, amelyet a(z) {} integrátor nem számol: {}",
+                    integrator,
+                    chain
+                )
+            }
         })
         .collect();
     let measured = if found.is_empty() {
@@ -37,7 +51,20 @@ pub fn report(job: &RenderJob, scene_file: &Path, lang: Lang) -> (Vec<String>, V
         measured_share(scene_file)
     };
     if let Some(m) = &measured {
-        let at_least = integrator != IntegratorKind::Path;
+        let verdict = match integrator {
+            IntegratorKind::Path => lang.pick(
+                "; the tracer's path misses the same share (checked by `optics validate`: full_light.tracer.<scene>.path.missing_share)",
+                "; a követő path integrátora ugyanennyit (az `optics validate` ellenőrzi: full_light.tracer.<scene>.path.missing_share)",
+            ),
+            IntegratorKind::Photon => lang.pick(
+                "; the photon integrator computes this light on the diffuse surfaces (checked by `optics validate` against Mitsuba's light tracer and area lights: full_light.tracer.<scene>.photon.all_the_light)",
+                "; a photon integrátor a diffúz felületeken kiszámolja ezt a fényt (az `optics validate` ellenőrzi Mitsuba fénykövetője és felületi fényforrásai ellen: full_light.tracer.<scene>.photon.all_the_light)",
+            ),
+            _ => lang.pick(
+                "; this integrator misses at least as much",
+                "; ez az integrátor legalább ennyit",
+            ),
+        };
         lines.push(say!(
             lang,
             "measured by Mitsuba ({}, course_rough as Lambert, black background): its path integrator misses {:.3} ± {:.3} of the light where the camera sees a surface, {} where it sees a diffuse one{}",
@@ -46,10 +73,11 @@ pub fn report(job: &RenderJob, scene_file: &Path, lang: Lang) -> (Vec<String>, V
             m.surface.0,
             m.surface.1,
             m.diffuse.map_or_else(|| lang.pick("none", "nincs ilyen").to_owned(), |d| format!("{:.3} ± {:.3}", d.0, d.1)),
-            if at_least { lang.pick("; this integrator misses at least as much", "; ez az integrátor legalább ennyit") } else { "" }
+            verdict
         ));
     }
     let detail = json!({
+        "integrator_computes_the_chains": computes,
         "chains": found.iter().map(|c| json!({
             "light": c.light,
             "kind": c.kind,

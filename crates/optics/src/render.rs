@@ -10,7 +10,7 @@ use tracer::job::{Overrides, RenderJob};
 use tracer::needs::{Needs, WARN_RAYS};
 use tracer::output::Destination;
 use tracer::render::Rendered;
-use tracer::scene::{FresnelModel, IntegratorKind, RenderSpec, Settings};
+use tracer::scene::{FresnelModel, IntegratorKind, PixelFilter, RenderSpec, Settings};
 use tracer::scene::{MAX_DEPTH, MAX_IMAGE_SIDE, MAX_PHOTONS, MAX_PHOTON_PASSES, MAX_SPP};
 
 use crate::error::{self, ErrorKind};
@@ -45,7 +45,7 @@ pub struct RenderArgs {
 
 /// The settings `render` and `inspect` take over the scene's own; as
 /// JSON, those given.
-#[derive(clap::Args, Debug, Serialize)]
+#[derive(clap::Args, Clone, Debug, Serialize)]
 pub struct JobArgs {
     /// Light transport (default: the scene's).
     #[arg(long, value_enum)]
@@ -63,6 +63,11 @@ pub struct JobArgs {
     #[arg(long, value_enum)]
     #[serde(skip_serializing_if = "Option::is_none")]
     pub fresnel: Option<FresnelModel>,
+    /// Where primary rays pass through their pixel (default: the scene's,
+    /// else box for path and center for the others).
+    #[arg(long, value_enum)]
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub pixel_filter: Option<PixelFilter>,
     /// Seed of the path tracer's random numbers.
     #[arg(long)]
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -105,6 +110,7 @@ impl JobArgs {
                 max_depth: self.max_depth.map(f64::from),
                 fresnel: self.fresnel,
                 seed: self.seed,
+                pixel_filter: self.pixel_filter,
                 photons: self.photons.map(f64::from),
                 photon_passes: self.photon_passes.map(f64::from),
                 photon_radius: self.photon_radius,
@@ -261,15 +267,15 @@ pub(crate) fn steps(
         steps.push(if settings.integrator.samples() {
             say!(
                 lang,
-                "{} samples per pixel reduced to 1: every path is deterministic",
-                "{} minta pixelenként 1-re csökkentve: minden út determinisztikus",
+                "{} samples per pixel reduced to 1: every path is deterministic and passes through the pixel centre",
+                "{} minta pixelenként 1-re csökkentve: minden út determinisztikus, és a pixel közepén halad át",
                 settings.spp
             )
         } else {
             say!(
                 lang,
-                "{} samples per pixel reduced to 1: the {} integrator is deterministic",
-                "{} minta pixelenként 1-re csökkentve: a(z) {} integrátor determinisztikus",
+                "{} samples per pixel reduced to 1: the {} integrator is deterministic and its rays pass through the pixel centre (--pixel-filter box takes them all)",
+                "{} minta pixelenként 1-re csökkentve: a(z) {} integrátor determinisztikus, sugarai a pixel közepén haladnak át (a --pixel-filter box mindet felhasználja)",
                 settings.spp,
                 settings.integrator
             )

@@ -15,7 +15,7 @@ use serde_json::Value;
 use tracer::job::{Overrides, RenderJob};
 use tracer::output::pfm_bytes;
 use tracer::render::Image;
-use tracer::scene::IntegratorKind;
+use tracer::scene::{IntegratorKind, RenderSpec};
 
 /// The size the tests render at: small, so the debug build stays quick.
 const SIZE: (u32, u32) = (32, 24);
@@ -114,14 +114,18 @@ fn the_physical_whitted_render_agrees_and_the_course_shaders_does_not() {
 /// `samples` renders at one sample per pixel with seeds 0, 1, …: the mean
 /// and per-sample variance as a user's renderer would give them.
 fn mean_and_variance(scene: &str, samples: u32) -> (Image, Image) {
+    // Settled as `optics render --integrator path` settles it: box filtered.
     let overrides = Overrides {
+        render: RenderSpec {
+            integrator: Some(IntegratorKind::Path),
+            ..RenderSpec::default()
+        },
         width: Some(SIZE.0),
         height: Some(SIZE.1),
         ..Overrides::default()
     };
     let job = RenderJob::load(Path::new(scene), &overrides).unwrap();
-    let mut settings = *job.settings();
-    settings.integrator = IntegratorKind::Path;
+    let settings = *job.settings();
     let (mean, variance) = validation::renders::sample_statistics(
         validation::renders::tracer_render,
         job.scene(),

@@ -57,6 +57,38 @@ fn inspect_names_the_chain_from_the_light_through_the_mirror_to_the_rough_surfac
 }
 
 #[test]
+fn inspect_says_what_each_integrator_does_with_the_chain() {
+    for (integrator, says) in [
+        ("path", "light the path integrator does not compute"),
+        (
+            "photon",
+            "light the photon integrator computes by its caustic photon map",
+        ),
+    ] {
+        let out = inspect("kaleidoscope_lit", &["--integrator", integrator]);
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let report = String::from_utf8_lossy(&out.stdout);
+        assert!(report.contains(says), "{integrator}: {report}");
+        #[cfg(feature = "harness")]
+        {
+            let verdict = match integrator {
+                "path" => "the tracer's path misses the same share",
+                _ => "the photon integrator computes this light on the diffuse surfaces",
+            };
+            assert!(report.contains(verdict), "{integrator}: {report}");
+            assert!(
+                !report.contains("at least as much"),
+                "{integrator}: {report}"
+            );
+        }
+    }
+}
+
+#[test]
 fn inspect_names_no_chain_where_there_is_no_mirror_or_glass() {
     let out = inspect("shadow", &[]);
     assert!(out.status.success());

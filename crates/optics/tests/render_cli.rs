@@ -99,6 +99,9 @@ fn render_json_record_has_the_documented_fields() {
     assert_eq!(record["details"]["settings"]["integrator"], "path");
     assert_eq!(record["details"]["settings"]["fresnel"], "schlick");
     assert_eq!(record["details"]["settings"]["spp"], 2);
+    // No filter given: the path integrator's default, settled and shown.
+    assert_eq!(record["details"]["settings"]["pixel_filter"], "box");
+    assert!(record["inputs"].get("pixel_filter").is_none());
     assert_eq!(record["unit"], "");
     assert!(record["details"]["rays_total"].as_u64().unwrap() >= 32 * 24 * 2);
     assert!(record["details"]["rays_per_second"].as_f64().unwrap() > 0.0);
@@ -113,6 +116,59 @@ fn render_json_record_has_the_documented_fields() {
     assert!(
         steps[0].as_str().unwrap().contains("32×24 path"),
         "{steps:?}"
+    );
+}
+
+/// `--pixel-filter` over the integrator's default: a Whitted render box
+/// filtered takes all its samples; the path tracer through the centres.
+#[test]
+fn the_pixel_filter_flag_is_settled_over_the_integrators_default() {
+    let dir = tempfile::tempdir().unwrap();
+    for (integrator, filter, spp_taken) in [
+        ("whitted", "box", 4),
+        ("path", "center", 4),
+        ("whitted", "center", 1),
+    ] {
+        let png = dir.path().join(format!("{integrator}-{filter}.png"));
+        let out = optics(&[
+            "--json",
+            "render",
+            &scene("gold_spheres"),
+            "-o",
+            png.to_str().unwrap(),
+            "--width",
+            "16",
+            "--height",
+            "12",
+            "--integrator",
+            integrator,
+            "--pixel-filter",
+            filter,
+            "--spp",
+            "4",
+        ]);
+        assert!(out.status.success(), "{}", text(&out.stderr));
+        let record: Value = serde_json::from_slice(&out.stdout).unwrap();
+        assert_eq!(record["inputs"]["pixel_filter"], filter);
+        assert_eq!(record["details"]["settings"]["pixel_filter"], filter);
+        assert_eq!(
+            record["details"]["samples_per_pixel_taken"], spp_taken,
+            "{integrator} {filter}"
+        );
+    }
+    let out = optics(&[
+        "render",
+        &scene("gold_spheres"),
+        "-o",
+        "x.png",
+        "--pixel-filter",
+        "gaussian",
+    ]);
+    assert!(!out.status.success());
+    assert!(
+        text(&out.stderr).contains("--pixel-filter"),
+        "{}",
+        text(&out.stderr)
     );
 }
 

@@ -30,6 +30,18 @@ pub trait Real: Float + FloatConst + Debug + Display + Default + Send + Sync + '
     /// assert_eq!(f64::ulp_at(0.0), f64::from_bits(1)); // the smallest subnormal
     /// ```
     fn ulp_at(x: f64) -> f64;
+    /// Whether a product of two of this tier's numbers is exact in
+    /// [`Real::Wide`]: `true` for `f32` (24 + 24 bits fit `f64`'s 53), so
+    /// the compensated sums skip the error terms that are then zero.
+    const PRODUCTS_EXACT_IN_WIDE: bool;
+    /// Dekker's splitting constant `2^⌈p/2⌉ + 1` for this tier's `p`-bit
+    /// significand: `a · SPLITTER` splits `a` into two halves whose products
+    /// are exact.
+    const SPLITTER: f64;
+    /// `√(self² + other²)`, without overflow or underflow on the way and
+    /// within one rounding of the tier: `f32` squares and sums in `f64`,
+    /// where neither can overflow, and rounds once more.
+    fn hypotenuse(self, other: Self) -> Self;
 }
 
 /// `2^⌊log₂|x|⌋`, no smaller than `min_positive`, times `epsilon`: the
@@ -62,6 +74,13 @@ impl Real for f32 {
     fn ulp_at(x: f64) -> f64 {
         spacing(x, f32::EPSILON.into(), f32::MIN_POSITIVE.into())
     }
+    const PRODUCTS_EXACT_IN_WIDE: bool = true;
+    const SPLITTER: f64 = 4097.0;
+    #[inline]
+    fn hypotenuse(self, other: Self) -> Self {
+        let (a, b) = (f64::from(self), f64::from(other));
+        (a * a + b * b).sqrt() as f32
+    }
 }
 
 impl Real for f64 {
@@ -81,6 +100,12 @@ impl Real for f64 {
     #[inline]
     fn ulp_at(x: f64) -> f64 {
         spacing(x, f64::EPSILON, f64::MIN_POSITIVE)
+    }
+    const PRODUCTS_EXACT_IN_WIDE: bool = false;
+    const SPLITTER: f64 = 134_217_729.0;
+    #[inline]
+    fn hypotenuse(self, other: Self) -> Self {
+        self.hypot(other)
     }
 }
 

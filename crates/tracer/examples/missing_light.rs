@@ -1,7 +1,7 @@
 //! The light the path tracer misses on the course scenes: on the pixels
 //! where the camera sees a directly lit rough surface, the `photon`
 //! integrator's mean radiance over the `path` integrator's, both at
-//! 160 × 120, 256 samples per pixel, Russian roulette off, seed 0, the
+//! 160 × 120, 256 samples per pixel box filtered, Russian roulette off, seed 0, the
 //! photon map at its defaults (16 passes of 100 000 photons from a 5 cm
 //! radius), at each scene's `max_depth` and that radius unless the table
 //! says otherwise (a light path then has at most `max_depth + 1` surface

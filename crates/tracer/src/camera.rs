@@ -1,7 +1,10 @@
 //! Cameras: how a pixel becomes a primary ray.
 //!
-//! Rays pass through pixel centres, as the course's fragment shaders do
-//! (`gl_FragCoord` is the centre): images are not anti-aliased. Pixel
+//! A ray passes through a point of its pixel given as a position within
+//! it, `(0, 0)` the pixel's top-left corner and `(1, 1)` its bottom-right
+//! ([`Camera::ray_at`]); [`Camera::ray`] takes the centre, as the course's
+//! fragment shaders do (`gl_FragCoord` is the centre). Which point each
+//! sample takes is the pixel filter's choice (`crate::filter`). Pixel
 //! `(0, 0)` is the top-left corner of the image; `ndc.y` grows upwards.
 
 use glam::{DMat4, DVec3, DVec4, Vec3};
@@ -55,6 +58,9 @@ pub struct LookAtView {
     pub far: f64,
 }
 
+/// The centre of a pixel, as a position within it.
+pub const PIXEL_CENTRE: (f64, f64) = (0.5, 0.5);
+
 /// The course's eye position, m.
 pub const COURSE_EYE: Vec3 = Vec3::new(0.0, 0.0, -2.0);
 
@@ -96,26 +102,32 @@ impl Camera {
         }
     }
 
-    /// Normalised device coordinates of the centre of pixel `(x, y)`:
-    /// `(−1, −1)` at the bottom-left corner of the image, `(1, 1)` at the
-    /// top-right.
-    pub fn ndc(width: u32, height: u32, x: u32, y: u32) -> (f64, f64) {
-        let nx = (x as f64 + 0.5) / width as f64 * 2.0 - 1.0;
-        let ny = 1.0 - (y as f64 + 0.5) / height as f64 * 2.0;
+    /// Normalised device coordinates of the point `within` pixel `(x, y)`
+    /// (`(0.5, 0.5)` its centre, `(0, 0)` its top-left corner): `(−1, −1)`
+    /// at the bottom-left corner of the image, `(1, 1)` at the top-right.
+    pub fn ndc(width: u32, height: u32, x: u32, y: u32, within: (f64, f64)) -> (f64, f64) {
+        let nx = (x as f64 + within.0) / width as f64 * 2.0 - 1.0;
+        let ny = 1.0 - (y as f64 + within.1) / height as f64 * 2.0;
         (nx, ny)
     }
 
-    /// The primary ray through the centre of pixel `(x, y)`. The
+    /// The primary ray through the centre of pixel `(x, y)`.
+    pub fn ray(&self, x: u32, y: u32) -> Ray {
+        self.ray_at(x, y, PIXEL_CENTRE)
+    }
+
+    /// The primary ray through the point `within` pixel `(x, y)`, each
+    /// coordinate in `[0, 1]` from the pixel's top-left corner. The
     /// construction is carried in `f64` and rounded once to the tracer's
     /// `f32`.
-    pub fn ray(&self, x: u32, y: u32) -> Ray {
+    pub fn ray_at(&self, x: u32, y: u32, within: (f64, f64)) -> Ray {
         match *self {
             Camera::CoursePinhole {
                 aspect,
                 width,
                 height,
             } => {
-                let (nx, ny) = Self::ndc(width, height, x, y);
+                let (nx, ny) = Self::ndc(width, height, x, y, within);
                 let eye = COURSE_EYE.as_dvec3();
                 let on_plane = DVec3::new(nx * aspect, ny, 0.0);
                 Ray::new(eye.as_vec3(), (on_plane - eye).normalize().as_vec3())
@@ -126,7 +138,7 @@ impl Camera {
                 height,
                 ..
             } => {
-                let (nx, ny) = Self::ndc(width, height, x, y);
+                let (nx, ny) = Self::ndc(width, height, x, y, within);
                 let unproject = |z: f64| {
                     let p = inverse_view_projection * DVec4::new(nx, ny, z, 1.0);
                     p.truncate() / p.w

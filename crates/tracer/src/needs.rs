@@ -16,7 +16,7 @@ use serde::Serialize;
 
 use crate::geometry::{Object, Tube};
 use crate::integrator::Machinery;
-use crate::scene::{IntegratorKind, Light, Material, Scene, Settings};
+use crate::scene::{IntegratorKind, Light, Material, PixelFilter, Scene, Settings};
 
 /// How deep specular recursion can go in a scene.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
@@ -231,10 +231,15 @@ impl Needs {
         Machinery {
             shadow_rays: self.shadows,
             lights: self.lights.iter().map(|l| l.used).collect(),
-            spp: if self.deterministic || !settings.integrator.samples() {
-                1
-            } else {
+            // A box filter's rays vary within the pixel whatever the
+            // integrator; through the centre, only a sampling integrator's
+            // vary, and not when every path is deterministic.
+            spp: if settings.pixel_filter == PixelFilter::Box
+                || (settings.integrator.samples() && !self.deterministic)
+            {
                 settings.spp
+            } else {
+                1
             },
         }
     }

@@ -7,6 +7,7 @@ use std::time::{Duration, Instant};
 use glam::{DVec3, Vec3};
 use rayon::prelude::*;
 
+use crate::filter::{sample_point, Strata};
 use crate::integrator::{RayCounts, Tracer};
 use crate::job::RenderError;
 use crate::rng::Pcg32;
@@ -66,6 +67,7 @@ pub(crate) fn render(
     let rows_done = AtomicUsize::new(0);
     let start = Instant::now();
     let (width, height) = (tracer.scene.width, tracer.scene.height);
+    let strata = Strata::for_samples(tracer.machinery.spp);
     // Shown before the first row, which may be long in coming.
     progress(0);
     let rows: Vec<(Vec<Vec3>, RayCounts)> = pool.install(|| {
@@ -74,7 +76,7 @@ pub(crate) fn render(
             .map(|y| {
                 let mut counts = RayCounts::default();
                 let row = (0..width)
-                    .map(|x| pixel(tracer, x, y, &mut counts))
+                    .map(|x| pixel(tracer, &strata, x, y, &mut counts))
                     .collect();
                 progress(rows_done.fetch_add(1, Ordering::Relaxed) + 1);
                 (row, counts)
@@ -112,15 +114,18 @@ pub(crate) fn check_finite(image: &Image) -> Result<(), RenderError> {
     }
 }
 
-/// One pixel: the mean of its samples, summed in `f64` so that the mean of
-/// many samples keeps `f32` precision.
-fn pixel(tracer: &Tracer, x: u32, y: u32, counts: &mut RayCounts) -> Vec3 {
+/// One pixel: the mean of its samples, each through the point of the pixel
+/// the filter gives it (`crate::filter`), summed in `f64` so that the mean
+/// of many samples keeps `f32` precision.
+fn pixel(tracer: &Tracer, strata: &Strata, x: u32, y: u32, counts: &mut RayCounts) -> Vec3 {
     let index = y as u64 * tracer.scene.width as u64 + x as u64;
     let mut rng = Pcg32::for_pixel(tracer.settings.seed, index);
-    let ray = tracer.scene.camera.ray(x, y);
+    let filter = tracer.settings.pixel_filter;
     let spp = tracer.machinery.spp.max(1);
     let mut sum = DVec3::ZERO;
-    for _ in 0..spp {
+    for k in 0..spp {
+        let within = sample_point(filter, strata, k, &mut rng);
+        let ray = tracer.scene.camera.ray_at(x, y, within);
         sum += tracer.radiance(&ray, &mut rng, counts).as_dvec3();
     }
     (sum / spp as f64).as_vec3()

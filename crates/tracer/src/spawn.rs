@@ -26,6 +26,7 @@ pub fn origin(hit: &Hit, side: Vec3, offset: RayOffset) -> Vec3 {
     let distance = match offset {
         RayOffset::Robust => (2.0 * hit.error).max(MIN_OFFSET),
         RayOffset::Fixed(eps) => eps as f32,
+        RayOffset::Scaled(eps) => eps as f32 * (1.0 + hit.point.abs().max_element()),
     };
     hit.point + side * distance
 }

@@ -167,9 +167,24 @@ fn bad_scenes_are_refused_with_the_path_of_the_bad_value() {
             &["render.spp", "from 1"],
         ),
         (
+            "an unknown pixel filter",
+            with("/render/pixel_filter", json!("gaussian")),
+            &["render.pixel_filter", "gaussian", "box", "center"],
+        ),
+        (
             "no photons",
             with("/render/photons", json!(0)),
             &["render.photons", "from 1"],
+        ),
+        (
+            "a fixed ray offset of 0",
+            with("/render/ray_offset", json!({ "fixed": 0.0 })),
+            &["render.ray_offset.fixed", "positive"],
+        ),
+        (
+            "a negative scaled ray offset",
+            with("/render/ray_offset", json!({ "scaled": -8.94e-5 })),
+            &["render.ray_offset.scaled", "positive"],
         ),
         (
             "a photon radius of 0",

@@ -28,7 +28,7 @@ use proptest::test_runner::{Config, RngAlgorithm, TestCaseError, TestError, Test
 use serde_json::Value;
 use tracer::job::{Overrides, RenderError, RenderJob};
 use tracer::scene::faults::{self, Fault};
-use tracer::scene::{self, IntegratorKind, RenderSpec};
+use tracer::scene::{self, IntegratorKind, PixelFilter, RenderSpec};
 
 const SCENES: [&str; 11] = scene::COURSE_SCENES;
 
@@ -165,7 +165,9 @@ fn edit() -> impl Strategy<Value = Edit> {
     let field = prop_oneof![
         Just("type".to_owned()),
         Just("fixed".to_owned()),
+        Just("scaled".to_owned()),
         Just("zoom".to_owned()),
+        Just("pixel_filter".to_owned()),
         "[a-z_]{1,10}"
     ];
     prop_oneof![
@@ -357,11 +359,10 @@ fn check(bytes: &[u8], coverage: &Mutex<Coverage>) -> Result<(), String> {
                 return Ok(());
             }
             if let scene::ErrorKind::Schema { message } = error.kind() {
+                // serde writes "unknown field `KEY`, expected …": the key
+                // ends at "`, " (a key may hold a backtick itself).
                 let key = message
                     .strip_prefix("unknown field `")
-                    // serde's "unknown field `KEY`, expected ..." (or ", there
-                    // are no fields"): the key ends at the first "`, ", since
-                    // a key may hold a backtick itself.
                     .and_then(|m| m.split_once("`, "));
                 if key.is_some_and(|(key, _)| under_a_field(field, key)) {
                     return Ok(());
@@ -375,17 +376,21 @@ fn check(bytes: &[u8], coverage: &Mutex<Coverage>) -> Result<(), String> {
     };
     coverage.accepted += 1;
     accepted_is_the_schema(bytes)?;
-    for integrator in [
-        IntegratorKind::Local,
-        IntegratorKind::Whitted,
-        IntegratorKind::Path,
-        IntegratorKind::Photon,
+    // Each integrator under its default pixel filter, and Whitted under the
+    // box filter too (its jittered rays meet what the centre's do not).
+    for (integrator, pixel_filter) in [
+        (IntegratorKind::Local, None),
+        (IntegratorKind::Whitted, None),
+        (IntegratorKind::Whitted, Some(PixelFilter::Box)),
+        (IntegratorKind::Path, None),
+        (IntegratorKind::Photon, None),
     ] {
         let overrides = Overrides {
             render: RenderSpec {
                 integrator: Some(integrator),
                 spp: Some(2.0),
                 max_depth: Some(4.0),
+                pixel_filter,
                 // A small map: the file's own counts are validated, not spent.
                 photons: Some(64.0),
                 photon_passes: Some(2.0),

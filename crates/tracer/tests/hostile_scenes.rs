@@ -99,6 +99,12 @@ fn shapes_beyond_the_schema_are_refused_by_path() {
             JsonType::String,
         ),
         (
+            "a pixel filter as an object",
+            set("render", json!({ "pixel_filter": { "box": null } })),
+            "render.pixel_filter",
+            JsonType::String,
+        ),
+        (
             "the robust offset as an object",
             set("render", json!({ "ray_offset": { "robust": null } })),
             "render.ray_offset",
@@ -117,7 +123,10 @@ fn shapes_beyond_the_schema_are_refused_by_path() {
     // The documented shapes are read.
     for render in [
         json!({ "integrator": "path", "fresnel": "schlick", "ray_offset": "robust" }),
+        json!({ "integrator": "whitted", "pixel_filter": "box" }),
+        json!({ "pixel_filter": "center" }),
         json!({ "ray_offset": { "fixed": 0.001 } }),
+        json!({ "ray_offset": { "scaled": 8.94e-5 } }),
     ] {
         scene::parse(&set("render", render)).expect("documented shape");
     }

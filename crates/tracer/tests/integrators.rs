@@ -17,7 +17,7 @@ use tracer::geometry::Ray;
 use tracer::integrator::RayCounts;
 use tracer::rng::Pcg32;
 use tracer::scene::faults::{self, Fault};
-use tracer::scene::{FresnelModel, IntegratorKind, RayOffset, Scene, Settings};
+use tracer::scene::{FresnelModel, IntegratorKind, PixelFilter, RayOffset, Scene, Settings};
 
 fn settings(integrator: IntegratorKind) -> Settings {
     Settings {
@@ -249,17 +249,24 @@ fn path_mean_within_five_standard_errors_of_whitted(scene: &Scene, fresnel: Fres
 #[test]
 fn image_is_identical_for_any_thread_count() {
     let scene = course_scene("kaleidoscope_lit", 32, 24);
-    for integrator in [IntegratorKind::Whitted, IntegratorKind::Path] {
+    // Both filters: the box's jitter comes from the pixel's own stream too.
+    for (integrator, pixel_filter) in [
+        (IntegratorKind::Whitted, PixelFilter::Center),
+        (IntegratorKind::Whitted, PixelFilter::Box),
+        (IntegratorKind::Path, PixelFilter::Center),
+        (IntegratorKind::Path, PixelFilter::Box),
+    ] {
         let s = Settings {
             spp: 3,
             seed: 11,
+            pixel_filter,
             ..settings(integrator)
         };
         let one = render_with(&scene, &s, Some(1));
         for threads in [2, 3, 8] {
             assert!(
                 one == render_with(&scene, &s, Some(threads)),
-                "{integrator} with {threads} threads"
+                "{integrator}, {pixel_filter} filter, with {threads} threads"
             );
         }
     }

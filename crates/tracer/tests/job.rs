@@ -8,7 +8,9 @@ mod common;
 use serde_json::json;
 use tracer::job::{Overrides, RenderJob};
 use tracer::output::{Destination, OutputError};
-use tracer::scene::{ErrorKind, FresnelModel, IntegratorKind, RenderSpec, Scene, Settings};
+use tracer::scene::{
+    ErrorKind, FresnelModel, IntegratorKind, PixelFilter, RenderSpec, Scene, Settings,
+};
 
 fn glass_scene() -> Scene {
     common::pinhole_scene(
@@ -32,6 +34,7 @@ fn settings_are_the_defaults_under_the_scene_under_the_overrides() {
             integrator: IntegratorKind::Path,
             spp: 4,
             max_depth: 3,
+            pixel_filter: PixelFilter::Box,
             ..Settings::default()
         }
     );
@@ -55,12 +58,107 @@ fn settings_are_the_defaults_under_the_scene_under_the_overrides() {
             max_depth: 3,
             fresnel: FresnelModel::Schlick,
             seed: 7,
+            pixel_filter: PixelFilter::Box,
             ..Settings::default()
         }
     );
     assert_eq!((job.scene().width, job.scene().height), (4, 6));
     // Glass makes every path random: all 16 samples are taken.
     assert_eq!(job.machinery().spp, 16);
+}
+
+/// The pixel filter's default is decided once, in `Settings::settle`: the
+/// integrator named beside it decides it unless a filter is named too; a
+/// stage that names neither keeps the one before. One case per line: the
+/// scene's `render`, the overrides, the filter settled and the samples taken.
+#[test]
+fn the_pixel_filter_follows_the_integrator_named_beside_it_unless_named_itself() {
+    use IntegratorKind::{Course, Path, Whitted};
+    use PixelFilter::{Box, Center};
+    let cases = [
+        (json!({}), (None, None), Center, 1),
+        (json!({ "integrator": "path" }), (None, None), Box, 16),
+        (
+            json!({ "integrator": "path" }),
+            (Some(Course), None),
+            Center,
+            1,
+        ),
+        (
+            json!({ "integrator": "path" }),
+            (Some(Whitted), None),
+            Center,
+            1,
+        ),
+        (
+            json!({ "integrator": "whitted" }),
+            (Some(Path), None),
+            Box,
+            16,
+        ),
+        (
+            json!({ "integrator": "path", "pixel_filter": "center" }),
+            (None, None),
+            Center,
+            16,
+        ),
+        (
+            json!({ "integrator": "whitted", "pixel_filter": "box" }),
+            (None, None),
+            Box,
+            16,
+        ),
+        (
+            json!({ "integrator": "path", "pixel_filter": "center" }),
+            (Some(Whitted), None),
+            Center,
+            1,
+        ),
+        (
+            json!({ "integrator": "path" }),
+            (Some(Course), Some(Box)),
+            Box,
+            16,
+        ),
+        (
+            json!({ "integrator": "whitted" }),
+            (None, Some(Box)),
+            Box,
+            16,
+        ),
+        (
+            json!({ "integrator": "path" }),
+            (None, Some(Center)),
+            Center,
+            16,
+        ),
+    ];
+    for (render, (integrator, pixel_filter), filter, spp) in cases {
+        let mut render = render;
+        render["spp"] = json!(16);
+        let scene = common::pinhole_scene(
+            4,
+            3,
+            json!({
+                "materials": { "grey": { "type": "lambert", "albedo": [0.5, 0.5, 0.5] } },
+                "objects": [ { "type": "sphere", "center": [0, 0, 4], "radius": 1, "material": "grey" } ],
+                "lights": [ { "type": "directional", "towards": [0, 1, -1], "irradiance": [1, 1, 1] } ],
+                "render": render.clone()
+            }),
+        );
+        let overrides = Overrides {
+            render: RenderSpec {
+                integrator,
+                pixel_filter,
+                ..RenderSpec::default()
+            },
+            ..Overrides::default()
+        };
+        let job = RenderJob::new(scene, &overrides).unwrap();
+        let case = format!("{render} under {integrator:?}, {pixel_filter:?}");
+        assert_eq!(job.settings().pixel_filter, filter, "{case}");
+        assert_eq!(job.machinery().spp, spp, "{case}");
+    }
 }
 
 /// One case per line: the overrides, the field the refusal names, and its

@@ -21,7 +21,7 @@
 use tracer::output::to_srgb8;
 
 use super::{masked, Estimate, Tolerance, Verdicts};
-use crate::statistics::student_t_quantile;
+use crate::statistics::student_t_critical;
 
 /// `z` of the reference's noise and what it allows at each pixel-channel:
 /// `tolerance.at(reference) + z · σ/√n` (without noise, the tolerance alone).
@@ -37,7 +37,8 @@ fn allowances(
             .filter(|&i| !masked(mask, i) && noise.variance[i] > 0.0)
             .count();
         (noisy > 0)
-            .then(|| student_t_quantile(alpha / noisy as f64, f64::from(noise.samples) - 1.0))
+            .then(|| student_t_critical(alpha / noisy as f64, f64::from(noise.samples) - 1.0))
+            .flatten()
     });
     let allowed = (0..reference.len())
         .map(|i| {

@@ -7,9 +7,9 @@ use super::statistics::{share, RegionMean};
 use super::{Estimate, Region, ALPHA, FINDING_RELATIVE, POWER, TOLERANCE_RELATIVE};
 use crate::check::Check;
 use crate::reference::ReferenceError;
-use crate::renders::{path_statistics, sample_statistics, tracer_render, Renderer};
+use crate::renders::{path_statistics_with, sample_statistics, tracer_render, Renderer};
 use crate::suite::Context;
-use tracer::scene::IntegratorKind;
+use tracer::scene::{IntegratorKind, PixelFilter};
 
 /// A tracer render as the checks read it: per-pixel mean and unbiased
 /// variance of one sample (`3 · width · height` each, RGB) over `samples`
@@ -328,11 +328,11 @@ impl FullLightChecks {
         }
     }
 
-    /// Samples per pixel of the tracer's path renders: 64 with `--quick`,
+    /// Samples per pixel of the tracer's path renders: 16 with `--quick`,
     /// 256 otherwise.
     pub fn samples(quick: bool) -> u32 {
         if quick {
-            64
+            16
         } else {
             256
         }
@@ -352,21 +352,28 @@ impl FullLightChecks {
             checks.push(check_missing_share(&s.name, &decoded));
             let samples = Self::samples(context.quick);
             let max_depth = decoded.scene.settings.max_depth;
-            checks.push(
-                match path_statistics(self.render, &decoded.scene, max_depth, samples) {
-                    Ok((mean, variance)) => check_same_missing_light(
-                        &s.name,
-                        &IntegratorKind::Path.to_string(),
-                        &decoded,
-                        TracerRender {
-                            mean: &mean,
-                            variance: &variance,
-                            samples,
-                        },
-                    ),
-                    Err(e) => render_failed(&s.name, "path.missing_share", &e),
-                },
+            // Through the pixel centres, as `path_centres` is rendered.
+            let centres = path_statistics_with(
+                self.render,
+                &decoded.scene,
+                max_depth,
+                samples,
+                PixelFilter::Center,
+                None,
             );
+            checks.push(match centres {
+                Ok((mean, variance)) => check_same_missing_light(
+                    &s.name,
+                    &IntegratorKind::Path.to_string(),
+                    &decoded,
+                    TracerRender {
+                        mean: &mean,
+                        variance: &variance,
+                        samples,
+                    },
+                ),
+                Err(e) => render_failed(&s.name, "path.missing_share", &e),
+            });
             let diffuse = Estimate::ALL
                 .iter()
                 .any(|&e| decoded.passes.contains_key(&(e, Region::Diffuse)));
@@ -389,6 +396,7 @@ impl FullLightChecks {
     fn all_the_light(&self, name: &str, decoded: &DecodedLight, samples: u32) -> Check {
         let mut settings = decoded.scene.settings;
         settings.integrator = IntegratorKind::Photon;
+        settings.pixel_filter = PixelFilter::Center;
         settings.photon.photons = PHOTONS_PER_PASS;
         settings.photon.passes = PHOTON_PASSES;
         let integrator = IntegratorKind::Photon.to_string();

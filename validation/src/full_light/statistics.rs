@@ -68,7 +68,8 @@ impl RegionMean {
             return 0.0;
         };
         let se = 1.0 / w.t.abs();
-        let quantile = |p| statistics::student_t_quantile(p, w.dof);
+        // A p-value of 1 or more is |t| = 0: no shift needed for it.
+        let quantile = |p: f64| statistics::student_t_critical(p, w.dof).unwrap_or(0.0);
         (quantile(alpha) + quantile(2.0 * (1.0 - power))) * se
     }
 }

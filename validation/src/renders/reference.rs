@@ -6,7 +6,7 @@ use std::path::Path;
 
 use base64::Engine as _;
 use serde::Deserialize;
-use tracer::scene::Scene;
+use tracer::scene::{PixelFilter, Scene};
 
 use super::{FILE, SCHEMA};
 use crate::reference::ReferenceError;
@@ -79,24 +79,36 @@ pub struct WhittedRender {
     pub radiance_f32le: String,
 }
 
-/// Mitsuba's path tracer at the pixel centres.
+/// Mitsuba's path tracer through its own renderer (`mi.render`), box
+/// filtered, at its own size.
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct PathRender {
+    /// Image width, pixels.
+    pub width: u32,
+    /// Image height, pixels.
+    pub height: u32,
+    /// The film's reconstruction filter: `box`, the tracer's
+    /// `pixel_filter` of the same name.
+    pub pixel_filter: PixelFilter,
     /// Bounces after the primary hit, the suite's count.
     pub max_depth: u32,
     /// The same as Mitsuba counts it (path segments): `max_depth + 2`.
     pub mitsuba_max_depth: u32,
-    /// Samples per pixel.
+    /// Samples per pixel: independent passes of one sample each.
     pub samples: u32,
-    /// Per-pixel mean, float32 RGB, base64.
-    pub mean_f32le: String,
-    /// Per-pixel unbiased variance of one sample, float32 RGB, base64.
-    pub variance_f32le: String,
+    /// The passes' seeds, in words.
+    pub seeds: String,
+    /// Per-pixel mean, float16 RGB, zlib, base64.
+    pub mean_f16le_zlib: String,
+    /// Per-pixel standard deviation of one sample (unbiased variance's
+    /// square root), bfloat16 RGB, zlib, base64.
+    pub std_bf16le_zlib: String,
     /// How far Mitsuba's own ray offsets move each pixel: its Whitted render
-    /// with `si.spawn_ray` against the one the Whitted check uses, float32
-    /// RGB, base64.
-    pub offset_sensitivity_f32le: String,
+    /// with `si.spawn_ray` against the one the Whitted check uses, at the
+    /// Whitted size, taken at this size as the largest over each pixel's
+    /// Whitted pixel and its neighbours; float16 RGB, zlib, base64.
+    pub offset_sensitivity_f16le_zlib: String,
 }
 
 impl MitsubaRenders {
@@ -123,6 +135,8 @@ pub struct Decoded {
 /// Mitsuba's path render, decoded.
 #[derive(Clone, Debug)]
 pub struct PathImages {
+    /// The scene at the path render's size.
+    pub scene: Scene,
     /// Per-pixel mean.
     pub mean: Vec<f64>,
     /// Per-pixel variance of one sample.
@@ -153,14 +167,23 @@ pub fn decode(file: &Path, index: usize, s: &SceneRenders) -> Result<Decoded, Re
         ));
     }
     let path = match &s.path {
-        Some(p) => Some(PathImages {
-            mean: floats("path.mean_f32le", &p.mean_f32le)?,
-            variance: floats("path.variance_f32le", &p.variance_f32le)?,
-            offset_sensitivity: floats(
-                "path.offset_sensitivity_f32le",
-                &p.offset_sensitivity_f32le,
-            )?,
-        }),
+        Some(p) => {
+            let pixels = p.width as usize * p.height as usize;
+            let halves = |field: &str, text: &str, format| {
+                rgb_16_zlib(text, pixels, format).map_err(|m| malformed(field, m))
+            };
+            let std = halves("path.std_bf16le_zlib", &p.std_bf16le_zlib, Half::Brain)?;
+            Some(PathImages {
+                scene: scene.resized(p.width, p.height),
+                mean: halves("path.mean_f16le_zlib", &p.mean_f16le_zlib, Half::Ieee)?,
+                variance: std.iter().map(|s| s * s).collect(),
+                offset_sensitivity: halves(
+                    "path.offset_sensitivity_f16le_zlib",
+                    &p.offset_sensitivity_f16le_zlib,
+                    Half::Ieee,
+                )?,
+            })
+        }
         None => None,
     };
     Ok(Decoded {
@@ -174,8 +197,9 @@ pub fn decode(file: &Path, index: usize, s: &SceneRenders) -> Result<Decoded, Re
 /// The sizes that decide what [`decode`] allocates, checked first: the
 /// field at fault and what is wrong with it.
 fn check_sizes(s: &SceneRenders) -> Result<(), (&'static str, String)> {
-    // The reference images are small (64 × 48); anything beyond the tracer's
-    // own cap is a malformed file, refused before any allocation.
+    // The reference images are small (64 × 48, the path's 320 × 240);
+    // anything beyond the tracer's own cap is a malformed file, refused
+    // before any allocation.
     let side = 1..=tracer::scene::MAX_IMAGE_SIDE;
     if !side.contains(&s.width) || !side.contains(&s.height) {
         return Err((
@@ -189,6 +213,26 @@ fn check_sizes(s: &SceneRenders) -> Result<(), (&'static str, String)> {
         ));
     }
     if let Some(p) = &s.path {
+        if !side.contains(&p.width) || !side.contains(&p.height) {
+            return Err((
+                "path.width",
+                format!(
+                    "image {} × {} outside 1..={} per side",
+                    p.width,
+                    p.height,
+                    side.end()
+                ),
+            ));
+        }
+        if p.pixel_filter != PixelFilter::Box {
+            return Err((
+                "path.pixel_filter",
+                format!(
+                    "the path comparison is of box-filtered renders, not {}",
+                    p.pixel_filter
+                ),
+            ));
+        }
         if p.samples < 2 {
             return Err((
                 "path.samples",
@@ -213,6 +257,37 @@ fn rgb_f32le(text: &str, pixels: usize) -> Result<Vec<f64>, String> {
     Ok(bytes
         .chunks_exact(4)
         .map(|b| f32::from_le_bytes([b[0], b[1], b[2], b[3]]) as f64)
+        .collect())
+}
+
+/// Which 16-bit float.
+#[derive(Clone, Copy, Debug)]
+enum Half {
+    /// IEEE 754 binary16.
+    Ieee,
+    /// bfloat16: the top 16 bits of a float32.
+    Brain,
+}
+
+/// A base64 image of `pixels` 16-bit float little-endian RGB pixels, zlib
+/// compressed, widened; inflated no further than the image's size.
+fn rgb_16_zlib(text: &str, pixels: usize, format: Half) -> Result<Vec<f64>, String> {
+    let compressed = base64_bytes(text)?;
+    let expected = 6 * pixels;
+    let bytes = miniz_oxide::inflate::decompress_to_vec_zlib_with_limit(&compressed, expected)
+        .map_err(|e| format!("not a zlib stream of {expected} bytes: {e:?}"))?;
+    if bytes.len() != expected {
+        return Err(format!(
+            "expected {pixels} float16 RGB pixels ({expected} bytes), got {} bytes",
+            bytes.len()
+        ));
+    }
+    Ok(bytes
+        .chunks_exact(2)
+        .map(|b| match format {
+            Half::Ieee => half::f16::from_le_bytes([b[0], b[1]]).to_f64(),
+            Half::Brain => half::bf16::from_le_bytes([b[0], b[1]]).to_f64(),
+        })
         .collect())
 }
 
@@ -253,5 +328,34 @@ mod tests {
         let message = rgb_f32le(&text, 1).unwrap_err();
         assert!(message.contains("12 bytes"), "{message}");
         assert_eq!(rgb_f32le(&text, 2).unwrap().len(), 6);
+    }
+
+    /// IEEE float16 1.0 is 0x3C00, 0.5 0x3800, 65504 0x7BFF (IEEE 754 binary16).
+    #[test]
+    fn sixteen_bit_zlib_images_decode_and_refuse_the_wrong_size() {
+        let halves: [u16; 6] = [0x3C00, 0x3800, 0x7BFF, 0x0000, 0x8000, 0x3C00];
+        let raw: Vec<u8> = halves.iter().flat_map(|h| h.to_le_bytes()).collect();
+        let text = base64::engine::general_purpose::STANDARD
+            .encode(miniz_oxide::deflate::compress_to_vec_zlib(&raw, 9));
+        assert_eq!(
+            rgb_16_zlib(&text, 2, Half::Ieee).unwrap(),
+            [1.0, 0.5, 65504.0, 0.0, -0.0, 1.0]
+        );
+        // bfloat16 1.0 is 0x3F80, 2^100 0x7180.
+        let brain: Vec<u8> = [0x3F80u16, 0x7180, 0, 0x3F80, 0x3F80, 0x3F80]
+            .iter()
+            .flat_map(|h| h.to_le_bytes())
+            .collect();
+        let text_bf = base64::engine::general_purpose::STANDARD
+            .encode(miniz_oxide::deflate::compress_to_vec_zlib(&brain, 9));
+        assert_eq!(
+            rgb_16_zlib(&text_bf, 2, Half::Brain).unwrap()[..2],
+            [1.0, 2f64.powi(100)]
+        );
+        let message = rgb_16_zlib(&text, 1, Half::Ieee).unwrap_err();
+        assert!(message.contains("6 bytes"), "{message}");
+        assert!(rgb_16_zlib(&text, 3, Half::Ieee)
+            .unwrap_err()
+            .contains("18 bytes"));
     }
 }

@@ -3,7 +3,7 @@
 
 use tracer::job::RenderJob;
 use tracer::render::Image;
-use tracer::scene::{IntegratorKind, Scene, Settings};
+use tracer::scene::{IntegratorKind, PixelFilter, RayOffset, RenderSpec, Scene, Settings};
 
 use super::flatten;
 
@@ -21,22 +21,46 @@ pub fn tracer_render(scene: &Scene, settings: &Settings) -> Result<Image, String
 }
 
 /// The tracer's path samples: per-pixel mean and unbiased variance of one
-/// sample, from `samples` renders at 1 sample per pixel with seeds `0..samples`.
+/// sample, from `samples` renders at 1 sample per pixel with seeds
+/// `0..samples`, box filtered as the reference is (each render's one sample
+/// jittered over the whole pixel, independently of the others').
 pub fn path_statistics(
     render: Renderer,
     scene: &Scene,
     max_depth: u32,
     samples: u32,
 ) -> Result<(Vec<f64>, Vec<f64>), String> {
-    let mut settings = scene.settings;
-    settings.integrator = IntegratorKind::Path;
-    settings.max_depth = max_depth;
+    path_statistics_with(render, scene, max_depth, samples, PixelFilter::Box, None)
+}
+
+/// [`path_statistics`] through `pixel_filter`, with secondary rays started
+/// by `ray_offset` instead of the scene's rule where one is given.
+pub fn path_statistics_with(
+    render: Renderer,
+    scene: &Scene,
+    max_depth: u32,
+    samples: u32,
+    pixel_filter: PixelFilter,
+    ray_offset: Option<RayOffset>,
+) -> Result<(Vec<f64>, Vec<f64>), String> {
+    let spec = RenderSpec {
+        integrator: Some(IntegratorKind::Path),
+        pixel_filter: Some(pixel_filter),
+        max_depth: Some(max_depth.into()),
+        spp: Some(1.0),
+        ray_offset,
+        ..RenderSpec::default()
+    };
+    let settings = scene
+        .settings
+        .settle("comparison", &spec)
+        .map_err(|e| e.to_string())?;
     sample_statistics(render, scene, settings, 0..u64::from(samples))
 }
 
-/// Per-pixel mean and unbiased variance of one sample under `settings`,
-/// from one render at 1 sample per pixel for each seed of `seeds` (at
-/// least two).
+/// Per-pixel mean and unbiased variance of one sample under `settings`
+/// (its pixel filter kept), from one render at 1 sample per pixel for each
+/// seed of `seeds` (at least two).
 pub fn sample_statistics(
     render: Renderer,
     scene: &Scene,

@@ -1,6 +1,7 @@
 //! Fuzz targets of the calculator's inputs, run by `cargo test` on stable
-//! Rust: batch lines (`batch_lines`), flag values (`flag_values`) and the
-//! images `optics compare` reads (`compare_images`).
+//! Rust: batch lines (`batch_lines`), flag values (`flag_values`), the
+//! render settings' choices (`render_flags`) and the images `optics
+//! compare` reads (`compare_images`).
 //!
 //! Each target generates inputs from the course's own requests, mutates
 //! them (numbers at the edges of `f64`, wrong types, missing and unknown
@@ -16,6 +17,7 @@ mod batch_lines;
 #[cfg(feature = "harness")]
 mod compare_images;
 mod flag_values;
+mod render_flags;
 
 use proptest::prelude::*;
 use proptest::test_runner::{Config, TestCaseError, TestRunner};

@@ -76,7 +76,7 @@ pub fn conductor_polarized<T: Real>(cos_i: T, n: T, kappa: T) -> ConductorFresne
 
     // |x + s|² = |x|² + 2 Re(x̄ s) + |s|² with |s|² = |d|: at grazing incidence
     // (x = 0) the ratios below are then |d| / |d| = 1 to the last bit.
-    let abs = |z: Complex<T>| z.re.hypot(z.im);
+    let abs = |z: Complex<T>| z.re.hypotenuse(z.im);
     let two = T::lit(2.0);
     let ws2 = c * c + two * c * s.re + abs(d); // Re s ≥ 0: no cancellation
     let b = eta2 * c;
@@ -121,7 +121,7 @@ fn principal_sqrt<T: Real>(z: Complex<T>) -> Complex<T> {
     if z.re == T::zero() && z.im == T::zero() {
         return Complex::new(T::zero(), z.im);
     }
-    let t = ((z.re.abs() + z.re.hypot(z.im)) * T::lit(0.5)).sqrt();
+    let t = ((z.re.abs() + z.re.hypotenuse(z.im)) * T::lit(0.5)).sqrt();
     if z.re >= T::zero() {
         Complex::new(t, z.im / (t + t))
     } else {

@@ -79,6 +79,8 @@ pub const FIELDS: &[&str] = &[
     "render.seed",
     "render.ray_offset",
     "render.ray_offset.fixed",
+    "render.ray_offset.scaled",
+    "render.pixel_filter",
     "render.photons",
     "render.photon_passes",
     "render.photon_radius",

@@ -36,7 +36,9 @@ pub mod validate;
 pub use error::{ErrorKind, SceneError};
 pub use model::{Light, Material, Scene};
 pub use schema::SceneFile;
-pub use settings::{FresnelModel, IntegratorKind, PhotonSettings, RayOffset, RenderSpec, Settings};
+pub use settings::{
+    FresnelModel, IntegratorKind, PhotonSettings, PixelFilter, RayOffset, RenderSpec, Settings,
+};
 pub use settings::{MAX_DEPTH, MAX_PHOTONS, MAX_PHOTON_PASSES, MAX_SPP};
 
 /// The only schema version this crate reads.

@@ -98,6 +98,54 @@ impl fmt::Display for FresnelModel {
     }
 }
 
+/// Where in a pixel its primary rays pass: the pixel filter.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, Serialize)]
+#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
+#[serde(rename_all = "snake_case")]
+pub enum PixelFilter {
+    /// A box over the pixel: each sample's ray through a point jittered
+    /// within its own stratum of the pixel (`crate::camera::Strata`), the
+    /// pixel the samples' unweighted mean. Mitsuba's `box` filter of
+    /// radius ½ pixel. The `path` integrator's default.
+    #[cfg_attr(
+        feature = "clap",
+        value(help = "Jittered, stratified rays over the pixel, averaged (path's default)")
+    )]
+    Box,
+    /// Every ray through the pixel's centre, as the course's fragment
+    /// shaders cast them (`gl_FragCoord`): no anti-aliasing. The default of
+    /// `local`, `whitted` and `course`, which compare pixel centres.
+    #[cfg_attr(
+        feature = "clap",
+        value(
+            help = "Rays through the pixel centre, as the course's shaders (the others' default)"
+        )
+    )]
+    Center,
+}
+
+impl PixelFilter {
+    /// The filter an integrator renders with when none is given: `box` for
+    /// the Monte Carlo `path` and `photon`, `center` for the deterministic
+    /// ones.
+    pub fn default_for(integrator: IntegratorKind) -> Self {
+        if integrator.samples() {
+            PixelFilter::Box
+        } else {
+            PixelFilter::Center
+        }
+    }
+}
+
+impl fmt::Display for PixelFilter {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            PixelFilter::Box => "box",
+            PixelFilter::Center => "center",
+        })
+    }
+}
+
 /// How a secondary ray's origin is moved off the surface it leaves.
 #[derive(Clone, Copy, Debug, PartialEq, Deserialize, Serialize)]
 #[serde(rename_all = "snake_case", deny_unknown_fields)]
@@ -106,6 +154,10 @@ pub enum RayOffset {
     Robust,
     /// Along the normal by a fixed distance in metres (the course: 0.001).
     Fixed(f64),
+    /// Along the normal by `ε (1 + max |p_i|)` m, a relative epsilon that
+    /// grows with the hit point's coordinates: Mitsuba 3's rule, with its
+    /// `RayEpsilon` ε = 1500 · 2⁻²⁴ ≈ 8.94e-5 in `float32`.
+    Scaled(f64),
 }
 
 /// Render settings as given, all optional: a scene file's `render`, or a
@@ -128,6 +180,8 @@ pub struct RenderSpec {
     pub seed: Option<u64>,
     /// How secondary rays leave a surface.
     pub ray_offset: Option<RayOffset>,
+    /// Where primary rays pass through their pixel.
+    pub pixel_filter: Option<PixelFilter>,
     /// Photons emitted per pass (`photon`), 1 to [`MAX_PHOTONS`].
     pub photons: Option<f64>,
     /// Photon passes (`photon`), 1 to [`MAX_PHOTON_PASSES`], with
@@ -179,6 +233,10 @@ pub struct Settings {
     pub seed: u64,
     /// How secondary rays leave a surface.
     pub ray_offset: RayOffset,
+    /// Where primary rays pass through their pixel. Decided here and
+    /// nowhere else: as given, else [`PixelFilter::default_for`] the
+    /// integrator given beside it (see [`Settings::settle`]).
+    pub pixel_filter: PixelFilter,
     /// The caustic photon map (`photon` only).
     pub photon: PhotonSettings,
 }
@@ -193,6 +251,7 @@ impl Default for Settings {
             throughput_cutoff: 1e-3,
             seed: 0,
             ray_offset: RayOffset::Robust,
+            pixel_filter: PixelFilter::default_for(IntegratorKind::Whitted),
             photon: PhotonSettings::default(),
         }
     }
@@ -201,11 +260,21 @@ impl Default for Settings {
 impl Settings {
     /// These settings with `spec`'s given values over them, each checked
     /// against its domain and named `{path}.{field}` when refused.
+    ///
+    /// The pixel filter is the one place a default follows another
+    /// setting: a `spec` that gives an integrator without a filter gets
+    /// that integrator's [`PixelFilter::default_for`]; one that gives a
+    /// filter gets it, whatever the integrator; one that gives neither
+    /// keeps the filter settled before.
     pub fn settle(&self, path: &str, spec: &RenderSpec) -> Result<Settings, SceneError> {
         let field = |name: &str| format!("{path}.{name}");
         let mut settled = *self;
         if let Some(integrator) = spec.integrator {
             settled.integrator = integrator;
+            settled.pixel_filter = PixelFilter::default_for(integrator);
+        }
+        if let Some(filter) = spec.pixel_filter {
+            settled.pixel_filter = filter;
         }
         if let Some(spp) = spec.spp {
             settled.spp = count(&field("spp"), spp, 1, MAX_SPP)?;
@@ -224,8 +293,14 @@ impl Settings {
             settled.seed = seed;
         }
         if let Some(offset) = spec.ray_offset {
-            if let RayOffset::Fixed(eps) = offset {
-                positive(&field("ray_offset.fixed"), eps)?;
+            match offset {
+                RayOffset::Robust => {}
+                RayOffset::Fixed(eps) => {
+                    positive(&field("ray_offset.fixed"), eps)?;
+                }
+                RayOffset::Scaled(eps) => {
+                    positive(&field("ray_offset.scaled"), eps)?;
+                }
             }
             settled.ray_offset = offset;
         }

@@ -11,7 +11,7 @@ use super::error::JsonType;
 use super::{ErrorKind, SceneError};
 
 /// The scene's settings that are one of several names.
-const CHOICES: [&str; 2] = ["integrator", "fresnel"];
+const CHOICES: [&str; 3] = ["integrator", "fresnel", "pixel_filter"];
 
 /// Refuses a struct written other than as an object, and a choice written
 /// other than as its name.
@@ -31,8 +31,11 @@ pub(super) fn check(scene: &Value) -> Result<(), SceneError> {
         }
     }
     match render.get("ray_offset") {
-        // `{"fixed": metres}` is the one choice that carries a value.
-        Some(Value::Object(map)) if map.contains_key("fixed") => Ok(()),
+        // `{"fixed": metres}` and `{"scaled": ε}` are the choices that carry
+        // a value.
+        Some(Value::Object(map)) if map.contains_key("fixed") || map.contains_key("scaled") => {
+            Ok(())
+        }
         Some(value) => expect("render.ray_offset", value, JsonType::String),
         None => Ok(()),
     }

@@ -1,0 +1,181 @@
+//! Render flags: `optics render` and `optics inspect` command lines with
+//! the settings that pick a choice (`--integrator`, `--pixel-filter`,
+//! `--fresnel`) typed as people type them, some spoiled, through the parser
+//! and the job's settling over a course scene. The promises: a clean line
+//! parses and settles to the filter it names, else to the default of the
+//! integrator it names, else to the scene's; a spoiled value is a usage
+//! error naming its flag; nothing panics.
+
+use std::path::PathBuf;
+
+use super::{check_error_field, runner, Coverage};
+use crate::render::JobArgs;
+use clap::Parser;
+use proptest::prelude::*;
+use proptest::test_runner::TestCaseError;
+use tracer::scene::{IntegratorKind, PixelFilter};
+
+/// The scene the lines render: its `render` names `whitted`, so its own
+/// filter is `center`.
+fn scene() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../tracer/scenes/gold_spheres.json")
+}
+
+const INTEGRATORS: [&str; 4] = ["local", "whitted", "path", "course"];
+const FILTERS: [&str; 2] = ["box", "center"];
+const FRESNELS: [&str; 3] = ["exact", "schlick", "course"];
+/// Text that is no choice of these flags: near misses and others' values.
+const NOT_CHOICES: [&str; 8] = [
+    "",
+    "Box",
+    "centre",
+    "gaussian",
+    "1",
+    "--spp",
+    "box,center",
+    "path",
+];
+
+/// A command line and the choices it gives, `None` for a flag not given.
+#[derive(Clone, Debug)]
+struct Line {
+    args: Vec<String>,
+    integrator: Option<&'static str>,
+    filter: Option<&'static str>,
+    spoiled: Option<&'static str>,
+}
+
+fn choice(values: &'static [&'static str]) -> impl Strategy<Value = Option<&'static str>> {
+    prop::option::of(prop::sample::select(values))
+}
+
+fn command_line() -> impl Strategy<Value = Line> {
+    (
+        any::<bool>(),
+        choice(&INTEGRATORS),
+        choice(&FILTERS),
+        choice(&FRESNELS),
+        prop::option::weighted(0.3, (0..3usize, prop::sample::select(NOT_CHOICES.to_vec()))),
+        any::<bool>(),
+    )
+        .prop_map(|(inspect, integrator, filter, fresnel, spoil, reversed)| {
+            let mut flags: Vec<(&'static str, &'static str)> = Vec::new();
+            flags.extend(integrator.map(|v| ("--integrator", v)));
+            flags.extend(filter.map(|v| ("--pixel-filter", v)));
+            flags.extend(fresnel.map(|v| ("--fresnel", v)));
+            // A spoiled value replaces one flag's, or arrives as a new flag.
+            let mut spoiled = None;
+            if let Some((which, text)) = spoil {
+                let flag = ["--integrator", "--pixel-filter", "--fresnel"][which];
+                flags.retain(|(f, _)| *f != flag);
+                // "path" is a value of --integrator: not a spoiling there.
+                if !(flag == "--integrator" && text == "path") {
+                    flags.push((flag, text));
+                    spoiled = Some(flag);
+                }
+            }
+            if reversed {
+                flags.reverse();
+            }
+            let mut args = vec!["optics".to_owned()];
+            args.push(if inspect { "inspect" } else { "render" }.to_owned());
+            args.push(scene().display().to_string());
+            if !inspect {
+                args.extend(["-o".to_owned(), "never-written.png".to_owned()]);
+            }
+            for (flag, value) in &flags {
+                args.extend([flag.to_string(), value.to_string()]);
+            }
+            let given = |name: &str| flags.iter().find(|(f, _)| *f == name).map(|(_, v)| *v);
+            Line {
+                integrator: given("--integrator").filter(|v| INTEGRATORS.contains(v)),
+                filter: given("--pixel-filter").filter(|v| FILTERS.contains(v)),
+                spoiled,
+                args,
+            }
+        })
+}
+
+/// The filter a line must settle to: the one it names, else its
+/// integrator's default, else the scene's own (`center`, under `whitted`).
+fn expected(line: &Line) -> PixelFilter {
+    let parse = |v: &str| match v {
+        "box" => PixelFilter::Box,
+        _ => PixelFilter::Center,
+    };
+    let integrator = |v: &str| match v {
+        "local" => IntegratorKind::Local,
+        "path" => IntegratorKind::Path,
+        "course" => IntegratorKind::Course,
+        _ => IntegratorKind::Whitted,
+    };
+    match (line.filter, line.integrator) {
+        (Some(f), _) => parse(f),
+        (None, Some(i)) => PixelFilter::default_for(integrator(i)),
+        (None, None) => PixelFilter::Center,
+    }
+}
+
+fn job_args(cli: &crate::Cli) -> &JobArgs {
+    match &cli.command {
+        crate::Command::Render(args) => &args.job,
+        crate::Command::Inspect(args) => &args.job,
+        _ => unreachable!("the lines are render and inspect lines"),
+    }
+}
+
+/// One line: parsed, then settled by the job (`dropped`: with the flag's
+/// value not handed on to the job, the fault the target must find).
+fn check_line(line: &Line, dropped: bool, coverage: &Coverage) -> Result<(), TestCaseError> {
+    match crate::Cli::try_parse_from(&line.args) {
+        Ok(cli) => {
+            prop_assert!(line.spoiled.is_none(), "{:?} accepted", line.args);
+            let mut args = job_args(&cli).clone();
+            if dropped {
+                args.pixel_filter = None;
+            }
+            let job = args
+                .job(&scene())
+                .map_err(|e| TestCaseError::fail(format!("{:?}: {e}", line.args)))?;
+            coverage.answer();
+            prop_assert_eq!(
+                job.settings().pixel_filter,
+                expected(line),
+                "{:?} settled wrongly",
+                line.args
+            );
+            Ok(())
+        }
+        Err(usage) => {
+            let error = crate::Error::from(crate::ErrorKind::Usage(usage));
+            let json = error.to_json(crate::lang::Lang::En);
+            coverage.error(&json);
+            prop_assert!(line.spoiled.is_some(), "{:?} refused: {json}", line.args);
+            let flag = line.spoiled.unwrap_or_default();
+            let field = json["field"].as_str().unwrap_or_default();
+            prop_assert!(field.contains(flag), "{json} does not name {flag}");
+            check_error_field(&json, &line.args, "render", |f| f.to_owned())
+        }
+    }
+}
+
+fn fuzz(cases: u32, dropped: bool, coverage: &Coverage) -> Result<(), String> {
+    runner(cases)
+        .run(&command_line(), |line| check_line(&line, dropped, coverage))
+        .map_err(|e| e.to_string())
+}
+
+#[test]
+fn render_flags_settle_to_the_filter_they_name_or_refuse_by_flag() {
+    let (cases, coverage) = (super::cases(), Coverage::default());
+    let start = std::time::Instant::now();
+    let outcome = fuzz(cases, false, &coverage);
+    coverage.print("render flags", cases, start.elapsed().as_secs_f64());
+    outcome.unwrap();
+}
+
+#[test]
+fn render_flags_find_a_pixel_filter_not_handed_on() {
+    let failure = fuzz(256, true, &Coverage::default()).expect_err("the dropped flag is found");
+    assert!(failure.contains("settled wrongly"), "{failure}");
+}
