@@ -30,6 +30,7 @@
 
 mod checks;
 mod figure;
+mod image_mean;
 mod path;
 mod reference;
 mod runner;

@@ -3,6 +3,7 @@
 //! own ray offsets recorded as a finding about the reference.
 
 use super::figure::triptych;
+use super::image_mean;
 use super::{
     pixel_label, summarise_failures, tolerance, Compared, Decoded, PathImages, ALPHA,
     TOLERANCE_ABSOLUTE, TOLERANCE_RELATIVE,
@@ -62,7 +63,12 @@ struct Verdicts {
     offset_example: Option<String>,
     rule_findings: usize,
     rule_example: Option<String>,
+    /// Per pixel-channel: a rejection attributed to Mitsuba's offsets.
+    explained: Vec<bool>,
 }
+
+/// The render under Mitsuba's offset rule, made once when first asked for.
+type Moved = std::cell::OnceCell<Result<(Vec<f64>, Vec<f64>), String>>;
 
 /// The tracer's per-pixel mean and per-sample variance with its secondary
 /// rays started by Mitsuba's rule ([`super::MITSUBA_RAY_EPSILON`]); asked
@@ -109,7 +115,26 @@ pub fn compare_path(
         compared,
     } = split(&mut check, &sides);
     let mut heat = vec![f64::NAN; mitsuba.mean.len()];
-    let verdicts = judge_tests(&mut check, &sides, &tests, &mut heat, under_mitsuba_offsets);
+    let moved = Moved::new();
+    let moved_render = || moved.get_or_init(under_mitsuba_offsets);
+    let verdicts = judge_tests(&mut check, &sides, &tests, &mut heat, &moved_render);
+    let kept: Vec<bool> = verdicts.explained.iter().map(|&e| !e).collect();
+    let image = image_mean::judge(
+        &mut check,
+        image_mean::Side {
+            mean: ours.0,
+            variance: ours.1,
+            samples: our_samples,
+        },
+        image_mean::Side {
+            mean: &mitsuba.mean,
+            variance: &mitsuba.variance,
+            samples: mitsuba_samples,
+        },
+        &kept,
+        verdicts.threshold,
+        &|| moved_render().as_ref().ok().cloned(),
+    );
     judge_deterministic(&mut check, &sides, &deterministic, &mut heat);
     check.cases = compared / 3;
     record_metrics(&mut check, &sides, &tests, &verdicts, deterministic.len());
@@ -122,9 +147,9 @@ pub fn compare_path(
     record_power(
         &mut check,
         &sides,
-        &tests,
-        &deterministic,
+        (&tests, &deterministic),
         verdicts.threshold,
+        image.least_shift,
     );
     check.measure(
         "mean |mean ours − mean Mitsuba|, W/(sr m²)",
@@ -211,9 +236,9 @@ fn split(check: &mut Check, sides: &Sides) -> Split {
 fn record_power(
     check: &mut Check,
     sides: &Sides,
-    tests: &[(usize, Welch)],
-    deterministic: &[usize],
+    (tests, deterministic): (&[(usize, Welch)], &[usize]),
     threshold: f64,
+    image_least: Option<(f64, &'static str)>,
 ) {
     let mut critical = std::collections::BTreeMap::new();
     let mut critical_at = |dof: f64| {
@@ -243,11 +268,24 @@ fn record_power(
         return;
     }
     shifts.sort_by(|a, b| a.0.total_cmp(&b.0));
-    let (least, at) = shifts[0];
+    let (pixel_least, at) = shifts[0];
+    let (least, at) = match image_least {
+        Some((shift, channel)) if shift < pixel_least => {
+            (shift, format!("the image's mean, {channel}"))
+        }
+        _ => (pixel_least, pixel_label(sides.width, at)),
+    };
+    if let Some((shift, _)) = image_least {
+        check.measure(
+            "power: image mean, least relative shift detected",
+            shift,
+            "",
+        );
+    }
     check.measure(
         "power: least relative shift detected (a uniform shift of the image)",
         least,
-        &pixel_label(sides.width, at),
+        &at,
     );
     check.measure(
         "power: median relative shift detected per pixel-channel",
@@ -276,16 +314,17 @@ fn new_check(name: &str) -> Check {
 /// sensitivity the generator measured or by the tracer's own render under
 /// Mitsuba's offset rule. Fills `heat` in units of the threshold's −log (1
 /// at the threshold).
-fn judge_tests(
+fn judge_tests<'a>(
     check: &mut Check,
     sides: &Sides,
     tests: &[(usize, Welch)],
     heat: &mut [f64],
-    under_mitsuba_offsets: UnderMitsubaOffsets,
+    moved_render: &dyn Fn() -> &'a Result<(Vec<f64>, Vec<f64>), String>,
 ) -> Verdicts {
     let (ours, m_mean) = (sides.ours.0, &sides.mitsuba.mean);
     let offset_sensitivity = &sides.mitsuba.offset_sensitivity;
-    let threshold = ALPHA / tests.len().max(1) as f64;
+    // The family: the per-pixel tests and the image's mean in each channel.
+    let threshold = ALPHA / (tests.len() + 3) as f64;
     let mut verdicts = Verdicts {
         threshold,
         rejected: 0,
@@ -293,6 +332,7 @@ fn judge_tests(
         offset_example: None,
         rule_findings: 0,
         rule_example: None,
+        explained: vec![false; m_mean.len()],
     };
     let mut unexplained = Vec::new();
     for &(i, w) in tests {
@@ -320,6 +360,7 @@ fn judge_tests(
         );
         if p_shifted >= threshold {
             verdicts.offset_findings += 1;
+            verdicts.explained[i] = true;
             if verdicts.offset_example.is_none() {
                 verdicts.offset_example = Some(format!(
                     "{message}, within the {:.2e} that Mitsuba's ray offsets move this pixel",
@@ -333,8 +374,8 @@ fn judge_tests(
     if unexplained.is_empty() {
         return verdicts;
     }
-    let moved = under_mitsuba_offsets().map(|(mean, variance)| {
-        let guarded = guarded_variance(&variance, sides.width);
+    let moved = moved_render().as_ref().map(|(mean, variance)| {
+        let guarded = guarded_variance(variance, sides.width);
         (mean, guarded)
     });
     for (i, message) in unexplained {
@@ -355,6 +396,7 @@ fn judge_tests(
         match agrees {
             Some(moved_mean) => {
                 verdicts.rule_findings += 1;
+                verdicts.explained[i] = true;
                 if verdicts.rule_example.is_none() {
                     verdicts.rule_example = Some(format!(
                         "{message}; under Mitsuba's offsets ours {moved_mean:.6}"
@@ -367,7 +409,7 @@ fn judge_tests(
             }
         }
     }
-    if let Err(e) = moved {
+    if let Err(e) = moved_render() {
         check.fail(format!(
             "the render under Mitsuba's offset rule failed: {e}"
         ));
