@@ -208,22 +208,48 @@ pub fn run(options: &Options, mut progress: impl FnMut(Step)) -> Result<Outcome,
     };
     let kinds = suite::standard_kinds();
     let total = kinds.len();
-    let mut report = suite::run(&kinds, &context, &options.command, |index, name| {
-        progress(Step::Checks { index, total, name })
+    let mut report = Report::new(options.quick, &options.command);
+    // The Python side runs beside the checks: Mitsuba's evaluation of the
+    // random cases needs none of them, and the figures only the data of the
+    // kinds that feed them, so each starts as soon as it can.
+    let figures_after = kinds.iter().rposition(|k| k.feeds_figures());
+    let (random, drawn) = std::thread::scope(|scope| -> Result<_, PipelineError> {
+        let random = python.as_ref().map(|python| {
+            let count = RANDOM_CASES[usize::from(!options.quick)];
+            progress(Step::RandomCases { cases: 3 * count });
+            let (scripts, out) = (&scripts, &out);
+            scope.spawn(move || random_cases(python, scripts, out, options.seed, count))
+        });
+        let mut drawing = None;
+        for (index, kind) in kinds.iter().enumerate() {
+            progress(Step::Checks {
+                index,
+                total,
+                name: kind.name(),
+            });
+            kind.run(&context, &mut report)?;
+            if let (Some(python), Some(true)) = (&python, figures_after.map(|i| i == index)) {
+                progress(Step::DrawingFigures);
+                let exchange = out.join("exchange");
+                create_dir(&exchange)?;
+                write(&exchange, "report.json", to_json(&report).as_bytes())?;
+                let (scripts, out) = (&scripts, &out);
+                drawing = Some(scope.spawn(move || draw_figures(python, scripts, out)));
+            }
+        }
+        progress(Step::ChecksDone);
+        // Neither thread panics: their errors are values.
+        let random = random.map(|h| h.join().expect("the random cases' thread"));
+        let drawn = drawing.map(|h| h.join().expect("the figures' thread"));
+        Ok((random, drawn))
     })?;
-    progress(Step::ChecksDone);
-    if let Some(python) = &python {
-        let count = RANDOM_CASES[usize::from(!options.quick)];
-        progress(Step::RandomCases { cases: 3 * count });
-        first_checks.push(random_cases(python, &scripts, &out, options.seed, count)?);
+    if let Some(random) = random {
+        first_checks.push(random?);
     }
     report.checks.splice(0..0, first_checks);
     report.summarise();
-    let mut figures = match &python {
-        Some(python) => {
-            progress(Step::DrawingFigures);
-            draw_figures_or_report(python, &scripts, &out, &mut report)?
-        }
+    let mut figures = match drawn {
+        Some(drawn) => figures_or_report(drawn, &mut report),
         None => Vec::new(),
     };
     figures.extend(write_render_figures(&out, &report)?);
@@ -326,17 +352,9 @@ fn random_cases(
 /// The figure script's figures, drawn from the report as it stands
 /// (written for the script to `out/exchange/report.json`); when it fails,
 /// a failed check in the report instead of figures.
-fn draw_figures_or_report(
-    python: &Path,
-    scripts: &Path,
-    out: &Path,
-    report: &mut Report,
-) -> Result<Vec<String>, PipelineError> {
-    let exchange = out.join("exchange");
-    create_dir(&exchange)?;
-    write(&exchange, "report.json", to_json(report).as_bytes())?;
-    match draw_figures(python, scripts, out) {
-        Ok(figures) => Ok(figures),
+fn figures_or_report(drawn: Result<Vec<String>, ToolError>, report: &mut Report) -> Vec<String> {
+    match drawn {
+        Ok(figures) => figures,
         Err(error) => {
             let mut check = Check::new(
                 "report.figures",
@@ -348,7 +366,7 @@ fn draw_figures_or_report(
             check.fail(error.to_string());
             report.checks.push(check);
             report.summarise();
-            Ok(Vec::new())
+            Vec::new()
         }
     }
 }

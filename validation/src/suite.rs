@@ -38,6 +38,11 @@ pub trait CheckKind {
     fn name(&self) -> &'static str;
     /// Runs the checks, appending them and their data to `report`.
     fn run(&self, context: &Context, report: &mut Report) -> Result<(), ReferenceError>;
+    /// Whether the report's figures (`python-checks/plot_report.py`) draw
+    /// data this kind writes: the figures start after the last that does.
+    fn feeds_figures(&self) -> bool {
+        false
+    }
 }
 
 /// The laws against the 50-digit references, Mitsuba and the exact values:
@@ -47,6 +52,10 @@ pub struct LawChecks(pub Laws, pub Laws64);
 impl CheckKind for LawChecks {
     fn name(&self) -> &'static str {
         "laws against Mitsuba 3 and mpmath"
+    }
+
+    fn feeds_figures(&self) -> bool {
+        true // the Fresnel curves
     }
 
     fn run(&self, context: &Context, report: &mut Report) -> Result<(), ReferenceError> {
@@ -132,6 +141,10 @@ pub struct MetalChecks(pub MetalLaws);
 impl CheckKind for MetalChecks {
     fn name(&self) -> &'static str {
         "metal colours and their shortcuts"
+    }
+
+    fn feeds_figures(&self) -> bool {
+        true // the metals' swatches, spectra and ΔE table
     }
 
     fn run(&self, context: &Context, report: &mut Report) -> Result<(), ReferenceError> {

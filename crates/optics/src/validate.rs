@@ -160,8 +160,15 @@ fn progress(ui: &Ui, bar: Option<&ProgressBar>, step: Step) {
         ),
         Step::DrawingFigures => say!(lang, "drawing the figures", "az ábrák rajzolása"),
     };
-    if !ui.json {
-        crate::print_err(&format!("optics validate: {message}\n"));
+    if ui.json {
+        return;
+    }
+    // The Python steps start beside the checks: above the bar while it runs.
+    match bar {
+        Some(bar) if !bar.is_finished() && !bar.is_hidden() => {
+            bar.println(format!("optics validate: {message}"));
+        }
+        _ => crate::print_err(&format!("optics validate: {message}\n")),
     }
 }
 

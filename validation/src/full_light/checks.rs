@@ -338,6 +338,18 @@ impl FullLightChecks {
         }
     }
 
+    /// Renders of the `photon` check, one sample per pixel each with its
+    /// own photon maps: 8 with `--quick` (each builds 80 000 photons; their
+    /// regions' means are far from the heavy tails that need the path
+    /// check's 16), 256 otherwise.
+    pub fn photon_renders(quick: bool) -> u32 {
+        if quick {
+            8
+        } else {
+            256
+        }
+    }
+
     /// Every scene of `reference` (read from `context`'s reference directory).
     pub fn run_all(
         &self,
@@ -378,7 +390,8 @@ impl FullLightChecks {
                 .iter()
                 .any(|&e| decoded.passes.contains_key(&(e, Region::Diffuse)));
             if has_delta_surface(&decoded.scene) && diffuse {
-                checks.push(self.all_the_light(&s.name, &decoded, samples));
+                let renders = Self::photon_renders(context.quick);
+                checks.push(self.all_the_light(&s.name, &decoded, renders));
             }
         }
         Ok(())
