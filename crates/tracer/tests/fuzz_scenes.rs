@@ -75,6 +75,9 @@ enum Edit {
     Remove(usize),
     AddField(usize, String, Value),
     WrapInArray(usize),
+    /// `render.ray_offset` set to a choice that carries a value (`fixed`,
+    /// `scaled`), the value hostile: the renders must stay finite.
+    RayOffset(&'static str, f64),
 }
 
 /// One change to the bytes of a file.
@@ -176,6 +179,8 @@ fn edit() -> impl Strategy<Value = Edit> {
         2 => any::<usize>().prop_map(Edit::Remove),
         1 => (any::<usize>(), field, hostile_value()).prop_map(|(i, k, v)| Edit::AddField(i, k, v)),
         1 => any::<usize>().prop_map(Edit::WrapInArray),
+        1 => (prop_oneof![Just("fixed"), Just("scaled")], hostile_number())
+            .prop_map(|(kind, x)| Edit::RayOffset(kind, x)),
     ]
 }
 
@@ -285,6 +290,12 @@ fn apply(value: &mut Value, edit: &Edit) {
         Edit::WrapInArray(i) => {
             if let Some(slot) = value.pointer_mut(&at(*i)) {
                 *slot = Value::Array(vec![slot.take()]);
+            }
+        }
+        Edit::RayOffset(kind, x) => {
+            if let Some(render) = value.get_mut("render").and_then(Value::as_object_mut) {
+                let offset = serde_json::Number::from_f64(*x).map_or(Value::Null, Value::Number);
+                render.insert("ray_offset".into(), serde_json::json!({ *kind: offset }));
             }
         }
     }
