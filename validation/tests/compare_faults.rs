@@ -153,7 +153,15 @@ fn welchs_test_passes_independent_path_renders_and_finds_one_object_ten_percent_
             variance,
             samples: 64,
         };
-        welch::welch(&image, &reference, Tolerance::RENDERS, ALPHA, Some(&mask)).0
+        welch::welch(
+            &image,
+            &reference,
+            32,
+            Tolerance::RENDERS,
+            ALPHA,
+            Some(&mask),
+        )
+        .0
     };
     let (m, v) = run(settings, 0..64);
     assert_eq!(judge(&m, &v).disagreeing_count(), 0);

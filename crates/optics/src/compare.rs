@@ -222,6 +222,7 @@ fn judge(
             let (v, tests) = welch(
                 &image,
                 noise.as_ref().unwrap_or(&fixed),
+                reference.job.scene().width,
                 Tolerance::RENDERS,
                 ALPHA,
                 mask,

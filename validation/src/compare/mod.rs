@@ -13,7 +13,10 @@
 //! - [`tolerance::codes`]: 8-bit sRGB codes against the codes of that
 //!   interval, widened by one code for another renderer's rounding;
 //! - [`welch::welch`]: Welch's t per pixel-channel with both sides'
-//!   per-sample variances, Bonferroni-corrected over the tests.
+//!   per-sample variances, each guarded by its neighbourhood's
+//!   ([`welch::guarded_variance`]), Bonferroni-corrected over the tests; its
+//!   per-pixel test ([`welch::pixel_tests`]) is also the path renders'
+//!   against Mitsuba's (`crate::renders`).
 //!
 //! [`regions`] then says where the disagreements are: per region of the
 //! image (what the camera sees at each pixel), the pixels compared and

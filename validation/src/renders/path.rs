@@ -9,6 +9,8 @@ use super::{
     TOLERANCE_ABSOLUTE, TOLERANCE_RELATIVE,
 };
 use crate::check::Check;
+use crate::compare::welch::{guarded_variance, pixel_tests};
+use crate::compare::Estimate;
 use crate::statistics::{self, Sample, Welch};
 
 /// Both sides of a path comparison, per pixel-channel: the means, the
@@ -22,37 +24,6 @@ struct Sides<'a> {
     /// Each side's per-sample variance as the tests use it
     /// ([`guarded_variance`]): ours, Mitsuba's.
     variance: (Vec<f64>, Vec<f64>),
-}
-
-/// Per pixel-channel, the larger of its own sample variance and the mean of
-/// its 3 × 3 neighbourhood's (clipped at the image's border). Light that
-/// only a rare path finds (through glass, after a Russian roulette) has a
-/// heavy-tailed distribution: a pixel whose few samples all missed the rare
-/// large value shows too small a variance as well as too small a mean, and
-/// a t-test on it rejects a correct render. Its neighbours integrate nearly
-/// the same light, each with its own chances of the rare value; where they
-/// vary more, the test takes their variance. This only widens a standard
-/// error (a conservative test); the power stated is computed with it.
-fn guarded_variance(variance: &[f64], width: u32) -> Vec<f64> {
-    let width = width as usize;
-    let height = variance.len() / (3 * width).max(1);
-    let mut guarded = variance.to_vec();
-    for y in 0..height {
-        for x in 0..width {
-            for c in 0..3 {
-                let (mut sum, mut count) = (0.0, 0.0);
-                for ny in y.saturating_sub(1)..(y + 2).min(height) {
-                    for nx in x.saturating_sub(1)..(x + 2).min(width) {
-                        sum += variance[3 * (ny * width + nx) + c];
-                        count += 1.0;
-                    }
-                }
-                let i = 3 * (y * width + x) + c;
-                guarded[i] = variance[i].max(sum / count);
-            }
-        }
-    }
-    guarded
 }
 
 /// What the t-tests found, for the check's metrics.
@@ -187,35 +158,37 @@ struct Split {
 }
 
 fn split(check: &mut Check, sides: &Sides) -> Split {
-    let (ours, mitsuba) = (sides.ours, sides.mitsuba);
     let mut split = Split {
         tests: Vec::new(),
         deterministic: Vec::new(),
         sum: 0.0,
         compared: 0,
     };
-    for i in 0..mitsuba.mean.len().min(ours.0.len()) {
+    if sides.ours.0.len() != sides.mitsuba.mean.len() {
+        return split; // failed by the caller: nothing to compare
+    }
+    let ours = Estimate {
+        mean: sides.ours.0,
+        variance: sides.ours.1,
+        samples: sides.our_samples,
+    };
+    let mitsuba = Estimate {
+        mean: &sides.mitsuba.mean,
+        variance: &sides.mitsuba.variance,
+        samples: sides.mitsuba_samples,
+    };
+    let outcomes = pixel_tests(&ours, &mitsuba, sides.width, None);
+    for (i, outcome) in outcomes.into_iter().enumerate() {
         split.compared += 1;
-        let (a, b) = (ours.0[i], mitsuba.mean[i]);
-        split.sum += (a - b).abs();
+        let difference = (ours.mean[i] - mitsuba.mean[i]).abs();
+        split.sum += difference;
         check.measure_at(
             "|mean ours − mean Mitsuba|, W/(sr m²)",
-            (a - b).abs(),
+            difference,
             || pixel_label(sides.width, i),
         );
-        let side = |mean, variance, count: u32| Sample {
-            mean,
-            variance,
-            count: count as f64,
-        };
-        // Where neither side's own samples vary, the pixel is compared as
-        // the Whitted ones are, whatever its neighbours do.
-        let varies = ours.1[i] > 0.0 || mitsuba.variance[i] > 0.0;
-        match statistics::welch(
-            side(a, sides.variance.0[i], sides.our_samples),
-            side(b, sides.variance.1[i], sides.mitsuba_samples),
-        ) {
-            Some(w) if varies => split.tests.push((i, w)),
+        match outcome {
+            Some(Some(w)) => split.tests.push((i, w)),
             _ => split.deterministic.push(i),
         }
     }
