@@ -68,6 +68,17 @@ pub fn pixel_tests(
         guarded_variance(image.variance, width),
         guarded_variance(reference.variance, width),
     );
+    pixel_tests_guarded(image, reference, (&guarded.0, &guarded.1), mask)
+}
+
+/// [`pixel_tests`] with each side's [`guarded_variance`] already taken
+/// (image's, reference's), for a caller that keeps them.
+pub fn pixel_tests_guarded(
+    image: &Estimate,
+    reference: &Estimate,
+    guarded: (&[f64], &[f64]),
+    mask: Option<&[bool]>,
+) -> Vec<Option<Option<statistics::Welch>>> {
     let side = |e: &Estimate, variance: &[f64], i: usize| Sample {
         mean: e.mean[i],
         variance: variance[i],
@@ -75,7 +86,7 @@ pub fn pixel_tests(
     };
     let test = |i: usize| {
         let varies = image.variance[i] > 0.0 || reference.variance[i] > 0.0;
-        let w = statistics::welch(side(image, &guarded.0, i), side(reference, &guarded.1, i));
+        let w = statistics::welch(side(image, guarded.0, i), side(reference, guarded.1, i));
         w.filter(|_| varies)
     };
     (0..reference.mean.len())

@@ -8,7 +8,7 @@ use super::{Estimate, Region, ALPHA, FINDING_RELATIVE, POWER, TOLERANCE_RELATIVE
 use crate::check::Check;
 use crate::reference::ReferenceError;
 use crate::renders::{path_statistics_with, sample_statistics, tracer_render, Renderer};
-use crate::suite::Context;
+use crate::suite::{Context, Samples};
 use tracer::scene::{IntegratorKind, PixelFilter};
 
 /// A tracer render as the checks read it: per-pixel mean and unbiased
@@ -330,25 +330,19 @@ impl FullLightChecks {
 
     /// Samples per pixel of the tracer's path renders: 16 with `--quick`,
     /// 256 otherwise.
-    pub fn samples(quick: bool) -> u32 {
-        if quick {
-            16
-        } else {
-            256
-        }
-    }
+    pub const SAMPLES: Samples = Samples {
+        quick: 16,
+        full: 256,
+    };
 
     /// Renders of the `photon` check, one sample per pixel each with its
     /// own photon maps: 8 with `--quick` (each builds 80 000 photons; their
     /// regions' means are far from the heavy tails that need the path
     /// check's 16), 256 otherwise.
-    pub fn photon_renders(quick: bool) -> u32 {
-        if quick {
-            8
-        } else {
-            256
-        }
-    }
+    pub const PHOTON_RENDERS: Samples = Samples {
+        quick: 8,
+        full: 256,
+    };
 
     /// Every scene of `reference` (read from `context`'s reference directory).
     pub fn run_all(
@@ -362,7 +356,7 @@ impl FullLightChecks {
             let decoded = decode(&file, index, s)?;
             checks.extend(check_independent(&s.name, &decoded));
             checks.push(check_missing_share(&s.name, &decoded));
-            let samples = Self::samples(context.quick);
+            let samples = context.samples(Self::SAMPLES);
             let max_depth = decoded.scene.settings.max_depth;
             // Through the pixel centres, as `path_centres` is rendered.
             let centres = path_statistics_with(
@@ -390,7 +384,7 @@ impl FullLightChecks {
                 .iter()
                 .any(|&e| decoded.passes.contains_key(&(e, Region::Diffuse)));
             if has_delta_surface(&decoded.scene) && diffuse {
-                let renders = Self::photon_renders(context.quick);
+                let renders = context.samples(Self::PHOTON_RENDERS);
                 checks.push(self.all_the_light(&s.name, &decoded, renders));
             }
         }

@@ -14,7 +14,7 @@ use super::{
 };
 use crate::check::Check;
 use crate::reference::ReferenceError;
-use crate::suite::Context;
+use crate::suite::{Context, Samples};
 
 /// The renders against Mitsuba, by a renderer under test.
 pub struct RenderChecks {
@@ -31,15 +31,12 @@ impl RenderChecks {
     }
 
     /// Samples per pixel of the tracer's path renders at the reference's
-    /// 320 × 240: 16 with `--quick` (about 5 s of one core, 4 of them the
+    /// 320 × 240: 8 with `--quick` (about 4.5 s of the run, most of it the
     /// lit kaleidoscope's mirror chains), 128 otherwise.
-    pub fn samples(quick: bool) -> u32 {
-        if quick {
-            8
-        } else {
-            128
-        }
-    }
+    pub const SAMPLES: Samples = Samples {
+        quick: 8,
+        full: 128,
+    };
 
     /// Every scene of `reference` (read from `context`'s reference
     /// directory), appended to `checks` and `figures`.
@@ -63,7 +60,7 @@ impl RenderChecks {
                 Err(e) => failed_render(&s.name, "whitted", e),
             };
             let path = s.path.as_ref().and_then(|p| {
-                let samples = Self::samples(context.quick);
+                let samples = context.samples(Self::SAMPLES);
                 let Some(images) = &decoded.path else {
                     return None;
                 };

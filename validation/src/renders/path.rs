@@ -9,7 +9,7 @@ use super::{
     TOLERANCE_ABSOLUTE, TOLERANCE_RELATIVE,
 };
 use crate::check::Check;
-use crate::compare::welch::{guarded_variance, pixel_tests};
+use crate::compare::welch::{guarded_variance, pixel_tests_guarded};
 use crate::compare::Estimate;
 use crate::statistics::{self, Sample, Welch};
 
@@ -177,7 +177,8 @@ fn split(check: &mut Check, sides: &Sides) -> Split {
         variance: &sides.mitsuba.variance,
         samples: sides.mitsuba_samples,
     };
-    let outcomes = pixel_tests(&ours, &mitsuba, sides.width, None);
+    let guarded = (&sides.variance.0[..], &sides.variance.1[..]);
+    let outcomes = pixel_tests_guarded(&ours, &mitsuba, guarded, None);
     for (i, outcome) in outcomes.into_iter().enumerate() {
         split.compared += 1;
         let difference = (ours.mean[i] - mitsuba.mean[i]).abs();
