@@ -9,10 +9,16 @@
 //! result is as accurate as if it had been computed in twice the working
 //! precision and rounded once.
 //!
-//! The `f32` tier carries these sums in `f64` ([`Real::Wide`]), where its
-//! products are exact, so its results are limited only by the final rounding;
-//! the error terms of those products are zero and are not computed
-//! ([`Real::PRODUCTS_EXACT_IN_WIDE`]).
+//! The Fresnel laws evaluate in the tier's wide precision ([`Real::Wide`],
+//! `f64` for both tiers) and round once at the end, so the `f32` tier's
+//! results are limited only by that rounding. Its products are exact in
+//! `f64` ([`Real::PRODUCTS_EXACT_IN_WIDE`]): their error terms are zero and
+//! are neither computed nor summed, and what is left to compensate is the
+//! square of a product of two of them (96 bits), split by Dekker's method.
+//! The sums still cancel there: summed plainly in `f64`, R near the
+//! critical angle and R_p near Brewster's angle miss by 10 to 25 `f32`
+//! ulps (`cargo test -p radiometry --test precision_tiers`, which scans the
+//! `f32` cosines around both angles).
 //!
 //! `two_prod` takes a product's rounding error by a fused multiply-add where
 //! the target has the instruction, and by Dekker's splitting otherwise: the
@@ -69,7 +75,8 @@ fn dekker_error<T: Real>(a: T, b: T, p: T) -> T {
 }
 
 /// [`two_prod`] of two numbers widened from a tier whose products are exact
-/// in the wide one (`exact`, a constant per tier): the error term is zero.
+/// in the wide one (`exact`, a constant per tier): the error term is zero,
+/// and is not computed.
 #[inline]
 fn narrow_prod<T: Real>(a: T, b: T, exact: bool) -> (T, T) {
     if exact {
@@ -79,124 +86,221 @@ fn narrow_prod<T: Real>(a: T, b: T, exact: bool) -> (T, T) {
     }
 }
 
-/// Sums `terms` as if in twice the working precision (Sum2).
-#[inline]
-fn sum<T: Real, const N: usize>(terms: [T; N]) -> T {
-    let mut s = T::zero();
-    let mut err = T::zero();
-    for t in terms {
-        let (next, e) = two_sum(s, t);
-        s = next;
-        err = err + e;
-    }
-    s + err
+/// A sum carried as if in twice the working precision (Sum2): each term
+/// added with [`two_sum`], the errors gathered apart. Terms that are zero by
+/// construction (a tier's exact products' errors, the imaginary part of a
+/// real index) are not added at all, which changes no value: adding an
+/// exact zero is exact.
+#[derive(Clone, Copy)]
+struct Sum2<T> {
+    sum: T,
+    error: T,
+    /// Whether the tier's products are exact in the wide precision, so that
+    /// their rounding errors are zero and are not added.
+    exact: bool,
 }
 
-/// `(a · b)²` as an unevaluated sum of three terms, exact to about `ε³`
-/// relative: with `a b = p + e` exactly, `(a b)² = p² + 2pe + e²`, and the
-/// first two products are split again.
+impl<T: Real> Sum2<T> {
+    #[inline]
+    fn of(first: T, exact: bool) -> Self {
+        Self {
+            sum: first,
+            error: T::zero(),
+            exact,
+        }
+    }
+
+    #[inline]
+    fn plus(self, term: T) -> Self {
+        let (sum, e) = two_sum(self.sum, term);
+        Self {
+            sum,
+            error: self.error + e,
+            ..self
+        }
+    }
+
+    /// Adds a product's rounding error, which is zero when the tier's
+    /// products are `exact`.
+    #[inline]
+    fn plus_error(self, term: T, exact: bool) -> Self {
+        if exact && self.exact {
+            self
+        } else {
+            self.plus(term)
+        }
+    }
+
+    #[inline]
+    fn value(self) -> T {
+        self.sum + self.error
+    }
+
+    /// The sum unevaluated, to be carried on.
+    #[inline]
+    fn parts(self) -> TwoPart<T> {
+        TwoPart {
+            high: self.sum,
+            low: self.error,
+        }
+    }
+}
+
+/// A number carried as the unevaluated sum `high + low`, as accurate as
+/// twice the working precision: a constant of a material that a law uses
+/// at every angle, computed once.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct TwoPart<T> {
+    pub(crate) high: T,
+    pub(crate) low: T,
+}
+
+impl<T: Real> TwoPart<T> {
+    /// Rounded to one number.
+    #[inline]
+    pub(crate) fn value(self) -> T {
+        self.high + self.low
+    }
+}
+
+/// `(a · b)²` as an unevaluated sum `[high, middle, low]`, exact to about
+/// `ε³` relative: with `a b = p + e` exactly, `(a b)² = p² + 2pe + e²`, and
+/// the first two products are split again. Where the tier's products are
+/// `exact`, `e = 0`, the middle term is zero and `p` (a product of two
+/// widened numbers of the narrow tier, below `2^256`) is split without the
+/// range check.
 #[inline]
 fn square_of_product<T: Real>(a: T, b: T, exact: bool) -> [T; 3] {
     let (p, e) = narrow_prod(a, b, exact);
-    let (q, qe) = two_prod(p, p);
     if exact {
-        return [q, T::zero(), qe];
+        let q = p * p;
+        return [q, T::zero(), dekker_error(p, p, q)];
     }
+    let (q, qe) = two_prod(p, p);
     let (m, me) = two_prod(p + p, e);
     [q, m, qe + me + e * e]
 }
 
 // The interface quantities below are written for light going from a medium
-// of real index `n_i` into one of index `n_t = x + i·y` (`y = 0` for a
-// dielectric). The crate always has one of the two indices equal to 1, so no
-// ratio of indices is ever rounded.
+// of real index `n_i` into one of real index `n_t` (a dielectric). The crate
+// always has one of the two indices equal to 1, so no ratio of indices is
+// ever rounded. Each sums its terms in one fixed order (large terms first,
+// then the rounding errors), skipping the ones that are zero by
+// construction.
 
-/// `x² − y² − n_i²`, the real part of `n_t² − n_i²`.
-#[inline]
-fn index_contrast_in<T: Real>(x: T, y: T, n_i: T, exact: bool) -> T {
-    let (x2, x2e) = narrow_prod(x, x, exact);
-    let (y2, y2e) = narrow_prod(y, y, exact);
+/// `n_t² − n_i²`.
+#[inline(always)]
+pub(crate) fn index_contrast<T: Real>(n_t: T, n_i: T, exact: bool) -> T {
+    let (t2, t2e) = narrow_prod(n_t, n_t, exact);
     let (i2, i2e) = narrow_prod(n_i, n_i, exact);
-    sum([x2, -i2, -y2, x2e, -i2e, -y2e])
+    Sum2::of(t2, exact)
+        .plus(-i2)
+        .plus_error(t2e, exact)
+        .plus_error(-i2e, exact)
+        .value()
 }
 
-/// `x² − y² − n_i² + (n_i c)²`, the real part of `n_t² − n_i² sin²θ_i`
-/// (`= n_t² cos²θ_t`), which vanishes at the critical angle.
-#[inline]
-fn snell_discriminant_in<T: Real>(x: T, y: T, n_i: T, c: T, exact: bool) -> T {
-    let (x2, x2e) = narrow_prod(x, x, exact);
-    let (y2, y2e) = narrow_prod(y, y, exact);
+/// `n_t² − n_i² + (n_i c)²` `= n_t² − n_i² sin²θ_i = n_t² cos²θ_t`, which
+/// vanishes at the critical angle.
+#[inline(always)]
+pub(crate) fn snell_discriminant<T: Real>(n_t: T, n_i: T, c: T, exact: bool) -> T {
+    let (t2, t2e) = narrow_prod(n_t, n_t, exact);
     let (i2, i2e) = narrow_prod(n_i, n_i, exact);
     let [ic2, ic2m, ic2e] = square_of_product(n_i, c, exact);
-    sum([x2, -i2, ic2, -y2, ic2m, x2e, -i2e, ic2e, -y2e])
+    Sum2::of(t2, exact)
+        .plus(-i2)
+        .plus(ic2)
+        .plus_error(ic2m, exact)
+        .plus_error(t2e, exact)
+        .plus_error(-i2e, exact)
+        .plus(ic2e)
+        .value()
 }
 
-/// `n_t² − (n_i s)²` for a dielectric (`n_t` real), `= n_t² cos²θ_t` with
-/// `s = sin θ_i`: Snell's discriminant from the sine.
-#[inline]
-fn snell_discriminant_from_sine_in<T: Real>(n_t: T, n_i: T, s: T, exact: bool) -> T {
+/// `n_t² − (n_i s)²` `= n_t² cos²θ_t` with `s = sin θ_i`: Snell's
+/// discriminant from the sine.
+#[inline(always)]
+pub(crate) fn snell_discriminant_from_sine<T: Real>(n_t: T, n_i: T, s: T, exact: bool) -> T {
     let (t2, t2e) = narrow_prod(n_t, n_t, exact);
     let [is2, is2m, is2e] = square_of_product(n_i, s, exact);
-    sum([t2, -is2, t2e, -is2m, -is2e])
+    Sum2::of(t2, exact)
+        .plus(-is2)
+        .plus_error(t2e, exact)
+        .plus_error(-is2m, exact)
+        .plus(-is2e)
+        .value()
 }
 
-/// `(c x)² − (c y)² + (c n_i)² − n_i²`, the real part of
-/// `c² (n_t² + n_i²) − n_i²`, which vanishes at Brewster's angle.
-#[inline]
-fn brewster_factor_in<T: Real>(x: T, y: T, n_i: T, c: T, exact: bool) -> T {
-    let [cx2, cx2m, cx2e] = square_of_product(c, x, exact);
-    let [cy2, cy2m, cy2e] = square_of_product(c, y, exact);
+/// `(c n_t)² + (c n_i)² − n_i²` `= c² (n_t² + n_i²) − n_i²`, which vanishes
+/// at Brewster's angle.
+#[inline(always)]
+pub(crate) fn brewster_factor<T: Real>(n_t: T, n_i: T, c: T, exact: bool) -> T {
+    let [ct2, ct2m, ct2e] = square_of_product(c, n_t, exact);
     let [ci2, ci2m, ci2e] = square_of_product(c, n_i, exact);
     let (i2, i2e) = narrow_prod(n_i, n_i, exact);
-    sum([
-        cx2, -cy2, ci2, -i2, cx2m, -cy2m, ci2m, cx2e, -cy2e, ci2e, -i2e,
-    ])
+    Sum2::of(ct2, exact)
+        .plus(ci2)
+        .plus(-i2)
+        .plus_error(ct2m, exact)
+        .plus_error(ci2m, exact)
+        .plus(ct2e)
+        .plus(ci2e)
+        .plus_error(-i2e, exact)
+        .value()
 }
 
-/// Real part of `n_t² − n_i²`, `n_t = x + i·y`; see [`index_contrast_in`].
+// A conductor's index `η = x + i·y` is fixed per material, so the parts of
+// its law that do not depend on the angle are summed once, as [`TwoPart`]s,
+// and each angle adds `c²` to them.
+
+/// `x² − y² + k` for an exact constant `k` (−1, 0 or 1): the real part of
+/// `η² − 1`, `η²` or `η² + 1`.
 #[inline]
-pub(crate) fn index_contrast<T: Real>(x: T, y: T, n_i: T) -> T {
-    T::narrow(index_contrast_in(
-        x.widen(),
-        y.widen(),
-        n_i.widen(),
-        T::PRODUCTS_EXACT_IN_WIDE,
-    ))
+pub(crate) fn squares_plus<T: Real>(x: T, y: T, k: T, exact: bool) -> TwoPart<T> {
+    let (x2, x2e) = narrow_prod(x, x, exact);
+    let (y2, y2e) = narrow_prod(y, y, exact);
+    Sum2::of(x2, exact)
+        .plus(k)
+        .plus(-y2)
+        .plus_error(x2e, exact)
+        .plus_error(-y2e, exact)
+        .parts()
 }
 
-/// Real part of `n_t² − n_i² sin²θ_i`; see [`snell_discriminant_in`].
-#[inline]
-pub(crate) fn snell_discriminant<T: Real>(x: T, y: T, n_i: T, c: T) -> T {
-    T::narrow(snell_discriminant_in(
-        x.widen(),
-        y.widen(),
-        n_i.widen(),
-        c.widen(),
-        T::PRODUCTS_EXACT_IN_WIDE,
-    ))
+/// `C + c²` for `C` the real part of `η² − 1` ([`squares_plus`]): the real
+/// part of `η² − sin²θ_i = η² cos²θ_t`, Snell's discriminant from a medium
+/// of index 1, which vanishes at a near-critical angle when `κ` is small.
+#[inline(always)]
+pub(crate) fn discriminant_from<T: Real>(contrast: TwoPart<T>, c: T, exact: bool) -> T {
+    let (c2, c2e) = narrow_prod(c, c, exact);
+    Sum2::of(contrast.high, exact)
+        .plus(c2)
+        .plus(contrast.low)
+        .plus_error(c2e, exact)
+        .value()
 }
 
-/// `n_t² − (n_i sin θ_i)²`; see [`snell_discriminant_from_sine_in`].
-#[inline]
-pub(crate) fn snell_discriminant_from_sine<T: Real>(n_t: T, n_i: T, sin_i: T) -> T {
-    T::narrow(snell_discriminant_from_sine_in(
-        n_t.widen(),
-        n_i.widen(),
-        sin_i.widen(),
-        T::PRODUCTS_EXACT_IN_WIDE,
-    ))
-}
-
-/// Real part of `c² (n_t² + n_i²) − n_i²`; see [`brewster_factor_in`].
-#[inline]
-pub(crate) fn brewster_factor<T: Real>(x: T, y: T, n_i: T, c: T) -> T {
-    T::narrow(brewster_factor_in(
-        x.widen(),
-        y.widen(),
-        n_i.widen(),
-        c.widen(),
-        T::PRODUCTS_EXACT_IN_WIDE,
-    ))
+/// `c² A − 1` for `A` the real part of `η² + 1` ([`squares_plus`]): the real
+/// part of Brewster's factor `c² (η² + 1) − 1`, which vanishes near
+/// Brewster's angle when `κ` is small. With `c² = q + e`, the products
+/// `q · A_high` (split exactly), `q · A_low` and `e · A_high` are summed;
+/// the `ε²`-small rest is dropped.
+#[inline(always)]
+pub(crate) fn brewster_from<T: Real>(a: TwoPart<T>, c: T, exact: bool) -> T {
+    let (c2, c2e) = narrow_prod(c, c, exact);
+    let (m, me) = if exact {
+        // c² and A of a narrow tier: below 2^256, in Dekker's range.
+        let m = c2 * a.high;
+        (m, dekker_error(c2, a.high, m))
+    } else {
+        two_prod(c2, a.high)
+    };
+    Sum2::of(m, exact)
+        .plus(-T::one())
+        .plus(me)
+        .plus(c2 * a.low)
+        .plus_error(c2e * a.high, exact)
+        .value()
 }
 
 #[cfg(test)]
@@ -254,8 +358,8 @@ mod tests {
         // form drops the 2⁻⁶⁰, the compensated one keeps it.
         let eta = 1.0 + 2f64.powi(-30);
         let exact = 2f64.powi(-29) + 2f64.powi(-60);
-        assert_eq!(snell_discriminant(eta, 0.0, 1.0, 0.0), exact);
-        assert_eq!(index_contrast(eta, 0.0, 1.0), exact);
+        assert_eq!(snell_discriminant(eta, 1.0, 0.0, false), exact);
+        assert_eq!(index_contrast(eta, 1.0, false), exact);
         assert_ne!(eta * eta - 1.0, exact);
     }
 }

@@ -38,10 +38,16 @@ pub trait Real: Float + FloatConst + Debug + Display + Default + Send + Sync + '
     /// significand: `a · SPLITTER` splits `a` into two halves whose products
     /// are exact.
     const SPLITTER: f64;
-    /// `√(self² + other²)`, without overflow or underflow on the way and
-    /// within one rounding of the tier: `f32` squares and sums in `f64`,
-    /// where neither can overflow, and rounds once more.
+    /// `√(self² + other²)`, without overflow or underflow on the way:
+    /// `f32` squares and sums in `f64`, where neither can overflow, and
+    /// rounds once more (within one rounding of the tier); `f64` scales by
+    /// a power of two where it must (within about one ulp).
     fn hypotenuse(self, other: Self) -> Self;
+    /// [`Real::hypotenuse`] of two values in [`Real::Wide`] computed from
+    /// this tier's numbers by the laws (squares and products of a few of
+    /// them): for `f32` those cannot overflow or underflow when squared in
+    /// `f64`, so this is `√(a² + b²)` there, without the scaling.
+    fn wide_hypotenuse(a: Self::Wide, b: Self::Wide) -> Self::Wide;
 }
 
 /// `2^⌊log₂|x|⌋`, no smaller than `min_positive`, times `epsilon`: the
@@ -78,8 +84,11 @@ impl Real for f32 {
     const SPLITTER: f64 = 4097.0;
     #[inline]
     fn hypotenuse(self, other: Self) -> Self {
-        let (a, b) = (f64::from(self), f64::from(other));
-        (a * a + b * b).sqrt() as f32
+        f32::wide_hypotenuse(self.into(), other.into()) as f32
+    }
+    #[inline]
+    fn wide_hypotenuse(a: f64, b: f64) -> f64 {
+        (a * a + b * b).sqrt()
     }
 }
 
@@ -105,7 +114,24 @@ impl Real for f64 {
     const SPLITTER: f64 = 134_217_729.0;
     #[inline]
     fn hypotenuse(self, other: Self) -> Self {
-        self.hypot(other)
+        // Scaled by a power of two (exact) only where a square could
+        // overflow or lose bits to underflow; the rest is √(a² + b²), within
+        // about one ulp, without the library call of `hypot`.
+        let (a, b) = (self.abs(), other.abs());
+        let larger = a.max(b);
+        let (scale, unscale) = if larger > 2f64.powi(500) {
+            (2f64.powi(-600), 2f64.powi(600))
+        } else if larger < 2f64.powi(-500) {
+            (2f64.powi(600), 2f64.powi(-600))
+        } else {
+            (1.0, 1.0)
+        };
+        let (a, b) = (a * scale, b * scale);
+        (a * a + b * b).sqrt() * unscale
+    }
+    #[inline]
+    fn wide_hypotenuse(a: f64, b: f64) -> f64 {
+        a.hypotenuse(b)
     }
 }
 

@@ -57,6 +57,15 @@ pub struct Incidence<T> {
     pub sin_i: Option<T>,
 }
 
+/// Snell's law decided at one incidence: `d = n_t² cos²θ_t` in the tier's
+/// wide precision, and whether light is transmitted (`d ≥ 0`; under total
+/// internal reflection it is not).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Snell<W> {
+    pub(crate) discriminant: W,
+    pub(crate) transmits: bool,
+}
+
 impl<T: Real> Incidence<T> {
     /// Resolves the side from the sign of `cos_i`, for an interface of
     /// relative index `eta = n_inside / n_outside`; `None` for input that
@@ -122,23 +131,28 @@ impl<T: Real> Incidence<T> {
         self.n_t / self.n_i
     }
 
-    /// `n_t² cos²θ_t = n_t² − n_i² sin²θ_i`, computed without cancellation.
-    /// Negative exactly when Snell's law has no real solution (total
-    /// internal reflection).
+    /// `n_t² cos²θ_t = n_t² − n_i² sin²θ_i`, computed without cancellation,
+    /// in the tier's wide precision ([`Real::Wide`]). Negative exactly when
+    /// Snell's law has no real solution (total internal reflection).
     #[inline]
-    pub(crate) fn discriminant(&self) -> T {
+    pub(crate) fn discriminant(&self) -> T::Wide {
+        let exact = T::PRODUCTS_EXACT_IN_WIDE;
+        let (n_t, n_i) = (self.n_t.widen(), self.n_i.widen());
         match self.sin_i {
-            Some(sin_i) => compensated::snell_discriminant_from_sine(self.n_t, self.n_i, sin_i),
-            None => compensated::snell_discriminant(self.n_t, T::zero(), self.n_i, self.abs_cos_i),
+            Some(sin_i) => {
+                compensated::snell_discriminant_from_sine(n_t, n_i, sin_i.widen(), exact)
+            }
+            None => compensated::snell_discriminant(n_t, n_i, self.abs_cos_i.widen(), exact),
         }
     }
 
     /// `cos θ_t ≥ 0` on the far side, or `None` under total internal
     /// reflection (`sin θ_t` would exceed 1).
     ///
-    /// This is where Snell's law is decided for a resolved incidence: the
-    /// exact Fresnel law, Schlick's working and [`crate::specular::refract`]
-    /// all take `cos θ_t` (or its absence) from it.
+    /// Snell's law is decided for a resolved incidence in [`Incidence::snell`]:
+    /// this, the exact Fresnel law, Schlick's working and
+    /// [`crate::specular::refract`] all take `cos θ_t` (or its absence)
+    /// from it.
     #[inline]
     pub fn cos_transmitted(&self) -> Option<T> {
         if self.n_i == self.n_t {
@@ -146,22 +160,30 @@ impl<T: Real> Incidence<T> {
             // (√ of the rounded cos² would lose bits once cos² underflows).
             return Some(self.abs_cos_i);
         }
-        self.snell().map(|(_, cos_t)| cos_t)
+        let snell = self.snell();
+        snell
+            .transmits
+            .then(|| self.cos_from_root(snell.discriminant.sqrt()))
     }
 
-    /// Snell's decision with the discriminant it is made from:
-    /// `(d, cos θ_t)` with `d = n_t² cos²θ_t ≥ 0`, or `None` under total
-    /// internal reflection; for the exact Fresnel law, which needs `d`
-    /// itself. Index-matched interfaces are [`Incidence::cos_transmitted`]'s
-    /// to special-case.
+    /// Snell's decision with the discriminant it is made from, for the
+    /// exact Fresnel law, which needs the discriminant itself. Index-matched
+    /// interfaces are [`Incidence::cos_transmitted`]'s to special-case.
     #[inline]
-    pub(crate) fn snell(&self) -> Option<(T, T)> {
-        let d = self.discriminant();
-        // `!(d >= 0)` also catches NaN.
-        if !(d >= T::zero()) {
-            return None;
+    pub(crate) fn snell(&self) -> Snell<T::Wide> {
+        let discriminant = self.discriminant();
+        Snell {
+            discriminant,
+            // `!(d < 0)` would let NaN through; `d >= 0` does not.
+            transmits: discriminant >= T::Wide::zero(),
         }
-        Some((d, clamp_unit(d.sqrt() / self.n_t)))
+    }
+
+    /// `cos θ_t` from `s = √d = n_t cos θ_t` in the wide precision, clamped
+    /// against rounding and rounded once to the tier.
+    #[inline]
+    pub(crate) fn cos_from_root(&self, s: T::Wide) -> T {
+        T::narrow(clamp_unit(s / self.n_t.widen()))
     }
 
     /// Snell's sine, `sin θ_t = n_i sin θ_i / n_t`, with
@@ -252,11 +274,10 @@ pub fn transmitted_angle<T: Real>(theta_i: T, eta_path: T) -> Option<T> {
     // From the outside of an interface of index eta_path (n_i = 1, n_t =
     // eta_path); resolving it also checks eta_path.
     let incidence = Incidence::resolve_measured(cos_i, eta_path, || sin_i)?;
-    let discriminant = incidence.discriminant();
-    if !(discriminant >= T::zero()) {
-        return None;
-    }
-    Some(sin_i.atan2(discriminant.sqrt()))
+    let snell = incidence.snell();
+    snell
+        .transmits
+        .then(|| sin_i.atan2(T::narrow(snell.discriminant.sqrt())))
 }
 
 /// The critical angle `θ_c = asin(eta_path)` beyond which light from the

@@ -304,3 +304,51 @@ fn f32_brdfs_and_lights_are_within_rounding_of_f64() {
     assert!(light.value <= 8.0, "{} ε at {}", light.value, light.at);
     settle("f32-brdfs-lights", &[&lambert, &blinn, &reciprocal, &light]);
 }
+
+/// The `f32` tier's sums run in plain `f64` (its products are exact
+/// there): the cosines where they cancel most are the `f32` cosines
+/// nearest the critical angle (Snell's discriminant → 0, which T and
+/// `cos θ_t` hang on) and nearest Brewster's angle (R_p → 0). Over 4000
+/// indices, the 33 `f32` cosines around each angle: R, T, R_s and R_p
+/// within 8 `f32` ulps of the `f64` law, whose sums are compensated.
+#[test]
+fn f32_fresnel_where_its_sums_cancel_is_within_8_f32_ulps_of_f64() {
+    let mut worst = 0.0f64;
+    let mut at = String::new();
+    for k in 0..4000 {
+        let eta = 1.0001f32 + k as f32 * (2.0 / 4000.0);
+        let (e, e2) = (f64::from(eta), f64::from(eta) * f64::from(eta));
+        // From the inside past cos_c = √(1 − 1/η²); from the outside at
+        // cos_B = 1/√(1 + η²).
+        let angles = [-(1.0 - 1.0 / e2).sqrt(), 1.0 / (1.0 + e2).sqrt()];
+        for centre in angles {
+            let mut c = centre as f32;
+            for _ in 0..16 {
+                c = c.next_down();
+            }
+            for _ in 0..33 {
+                let (f32_, f64_) = (
+                    dielectric_polarized(c, eta),
+                    dielectric_polarized(f64::from(c), e),
+                );
+                for (a, b) in [
+                    (f32_.reflectance(), f64_.reflectance()),
+                    (f32_.transmittance(), f64_.transmittance()),
+                    (f32_.r_s, f64_.r_s),
+                    (f32_.r_p, f64_.r_p),
+                ] {
+                    // NaN counts as the worst.
+                    let ulps = (f64::from(a) - b).abs() / f32::ulp_at(b);
+                    let ulps = if ulps.is_nan() { f64::INFINITY } else { ulps };
+                    if ulps > worst {
+                        worst = ulps;
+                        at = format!("eta {eta}, cos {c:e}: {a:e} against {b:e}");
+                    }
+                }
+                c = c.next_up();
+            }
+        }
+    }
+    println!("worst {worst:.2} f32 ulps at {at}");
+    assert!(worst <= 8.0, "{worst:.2} f32 ulps at {at}");
+}

@@ -7,9 +7,12 @@ use num_complex::Complex;
 use num_traits::{Float, FloatConst, One, Zero};
 
 use super::{fraction, sqr};
-use crate::compensated;
+use crate::compensated::{self, TwoPart};
 use crate::snell::clamp_unit;
 use crate::Real;
+
+/// The wide precision of the tier `T`.
+type Wide<T> = <T as Real>::Wide;
 
 /// Reflectance of a conductor, per polarisation.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -21,6 +24,15 @@ pub struct ConductorFresnel<T> {
 }
 
 impl<T: Real> ConductorFresnel<T> {
+    /// NaN in both polarisations: input that describes no conductor.
+    #[inline]
+    fn undefined() -> Self {
+        Self {
+            r_s: T::nan(),
+            r_p: T::nan(),
+        }
+    }
+
     /// Unpolarised reflectance, `(R_s + R_p) / 2`.
     #[inline]
     pub fn reflectance(&self) -> T {
@@ -45,47 +57,115 @@ impl<T: Real> ConductorFresnel<T> {
 /// assert!((conductor(1.0_f64, 0.17, 3.1) - f0(0.17, 3.1)).abs() < 1e-15);
 /// assert_eq!(conductor(0.0_f64, 0.17, 3.1), 1.0);
 /// ```
+#[inline]
 pub fn conductor_polarized<T: Real>(cos_i: T, n: T, kappa: T) -> ConductorFresnel<T> {
-    let valid = n > T::zero() && n.is_finite() && kappa >= T::zero() && kappa.is_finite();
-    if cos_i.is_nan() || !valid {
-        return ConductorFresnel {
-            r_s: T::nan(),
-            r_p: T::nan(),
-        };
+    match Conductor::new(n, kappa) {
+        Some(conductor) => conductor.polarized(cos_i),
+        None => ConductorFresnel::undefined(),
     }
-    let c = clamp_unit(cos_i.abs());
-    let two_nk = (n + n) * kappa;
-    let one = T::one();
-    let eta2_m1 = Complex::new(compensated::index_contrast(n, kappa, one), two_nk);
-    if eta2_m1.re == T::zero() && eta2_m1.im == T::zero() {
-        return ConductorFresnel {
-            r_s: T::zero(),
-            r_p: T::zero(),
-        };
-    }
-    // s = η cos θ_t = √(η² − 1 + c²), principal branch (Re s ≥ 0).
-    let d = Complex::new(compensated::snell_discriminant(n, kappa, one, c), two_nk);
-    let s = principal_sqrt(d);
-    // η² itself, summed afresh rather than as (η² − 1) + 1, which would lose
-    // the digits of a small η² (n = 1e-3: six of its sixteen).
-    let eta2 = Complex::new(compensated::index_contrast(n, kappa, T::zero()), two_nk);
-    let brewster = Complex::new(
-        compensated::brewster_factor(n, kappa, one, c),
-        c * c * two_nk,
-    );
+}
 
-    // |x + s|² = |x|² + 2 Re(x̄ s) + |s|² with |s|² = |d|: at grazing incidence
-    // (x = 0) the ratios below are then |d| / |d| = 1 to the last bit.
-    let abs = |z: Complex<T>| z.re.hypotenuse(z.im);
-    let two = T::lit(2.0);
-    let ws2 = c * c + two * c * s.re + abs(d); // Re s ≥ 0: no cancellation
-    let b = eta2 * c;
-    let wp2 = b.norm_sqr() + two * (b.re * s.re + b.im * s.im) + abs(d);
-    let r_s = sqr(abs(eta2_m1) / ws2);
-    let r_p = sqr(abs(eta2_m1) * abs(brewster) / wp2);
-    ConductorFresnel {
-        r_s: fraction(r_s),
-        r_p: fraction(r_p),
+/// A conductor of complex index `n + i·kappa`, lit from a dielectric of
+/// index 1, with the parts of the exact law that do not depend on the
+/// angle computed once: a material evaluated at many angles (a surface of
+/// a render) builds it once and asks [`Conductor::polarized`] at each.
+/// [`conductor_polarized`] is the same law in one call.
+///
+/// ```
+/// use radiometry::fresnel::{conductor_polarized, Conductor};
+/// let gold_red = Conductor::new(0.17_f32, 3.1).unwrap();
+/// assert_eq!(gold_red.polarized(0.6), conductor_polarized(0.6, 0.17, 3.1));
+/// assert!(Conductor::new(0.17_f32, -1.0).is_none()); // κ < 0 absorbs negatively
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Conductor<T: Real> {
+    /// The real part of `η² − 1`, unevaluated.
+    contrast: TwoPart<Wide<T>>,
+    /// The real part of `η² + 1`, unevaluated: Brewster's factor is
+    /// `c² (η² + 1) − 1`.
+    brewster: TwoPart<Wide<T>>,
+    /// `η²`.
+    eta2: Complex<Wide<T>>,
+    /// `|η² − 1|`; zero for an index-matched medium, which reflects nothing.
+    abs_eta2_m1: Wide<T>,
+    /// `2 n κ`, the imaginary part of `η²`.
+    two_nk: Wide<T>,
+}
+
+impl<T: Real> Conductor<T> {
+    /// The conductor of index `n + i·kappa`; `None` for `n ≤ 0`,
+    /// `kappa < 0` or either not finite (NaN included).
+    #[inline]
+    pub fn new(n: T, kappa: T) -> Option<Self> {
+        let valid = n > T::zero() && n.is_finite() && kappa >= T::zero() && kappa.is_finite();
+        if !valid {
+            return None;
+        }
+        // In the tier's wide precision; what its exact products spare is
+        // decided per tier.
+        let exact = T::PRODUCTS_EXACT_IN_WIDE;
+        let (n, kappa) = (n.widen(), kappa.widen());
+        let one = Wide::<T>::one();
+        let two_nk = (n + n) * kappa;
+        let contrast = compensated::squares_plus(n, kappa, -one, exact);
+        // η² itself, summed afresh rather than as (η² − 1) + 1, which would
+        // lose the digits of a small η² (n = 1e-3: six of its sixteen).
+        let eta2_re = compensated::squares_plus(n, kappa, Wide::<T>::zero(), exact).value();
+        Some(Self {
+            contrast,
+            brewster: compensated::squares_plus(n, kappa, one, exact),
+            eta2: Complex::new(eta2_re, two_nk),
+            abs_eta2_m1: T::wide_hypotenuse(contrast.value(), two_nk),
+            two_nk,
+        })
+    }
+
+    /// Reflectance per polarisation at `cos_i` (its sign is ignored: light
+    /// arrives from the dielectric side); NaN for a NaN cosine.
+    #[inline]
+    pub fn polarized(&self, cos_i: T) -> ConductorFresnel<T> {
+        if cos_i.is_nan() {
+            return ConductorFresnel::undefined();
+        }
+        let exact = T::PRODUCTS_EXACT_IN_WIDE;
+        let c = clamp_unit(cos_i.abs()).widen();
+        // s = η cos θ_t = √(η² − 1 + c²), principal branch (Re s ≥ 0).
+        let d = Complex::new(
+            compensated::discriminant_from(self.contrast, c, exact),
+            self.two_nk,
+        );
+        let s = principal_sqrt::<T>(d);
+        let brewster = Complex::new(
+            compensated::brewster_from(self.brewster, c, exact),
+            c * c * self.two_nk,
+        );
+
+        // |x + s|² = |x|² + 2 Re(x̄ s) + |s|² with |s|² = |d|: at grazing
+        // incidence (x = 0) the ratios below are then |d| / |d| = 1 to the
+        // last bit.
+        let abs = |z: Complex<Wide<T>>| T::wide_hypotenuse(z.re, z.im);
+        let two = Wide::<T>::lit(2.0);
+        let abs_d = abs(d);
+        let ws2 = c * c + two * c * s.re + abs_d; // Re s ≥ 0: no cancellation
+        let b = self.eta2 * c;
+        let wp2 = b.norm_sqr() + two * (b.re * s.re + b.im * s.im) + abs_d;
+        let r_s = sqr(self.abs_eta2_m1 / ws2);
+        let r_p = sqr(self.abs_eta2_m1 * abs(brewster) / wp2);
+        // Index-matched (η = 1) reflects nothing; chosen here rather than
+        // computed, as 0 / ws2 is NaN at grazing incidence (ws2 = 0).
+        let zero = Wide::<T>::zero();
+        let matched = self.abs_eta2_m1 == zero;
+        let narrow = |r| T::narrow(if matched { zero } else { fraction(r) });
+        ConductorFresnel {
+            r_s: narrow(r_s),
+            r_p: narrow(r_p),
+        }
+    }
+
+    /// Unpolarised reflectance at `cos_i`, `(R_s + R_p) / 2`.
+    #[inline]
+    pub fn reflectance(&self, cos_i: T) -> T {
+        self.polarized(cos_i).reflectance()
     }
 }
 
@@ -117,12 +197,14 @@ pub fn conductor_rgb<T: Real>(cos_i: T, n: [T; 3], kappa: [T; 3]) -> [T; 3] {
 /// relative accuracy of the small real part, the part that decides a metal's
 /// reflectance at grazing angles. This is the classic formulation instead
 /// (Kahan, "Branch cuts for complex elementary functions", 1987).
-fn principal_sqrt<T: Real>(z: Complex<T>) -> Complex<T> {
-    if z.re == T::zero() && z.im == T::zero() {
-        return Complex::new(T::zero(), z.im);
+#[inline]
+fn principal_sqrt<T: Real>(z: Complex<Wide<T>>) -> Complex<Wide<T>> {
+    let zero = Wide::<T>::zero();
+    if z.re == zero && z.im == zero {
+        return Complex::new(zero, z.im);
     }
-    let t = ((z.re.abs() + z.re.hypotenuse(z.im)) * T::lit(0.5)).sqrt();
-    if z.re >= T::zero() {
+    let t = ((z.re.abs() + T::wide_hypotenuse(z.re, z.im)) * Wide::<T>::lit(0.5)).sqrt();
+    if z.re >= zero {
         Complex::new(t, z.im / (t + t))
     } else {
         Complex::new(z.im.abs() / (t + t), t.copysign(z.im))
@@ -138,7 +220,7 @@ mod tests {
         // √(−1 + iδ) = δ/2 + i(1 + δ²/8 + …): the real part is δ/2 to full
         // relative precision.
         let delta = 1e-10_f64;
-        let s = principal_sqrt(Complex::new(-1.0, delta));
+        let s = principal_sqrt::<f64>(Complex::new(-1.0, delta));
         assert!(
             (s.re / (delta / 2.0) - 1.0).abs() < 4.0 * f64::EPSILON,
             "{s}"
@@ -152,11 +234,11 @@ mod tests {
     #[test]
     fn principal_sqrt_matches_real_sqrt_on_the_real_axis() {
         assert_eq!(
-            principal_sqrt(Complex::new(2.25_f64, 0.0)),
+            principal_sqrt::<f64>(Complex::new(2.25_f64, 0.0)),
             Complex::new(1.5, 0.0)
         );
         assert_eq!(
-            principal_sqrt(Complex::new(-2.25_f64, 0.0)),
+            principal_sqrt::<f64>(Complex::new(-2.25_f64, 0.0)),
             Complex::new(0.0, 1.5)
         );
     }

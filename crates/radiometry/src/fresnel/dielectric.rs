@@ -95,6 +95,7 @@ impl<T: Real> DielectricFresnel<T> {
         Some(refract_resolved(wi, n, &self.incidence, cos_t))
     }
 
+    #[inline]
     fn all(value: T, cos_t: Option<T>, incidence: Incidence<T>) -> Self {
         let other = T::one() - value;
         Self {
@@ -144,23 +145,27 @@ pub fn dielectric_polarized<T: Real>(cos_i: T, eta: T) -> DielectricFresnel<T> {
 /// let incidence = Incidence::resolve(-0.9_f64, 1.5).unwrap();
 /// assert_eq!(dielectric_resolved(&incidence), dielectric_polarized(-0.9, 1.5));
 /// ```
+#[inline]
 pub fn dielectric_resolved<T: Real>(incidence: &Incidence<T>) -> DielectricFresnel<T> {
-    let (c, n_i, n_t) = (incidence.abs_cos_i, incidence.n_i, incidence.n_t);
-    let contrast = compensated::index_contrast(n_t, T::zero(), n_i); // n_t² − n_i²
-    if contrast == T::zero() {
-        // Index-matched (n_t = n_i): nothing reflects, θ_t = θ_i.
-        return DielectricFresnel::all(T::zero(), incidence.cos_transmitted(), *incidence);
-    }
-    // d = s² with s = n_t cos θ_t.
-    let Some((d, cos_t)) = incidence.snell() else {
-        return DielectricFresnel::all(T::one(), None, *incidence);
-    };
-    let s = d.sqrt();
+    // Evaluated in the tier's wide precision and rounded once at the end:
+    // for `f32`, whose products are exact in `f64`, that leaves one rounding
+    // per result.
+    let exact = T::PRODUCTS_EXACT_IN_WIDE;
+    let [c, n_i, n_t] = [incidence.abs_cos_i, incidence.n_i, incidence.n_t].map(T::widen);
+    let contrast = compensated::index_contrast(n_t, n_i, exact); // n_t² − n_i²
+                                                                 // d = s² with s = n_t cos θ_t; Snell's law decides whether light goes on.
+    let snell = incidence.snell();
+    let d = snell.discriminant;
+    // The general case is computed whatever the outcome and the special
+    // cases are chosen after it, so that a loop over many cosines has no
+    // branch and vectorises; `max` keeps the square root of a negative `d`
+    // (whose result is not chosen) out of the way.
+    let s = d.max(T::Wide::zero()).sqrt();
     let a = n_i * c; // n_i cos θ_i
 
     // T = 4 a s / w² is evaluated as 4c · (n_i s / w²): at grazing incidence
     // a = n_i c, or the product 4 a s, would underflow before the division.
-    let four_c = T::lit(4.0) * c;
+    let four_c = T::Wide::lit(4.0) * c;
 
     // (a + s)² as a² + 2as + s² with s² = d exactly as computed: at grazing
     // incidence this makes r_s = (n_i² − n_t²)/d = −1 to the last bit.
@@ -172,17 +177,25 @@ pub fn dielectric_resolved<T: Real>(incidence: &Incidence<T>) -> DielectricFresn
     let n_t2 = n_t * n_t;
     let b = n_t2 * c;
     let wp2 = b * b + (b + b) * (n_i * s) + n_i * n_i * d;
-    let brewster = compensated::brewster_factor(n_t, T::zero(), n_i, c);
+    let brewster = compensated::brewster_factor(n_t, n_i, c, exact);
     let r_p = sqr(contrast * brewster / wp2);
     let t_p = four_c * (n_i * n_t2 * s / wp2);
 
-    DielectricFresnel {
-        r_s: fraction(r_s),
-        r_p: fraction(r_p),
-        t_s: fraction(t_s),
-        t_p: fraction(t_p),
-        cos_t: Some(cos_t),
-        incidence: *incidence,
+    if contrast == T::Wide::zero() {
+        // Index-matched (n_t = n_i): nothing reflects, θ_t = θ_i.
+        DielectricFresnel::all(T::zero(), incidence.cos_transmitted(), *incidence)
+    } else if !snell.transmits {
+        DielectricFresnel::all(T::one(), None, *incidence)
+    } else {
+        let narrow = |x| T::narrow(fraction(x));
+        DielectricFresnel {
+            r_s: narrow(r_s),
+            r_p: narrow(r_p),
+            t_s: narrow(t_s),
+            t_p: narrow(t_p),
+            cos_t: Some(incidence.cos_from_root(s)),
+            incidence: *incidence,
+        }
     }
 }
 

@@ -29,8 +29,9 @@ use crate::Real;
 mod conductor;
 mod dielectric;
 mod schlick;
+mod slice;
 
-pub use conductor::{conductor, conductor_polarized, conductor_rgb, ConductorFresnel};
+pub use conductor::{conductor, conductor_polarized, conductor_rgb, Conductor, ConductorFresnel};
 pub use dielectric::{
     dielectric, dielectric_polarized, dielectric_resolved, dielectric_rgb,
     dielectric_transmittance, DielectricFresnel,
@@ -39,6 +40,7 @@ pub use schlick::{
     schlick, schlick_dielectric, schlick_dielectric_resolved, schlick_dielectric_working,
     schlick_rgb, SchlickCosine, SchlickDielectric,
 };
+pub use slice::{conductor_slice, dielectric_slice};
 
 /// Normal-incidence reflectance `F0 = ((n − 1)² + κ²) / ((n + 1)² + κ²)` of
 /// an interface from a medium of index 1 into one of index `n + i·kappa`.

@@ -48,7 +48,7 @@ impl Tracer<'_> {
             match self.scene.materials[hit.material as usize] {
                 Material::Flat { radiance } => return sum + radiance,
                 Material::NormalColour => return sum + (n * 0.5 + 0.5),
-                Material::Conductor { n: eta, kappa } => {
+                Material::Conductor { n: eta, kappa, .. } => {
                     let f0 = fresnel::f0_rgb(eta, kappa);
                     let cos = (-ray.direction).dot(n);
                     weight *= rgb(|c| course::fresnel_000_glsl(f0[c], cos));

@@ -87,9 +87,13 @@ impl Tracer<'_> {
     pub(crate) fn lobes(&self, hit: &Hit, n: Vec3, wo: Vec3, material: &Material) -> Lobes {
         match *material {
             Material::Dielectric { eta } => self.dielectric_lobes(hit, n, wo, eta),
-            Material::Conductor { n: eta, kappa } => {
+            Material::Conductor {
+                n: eta,
+                kappa,
+                ref exact,
+            } => {
                 let facing = if n.dot(wo) < 0.0 { -n } else { n };
-                let weight = self.conductor_fresnel(facing.dot(wo), eta, kappa);
+                let weight = self.conductor_fresnel(facing.dot(wo), eta, kappa, exact);
                 let ray = Ray::new(
                     spawn::origin(hit, facing, self.settings.ray_offset),
                     specular::reflect(wo, facing),
@@ -145,9 +149,15 @@ impl Tracer<'_> {
     }
 
     /// Conductor reflectance per channel at `cos_i`, by the chosen law.
-    fn conductor_fresnel(&self, cos_i: f32, n: [f32; 3], kappa: [f32; 3]) -> Vec3 {
+    fn conductor_fresnel(
+        &self,
+        cos_i: f32,
+        n: [f32; 3],
+        kappa: [f32; 3],
+        exact: &[fresnel::Conductor<f32>; 3],
+    ) -> Vec3 {
         Vec3::from_array(match self.settings.fresnel {
-            FresnelModel::Exact => fresnel::conductor_rgb(cos_i, n, kappa),
+            FresnelModel::Exact => exact.map(|law| law.reflectance(cos_i)),
             FresnelModel::Schlick => fresnel::schlick_rgb(cos_i, fresnel::f0_rgb(n, kappa)),
             FresnelModel::Course => {
                 let f0 = fresnel::f0_rgb(n, kappa);

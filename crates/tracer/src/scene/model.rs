@@ -64,6 +64,8 @@ pub enum Material {
         n: [f32; 3],
         /// Extinction per channel.
         kappa: [f32; 3],
+        /// The exact law per channel, its angle-free parts computed once.
+        exact: [radiometry::fresnel::Conductor<f32>; 3],
     },
     /// See [`MaterialSpec::Dielectric`](super::schema::MaterialSpec::Dielectric).
     Dielectric {

@@ -5,6 +5,7 @@
 
 use glam::{DVec3, Vec3};
 use radiometry::domain::{self, DomainError};
+use radiometry::fresnel;
 
 use super::schema::{CameraSpec, LightSpec, MaterialSpec, ObjectSpec, SceneFile};
 use super::{
@@ -315,16 +316,23 @@ fn validate_material(p: &str, spec: &MaterialSpec) -> Result<Material, SceneErro
             }
         }
         MaterialSpec::Conductor { n, kappa } => {
-            for (axis, (n, k)) in ["[0]", "[1]", "[2]"]
-                .into_iter()
-                .zip(n.into_iter().zip(kappa))
-            {
-                domain::INDEX_RANGE_F32.refractive_index(&format!("{p}.n{axis}"), n)?;
-                domain::INDEX_RANGE_F32.extinction(&format!("{p}.kappa{axis}"), k)?;
-            }
+            let channel = |ch: usize, axis: &str| -> Result<fresnel::Conductor<f32>, SceneError> {
+                let name = format!("{p}.n{axis}");
+                let n = domain::INDEX_RANGE_F32.refractive_index(&name, n[ch])? as f32;
+                let k_name = format!("{p}.kappa{axis}");
+                let k = domain::INDEX_RANGE_F32.extinction(&k_name, kappa[ch])? as f32;
+                // Always a conductor once both are in range; the law's own
+                // refusal is kept rather than assumed.
+                let refused = || DomainError::NotFinite {
+                    name,
+                    value: f64::from(n),
+                };
+                Ok(fresnel::Conductor::new(n, k).ok_or_else(refused)?)
+            };
             Material::Conductor {
                 n: n.map(|x| x as f32),
                 kappa: kappa.map(|x| x as f32),
+                exact: [channel(0, "[0]")?, channel(1, "[1]")?, channel(2, "[2]")?],
             }
         }
         MaterialSpec::Dielectric { eta } => Material::Dielectric {
