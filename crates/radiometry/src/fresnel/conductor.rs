@@ -122,7 +122,7 @@ impl<T: Real> Conductor<T> {
 
     /// Reflectance per polarisation at `cos_i` (its sign is ignored: light
     /// arrives from the dielectric side); NaN for a NaN cosine.
-    #[inline]
+    #[inline(always)]
     pub fn polarized(&self, cos_i: T) -> ConductorFresnel<T> {
         if cos_i.is_nan() {
             return ConductorFresnel::undefined();
@@ -134,23 +134,23 @@ impl<T: Real> Conductor<T> {
             compensated::discriminant_from(self.contrast, c, exact),
             self.two_nk,
         );
-        let s = principal_sqrt::<T>(d);
+        let (u, us) = scaled_root::<T>(d);
         let brewster = Complex::new(
             compensated::brewster_from(self.brewster, c, exact),
             c * c * self.two_nk,
         );
 
-        // |x + s|² = |x|² + 2 Re(x̄ s) + |s|² with |s|² = |d|: at grazing
-        // incidence (x = 0) the ratios below are then |d| / |d| = 1 to the
-        // last bit.
+        // |x + s|² = |x|² + 2 Re(x̄ s) + |s|² with |s|² = |d|, each times u:
+        // at grazing incidence (x = 0) the ratios below are then
+        // u|d| / u|d| = 1 to the last bit.
         let abs = |z: Complex<Wide<T>>| T::wide_hypotenuse(z.re, z.im);
         let two = Wide::<T>::lit(2.0);
-        let abs_d = abs(d);
-        let ws2 = c * c + two * c * s.re + abs_d; // Re s ≥ 0: no cancellation
+        let u_abs_d = u * abs(d);
+        let u_ws2 = u * (c * c) + two * c * us.re + u_abs_d; // Re s ≥ 0: no cancellation
         let b = self.eta2 * c;
-        let wp2 = b.norm_sqr() + two * (b.re * s.re + b.im * s.im) + abs_d;
-        let r_s = sqr(self.abs_eta2_m1 / ws2);
-        let r_p = sqr(self.abs_eta2_m1 * abs(brewster) / wp2);
+        let u_wp2 = u * b.norm_sqr() + two * (b.re * us.re + b.im * us.im) + u_abs_d;
+        let r_s = sqr(self.abs_eta2_m1 * u / u_ws2);
+        let r_p = sqr(self.abs_eta2_m1 * abs(brewster) * u / u_wp2);
         // Index-matched (η = 1) reflects nothing; chosen here rather than
         // computed, as 0 / ws2 is NaN at grazing incidence (ws2 = 0).
         let zero = Wide::<T>::zero();
@@ -189,26 +189,34 @@ pub fn conductor_rgb<T: Real>(cos_i: T, n: [T; 3], kappa: [T; 3]) -> [T; 3] {
     core::array::from_fn(|ch| conductor(cos_i, n[ch], kappa[ch]))
 }
 
-/// Principal square root (`Re ≥ 0`), accurate in both parts.
+/// The principal square root `s` of `z` (`Re s ≥ 0`) as `(u, u·s)` for a
+/// positive `u`, without a division: the laws need `s` only in ratios, so
+/// the scale cancels, and a division is the slowest step there is.
 ///
 /// `num_complex::Complex::sqrt` goes through polar form, `√r · e^{iθ/2}`; for
 /// an argument near the negative real axis `cos(θ/2)` is taken of an angle
 /// near π/2 that carries an absolute rounding error, which destroys the
 /// relative accuracy of the small real part, the part that decides a metal's
 /// reflectance at grazing angles. This is the classic formulation instead
-/// (Kahan, "Branch cuts for complex elementary functions", 1987).
+/// (Kahan, "Branch cuts for complex elementary functions", 1987): with
+/// `t = √((|x| + |z|) / 2)`, `s = (t, y / 2t)` for `x ≥ 0` and
+/// `(|y| / 2t, ±t)` otherwise; scaled by `u = 2t` both parts are products,
+/// and `2t² = |x| + |z|` is used as summed rather than squared back.
 #[inline]
-fn principal_sqrt<T: Real>(z: Complex<Wide<T>>) -> Complex<Wide<T>> {
+fn scaled_root<T: Real>(z: Complex<Wide<T>>) -> (Wide<T>, Complex<Wide<T>>) {
     let zero = Wide::<T>::zero();
     if z.re == zero && z.im == zero {
-        return Complex::new(zero, z.im);
+        return (Wide::<T>::one(), Complex::new(zero, z.im));
     }
-    let t = ((z.re.abs() + T::wide_hypotenuse(z.re, z.im)) * Wide::<T>::lit(0.5)).sqrt();
-    if z.re >= zero {
-        Complex::new(t, z.im / (t + t))
+    let two_t2 = z.re.abs() + T::wide_hypotenuse(z.re, z.im);
+    let t = (two_t2 * Wide::<T>::lit(0.5)).sqrt();
+    let u = t + t;
+    let us = if z.re >= zero {
+        Complex::new(two_t2, z.im)
     } else {
-        Complex::new(z.im.abs() / (t + t), t.copysign(z.im))
-    }
+        Complex::new(z.im.abs(), two_t2.copysign(z.im))
+    };
+    (u, us)
 }
 
 #[cfg(test)]
@@ -216,11 +224,12 @@ mod tests {
     use super::*;
 
     #[test]
-    fn principal_sqrt_is_accurate_near_the_negative_real_axis() {
+    fn scaled_root_is_accurate_near_the_negative_real_axis() {
         // √(−1 + iδ) = δ/2 + i(1 + δ²/8 + …): the real part is δ/2 to full
         // relative precision.
         let delta = 1e-10_f64;
-        let s = principal_sqrt::<f64>(Complex::new(-1.0, delta));
+        let (u, us) = scaled_root::<f64>(Complex::new(-1.0, delta));
+        let s = us / u;
         assert!(
             (s.re / (delta / 2.0) - 1.0).abs() < 4.0 * f64::EPSILON,
             "{s}"
@@ -232,14 +241,18 @@ mod tests {
     }
 
     #[test]
-    fn principal_sqrt_matches_real_sqrt_on_the_real_axis() {
+    fn scaled_root_matches_real_sqrt_on_the_real_axis() {
+        for (z, root) in [
+            (2.25, Complex::new(1.5, 0.0)),
+            (-2.25, Complex::new(0.0, 1.5)),
+        ] {
+            let (u, us) = scaled_root::<f64>(Complex::new(z, 0.0));
+            assert!(u > 0.0);
+            assert_eq!(us / u, root, "√{z}");
+        }
         assert_eq!(
-            principal_sqrt::<f64>(Complex::new(2.25_f64, 0.0)),
-            Complex::new(1.5, 0.0)
-        );
-        assert_eq!(
-            principal_sqrt::<f64>(Complex::new(-2.25_f64, 0.0)),
-            Complex::new(0.0, 1.5)
+            scaled_root::<f64>(Complex::new(0.0, 0.0)),
+            (1.0, Complex::new(0.0, 0.0))
         );
     }
 }
