@@ -38,7 +38,10 @@ fn requests(count: usize) -> String {
 fn batch_throughput(c: &mut Criterion) {
     const LINES: usize = 100_000;
     let input = requests(LINES);
-    let args = BatchArgs { block: 16384 };
+    let args = BatchArgs {
+        block: 16384,
+        no_steps: false,
+    };
     let mut group = c.benchmark_group("batch");
     group.throughput(Throughput::Elements(LINES as u64));
     group.sample_size(10);

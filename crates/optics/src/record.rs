@@ -11,6 +11,11 @@
 //! [`crate::Ui::show`] (or [`crate::Ui::show_steps`], whose text is the
 //! steps alone). A failure prints the error object of
 //! [`crate::Error::to_json`] instead.
+//!
+//! Whether the working is wanted ([`Steps`]) is decided once by the caller
+//! (`optics batch --no-steps`, a request's `"steps"`) and handed to the law,
+//! which gives it to its record ([`Record::with_steps`]); each step is a
+//! closure, so a record whose working is skipped never formats it.
 
 use crate::lang::Lang;
 use serde::Serialize;
@@ -30,6 +35,27 @@ pub enum Answer {
     Object(Map<String, Value>),
     /// Yes or no (whether every check of the harness passed).
     Verdict(bool),
+}
+
+/// Whether a record's working is written: every subcommand wants it; `optics
+/// batch` skips it for `--no-steps` or a request's `"steps": false`, and the
+/// record's `steps` is then `[]`.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Steps {
+    #[default]
+    Wanted,
+    Skipped,
+}
+
+impl Steps {
+    /// `true` is [`Steps::Wanted`], as a request's `"steps"` says it.
+    pub fn from_wanted(wanted: bool) -> Self {
+        if wanted {
+            Steps::Wanted
+        } else {
+            Steps::Skipped
+        }
+    }
 }
 
 /// One evaluation: what was asked, the answer with its unit, and the working.
@@ -54,8 +80,12 @@ pub struct Record {
     pub answer_text: Option<String>,
     /// The answer's unit: `"1"` for dimensionless, `"W/(sr m^2)"`, `"deg"`.
     pub unit: &'static str,
-    /// The working, one line each: formula, substitution, result.
+    /// The working, one line each: formula, substitution, result; empty
+    /// when [`Steps::Skipped`].
     pub steps: Vec<String>,
+    /// Whether [`Record::step`] writes its line.
+    #[serde(skip)]
+    wanted: Steps,
     /// Further named results (R_s, R_p, T, …), machine-readable.
     #[serde(skip_serializing_if = "Map::is_empty")]
     pub details: Map<String, Value>,
@@ -74,9 +104,17 @@ impl Record {
             answer_text: None,
             unit,
             steps: Vec::new(),
+            wanted: Steps::Wanted,
             details: Map::new(),
             notes: Vec::new(),
         }
+    }
+
+    /// The record with its working written or skipped, as the caller
+    /// decided.
+    pub fn with_steps(mut self, steps: Steps) -> Self {
+        self.wanted = steps;
+        self
     }
 
     /// The answer, with how it reads for people when a bare number would say
@@ -111,8 +149,11 @@ impl Record {
         self
     }
 
-    pub fn step(&mut self, line: String) -> &mut Self {
-        self.steps.push(line);
+    /// A line of the working, formatted only when the working is wanted.
+    pub fn step(&mut self, line: impl FnOnce() -> String) -> &mut Self {
+        if self.wanted == Steps::Wanted {
+            self.steps.push(line());
+        }
         self
     }
 
@@ -248,7 +289,7 @@ mod tests {
             .details_from(serde_json::json!({ "png": "a.png" }))
             .details_from(3)
             .set_answer(Answer::Number(1e6), None)
-            .step("rendered".into());
+            .step(|| "rendered".into());
         let json = serde_json::to_value(&record).unwrap();
         assert_eq!(
             json,
