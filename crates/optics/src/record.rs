@@ -18,8 +18,10 @@
 //! closure, so a record whose working is skipped never formats it.
 
 use crate::lang::Lang;
-use serde::Serialize;
+use serde::ser::SerializeMap;
+use serde::{Serialize, Serializer};
 use serde_json::{Map, Value};
+use std::borrow::Cow;
 
 /// The answer to one evaluation.
 #[derive(Clone, Debug, Serialize)]
@@ -70,7 +72,7 @@ pub struct Record {
     #[serde(skip)]
     pub title: String,
     /// The inputs as given (directions before normalisation).
-    pub inputs: Map<String, Value>,
+    pub inputs: Fields,
     /// The answer: a number, a vector `[x, y, z]`, `null` when none exists,
     /// or a list.
     pub answer: Answer,
@@ -87,8 +89,8 @@ pub struct Record {
     #[serde(skip)]
     wanted: Steps,
     /// Further named results (R_s, R_p, T, …), machine-readable.
-    #[serde(skip_serializing_if = "Map::is_empty")]
-    pub details: Map<String, Value>,
+    #[serde(skip_serializing_if = "Fields::is_empty")]
+    pub details: Fields,
     /// Remarks: normalised inputs, disagreements with a printed answer.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub notes: Vec<String>,
@@ -99,13 +101,13 @@ impl Record {
         Self {
             law,
             title,
-            inputs: Map::new(),
+            inputs: Fields::default(),
             answer: Answer::None,
             answer_text: None,
             unit,
             steps: Vec::new(),
             wanted: Steps::Wanted,
-            details: Map::new(),
+            details: Fields::default(),
             notes: Vec::new(),
         }
     }
@@ -139,13 +141,13 @@ impl Record {
         self
     }
 
-    pub fn input(&mut self, name: &str, value: impl Serialize) -> &mut Self {
-        self.inputs.insert(name.to_owned(), json(value));
+    pub fn input(&mut self, name: &'static str, value: impl Serialize) -> &mut Self {
+        self.inputs.insert(Cow::Borrowed(name), json(value));
         self
     }
 
-    pub fn detail(&mut self, name: &str, value: impl Serialize) -> &mut Self {
-        self.details.insert(name.to_owned(), json(value));
+    pub fn detail(&mut self, name: &'static str, value: impl Serialize) -> &mut Self {
+        self.details.insert(Cow::Borrowed(name), json(value));
         self
     }
 
@@ -211,12 +213,59 @@ fn json(value: impl Serialize) -> Value {
     serde_json::to_value(value).unwrap_or(Value::Null)
 }
 
-fn fields_into(map: &mut Map<String, Value>, value: impl Serialize) {
+fn fields_into(fields: &mut Fields, value: impl Serialize) {
     match json(value) {
-        Value::Object(fields) => map.extend(fields),
-        other => {
-            map.insert("value".to_owned(), other);
+        Value::Object(map) => {
+            for (name, value) in map {
+                fields.insert(Cow::Owned(name), value);
+            }
         }
+        other => fields.insert(Cow::Borrowed("value"), other),
+    }
+}
+
+/// A record's named values (its `inputs`, its `details`), written as one
+/// JSON object with the names in byte order, as `serde_json`'s own map
+/// writes them. A record has a handful, so a sorted list serves, and the
+/// laws' names (`&'static str`) are never copied.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Fields(Vec<(Cow<'static, str>, Value)>);
+
+impl Fields {
+    /// Sets `name` to `value`, replacing the value it had.
+    pub fn insert(&mut self, name: Cow<'static, str>, value: Value) {
+        // A law sets a handful: room for them at once, not grown by doubling.
+        self.0.reserve(if self.0.is_empty() { 8 } else { 1 });
+        match self.0.binary_search_by(|(n, _)| byte_order(n, &name)) {
+            Ok(i) => self.0[i].1 = value,
+            Err(i) => self.0.insert(i, (name, value)),
+        }
+    }
+
+    /// The value of `name`, if set.
+    pub fn get(&self, name: &str) -> Option<&Value> {
+        let i = self.0.binary_search_by(|(n, _)| byte_order(n, name)).ok()?;
+        Some(&self.0[i].1)
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.0.is_empty()
+    }
+}
+
+/// The order of `str`, byte by byte: the names are a few bytes long, and
+/// compared in place they cost less than a call to compare memory.
+fn byte_order(a: &str, b: &str) -> std::cmp::Ordering {
+    a.bytes().cmp(b.bytes())
+}
+
+impl Serialize for Fields {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        let mut map = serializer.serialize_map(Some(self.0.len()))?;
+        for (name, value) in &self.0 {
+            map.serialize_entry(name.as_ref(), value)?;
+        }
+        map.end()
     }
 }
 
@@ -263,6 +312,7 @@ pub fn percent(x: f64, decimals: usize) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use serde_json::json;
 
     #[test]
     fn numbers_show_six_significant_digits_without_trailing_zeros() {
@@ -302,6 +352,30 @@ mod tests {
                 "details": { "png": "a.png", "value": 3 },
             })
         );
+    }
+
+    /// The names in byte order and a name set twice keeping its last value,
+    /// as `serde_json`'s map writes them: the text is the same.
+    #[test]
+    fn fields_are_written_as_a_json_map_writes_them() {
+        let sets = [
+            ("r_s", json!(0.25)),
+            ("r_p", json!(1e-300)),
+            ("transmittance", json!(0.5)),
+            ("cos_t", json!(null)),
+            ("total_internal_reflection", json!(false)),
+            ("R", json!("upper case sorts first")),
+            ("r_s", json!(0.75)),
+        ];
+        let (mut fields, mut map) = (Fields::default(), Map::new());
+        for (name, value) in sets {
+            fields.insert(Cow::Owned(name.to_owned()), value.clone());
+            map.insert(name.to_owned(), value);
+        }
+        let written = serde_json::to_string(&fields).unwrap();
+        assert_eq!(written, serde_json::to_string(&map).unwrap());
+        assert_eq!(fields.get("r_s"), Some(&json!(0.75)));
+        assert_eq!(fields.get("kappa"), None);
     }
 
     #[test]

@@ -157,7 +157,7 @@ impl FresnelArgs {
             Some(deg) => record.input("theta_i_deg", deg),
             None => record.input("cos_i", cos_i),
         };
-        record.input("model", self.model.to_string());
+        record.input("model", self.model);
         record
     }
 }
