@@ -21,7 +21,6 @@ pub(crate) mod request;
 use crate::error::{Error, ErrorKind, Result};
 use crate::lang::Lang;
 use crate::record::Steps;
-use rayon::prelude::*;
 use serde_json::{json, Value};
 use std::io::{BufRead, Write};
 use std::ops::Range;
@@ -123,6 +122,15 @@ thread_local! {
 }
 
 impl Block {
+    /// Reads up to `lines` lines of `input` into the block, in place of
+    /// those it held, the first of them number `first`.
+    fn fill(&mut self, input: &mut impl BufRead, lines: usize, first: usize) -> Result<()> {
+        self.text.clear();
+        self.lines.clear();
+        while self.lines.len() < lines && self.read_line(input, first + self.lines.len())? {}
+        Ok(())
+    }
+
     /// Reads the next line of `input` (number `number`) into the block,
     /// without its `\n` or `\r\n`; `false` at the end. Only the reader
     /// itself failing is an error.
@@ -198,7 +206,8 @@ impl Share {
 
 /// Streams `input` to `output`; returns how many lines were read and how
 /// many of them gave errors. Lines are held only as they arrive, however
-/// large the block.
+/// large the block. While one block is evaluated the next is read, and a
+/// reader that fails ends the run after the blocks before it are written.
 pub fn run(
     args: &BatchArgs,
     mut input: impl BufRead,
@@ -207,36 +216,30 @@ pub fn run(
 ) -> Result<(usize, usize)> {
     let (block_lines, steps) = (args.block as usize, args.steps());
     let (mut read, mut failed) = (0usize, 0usize);
-    let mut block = Block::default();
+    let (mut block, mut next) = (Block::default(), Block::default());
     let mut shares: Vec<Share> = Vec::new();
-    loop {
-        block.text.clear();
-        block.lines.clear();
-        while block.lines.len() < block_lines {
-            if !block.read_line(&mut input, read + block.lines.len() + 1)? {
-                break;
-            }
-        }
-        if block.lines.is_empty() {
-            break;
-        }
+    block.fill(&mut input, block_lines, 1)?;
+    while !block.lines.is_empty() {
         let count = block.lines.len().div_ceil(SHARE);
         if shares.len() < count {
             shares.resize_with(count, Share::default);
         }
-        let block = &block;
-        shares[..count]
-            .par_iter_mut()
-            .zip(block.lines.par_chunks(SHARE))
-            .enumerate()
-            .for_each(|(i, (share, lines))| {
-                share.evaluate(block, lines, read + i * SHARE + 1, lang, steps)
-            });
+        let after = read + block.lines.len();
+        let filled = rayon::in_place_scope(|scope| {
+            let lines = block.lines.chunks(SHARE);
+            for (i, (share, lines)) in shares.iter_mut().zip(lines).enumerate() {
+                let (block, first) = (&block, read + i * SHARE + 1);
+                scope.spawn(move |_| share.evaluate(block, lines, first, lang, steps));
+            }
+            next.fill(&mut input, block_lines, after + 1)
+        });
         for share in &shares[..count] {
             output.write_all(&share.out).map_err(ErrorKind::Write)?;
             failed += share.failed;
         }
-        read += block.lines.len();
+        filled?;
+        read = after;
+        std::mem::swap(&mut block, &mut next);
     }
     output.flush().map_err(ErrorKind::Write)?;
     Ok((read, failed))
