@@ -32,7 +32,7 @@ use std::ops::Range;
 and the other fields are the subcommand's flags with '_' for '-' and vectors as [x, y, z].
 A request's "steps": true or false overrides --no-steps for that line.
 
-Example:
+Examples:
   printf '%s\n' '{"law": "fresnel", "eta": 1.5, "cos_i": 0.3}' \
                 '{"law": "refract", "wi": [0, 0.6, 0.8], "normal": [0, 0, 1], "eta": 1.5}' | optics batch
   printf '%s\n' '{"law": "fresnel", "eta": 1.5, "cos_i": 0.3}' \
