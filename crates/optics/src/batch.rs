@@ -11,7 +11,7 @@
 //! thread count.
 //!
 //! Whether a line's working is written is decided once, where the line is
-//! read ([`request`]): its own `"steps"`, else `--no-steps`. Each block is
+//! read (module `request`): its own `"steps"`, else `--no-steps`. Each block is
 //! read into one buffer, and each share of it is written into one buffer
 //! of output, both kept from block to block, so that memory stays flat
 //! however many lines pass.
