@@ -9,27 +9,34 @@
 //! holds (bytes that are not UTF-8 included). Lines are evaluated in
 //! parallel in blocks; the output order is the input order whatever the
 //! thread count.
+//!
+//! Whether a line's working is written is decided once, where the line is
+//! read (module `request`): its own `"steps"`, else `--no-steps`. Each block is
+//! read into one buffer, and each share of it is written into one buffer
+//! of output, both kept from block to block, so that memory stays flat
+//! however many lines pass.
+
+pub(crate) mod request;
 
 use crate::error::{Error, ErrorKind, Result};
-use crate::input::Via;
 use crate::lang::Lang;
-use crate::laws::{FresnelArgs, ReflectArgs, RefractArgs, ShadeArgs};
-use crate::quiz::{BlinnPhongArgs, CriticalAngleArgs, F0Args, LambertArgs};
-use crate::record::Record;
-use rayon::prelude::*;
-use serde::de::DeserializeOwned;
-use serde_json::{json, Map, Value};
+use crate::record::Steps;
+use serde_json::{json, Value};
 use std::io::{BufRead, Write};
+use std::ops::Range;
 
 #[derive(clap::Args, Debug)]
 #[command(
     after_help = r#"Requests are JSON objects, one per line; "law" is one of:
   fresnel, refract, reflect, shade, f0, lambert, critical_angle, blinn_phong
 and the other fields are the subcommand's flags with '_' for '-' and vectors as [x, y, z].
+A request's "steps": true or false overrides --no-steps for that line.
 
-Example:
+Examples:
   printf '%s\n' '{"law": "fresnel", "eta": 1.5, "cos_i": 0.3}' \
                 '{"law": "refract", "wi": [0, 0.6, 0.8], "normal": [0, 0, 1], "eta": 1.5}' | optics batch
+  printf '%s\n' '{"law": "fresnel", "eta": 1.5, "cos_i": 0.3}' \
+                '{"law": "f0", "n": 1.5, "steps": true}' | optics batch --no-steps
 
 Exit status: 0 when every line was evaluated, 1 when any line gave an error object."#
 )]
@@ -37,6 +44,16 @@ pub struct BatchArgs {
     /// Lines evaluated together in parallel before their results are written.
     #[arg(long, default_value_t = 16384, value_parser = clap::value_parser!(u32).range(1..))]
     pub block: u32,
+    /// Skip the working: each record's "steps" is [] (a request's own "steps" overrides this).
+    #[arg(long)]
+    pub no_steps: bool,
+}
+
+impl BatchArgs {
+    /// The working wanted of a line that does not say.
+    fn steps(&self) -> Steps {
+        Steps::from_wanted(!self.no_steps)
+    }
 }
 
 /// The laws a request may name, in the order `--help` lists them.
@@ -51,88 +68,49 @@ pub const LAWS: [&str; 8] = [
     "blinn_phong",
 ];
 
-/// Evaluates one request.
-pub fn evaluate(request: Map<String, Value>, law: &str, lang: Lang) -> Result<Record> {
-    fn parse<T: DeserializeOwned>(fields: Map<String, Value>) -> Result<T> {
-        serde_path_to_error::deserialize(Value::Object(fields)).map_err(|e| {
-            let path = e.path().to_string();
-            let message = e.inner().to_string();
-            let path = (path != ".").then_some(path);
-            ErrorKind::Request { path, message }.into()
-        })
-    }
-    let via = Via::Json;
-    Ok(match law {
-        "fresnel" => parse::<FresnelArgs>(request)?.solve(via, lang)?,
-        "refract" => parse::<RefractArgs>(request)?.solve(via, lang)?,
-        "reflect" => parse::<ReflectArgs>(request)?.solve(via, lang)?,
-        "shade" => parse::<ShadeArgs>(request)?.solve(via, lang)?,
-        "f0" => parse::<F0Args>(request)?.solve(via, lang)?,
-        "lambert" => parse::<LambertArgs>(request)?.solve(via, lang)?,
-        "critical_angle" => parse::<CriticalAngleArgs>(request)?.solve(via, lang)?,
-        "blinn_phong" => parse::<BlinnPhongArgs>(request)?.solve(via, lang)?,
-        other => {
-            let law = other.to_owned();
-            return Err(ErrorKind::UnknownLaw { law }.into());
-        }
-    })
-}
-
-/// A request line taken apart: the law it names and its other fields.
-fn request(text: &str) -> Result<(String, Map<String, Value>), (Value, Error)> {
-    let refuse = |law: Value, kind: ErrorKind| Err((law, Error::from(kind)));
-    if text.trim().is_empty() {
-        return refuse(Value::Null, ErrorKind::EmptyLine);
-    }
-    let mut request = match serde_json::from_str::<Value>(text) {
-        Ok(Value::Object(map)) => map,
-        Ok(_) => return refuse(Value::Null, ErrorKind::NotAnObject),
-        Err(e) => return refuse(Value::Null, ErrorKind::MalformedJson(e)),
-    };
-    match request.remove("law") {
-        Some(Value::String(law)) => Ok((law, request)),
-        Some(other) => refuse(other, ErrorKind::LawNotString),
-        None => refuse(Value::Null, ErrorKind::LawMissing),
-    }
-}
-
-/// One input line to one output line (without the newline), and whether it
-/// was evaluated. A line that fails gives `{"line", "law", "error"}`, the
+/// One input line to one output line, without the newline, appended to
+/// `out`; whether it was evaluated. `steps` is the working wanted unless
+/// the line says. A line that fails gives `{"line", "law", "error"}`, the
 /// error as [`Error::to_json`] writes it.
-pub fn line(number: usize, text: &str, lang: Lang) -> (String, bool) {
-    let outcome = request(text).and_then(|(law, fields)| {
-        let record = evaluate(fields, &law, lang);
-        let json = record.and_then(|r| {
-            serde_json::to_string(&r)
+pub fn line(number: usize, text: &str, lang: Lang, steps: Steps, out: &mut Vec<u8>) -> bool {
+    let request = request::typed(text, steps).map_or_else(|| request::general(text, steps), Ok);
+    let start = out.len();
+    let written = request.and_then(|request| {
+        let record = request.law.solve(lang, request.steps);
+        let json = record.and_then(|record| {
+            serde_json::to_writer(&mut *out, &record)
                 .map_err(ErrorKind::Encode)
                 .map_err(Error::from)
         });
-        json.map_err(|error| (Value::String(law), error))
+        json.map_err(|error| (Value::String(request.name.into_owned()), error))
     });
-    match outcome {
-        Ok(json) => (json, true),
-        Err((law, error)) => (failed_line(number, law, &error, lang), false),
-    }
-}
-
-fn failed_line(number: usize, law: Value, error: &Error, lang: Lang) -> String {
-    json!({ "line": number, "law": law, "error": error.to_json(lang) }).to_string()
-}
-
-/// A line as read: its text, or the bytes that are not UTF-8 and the
-/// 1-based column of the first byte that is not.
-type Text = std::result::Result<String, usize>;
-
-/// [`line`] for a line as read: bytes that are not UTF-8 are that line's
-/// error, and the lines around it go on.
-fn read_line(number: usize, text: &Text, lang: Lang) -> (String, bool) {
-    match text {
-        Ok(text) => line(number, text, lang),
-        Err(column) => {
-            let error = Error::from(ErrorKind::NotUtf8 { column: *column });
-            (failed_line(number, Value::Null, &error, lang), false)
+    match written {
+        Ok(()) => true,
+        Err((law, error)) => {
+            out.truncate(start);
+            failed_line(number, law, &error, lang, out);
+            false
         }
     }
+}
+
+fn failed_line(number: usize, law: Value, error: &Error, lang: Lang, out: &mut Vec<u8>) {
+    let json = json!({ "line": number, "law": law, "error": error.to_json(lang) });
+    // A `Value` has string keys only, and writing into memory cannot fail.
+    let _ = serde_json::to_writer(out, &json);
+}
+
+/// A line as read: where its text lies in the block, or the 1-based column
+/// of its first byte that is not UTF-8.
+type Text = std::result::Result<Range<usize>, usize>;
+
+/// The lines of one block: their text, one after another, and where each lies.
+#[derive(Default)]
+struct Block {
+    text: String,
+    lines: Vec<Text>,
+    /// The bytes of the line being read.
+    bytes: Vec<u8>,
 }
 
 #[cfg(test)]
@@ -143,69 +121,125 @@ thread_local! {
         const { std::cell::Cell::new(false) };
 }
 
-/// The next line of `input` (number `number`), without its `\n` or
-/// `\r\n`; `None` at the end. Only the reader itself failing is an error.
-fn next_line(input: &mut impl BufRead, number: usize) -> Result<Option<Text>> {
-    let mut bytes = Vec::new();
-    let read = input.read_until(b'\n', &mut bytes);
-    let read = read.map_err(|source| ErrorKind::ReadLine {
-        line: number,
-        source,
-    })?;
-    if read == 0 {
-        return Ok(None);
+impl Block {
+    /// Reads up to `lines` lines of `input` into the block, in place of
+    /// those it held, the first of them number `first`.
+    fn fill(&mut self, input: &mut impl BufRead, lines: usize, first: usize) -> Result<()> {
+        self.text.clear();
+        self.lines.clear();
+        while self.lines.len() < lines && self.read_line(input, first + self.lines.len())? {}
+        Ok(())
     }
-    if bytes.last() == Some(&b'\n') {
-        bytes.pop();
-        if bytes.last() == Some(&b'\r') {
-            bytes.pop();
+
+    /// Reads the next line of `input` (number `number`) into the block,
+    /// without its `\n` or `\r\n`; `false` at the end. Only the reader
+    /// itself failing is an error.
+    fn read_line(&mut self, input: &mut impl BufRead, number: usize) -> Result<bool> {
+        self.bytes.clear();
+        let read = input.read_until(b'\n', &mut self.bytes);
+        let read = read.map_err(|source| ErrorKind::ReadLine {
+            line: number,
+            source,
+        })?;
+        if read == 0 {
+            return Ok(false);
+        }
+        let mut bytes = &self.bytes[..];
+        if let Some(line) = bytes.strip_suffix(b"\n") {
+            bytes = line.strip_suffix(b"\r").unwrap_or(line);
+        }
+        let text = match std::str::from_utf8(bytes) {
+            Ok(line) => {
+                let start = self.text.len();
+                self.text.push_str(line);
+                Ok(start..self.text.len())
+            }
+            Err(e) => Err(e.valid_up_to() + 1),
+        };
+        #[cfg(test)]
+        if text.is_err() && NOT_UTF8_STOPS_THE_RUN.get() {
+            let source = std::io::Error::from(std::io::ErrorKind::InvalidData);
+            let line = number;
+            return Err(ErrorKind::ReadLine { line, source }.into());
+        }
+        self.lines.push(text);
+        Ok(true)
+    }
+}
+
+/// Lines evaluated by one task, into one buffer of output.
+const SHARE: usize = 256;
+
+/// The output of one share of a block, kept from block to block.
+#[derive(Default)]
+struct Share {
+    out: Vec<u8>,
+    failed: usize,
+}
+
+impl Share {
+    /// Evaluates `lines` of `block`, the first of them number `first`.
+    fn evaluate(&mut self, block: &Block, lines: &[Text], first: usize, lang: Lang, steps: Steps) {
+        self.out.clear();
+        self.failed = 0;
+        for (i, text) in lines.iter().enumerate() {
+            let number = first + i;
+            let ok = match text {
+                Ok(range) => line(
+                    number,
+                    &block.text[range.clone()],
+                    lang,
+                    steps,
+                    &mut self.out,
+                ),
+                Err(column) => {
+                    let error = Error::from(ErrorKind::NotUtf8 { column: *column });
+                    failed_line(number, Value::Null, &error, lang, &mut self.out);
+                    false
+                }
+            };
+            self.out.push(b'\n');
+            self.failed += usize::from(!ok);
         }
     }
-    let text = String::from_utf8(bytes).map_err(|e| e.utf8_error().valid_up_to() + 1);
-    #[cfg(test)]
-    if text.is_err() && NOT_UTF8_STOPS_THE_RUN.get() {
-        let source = std::io::Error::from(std::io::ErrorKind::InvalidData);
-        let line = number;
-        return Err(ErrorKind::ReadLine { line, source }.into());
-    }
-    Ok(Some(text))
 }
 
 /// Streams `input` to `output`; returns how many lines were read and how
 /// many of them gave errors. Lines are held only as they arrive, however
-/// large the block.
+/// large the block. While one block is evaluated the next is read, and a
+/// reader that fails ends the run after the blocks before it are written.
 pub fn run(
     args: &BatchArgs,
     mut input: impl BufRead,
     mut output: impl Write,
     lang: Lang,
 ) -> Result<(usize, usize)> {
-    let block = args.block as usize;
+    let (block_lines, steps) = (args.block as usize, args.steps());
     let (mut read, mut failed) = (0usize, 0usize);
-    loop {
-        let mut texts = Vec::new();
-        while texts.len() < block {
-            match next_line(&mut input, read + texts.len() + 1)? {
-                Some(text) => texts.push(text),
-                None => break,
+    let (mut block, mut next) = (Block::default(), Block::default());
+    let mut shares: Vec<Share> = Vec::new();
+    block.fill(&mut input, block_lines, 1)?;
+    while !block.lines.is_empty() {
+        let count = block.lines.len().div_ceil(SHARE);
+        if shares.len() < count {
+            shares.resize_with(count, Share::default);
+        }
+        let after = read + block.lines.len();
+        let filled = rayon::in_place_scope(|scope| {
+            let lines = block.lines.chunks(SHARE);
+            for (i, (share, lines)) in shares.iter_mut().zip(lines).enumerate() {
+                let (block, first) = (&block, read + i * SHARE + 1);
+                scope.spawn(move |_| share.evaluate(block, lines, first, lang, steps));
             }
+            next.fill(&mut input, block_lines, after + 1)
+        });
+        for share in &shares[..count] {
+            output.write_all(&share.out).map_err(ErrorKind::Write)?;
+            failed += share.failed;
         }
-        if texts.is_empty() {
-            break;
-        }
-        let results: Vec<(String, bool)> = texts
-            .par_iter()
-            .enumerate()
-            .map(|(i, text)| read_line(read + i + 1, text, lang))
-            .collect();
-        for (json, ok) in &results {
-            let written = output.write_all(json.as_bytes());
-            written
-                .and_then(|()| output.write_all(b"\n"))
-                .map_err(ErrorKind::Write)?;
-            failed += usize::from(!ok);
-        }
-        read += texts.len();
+        filled?;
+        read = after;
+        std::mem::swap(&mut block, &mut next);
     }
     output.flush().map_err(ErrorKind::Write)?;
     Ok((read, failed))

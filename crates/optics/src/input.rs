@@ -62,28 +62,42 @@ impl Via {
         }
     }
 
+    /// `check` of the input whose JSON field is `field`, given the
+    /// user's name for it (in JSON the field itself, so a batch line's
+    /// checks copy no name unless one fails).
+    fn check<T>(
+        self,
+        field: &str,
+        check: impl FnOnce(&str) -> Result<T, DomainError>,
+    ) -> Result<T, DomainError> {
+        match self {
+            Via::Flags => check(&self.name(field)),
+            Via::Json => check(field),
+        }
+    }
+
     pub fn finite(self, field: &str, x: f64) -> Result<f64, DomainError> {
-        domain::finite(&self.name(field), x)
+        self.check(field, |name| domain::finite(name, x))
     }
 
     pub fn cosine(self, field: &str, x: f64) -> Result<f64, DomainError> {
-        domain::cosine(&self.name(field), x)
+        self.check(field, |name| domain::cosine(name, x))
     }
 
     pub fn index(self, field: &str, x: f64) -> Result<f64, DomainError> {
-        domain::refractive_index(&self.name(field), x)
+        self.check(field, |name| domain::refractive_index(name, x))
     }
 
     pub fn extinction(self, field: &str, x: f64) -> Result<f64, DomainError> {
-        domain::extinction(&self.name(field), x)
+        self.check(field, |name| domain::extinction(name, x))
     }
 
     pub fn non_negative(self, field: &str, x: f64) -> Result<f64, DomainError> {
-        domain::non_negative(&self.name(field), x)
+        self.check(field, |name| domain::non_negative(name, x))
     }
 
     pub fn direction(self, field: &str, v: Vec3Arg) -> Result<Direction, DomainError> {
-        domain::direction(&self.name(field), v.dvec3())
+        self.check(field, |name| domain::direction(name, v.dvec3()))
     }
 }
 

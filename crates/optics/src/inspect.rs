@@ -78,24 +78,26 @@ pub fn run(args: &InspectArgs, ui: &Ui) -> error::Result<()> {
         record.set_answer(Answer::Object(needs), None);
     }
     for line in needs_steps(needs, base.rays.deepest, lang) {
-        record.step(line);
+        record.step(|| line);
     }
-    record.step(say!(
-        lang,
-        "{}×{} {}: {} rays with only what the scene needs",
-        "{}×{} {}: {} sugár csak a szükséges részekkel",
-        scene.width,
-        scene.height,
-        settings.integrator,
-        base.rays.total()
-    ));
+    record.step(|| {
+        say!(
+            lang,
+            "{}×{} {}: {} rays with only what the scene needs",
+            "{}×{} {}: {} sugár csak a szükséges részekkel",
+            scene.width,
+            scene.height,
+            settings.integrator,
+            base.rays.total()
+        )
+    });
     let (missing, missing_detail) = crate::missing_light::report(&job, &args.scene, lang);
     for line in crate::render::steps(needs, job.machinery(), settings, lang)
         .into_iter()
         .chain(lines)
         .chain(missing)
     {
-        record.step(line);
+        record.step(|| line);
     }
     record
         .detail("width", scene.width)

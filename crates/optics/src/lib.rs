@@ -31,7 +31,7 @@ pub use lang::Lang;
 
 use clap::{Parser, Subcommand};
 use input::Via;
-use record::Record;
+use record::{Record, Steps};
 use std::io::Write;
 use std::process::ExitCode;
 
@@ -173,17 +173,17 @@ enum Command {
 /// The record of a command that evaluates one law with its flags; `None`
 /// for the others.
 fn law_record(command: &Command, lang: Lang) -> Option<error::Result<Record>> {
-    let via = Via::Flags;
+    let (via, steps) = (Via::Flags, Steps::Wanted);
     Some(match command {
-        Command::Fresnel(args) => args.solve(via, lang),
-        Command::Refract(args) => args.solve(via, lang),
-        Command::Reflect(args) => args.solve(via, lang),
-        Command::Shade(args) => args.solve(via, lang),
+        Command::Fresnel(args) => args.solve(via, lang, steps),
+        Command::Refract(args) => args.solve(via, lang, steps),
+        Command::Reflect(args) => args.solve(via, lang, steps),
+        Command::Shade(args) => args.solve(via, lang, steps),
         Command::Quiz(args) => match args.exercise.as_ref()? {
-            quiz::Exercise::F0(a) => a.solve(via, lang),
-            quiz::Exercise::Lambert(a) => a.solve(via, lang),
-            quiz::Exercise::CriticalAngle(a) => a.solve(via, lang),
-            quiz::Exercise::BlinnPhong(a) => a.solve(via, lang),
+            quiz::Exercise::F0(a) => a.solve(via, lang, steps),
+            quiz::Exercise::Lambert(a) => a.solve(via, lang, steps),
+            quiz::Exercise::CriticalAngle(a) => a.solve(via, lang, steps),
+            quiz::Exercise::BlinnPhong(a) => a.solve(via, lang, steps),
             quiz::Exercise::Seed => return None,
         },
         _ => return None,

@@ -11,10 +11,17 @@
 //! [`crate::Ui::show`] (or [`crate::Ui::show_steps`], whose text is the
 //! steps alone). A failure prints the error object of
 //! [`crate::Error::to_json`] instead.
+//!
+//! Whether the working is wanted ([`Steps`]) is decided once by the caller
+//! (`optics batch --no-steps`, a request's `"steps"`) and handed to the law,
+//! which gives it to its record ([`Record::with_steps`]); each step is a
+//! closure, so a record whose working is skipped never formats it.
 
 use crate::lang::Lang;
-use serde::Serialize;
+use serde::ser::SerializeMap;
+use serde::{Serialize, Serializer};
 use serde_json::{Map, Value};
+use std::borrow::Cow;
 
 /// The answer to one evaluation.
 #[derive(Clone, Debug, Serialize)]
@@ -32,6 +39,27 @@ pub enum Answer {
     Verdict(bool),
 }
 
+/// Whether a record's working is written: every subcommand wants it; `optics
+/// batch` skips it for `--no-steps` or a request's `"steps": false`, and the
+/// record's `steps` is then `[]`.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Steps {
+    #[default]
+    Wanted,
+    Skipped,
+}
+
+impl Steps {
+    /// `true` is [`Steps::Wanted`], as a request's `"steps"` says it.
+    pub fn from_wanted(wanted: bool) -> Self {
+        if wanted {
+            Steps::Wanted
+        } else {
+            Steps::Skipped
+        }
+    }
+}
+
 /// One evaluation: what was asked, the answer with its unit, and the working.
 ///
 /// The JSON fields `law`, `inputs`, `answer`, `unit`, `steps` are always
@@ -44,7 +72,7 @@ pub struct Record {
     #[serde(skip)]
     pub title: String,
     /// The inputs as given (directions before normalisation).
-    pub inputs: Map<String, Value>,
+    pub inputs: Fields,
     /// The answer: a number, a vector `[x, y, z]`, `null` when none exists,
     /// or a list.
     pub answer: Answer,
@@ -54,11 +82,15 @@ pub struct Record {
     pub answer_text: Option<String>,
     /// The answer's unit: `"1"` for dimensionless, `"W/(sr m^2)"`, `"deg"`.
     pub unit: &'static str,
-    /// The working, one line each: formula, substitution, result.
+    /// The working, one line each: formula, substitution, result; empty
+    /// when [`Steps::Skipped`].
     pub steps: Vec<String>,
+    /// Whether [`Record::step`] writes its line.
+    #[serde(skip)]
+    wanted: Steps,
     /// Further named results (R_s, R_p, T, …), machine-readable.
-    #[serde(skip_serializing_if = "Map::is_empty")]
-    pub details: Map<String, Value>,
+    #[serde(skip_serializing_if = "Fields::is_empty")]
+    pub details: Fields,
     /// Remarks: normalised inputs, disagreements with a printed answer.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub notes: Vec<String>,
@@ -69,14 +101,22 @@ impl Record {
         Self {
             law,
             title,
-            inputs: Map::new(),
+            inputs: Fields::default(),
             answer: Answer::None,
             answer_text: None,
             unit,
             steps: Vec::new(),
-            details: Map::new(),
+            wanted: Steps::Wanted,
+            details: Fields::default(),
             notes: Vec::new(),
         }
+    }
+
+    /// The record with its working written or skipped, as the caller
+    /// decided.
+    pub fn with_steps(mut self, steps: Steps) -> Self {
+        self.wanted = steps;
+        self
     }
 
     /// The answer, with how it reads for people when a bare number would say
@@ -101,18 +141,21 @@ impl Record {
         self
     }
 
-    pub fn input(&mut self, name: &str, value: impl Serialize) -> &mut Self {
-        self.inputs.insert(name.to_owned(), json(value));
+    pub fn input(&mut self, name: &'static str, value: impl Serialize) -> &mut Self {
+        self.inputs.insert(Cow::Borrowed(name), json(value));
         self
     }
 
-    pub fn detail(&mut self, name: &str, value: impl Serialize) -> &mut Self {
-        self.details.insert(name.to_owned(), json(value));
+    pub fn detail(&mut self, name: &'static str, value: impl Serialize) -> &mut Self {
+        self.details.insert(Cow::Borrowed(name), json(value));
         self
     }
 
-    pub fn step(&mut self, line: String) -> &mut Self {
-        self.steps.push(line);
+    /// A line of the working, formatted only when the working is wanted.
+    pub fn step(&mut self, line: impl FnOnce() -> String) -> &mut Self {
+        if self.wanted == Steps::Wanted {
+            self.steps.push(line());
+        }
         self
     }
 
@@ -170,12 +213,59 @@ fn json(value: impl Serialize) -> Value {
     serde_json::to_value(value).unwrap_or(Value::Null)
 }
 
-fn fields_into(map: &mut Map<String, Value>, value: impl Serialize) {
+fn fields_into(fields: &mut Fields, value: impl Serialize) {
     match json(value) {
-        Value::Object(fields) => map.extend(fields),
-        other => {
-            map.insert("value".to_owned(), other);
+        Value::Object(map) => {
+            for (name, value) in map {
+                fields.insert(Cow::Owned(name), value);
+            }
         }
+        other => fields.insert(Cow::Borrowed("value"), other),
+    }
+}
+
+/// A record's named values (its `inputs`, its `details`), written as one
+/// JSON object with the names in byte order, as `serde_json`'s own map
+/// writes them. A record has a handful, so a sorted list serves, and the
+/// laws' names (`&'static str`) are never copied.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Fields(Vec<(Cow<'static, str>, Value)>);
+
+impl Fields {
+    /// Sets `name` to `value`, replacing the value it had.
+    pub fn insert(&mut self, name: Cow<'static, str>, value: Value) {
+        // A law sets a handful: room for them at once, not grown by doubling.
+        self.0.reserve(if self.0.is_empty() { 8 } else { 1 });
+        match self.0.binary_search_by(|(n, _)| byte_order(n, &name)) {
+            Ok(i) => self.0[i].1 = value,
+            Err(i) => self.0.insert(i, (name, value)),
+        }
+    }
+
+    /// The value of `name`, if set.
+    pub fn get(&self, name: &str) -> Option<&Value> {
+        let i = self.0.binary_search_by(|(n, _)| byte_order(n, name)).ok()?;
+        Some(&self.0[i].1)
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.0.is_empty()
+    }
+}
+
+/// The order of `str`, byte by byte: the names are a few bytes long, and
+/// compared in place they cost less than a call to compare memory.
+fn byte_order(a: &str, b: &str) -> std::cmp::Ordering {
+    a.bytes().cmp(b.bytes())
+}
+
+impl Serialize for Fields {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        let mut map = serializer.serialize_map(Some(self.0.len()))?;
+        for (name, value) in &self.0 {
+            map.serialize_entry(name.as_ref(), value)?;
+        }
+        map.end()
     }
 }
 
@@ -222,6 +312,7 @@ pub fn percent(x: f64, decimals: usize) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use serde_json::json;
 
     #[test]
     fn numbers_show_six_significant_digits_without_trailing_zeros() {
@@ -248,7 +339,7 @@ mod tests {
             .details_from(serde_json::json!({ "png": "a.png" }))
             .details_from(3)
             .set_answer(Answer::Number(1e6), None)
-            .step("rendered".into());
+            .step(|| "rendered".into());
         let json = serde_json::to_value(&record).unwrap();
         assert_eq!(
             json,
@@ -261,6 +352,30 @@ mod tests {
                 "details": { "png": "a.png", "value": 3 },
             })
         );
+    }
+
+    /// The names in byte order and a name set twice keeping its last value,
+    /// as `serde_json`'s map writes them: the text is the same.
+    #[test]
+    fn fields_are_written_as_a_json_map_writes_them() {
+        let sets = [
+            ("r_s", json!(0.25)),
+            ("r_p", json!(1e-300)),
+            ("transmittance", json!(0.5)),
+            ("cos_t", json!(null)),
+            ("total_internal_reflection", json!(false)),
+            ("R", json!("upper case sorts first")),
+            ("r_s", json!(0.75)),
+        ];
+        let (mut fields, mut map) = (Fields::default(), Map::new());
+        for (name, value) in sets {
+            fields.insert(Cow::Owned(name.to_owned()), value.clone());
+            map.insert(name.to_owned(), value);
+        }
+        let written = serde_json::to_string(&fields).unwrap();
+        assert_eq!(written, serde_json::to_string(&map).unwrap());
+        assert_eq!(fields.get("r_s"), Some(&json!(0.75)));
+        assert_eq!(fields.get("kappa"), None);
     }
 
     #[test]

@@ -199,19 +199,21 @@ fn record(
             ]),
             None,
         )
-        .step(say!(
-            lang,
-            "{}×{} {} in {:.3} s: {} rays, {:.2} M rays/s → {}, {}",
-            "{}×{} {} {:.3} s alatt: {} sugár, {:.2} M sugár/s → {}, {}",
-            scene.width,
-            scene.height,
-            settings.integrator,
-            seconds,
-            rays,
-            rate / 1e6,
-            png.display(),
-            pfm.display()
-        ))
+        .step(|| {
+            say!(
+                lang,
+                "{}×{} {} in {:.3} s: {} rays, {:.2} M rays/s → {}, {}",
+                "{}×{} {} {:.3} s alatt: {} sugár, {:.2} M sugár/s → {}, {}",
+                scene.width,
+                scene.height,
+                settings.integrator,
+                seconds,
+                rays,
+                rate / 1e6,
+                png.display(),
+                pfm.display()
+            )
+        })
         .detail("width", scene.width)
         .detail("height", scene.height)
         .detail("settings", settings)

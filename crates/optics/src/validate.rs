@@ -187,36 +187,41 @@ fn record(args: &ValidateArgs, outcome: &Outcome, lang: Lang) -> Record {
             (true, Lang::Hu) => "jó  ",
             (false, Lang::Hu) => "HIBA",
         };
-        record.step(say!(
-            lang,
-            "{}  {} ({} cases, {} findings)",
-            "{}  {} ({} eset, {} megállapítás)",
-            mark,
-            check.id,
-            check.cases,
-            check.findings.len()
-        ));
+        record.step(|| {
+            say!(
+                lang,
+                "{}  {} ({} cases, {} findings)",
+                "{}  {} ({} eset, {} megállapítás)",
+                mark,
+                check.id,
+                check.cases,
+                check.findings.len()
+            )
+        });
         for failure in check.failures.iter().take(5) {
-            record.step(format!("      {failure}"));
+            record.step(|| format!("      {failure}"));
         }
     }
     if let [spectral, rgb] = report.speed.as_slice() {
-        record.step(say!(
-            lang,
-            "gold's colour: {:.2} µs from 85 wavelengths, {:.2} µs from three ({:.1}×{})",
-            "az arany színe: {:.2} µs 85 hullámhosszból, {:.2} µs háromból ({:.1}×{})",
-            spectral.ns_per_colour / 1e3,
-            rgb.ns_per_colour / 1e3,
-            spectral.ns_per_colour / rgb.ns_per_colour,
-            if spectral.optimised {
-                ""
-            } else {
-                lang.pick(", unoptimised build", ", optimalizálatlan fordítás")
-            }
-        ));
+        record.step(|| {
+            say!(
+                lang,
+                "gold's colour: {:.2} µs from 85 wavelengths, {:.2} µs from three ({:.1}×{})",
+                "az arany színe: {:.2} µs 85 hullámhosszból, {:.2} µs háromból ({:.1}×{})",
+                spectral.ns_per_colour / 1e3,
+                rgb.ns_per_colour / 1e3,
+                spectral.ns_per_colour / rgb.ns_per_colour,
+                if spectral.optimised {
+                    ""
+                } else {
+                    lang.pick(", unoptimised build", ", optimalizálatlan fordítás")
+                }
+            )
+        });
     }
     let s = &report.summary;
-    record.step(say!(
+    record.step(|| {
+        say!(
         lang,
         "{} checks: {} passed, {} failed; {} findings about the references. Report: {}",
         "{} ellenőrzés: {} sikeres, {} sikertelen; {} megállapítás a referenciákról. Jelentés: {}",
@@ -225,7 +230,8 @@ fn record(args: &ValidateArgs, outcome: &Outcome, lang: Lang) -> Record {
         s.failed,
         s.findings,
         outcome.report_html().display()
-    ));
+    )
+    });
     let failed: Vec<&String> = report
         .checks
         .iter()

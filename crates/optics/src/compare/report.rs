@@ -27,7 +27,7 @@ pub(crate) fn record(
     record
         .inputs_from(args)
         .set_answer(Answer::Verdict(summary.agrees()), None);
-    record.step(match summary.agrees() {
+    record.step(|| match summary.agrees() {
         true => say!(
             lang,
             "agrees: all {} pixels compared are within the test",
@@ -43,20 +43,22 @@ pub(crate) fn record(
             percent(summary.fraction, 2)
         ),
     });
-    record.step(reference_line(reference, lang));
-    record.step(test_line(outcome, lang));
+    record.step(|| reference_line(reference, lang));
+    record.step(|| test_line(outcome, lang));
     let masked: usize = summary.regions.iter().map(|r| r.masked).sum();
-    record.step(say!(
-        lang,
-        "not compared: {} pixels on silhouettes (a neighbour sees another object)",
-        "nincs összevetve: {} képpont körvonalon (egy szomszédja más tárgyat lát)",
-        masked
-    ));
+    record.step(|| {
+        say!(
+            lang,
+            "not compared: {} pixels on silhouettes (a neighbour sees another object)",
+            "nincs összevetve: {} képpont körvonalon (egy szomszédja más tárgyat lát)",
+            masked
+        )
+    });
     for region in &summary.regions {
-        record.step(region_line(&names[region.region], region, unit, lang));
+        record.step(|| region_line(&names[region.region], region, unit, lang));
     }
     if let Some(diff) = &args.diff {
-        record.step(say!(
+        record.step(|| say!(
             lang,
             "difference map: {} (black 0, red to yellow at the test's limit, magenta beyond, dark blue not compared)",
             "eltéréstérkép: {} (fekete 0, pirostól a próba határán sárgáig, azon túl bíbor, sötétkék: nincs összevetve)",
@@ -64,7 +66,7 @@ pub(crate) fn record(
         ));
     }
     if reference.noise.is_some() && outcome.tests.is_none() {
-        record.step(say!(
+        record.step(|| say!(
             lang,
             "the reference is Monte Carlo and the image is held to its noise alone: an image with noise of its own needs --variance and --samples",
             "a referencia Monte Carlo-becslés, a képet csak a referencia zajához méri: saját zajjal bíró képhez a --variance és a --samples kell"

@@ -1,9 +1,13 @@
 //! Batch lines: the course's requests mutated field by field and byte by
-//! byte, several to an input, through [`crate::batch::run`].
+//! byte, a line's `"steps"` among the fields, several to an input, through
+//! [`crate::batch::run`] with and without `--no-steps`; and each line read
+//! both ways [`crate::batch::request`] reads it, which must agree.
 
 use super::{check_error_field, check_record, edge_number, runner, Coverage, SCHEMA, VECTORS};
+use crate::batch::request::{self, LINE_STEPS_IGNORED};
 use crate::batch::{self, BatchArgs, NOT_UTF8_STOPS_THE_RUN};
 use crate::lang::Lang;
+use crate::record::Steps;
 use proptest::prelude::*;
 use proptest::test_runner::TestCaseError;
 use serde_json::{json, Map, Value};
@@ -44,6 +48,8 @@ enum Change {
     Remove(usize),
     Unknown(Value),
     Law(String),
+    /// The line's own `"steps"`.
+    Steps(Value),
 }
 
 fn change() -> impl Strategy<Value = Change> {
@@ -53,10 +59,19 @@ fn change() -> impl Strategy<Value = Change> {
         1 => any::<usize>().prop_map(Change::Remove),
         1 => field_value().prop_map(Change::Unknown),
         1 => prop::sample::select([laws, vec!["teleport".into()]].concat()).prop_map(Change::Law),
+        2 => prop_oneof![
+            3 => any::<bool>().prop_map(|wanted| json!(wanted)),
+            1 => field_value(),
+        ]
+        .prop_map(Change::Steps),
     ]
 }
 
 fn apply(mut request: Map<String, Value>, change: Change) -> Map<String, Value> {
+    if let Change::Steps(value) = change {
+        request.insert("steps".into(), value);
+        return request;
+    }
     let law = request["law"].as_str().unwrap_or_default().to_owned();
     let fields = super::schema(&law);
     if fields.is_empty() {
@@ -83,6 +98,7 @@ fn apply(mut request: Map<String, Value>, change: Change) -> Map<String, Value> 
         Change::Law(law) => {
             request.insert("law".into(), json!(law));
         }
+        Change::Steps(_) => unreachable!("set above"),
     }
     request
 }
@@ -91,6 +107,22 @@ fn apply(mut request: Map<String, Value>, change: Change) -> Map<String, Value> 
 const HOSTILE_BYTES: [u8; 12] = [
     0xff, 0xfe, 0xc3, 0x80, b'\n', b'\r', b'"', b'{', b'}', b',', 0, b' ',
 ];
+
+/// A request as a line of JSON: its `law` first (as people and scripts
+/// write it, and as the typed reading takes it), or its keys in byte
+/// order.
+fn line_text(request: &Map<String, Value>, law_first: bool) -> String {
+    if !law_first {
+        return Value::Object(request.clone()).to_string();
+    }
+    let law = request.get("law").map(|law| format!("\"law\":{law}"));
+    let rest = request
+        .iter()
+        .filter(|(name, _)| *name != "law")
+        .map(|(name, value)| format!("{}:{value}", Value::from(name.as_str())));
+    let fields: Vec<String> = law.into_iter().chain(rest).collect();
+    format!("{{{}}}", fields.join(","))
+}
 
 /// One line: a course request with its changes, then byte mutations.
 fn request_line() -> impl Strategy<Value = Vec<u8>> {
@@ -104,13 +136,14 @@ fn request_line() -> impl Strategy<Value = Vec<u8>> {
         prop::sample::select(requests),
         prop::collection::vec(change(), 0..3),
         prop::collection::vec(mutation, 0..3),
+        prop::bool::weighted(0.8),
     )
-        .prop_map(|(request, changes, mutations)| {
+        .prop_map(|(request, changes, mutations, law_first)| {
             let Value::Object(request) = request else {
                 unreachable!()
             };
             let request = changes.into_iter().fold(request, apply);
-            let mut bytes = Value::Object(request).to_string().into_bytes();
+            let mut bytes = line_text(&request, law_first).into_bytes();
             for (at, op, byte) in mutations {
                 let i = at.index(bytes.len() + 1);
                 match op {
@@ -150,9 +183,45 @@ fn lines_of(input: &[u8]) -> Vec<&[u8]> {
     lines
 }
 
-fn check_batch(input: &[u8], block: u32, coverage: &Coverage) -> Result<(), TestCaseError> {
+/// Whether a line's record carries its working: the line's own `"steps"`
+/// when it gives a boolean, else the run's choice.
+fn steps_wanted(line: &[u8], no_steps: bool) -> bool {
+    let fields = serde_json::from_slice::<Map<String, Value>>(line).unwrap_or_default();
+    fields
+        .get("steps")
+        .and_then(Value::as_bool)
+        .unwrap_or(!no_steps)
+}
+
+/// The line read straight into its law's arguments, where that reading
+/// takes it, is the request the general reading gives.
+fn check_readings_agree(line: &[u8], steps: Steps) -> Result<(), TestCaseError> {
+    let line = line.strip_suffix(b"\r").unwrap_or(line);
+    let Ok(text) = std::str::from_utf8(line) else {
+        return Ok(());
+    };
+    let Some(typed) = request::typed(text, steps) else {
+        return Ok(());
+    };
+    let general = request::general(text, steps);
+    prop_assert!(
+        general.is_ok(),
+        "{text:?}: read typed as {typed:?}, refused by the general reading: {:?}",
+        general.as_ref().err()
+    );
+    let general = general.expect("checked above");
+    prop_assert_eq!(format!("{typed:?}"), format!("{general:?}"), "{:?}", text);
+    Ok(())
+}
+
+fn check_batch(
+    input: &[u8],
+    block: u32,
+    no_steps: bool,
+    coverage: &Coverage,
+) -> Result<(), TestCaseError> {
     let mut output = Vec::new();
-    let args = BatchArgs { block };
+    let args = BatchArgs { block, no_steps };
     let run = batch::run(&args, input, &mut output, Lang::En);
     prop_assert!(
         run.is_ok(),
@@ -166,9 +235,16 @@ fn check_batch(input: &[u8], block: u32, coverage: &Coverage) -> Result<(), Test
     prop_assert_eq!(records.len(), lines.len(), "one record per line");
     for (i, (record, line)) in records.iter().zip(lines).enumerate() {
         let record: Value = serde_json::from_str(record).expect("each record is JSON");
+        check_readings_agree(line, Steps::from_wanted(!no_steps))?;
         let Some(error) = record.get("error") else {
             coverage.answer();
             check_record(&record)?;
+            let steps = record["steps"].as_array().map(Vec::len);
+            let wanted = steps_wanted(line, no_steps);
+            prop_assert!(
+                steps.is_some() && (steps != Some(0)) == wanted,
+                "{record}: steps wanted {wanted}, no_steps {no_steps}"
+            );
             continue;
         };
         coverage.error(error);
@@ -184,10 +260,10 @@ fn check_batch(input: &[u8], block: u32, coverage: &Coverage) -> Result<(), Test
 
 /// Runs the target; `Err` with the first failing case, shrunk.
 fn fuzz(cases: u32, coverage: &Coverage) -> Result<(), String> {
-    let strategy = (batch_input(), 1..4u32);
+    let strategy = (batch_input(), 1..4u32, any::<bool>());
     runner(cases)
-        .run(&strategy, |(input, block)| {
-            check_batch(&input, block, coverage)
+        .run(&strategy, |(input, block, no_steps)| {
+            check_batch(&input, block, no_steps, coverage)
         })
         .map_err(|e| e.to_string())
 }
@@ -208,4 +284,13 @@ fn batch_lines_find_a_reader_that_stops_at_bytes_that_are_not_utf8() {
     NOT_UTF8_STOPS_THE_RUN.set(false);
     let failure = outcome.expect_err("the reverted fix is found");
     assert!(failure.contains("ReadLine"), "{failure}");
+}
+
+#[test]
+fn batch_lines_find_a_line_whose_steps_are_ignored() {
+    LINE_STEPS_IGNORED.set(true);
+    let outcome = fuzz(256, &Coverage::default());
+    LINE_STEPS_IGNORED.set(false);
+    let failure = outcome.expect_err("the reverted fix is found");
+    assert!(failure.contains("steps"), "{failure}");
 }

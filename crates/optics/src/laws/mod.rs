@@ -24,12 +24,14 @@ use radiometry::domain::Direction;
 /// Says in the working when a direction was not unit length.
 pub fn note_normalized(record: &mut Record, lang: Lang, field: &str, d: &Direction) {
     if d.was_normalized() {
-        record.step(say!(
-            lang,
-            "{field} has length {}: normalised to {}",
-            "{field} hossza {}: normalizálva {}",
-            number(d.given_length),
-            vector(d.unit.to_array())
-        ));
+        record.step(|| {
+            say!(
+                lang,
+                "{field} has length {}: normalised to {}",
+                "{field} hossza {}: normalizálva {}",
+                number(d.given_length),
+                vector(d.unit.to_array())
+            )
+        });
     }
 }

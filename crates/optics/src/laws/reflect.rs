@@ -4,7 +4,7 @@ use super::note_normalized;
 use crate::error::Result;
 use crate::input::{Vec3Arg, Via};
 use crate::lang::{say, Lang};
-use crate::record::{number, vector, Answer, Record};
+use crate::record::{number, vector, Answer, Record, Steps};
 use radiometry::specular::reflect;
 use serde::Deserialize;
 
@@ -28,16 +28,17 @@ pub struct ReflectArgs {
 }
 
 impl ReflectArgs {
-    pub fn solve(&self, via: Via, lang: Lang) -> Result<Record> {
+    pub fn solve(&self, via: Via, lang: Lang, steps: Steps) -> Result<Record> {
         let wi = via.direction("wi", self.wi)?;
         let n = via.direction("normal", self.normal)?;
-        let mut record = Record::new("reflect", say!(lang, "Mirror direction", "Tükörirány"), "1");
+        let title = say!(lang, "Mirror direction", "Tükörirány");
+        let mut record = Record::new("reflect", title, "1").with_steps(steps);
         record.input("wi", self.wi.0).input("normal", self.normal.0);
         note_normalized(&mut record, lang, "wi", &wi);
         note_normalized(&mut record, lang, "normal", &n);
         let r = reflect(wi.unit, n.unit);
-        record.step(format!("cos θi = n · ωi = {}", number(wi.unit.dot(n.unit))));
-        record.step(format!("ωr = 2 (n · ωi) n − ωi = {}", vector(r.to_array())));
+        record.step(|| format!("cos θi = n · ωi = {}", number(wi.unit.dot(n.unit))));
+        record.step(|| format!("ωr = 2 (n · ωi) n − ωi = {}", vector(r.to_array())));
         record.answer = Answer::Vector(r.to_array());
         Ok(record)
     }

@@ -4,7 +4,7 @@ use super::note_normalized;
 use crate::error::Result;
 use crate::input::{Vec3Arg, Via};
 use crate::lang::{say, Lang};
-use crate::record::{number, vector, Answer, Record};
+use crate::record::{number, vector, Answer, Record, Steps};
 use glam::DVec3;
 use radiometry::snell::Incidence;
 use radiometry::specular::{incidence, reflect, refract_resolved};
@@ -35,7 +35,7 @@ pub struct RefractArgs {
 }
 
 impl RefractArgs {
-    pub fn solve(&self, via: Via, lang: Lang) -> Result<Record> {
+    pub fn solve(&self, via: Via, lang: Lang, steps: Steps) -> Result<Record> {
         let wi = via.direction("wi", self.wi)?;
         let n = via.direction("normal", self.normal)?;
         let eta = via.index("eta", self.eta)?;
@@ -43,7 +43,8 @@ impl RefractArgs {
             "refract",
             say!(lang, "Refracted direction", "Törési irány"),
             "1",
-        );
+        )
+        .with_steps(steps);
         record
             .input("wi", self.wi.0)
             .input("normal", self.normal.0)
@@ -56,7 +57,7 @@ impl RefractArgs {
         // built from that decision (`refract` would decide them again).
         let incidence = resolve(wi, n, eta)
             .expect("wi, normal and eta were validated by radiometry::domain above");
-        record.step(format!("cos θi = n · ωi = {}", number(cos_i)));
+        record.step(|| format!("cos θi = n · ωi = {}", number(cos_i)));
         narrate_side(&mut record, lang, &incidence);
         match incidence.cos_transmitted() {
             Some(cos_t) => refracted(
@@ -94,35 +95,41 @@ fn resolve(wi: DVec3, n: DVec3, eta: f64) -> Option<Incidence<f64>> {
 }
 
 fn narrate_side(record: &mut Record, lang: Lang, incidence: &Incidence<f64>) {
-    record.step(if incidence.from_inside {
-        say!(
-            lang,
-            "from inside: the normal is flipped to the incident side and η' = 1/η = {}",
-            "belülről: a normálist a beesés oldalára fordítjuk, η' = 1/η = {}",
-            number(incidence.eta_path())
-        )
-    } else {
-        say!(
-            lang,
-            "from outside: η' = η = {}",
-            "kívülről: η' = η = {}",
-            number(incidence.eta_path())
-        )
+    record.step(|| {
+        if incidence.from_inside {
+            say!(
+                lang,
+                "from inside: the normal is flipped to the incident side and η' = 1/η = {}",
+                "belülről: a normálist a beesés oldalára fordítjuk, η' = 1/η = {}",
+                number(incidence.eta_path())
+            )
+        } else {
+            say!(
+                lang,
+                "from outside: η' = η = {}",
+                "kívülről: η' = η = {}",
+                number(incidence.eta_path())
+            )
+        }
     });
 }
 
 fn refracted(record: &mut Record, lang: Lang, t: radiometry::specular::Refraction<DVec3>) {
-    record.step(say!(
-        lang,
-        "Snell: cos θt = {} (θt = {}°)",
-        "Snellius–Descartes: cos θt = {} (θt = {}°)",
-        number(t.cos_t),
-        number(t.cos_t.acos().to_degrees())
-    ));
-    record.step(format!(
-        "ωt = −ωi/η' + (cos θi/η' − cos θt) n' = {}",
-        vector(t.direction.to_array())
-    ));
+    record.step(|| {
+        say!(
+            lang,
+            "Snell: cos θt = {} (θt = {}°)",
+            "Snellius–Descartes: cos θt = {} (θt = {}°)",
+            number(t.cos_t),
+            number(t.cos_t.acos().to_degrees())
+        )
+    });
+    record.step(|| {
+        format!(
+            "ωt = −ωi/η' + (cos θi/η' − cos θt) n' = {}",
+            vector(t.direction.to_array())
+        )
+    });
     record.answer = Answer::Vector(t.direction.to_array());
     record
         .detail("outcome", "refracted")
@@ -131,7 +138,7 @@ fn refracted(record: &mut Record, lang: Lang, t: radiometry::specular::Refractio
 }
 
 fn totally_reflected(record: &mut Record, lang: Lang, incidence: &Incidence<f64>, mirror: DVec3) {
-    record.step(say!(
+    record.step(|| say!(
         lang,
         "sin θt = sin θi / η' > 1: total internal reflection, no refracted ray (all light goes to the mirror direction {})",
         "sin θt = sin θi / η' > 1: teljes visszaverődés, nincs megtört sugár (minden fény a tükörirányba megy: {})",

@@ -5,7 +5,7 @@ use super::note_normalized;
 use crate::error::{ErrorKind, Result};
 use crate::input::{Vec3Arg, Via};
 use crate::lang::{say, Lang};
-use crate::record::{number, vector, Answer, Record};
+use crate::record::{number, vector, Answer, Record, Steps};
 use glam::DVec3;
 use radiometry::brdf::{
     half_vector, BlinnPhong, BlinnPhongReciprocal, Brdf, CourseLambert, Lambert, Phong,
@@ -97,12 +97,12 @@ pub struct Shading {
 }
 
 impl ShadeArgs {
-    pub fn solve(&self, via: Via, lang: Lang) -> Result<Record> {
-        Ok(self.shade("shade", via, lang)?.record)
+    pub fn solve(&self, via: Via, lang: Lang, steps: Steps) -> Result<Record> {
+        Ok(self.shade("shade", via, lang, steps)?.record)
     }
 
     /// Shades and records the working under the name `law`.
-    pub fn shade(&self, law: &'static str, via: Via, lang: Lang) -> Result<Shading> {
+    pub fn shade(&self, law: &'static str, via: Via, lang: Lang, steps: Steps) -> Result<Shading> {
         let n = via.direction("normal", self.normal)?;
         let l = via.direction("light_dir", self.light_dir)?;
         let v = via.direction("view_dir", self.view_dir)?;
@@ -120,7 +120,8 @@ impl ShadeArgs {
                 model.name()
             ),
             "W/(sr m^2)",
-        );
+        )
+        .with_steps(steps);
         record
             .input("model", model.name())
             .input("normal", self.normal.0)
@@ -135,29 +136,29 @@ impl ShadeArgs {
         note_normalized(&mut record, lang, "light_dir", &l);
         note_normalized(&mut record, lang, "view_dir", &v);
         let (n, l, v) = (n.unit, l.unit, v.unit);
-        record.step(format!(
-            "L = {}, V = {}",
-            vector(l.to_array()),
-            vector(v.to_array())
-        ));
+        record.step(|| format!("L = {}, V = {}", vector(l.to_array()), vector(v.to_array())));
         let cos_in = n.dot(l);
-        record.step(format!("cos θin = N · L = {}", number(cos_in)));
+        record.step(|| format!("cos θin = N · L = {}", number(cos_in)));
         let f = model.evaluate(&mut record, Coefficients { kd, ks, shine }, n, l, v);
         let f = model.finite("f_r", f, via, &[])?;
         let e = directional_irradiance(l_in, n, l);
-        record.step(format!(
-            "E = L_in cos⁺θin = {} · {} = {}",
-            number(l_in),
-            number(cos_in.max(0.0)),
-            number(e)
-        ));
+        record.step(|| {
+            format!(
+                "E = L_in cos⁺θin = {} · {} = {}",
+                number(l_in),
+                number(cos_in.max(0.0)),
+                number(e)
+            )
+        });
         let radiance = model.finite("L_ref", reflected_radiance(f, e), via, &["radiance"])?;
-        record.step(format!(
-            "L_ref = f_r · E = {} · {} = {}",
-            number(f),
-            number(e),
-            number(radiance)
-        ));
+        record.step(|| {
+            format!(
+                "L_ref = f_r · E = {} · {} = {}",
+                number(f),
+                number(e),
+                number(radiance)
+            )
+        });
         if n.dot(v) <= 0.0 {
             record.note(say!(
                 lang,
@@ -205,39 +206,32 @@ impl ShadeModel {
         match self {
             ShadeModel::Lambert => {
                 let f = Lambert { albedo: kd }.eval(n, l, v);
-                record.step(format!("f_r = kd / π = {}", number(f)));
+                record.step(|| format!("f_r = kd / π = {}", number(f)));
                 f
             }
             ShadeModel::CourseLambert => {
                 let f = CourseLambert { kd }.eval(n, l, v);
-                record.step(format!("f_r = kd = {}", number(f)));
+                record.step(|| format!("f_r = kd = {}", number(f)));
                 f
             }
             ShadeModel::Phong => {
                 let cos_alpha = reflect(l, n).dot(v);
-                record.step(format!("cos α = R · V = {}", number(cos_alpha)));
+                record.step(|| format!("cos α = R · V = {}", number(cos_alpha)));
                 let f = Phong { kd, ks, shine }.eval(n, l, v);
-                record.step(format!(
-                    "f_r = kd + ks (cos⁺α)^shine / cos θin = {}",
-                    number(f)
-                ));
+                record.step(|| format!("f_r = kd + ks (cos⁺α)^shine / cos θin = {}", number(f)));
                 f
             }
             ShadeModel::BlinnPhong | ShadeModel::BlinnPhongReciprocal => {
                 step_half_vector(record, n, l, v);
                 let f = if self == ShadeModel::BlinnPhong {
                     let f = BlinnPhong { kd, ks, shine }.eval(n, l, v);
-                    record.step(format!(
-                        "f_r = kd + ks (cos⁺δ)^shine / cos⁺θin = {}",
-                        number(f)
-                    ));
+                    record
+                        .step(|| format!("f_r = kd + ks (cos⁺δ)^shine / cos⁺θin = {}", number(f)));
                     f
                 } else {
                     let f = BlinnPhongReciprocal { kd, ks, shine }.eval(n, l, v);
-                    record.step(format!(
-                        "f_r = kd + ks (cos⁺δ)^shine / |L + V|² = {}",
-                        number(f)
-                    ));
+                    record
+                        .step(|| format!("f_r = kd + ks (cos⁺δ)^shine / |L + V|² = {}", number(f)));
                     f
                 };
                 f
@@ -249,11 +243,11 @@ impl ShadeModel {
 fn step_half_vector(record: &mut Record, n: DVec3, l: DVec3, v: DVec3) {
     match half_vector(l, v) {
         Some(h) => {
-            record.step(format!("H = (L + V) / |L + V| = {}", vector(h.to_array())));
-            record.step(format!("cos δ = N · H = {}", number(n.dot(h))));
+            record.step(|| format!("H = (L + V) / |L + V| = {}", vector(h.to_array())));
+            record.step(|| format!("cos δ = N · H = {}", number(n.dot(h))));
         }
         None => {
-            record.step("L = −V: no half vector, the highlight term is 0".to_owned());
+            record.step(|| "L = −V: no half vector, the highlight term is 0".to_owned());
         }
     }
 }

@@ -7,7 +7,7 @@ use crate::error::{Error, ErrorKind};
 use crate::input::{Vec3Arg, Via};
 use crate::lang::{say, Lang};
 use crate::laws::{ShadeArgs, ShadeModel};
-use crate::record::{number, percent, Answer, Record};
+use crate::record::{number, percent, Answer, Record, Steps};
 use radiometry::fresnel::f0;
 use radiometry::snell::critical_angle;
 use serde::Deserialize;
@@ -30,7 +30,7 @@ pub struct F0Args {
 }
 
 impl F0Args {
-    pub fn solve(&self, via: Via, lang: Lang) -> Result<Record> {
+    pub fn solve(&self, via: Via, lang: Lang, steps: Steps) -> Result<Record> {
         let n = via.index("n", self.n)?;
         let kappa = via.extinction("kappa", self.kappa)?;
         let mut record = Record::new(
@@ -41,18 +41,21 @@ impl F0Args {
                 "Merőleges beesésű visszaverődés, F0"
             ),
             "1",
-        );
+        )
+        .with_steps(steps);
         record.input("n", n).input("kappa", kappa);
-        record.step("F0 = ((n − 1)² + κ²) / ((n + 1)² + κ²)".to_owned());
-        record.step(format!(
-            "   = (({} − 1)² + {}²) / (({} + 1)² + {}²)",
-            number(n),
-            number(kappa),
-            number(n),
-            number(kappa)
-        ));
+        record.step(|| "F0 = ((n − 1)² + κ²) / ((n + 1)² + κ²)".to_owned());
+        record.step(|| {
+            format!(
+                "   = (({} − 1)² + {}²) / (({} + 1)² + {}²)",
+                number(n),
+                number(kappa),
+                number(n),
+                number(kappa)
+            )
+        });
         let value = f0(n, kappa);
-        record.step(format!("   = {} = {}", number(value), percent(value, 2)));
+        record.step(|| format!("   = {} = {}", number(value), percent(value, 2)));
         record.answer = Answer::Number(value);
         record.answer_text = Some(format!("{} ({})", number(value), percent(value, 2)));
         record.detail("percent", value * 100.0);
@@ -87,7 +90,7 @@ pub struct LambertArgs {
 }
 
 impl LambertArgs {
-    pub fn solve(&self, via: Via, lang: Lang) -> Result<Record> {
+    pub fn solve(&self, via: Via, lang: Lang, steps: Steps) -> Result<Record> {
         let shade = ShadeArgs {
             model: ShadeModel::CourseLambert,
             normal: self.normal,
@@ -98,14 +101,14 @@ impl LambertArgs {
             ks: 0.0,
             shine: 1.0,
         };
-        let mut shading = shade.shade("lambert", via, lang)?;
+        let mut shading = shade.shade("lambert", via, lang, steps)?;
         let record = &mut shading.record;
         record.title = say!(
             lang,
             "The course's Lambert law: L_ref = L_in · kd · cos⁺θin",
             "Lambert-törvény a kurzus alakjában: L_ref = L_in · kd · cos⁺θin"
         );
-        record.step(say!(
+        record.step(|| say!(
             lang,
             "the view direction does not enter: a Lambert surface looks equally bright from everywhere above it",
             "a nézeti irány nem számít: a Lambert-felület minden irányból egyformán fényes"
@@ -144,7 +147,7 @@ fn air() -> f64 {
 }
 
 impl CriticalAngleArgs {
-    pub fn solve(&self, via: Via, lang: Lang) -> Result<Record> {
+    pub fn solve(&self, via: Via, lang: Lang, steps: Steps) -> Result<Record> {
         let n = via.index("n", self.n)?;
         let n_out = via.index("n_outside", self.n_outside)?;
         let mut record = Record::new(
@@ -155,13 +158,16 @@ impl CriticalAngleArgs {
                 "A teljes visszaverődés határszöge"
             ),
             "deg",
-        );
+        )
+        .with_steps(steps);
         record.input("n", n).input("n_outside", n_out);
-        record.step(say!(
+        record.step(|| {
+            say!(
             lang,
             "Snell: n sin θ = n_out sin θ_out; nothing leaves once θ_out would reach 90°",
             "Snellius–Descartes: n sin θ = n_ki sin θ_ki; semmi sem lép ki, ha θ_ki elérné a 90°-ot"
-        ));
+        )
+        });
         let Some(theta_c) = critical_angle(n_out / n) else {
             let kind = ErrorKind::NoCriticalAngle {
                 name: via.name("n"),
@@ -171,19 +177,17 @@ impl CriticalAngleArgs {
             };
             return Err(Error::from(kind));
         };
-        record.step(format!(
-            "sin θc = n_out / n = {} / {} = {}",
-            number(n_out),
-            number(n),
-            number(n_out / n)
-        ));
+        record.step(|| {
+            format!(
+                "sin θc = n_out / n = {} / {} = {}",
+                number(n_out),
+                number(n),
+                number(n_out / n)
+            )
+        });
         let degrees = theta_c.to_degrees();
-        record.step(format!(
-            "θc = arcsin({}) = {}°",
-            number(n_out / n),
-            number(degrees)
-        ));
-        record.step(say!(
+        record.step(|| format!("θc = arcsin({}) = {}°", number(n_out / n), number(degrees)));
+        record.step(|| say!(
             lang,
             "θc is measured inside the medium, between the ray and the normal pointing towards the air",
             "θc a közegen belül mérendő, a sugár és a levegő felé mutató normális között"
@@ -228,7 +232,7 @@ pub struct BlinnPhongArgs {
 }
 
 impl BlinnPhongArgs {
-    pub fn solve(&self, via: Via, lang: Lang) -> Result<Record> {
+    pub fn solve(&self, via: Via, lang: Lang, steps: Steps) -> Result<Record> {
         let shade = ShadeArgs {
             model: ShadeModel::BlinnPhong,
             normal: self.normal,
@@ -239,7 +243,7 @@ impl BlinnPhongArgs {
             ks: self.ks,
             shine: self.shine,
         };
-        let mut shading = shade.shade("blinn_phong", via, lang)?;
+        let mut shading = shade.shade("blinn_phong", via, lang, steps)?;
         shading.record.title = say!(
             lang,
             "The course's Phong-Blinn law: L_ref = L_in (kd + ks (cos⁺δ)^shine / cos⁺θin) cos⁺θin",

@@ -97,10 +97,12 @@ pub fn list(lang: Lang) -> Record {
         "",
     );
     for (name, en, hu, example) in EXERCISES {
-        record.step(format!(
-            "{name:<15} {}\n                    {example}",
-            lang.pick(en, hu)
-        ));
+        record.step(|| {
+            format!(
+                "{name:<15} {}\n                    {example}",
+                lang.pick(en, hu)
+            )
+        });
     }
     record.answer = Answer::List(EXERCISES.iter().map(|e| Value::from(e.0)).collect());
     record

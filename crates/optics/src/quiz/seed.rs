@@ -6,7 +6,7 @@ use super::statements::question_one;
 use crate::error::Result;
 use crate::input::{Vec3Arg, Via};
 use crate::lang::{say, Lang};
-use crate::record::{number, Answer, Record};
+use crate::record::{number, Answer, Record, Steps};
 use serde_json::Value;
 
 /// A record's answer as a number (NaN if it has none).
@@ -96,8 +96,8 @@ const PRINTED: [(f64, Printed); 4] = [
 
 /// Questions 2–5 solved with the quiz's numbers.
 fn solved(lang: Lang) -> Result<[Record; 4]> {
-    let via = Via::Flags;
-    let f0 = F0Args { n: 1.4, kappa: 0.0 }.solve(via, lang)?;
+    let (via, steps) = (Via::Flags, Steps::Wanted);
+    let f0 = F0Args { n: 1.4, kappa: 0.0 }.solve(via, lang, steps)?;
     let lambert = LambertArgs {
         normal: Vec3Arg([0.0, 0.0, 1.0]),
         light_dir: Vec3Arg([0.0, 3.0, 4.0]),
@@ -105,12 +105,12 @@ fn solved(lang: Lang) -> Result<[Record; 4]> {
         radiance: 5.0,
         kd: 0.6,
     }
-    .solve(via, lang)?;
+    .solve(via, lang, steps)?;
     let critical = CriticalAngleArgs {
         n: 10.0,
         n_outside: 1.0,
     }
-    .solve(via, lang)?;
+    .solve(via, lang, steps)?;
     let blinn_phong = BlinnPhongArgs {
         normal: Vec3Arg([0.0, 0.0, 1.0]),
         light_dir: Vec3Arg([0.0, 3.0, 4.0]),
@@ -120,7 +120,7 @@ fn solved(lang: Lang) -> Result<[Record; 4]> {
         shine: 3.0,
         kd: 0.0,
     }
-    .solve(via, lang)?;
+    .solve(via, lang, steps)?;
     Ok([f0, lambert, critical, blinn_phong])
 }
 
@@ -163,21 +163,23 @@ pub fn seed_record(lang: Lang) -> Result<Record> {
     );
     for q in &questions {
         let agrees = q.details.get("agrees_with_printed") == Some(&Value::Bool(true));
-        record.step(format!(
-            "{} — {}",
-            q.title,
-            if agrees {
-                lang.pick(
-                    "agrees with the printed answer",
-                    "egyezik a közölt megoldással",
-                )
-            } else {
-                lang.pick(
-                    "differs from the printed answer",
-                    "eltér a közölt megoldástól",
-                )
-            }
-        ));
+        record.step(|| {
+            format!(
+                "{} — {}",
+                q.title,
+                if agrees {
+                    lang.pick(
+                        "agrees with the printed answer",
+                        "egyezik a közölt megoldással",
+                    )
+                } else {
+                    lang.pick(
+                        "differs from the printed answer",
+                        "eltér a közölt megoldástól",
+                    )
+                }
+            )
+        });
     }
     let values: Vec<Value> = questions
         .iter()

@@ -152,11 +152,7 @@ pub(super) fn question_one(lang: Lang) -> Record {
         };
         let text = lang.pick(s.en, s.hu);
         let why = facts.fill(lang.pick(s.why_en, s.why_hu));
-        record.step(format!(
-            "{}. [{}] {text} — {why}",
-            i + 1,
-            verdict(s.correct)
-        ));
+        record.step(|| format!("{}. [{}] {text} — {why}", i + 1, verdict(s.correct)));
         if s.printed != s.correct {
             record.note(say!(
                 lang,

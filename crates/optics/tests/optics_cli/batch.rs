@@ -109,3 +109,86 @@ fn a_block_of_four_billion_lines_is_held_only_as_lines_arrive() {
     );
     assert_eq!(results.len(), 3);
 }
+
+/// Each output line of `optics batch [args]` on the ROUND_TRIP requests,
+/// one per law of `optics::batch::LAWS`, with the given line endings.
+fn round_trip_records(args: &[&str], extra: &str) -> Vec<serde_json::Value> {
+    let laws: Vec<&str> = ROUND_TRIP
+        .iter()
+        .map(|(request, _)| {
+            let law = &serde_json::from_str::<serde_json::Value>(request).unwrap()["law"];
+            optics::batch::LAWS
+                .into_iter()
+                .find(|name| law == name)
+                .expect("a law of the batch")
+        })
+        .collect();
+    assert_eq!(laws, optics::batch::LAWS, "one request per law, in order");
+    let input: String = ROUND_TRIP
+        .iter()
+        .map(|(request, _)| format!("{}{extra}}}\n", request.trim_end_matches('}')))
+        .collect();
+    let (results, output) = batch_bytes(&[], args, input.as_bytes());
+    assert!(output.status.success(), "{}", stderr(&output));
+    assert_eq!(results.len(), ROUND_TRIP.len());
+    results
+}
+
+/// The record without its working, as text: numbers as written, so equal
+/// text is equal bits (each number is written in the shortest form that
+/// reads back to it).
+fn without_steps(record: &serde_json::Value) -> String {
+    let mut record = record.clone();
+    record.as_object_mut().unwrap().remove("steps");
+    record.to_string()
+}
+
+#[test]
+fn no_steps_gives_empty_steps_and_the_same_numbers_for_every_law() {
+    let with = round_trip_records(&[], "");
+    let without = round_trip_records(&["--no-steps"], "");
+    for (with, without) in with.iter().zip(&without) {
+        assert!(!with["steps"].as_array().unwrap().is_empty(), "{with}");
+        assert_eq!(without["steps"], serde_json::json!([]), "{without}");
+        assert_eq!(without_steps(with), without_steps(without));
+    }
+}
+
+#[test]
+fn a_lines_own_steps_overrides_no_steps_either_way() {
+    let with = round_trip_records(&[], "");
+    let skipped = round_trip_records(&[], r#", "steps": false"#);
+    let wanted = round_trip_records(&["--no-steps"], r#", "steps": true"#);
+    for ((with, skipped), wanted) in with.iter().zip(&skipped).zip(&wanted) {
+        assert_eq!(skipped["steps"], serde_json::json!([]), "{skipped}");
+        assert_eq!(wanted, with, "a line's steps: true against --no-steps");
+        assert_eq!(without_steps(with), without_steps(skipped));
+    }
+}
+
+#[test]
+fn a_steps_that_is_not_a_boolean_is_refused_naming_the_field() {
+    let input = [
+        r#"{"law": "fresnel", "eta": 1.5, "cos_i": 0.3, "steps": "yes"}"#,
+        r#"{"law": "f0", "steps": 1, "n": 1.5}"#,
+        r#"{"steps": null, "law": "critical_angle", "n": 10}"#,
+    ]
+    .join("\n");
+    let (results, output) = batch(&input);
+    assert_eq!(output.status.code(), Some(1), "{}", stderr(&output));
+    let laws = ["fresnel", "f0", "critical_angle"];
+    for ((result, law), given) in
+        results
+            .iter()
+            .zip(laws)
+            .zip(["string \"yes\"", "integer `1`", "null"])
+    {
+        assert_eq!(result["law"], law, "{result}");
+        let error = &result["error"];
+        assert_eq!(error["kind"], "request", "{result}");
+        assert_eq!(error["field"], "steps", "{result}");
+        let message = error["message"].as_str().unwrap();
+        let expected = format!("steps: invalid type: {given}, expected a boolean");
+        assert_eq!(message, expected, "{result}");
+    }
+}

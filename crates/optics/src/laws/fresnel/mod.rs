@@ -10,7 +10,7 @@ use crate::error::Result;
 use crate::error::{Error, ErrorKind};
 use crate::input::Via;
 use crate::lang::{say, Lang};
-use crate::record::{Answer, Record};
+use crate::record::{Answer, Record, Steps};
 use radiometry::fresnel::{
     conductor_polarized, dielectric_resolved, f0, schlick_dielectric_resolved,
 };
@@ -65,11 +65,11 @@ pub struct FresnelArgs {
 }
 
 impl FresnelArgs {
-    pub fn solve(&self, via: Via, lang: Lang) -> Result<Record> {
+    pub fn solve(&self, via: Via, lang: Lang, steps: Steps) -> Result<Record> {
         let eta = via.index("eta", self.eta)?;
         let kappa = via.extinction("kappa", self.kappa)?;
         let cos_i = self.signed_cosine(via, kappa)?;
-        let mut record = self.record(eta, kappa, cos_i, lang);
+        let mut record = self.record(eta, kappa, cos_i, lang).with_steps(steps);
         // The one place the side is decided; each law below takes it.
         let incidence = Incidence::resolve(cos_i, eta)
             .expect("cos_i and eta were validated by radiometry::domain above");
@@ -157,7 +157,7 @@ impl FresnelArgs {
             Some(deg) => record.input("theta_i_deg", deg),
             None => record.input("cos_i", cos_i),
         };
-        record.input("model", self.model.to_string());
+        record.input("model", self.model);
         record
     }
 }

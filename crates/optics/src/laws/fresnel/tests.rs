@@ -2,6 +2,7 @@
 
 use super::*;
 use crate::record::number;
+use crate::record::Steps;
 use radiometry::fresnel::SchlickCosine;
 use radiometry::fresnel::{dielectric_polarized, schlick_dielectric_working};
 
@@ -13,7 +14,8 @@ fn solve(eta: f64, cos_i: f64, model: FresnelModel) -> Record {
         theta_i_deg: None,
         model,
     };
-    args.solve(Via::Flags, Lang::En).expect("a valid request")
+    args.solve(Via::Flags, Lang::En, Steps::Wanted)
+        .expect("a valid request")
 }
 
 fn answer(record: &Record) -> f64 {

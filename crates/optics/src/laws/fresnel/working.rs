@@ -17,33 +17,41 @@ pub(super) fn narrate_incidence(
     kappa: f64,
 ) {
     if kappa > 0.0 {
-        record.step(say!(
+        record.step(|| {
+            say!(
             lang,
             "light arrives from outside onto a conductor of complex index ñ = η + iκ = {} + {}i",
             "a fény kívülről érkezik egy ñ = η + iκ = {} + {}i komplex törésmutatójú vezetőre",
             number(eta),
             number(kappa)
-        ));
+        )
+        });
     } else if incidence.from_inside {
-        record.step(say!(
-            lang,
-            "cos θi < 0: light arrives from inside, n_i = η = {}, n_t = 1",
-            "cos θi < 0: a fény belülről érkezik, n_i = η = {}, n_t = 1",
-            number(eta)
-        ));
+        record.step(|| {
+            say!(
+                lang,
+                "cos θi < 0: light arrives from inside, n_i = η = {}, n_t = 1",
+                "cos θi < 0: a fény belülről érkezik, n_i = η = {}, n_t = 1",
+                number(eta)
+            )
+        });
     } else {
-        record.step(say!(
-            lang,
-            "cos θi ≥ 0: light arrives from outside, n_i = 1, n_t = η = {}",
-            "cos θi ≥ 0: a fény kívülről érkezik, n_i = 1, n_t = η = {}",
-            number(eta)
-        ));
+        record.step(|| {
+            say!(
+                lang,
+                "cos θi ≥ 0: light arrives from outside, n_i = 1, n_t = η = {}",
+                "cos θi ≥ 0: a fény kívülről érkezik, n_i = 1, n_t = η = {}",
+                number(eta)
+            )
+        });
     }
-    record.step(format!(
-        "|cos θi| = {}, θi = {}°",
-        number(incidence.abs_cos_i),
-        number(incidence.abs_cos_i.acos().to_degrees())
-    ));
+    record.step(|| {
+        format!(
+            "|cos θi| = {}, θi = {}°",
+            number(incidence.abs_cos_i),
+            number(incidence.abs_cos_i.acos().to_degrees())
+        )
+    });
 }
 
 /// The exact dielectric law's working, from what it returned; its `R`.
@@ -53,39 +61,49 @@ pub(super) fn exact_dielectric(
     fresnel: &DielectricFresnel<f64>,
 ) -> f64 {
     match fresnel.cos_t {
-        Some(cos_t) => record.step(say!(
-            lang,
-            "Snell: cos θt = √(n_t² − n_i² sin²θi) / n_t = {} (θt = {}°)",
-            "Snellius–Descartes: cos θt = √(n_t² − n_i² sin²θi) / n_t = {} (θt = {}°)",
-            number(cos_t),
-            number(cos_t.acos().to_degrees())
-        )),
-        None => record.step(say!(
-            lang,
-            "Snell: sin θt = n_i sin θi / n_t = {} > 1: total internal reflection",
-            "Snellius–Descartes: sin θt = n_i sin θi / n_t = {} > 1: teljes visszaverődés",
-            number(fresnel.incidence.sin_transmitted())
-        )),
+        Some(cos_t) => record.step(|| {
+            say!(
+                lang,
+                "Snell: cos θt = √(n_t² − n_i² sin²θi) / n_t = {} (θt = {}°)",
+                "Snellius–Descartes: cos θt = √(n_t² − n_i² sin²θi) / n_t = {} (θt = {}°)",
+                number(cos_t),
+                number(cos_t.acos().to_degrees())
+            )
+        }),
+        None => record.step(|| {
+            say!(
+                lang,
+                "Snell: sin θt = n_i sin θi / n_t = {} > 1: total internal reflection",
+                "Snellius–Descartes: sin θt = n_i sin θi / n_t = {} > 1: teljes visszaverődés",
+                number(fresnel.incidence.sin_transmitted())
+            )
+        }),
     };
     if fresnel.is_total_internal_reflection() {
-        record.step(format!(
-            "R_s = {}, R_p = {}",
-            number(fresnel.r_s),
-            number(fresnel.r_p)
-        ));
+        record.step(|| {
+            format!(
+                "R_s = {}, R_p = {}",
+                number(fresnel.r_s),
+                number(fresnel.r_p)
+            )
+        });
     } else {
-        record.step(format!(
-            "R_s = ((n_i cos θi − n_t cos θt) / (n_i cos θi + n_t cos θt))² = {}",
-            number(fresnel.r_s)
-        ));
-        record.step(format!(
-            "R_p = ((n_t cos θi − n_i cos θt) / (n_t cos θi + n_i cos θt))² = {}",
-            number(fresnel.r_p)
-        ));
+        record.step(|| {
+            format!(
+                "R_s = ((n_i cos θi − n_t cos θt) / (n_i cos θi + n_t cos θt))² = {}",
+                number(fresnel.r_s)
+            )
+        });
+        record.step(|| {
+            format!(
+                "R_p = ((n_t cos θi − n_i cos θt) / (n_t cos θi + n_i cos θt))² = {}",
+                number(fresnel.r_p)
+            )
+        });
     }
     let r = fresnel.reflectance();
-    record.step(format!("R = (R_s + R_p) / 2 = {}", number(r)));
-    record.step(format!("T = 1 − R = {}", number(fresnel.transmittance())));
+    record.step(|| format!("R = (R_s + R_p) / 2 = {}", number(r)));
+    record.step(|| format!("T = 1 − R = {}", number(fresnel.transmittance())));
     record
         .detail("r_s", fresnel.r_s)
         .detail("r_p", fresnel.r_p)
@@ -106,16 +124,20 @@ pub(super) fn exact_conductor(
     kappa: f64,
 ) -> f64 {
     let fresnel = conductor_polarized(incidence.abs_cos_i, eta, kappa);
-    record.step(format!(
-        "R_s = |(cos θi − √(ñ² − sin²θi)) / (cos θi + √(ñ² − sin²θi))|² = {}",
-        number(fresnel.r_s)
-    ));
-    record.step(format!(
-        "R_p = |(ñ² cos θi − √(ñ² − sin²θi)) / (ñ² cos θi + √(ñ² − sin²θi))|² = {}",
-        number(fresnel.r_p)
-    ));
+    record.step(|| {
+        format!(
+            "R_s = |(cos θi − √(ñ² − sin²θi)) / (cos θi + √(ñ² − sin²θi))|² = {}",
+            number(fresnel.r_s)
+        )
+    });
+    record.step(|| {
+        format!(
+            "R_p = |(ñ² cos θi − √(ñ² − sin²θi)) / (ñ² cos θi + √(ñ² − sin²θi))|² = {}",
+            number(fresnel.r_p)
+        )
+    });
     let r = fresnel.reflectance();
-    record.step(format!("R = (R_s + R_p) / 2 = {}", number(r)));
+    record.step(|| format!("R = (R_s + R_p) / 2 = {}", number(r)));
     record.detail("r_s", fresnel.r_s).detail("r_p", fresnel.r_p);
     r
 }
@@ -131,19 +153,23 @@ pub(super) fn schlick_for_dielectric(
     step_f0(record, working.f0);
     match working.cosine {
         SchlickCosine::Transmitted(cos_t) => {
-            record.step(say!(
-                lang,
-                "from the denser side Schlick takes the angle in the rarer medium: cos θt = {}",
-                "a sűrűbb oldalról Schlick a ritkább közegbeli szöget használja: cos θt = {}",
-                number(cos_t)
-            ));
+            record.step(|| {
+                say!(
+                    lang,
+                    "from the denser side Schlick takes the angle in the rarer medium: cos θt = {}",
+                    "a sűrűbb oldalról Schlick a ritkább közegbeli szöget használja: cos θt = {}",
+                    number(cos_t)
+                )
+            });
         }
         SchlickCosine::TotalInternalReflection => {
-            record.step(say!(
-                lang,
-                "beyond the critical angle: total internal reflection, R = 1",
-                "a határszögön túl: teljes visszaverődés, R = 1"
-            ));
+            record.step(|| {
+                say!(
+                    lang,
+                    "beyond the critical angle: total internal reflection, R = 1",
+                    "a határszögön túl: teljes visszaverődés, R = 1"
+                )
+            });
         }
         SchlickCosine::Incident => {}
     }
@@ -190,7 +216,7 @@ pub(super) fn course_form(
     step_f0(record, f_0);
     let cos = incidence.abs_cos_i;
     let r = course::fresnel_000_glsl(f_0, cos);
-    record.step(say!(
+    record.step(|| say!(
         lang,
         "the course shader's R = F0 + (1 − F0) cos⁵θ = {} + {}·{}⁵ = {} (Schlick's term is (1 − cos θ)⁵: this is the Fresnel effect backwards)",
         "a kurzus shadere szerint R = F0 + (1 − F0) cos⁵θ = {} + {}·{}⁵ = {} (Schlick tagja (1 − cos θ)⁵: ez a Fresnel-hatás fordítva)",
@@ -204,20 +230,19 @@ pub(super) fn course_form(
 }
 
 fn step_f0(record: &mut Record, f_0: f64) {
-    record.step(format!(
-        "F0 = ((η − 1)² + κ²) / ((η + 1)² + κ²) = {}",
-        number(f_0)
-    ));
+    record.step(|| format!("F0 = ((η − 1)² + κ²) / ((η + 1)² + κ²) = {}", number(f_0)));
 }
 
 fn step_schlick(record: &mut Record, f_0: f64, cos: f64, r: f64) {
-    record.step(format!(
-        "R ≈ F0 + (1 − F0)(1 − cos θ)⁵ = {} + {}·{}⁵ = {}",
-        number(f_0),
-        number(1.0 - f_0),
-        number(1.0 - cos),
-        number(r)
-    ));
+    record.step(|| {
+        format!(
+            "R ≈ F0 + (1 − F0)(1 − cos θ)⁵ = {} + {}·{}⁵ = {}",
+            number(f_0),
+            number(1.0 - f_0),
+            number(1.0 - cos),
+            number(r)
+        )
+    });
 }
 
 /// `R` of an approximation (`label`) beside the exact law's, and its error.
@@ -229,14 +254,16 @@ fn compare_with_exact(
     r: f64,
     exact: f64,
 ) -> f64 {
-    record.step(say!(
-        lang,
-        "for comparison, the exact law gives R = {}: {} − exact = {}",
-        "összevetésül a pontos képlet: R = {}, {} − pontos = {}",
-        number(exact),
-        label,
-        number(r - exact)
-    ));
+    record.step(|| {
+        say!(
+            lang,
+            "for comparison, the exact law gives R = {}: {} − exact = {}",
+            "összevetésül a pontos képlet: R = {}, {} − pontos = {}",
+            number(exact),
+            label,
+            number(r - exact)
+        )
+    });
     record
         .detail("f0", f_0)
         .detail("exact", exact)
