@@ -575,9 +575,10 @@ def edge_mask(signatures, width, height):
     return mask
 
 
-def path_scene(scene, width=PATH_WIDTH, height=PATH_HEIGHT):
+def path_scene(scene, width=PATH_WIDTH, height=PATH_HEIGHT, sampler="independent"):
     """The Mitsuba scene of the path comparison: ``PATH_WIDTH`` x
-    ``PATH_HEIGHT``, a box-filtered film, an independent sampler, and the
+    ``PATH_HEIGHT``, a box-filtered film, an independent sampler (or the
+    ``sampler`` named: ``bench_vs_mitsuba.py`` also times ``stratified``), and the
     sensor's rays unclipped at ``PATH_FAR_CLIP``: the suite's far plane only
     gives a ray's direction (``pixel_ray`` does the same for the Whitted
     rays), and Mitsuba's film would end the rays there (100 m on
@@ -586,7 +587,7 @@ def path_scene(scene, width=PATH_WIDTH, height=PATH_HEIGHT):
     d = mitsuba_scene(scene, width, height, PATH_MAX_DEPTH)
     d["sensor"]["far_clip"] = PATH_FAR_CLIP
     d["sensor"]["film"]["rfilter"] = {"type": "box"}
-    d["sensor"]["sampler"] = {"type": "independent", "sample_count": 1}
+    d["sensor"]["sampler"] = {"type": sampler, "sample_count": 1}
     return mi.load_dict(d, optimize=False)
 
 

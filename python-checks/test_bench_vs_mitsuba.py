@@ -1,0 +1,123 @@
+"""The benchmark's statistics against cases with a known answer (the
+variance of a known noise, Student's t's tabulated quantiles, an image
+shifted by many standard errors), and one ``--quick`` run end to end."""
+import json
+import os
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import bench_statistics as stats  # noqa: E402
+import bench_vs_mitsuba as bench  # noqa: E402
+import mitsuba_render as mr  # noqa: E402
+
+
+def noisy(mean, sigma, seed, shape=(24, 32, 3)):
+    return mean + sigma * np.random.default_rng(seed).standard_normal(shape)
+
+
+def test_pair_variance_is_the_variance_of_one_render():
+    # Two renders of N(0.5, 0.1^2) noise: 2304 values, so the estimate of
+    # sigma^2 = 0.01 has a relative standard error sqrt(2 / 2304) = 3 %; 15 % is 5 of them.
+    v = stats.pair_variance(noisy(0.5, 0.1, 1), noisy(0.5, 0.1, 2))
+    assert abs(v - 0.01) < 0.15 * 0.01, v
+
+
+def test_critical_t_is_students():
+    # Two-sided 5 % quantiles of Student's t (any table): 12.706 at 1 dof,
+    # 2.571 at 5, 1.960 as the dof grow; 4 digits as tabulated.
+    for dof, expected in [(1, 12.706), (5, 2.571), (10**6, 1.960)]:
+        assert abs(stats.two_sided_critical_t(0.05, dof) - expected) < 1e-3, dof
+
+
+def test_guarded_variance_takes_the_neighbourhoods_mean_where_larger():
+    variance = np.zeros((3, 3, 3))
+    variance[1, 1] = 9.0
+    guarded = stats.guarded_variance(variance)
+    # The centre keeps its own 9; a corner sees it among 4 pixels: 9 / 4.
+    assert guarded[1, 1, 0] == 9.0 and guarded[0, 0, 0] == 9.0 / 4 and guarded[0, 1, 0] == 9.0 / 6
+
+
+def renders(mean, count, first_seed, sigma=0.05):
+    return [noisy(mean, sigma, first_seed + k) for k in range(count)]
+
+
+def test_renders_of_one_image_agree():
+    result = stats.agreement(renders(0.5, 6, 0), renders(0.5, 6, 100), 0.01)
+    assert result["agrees"], result
+
+
+def test_a_shifted_image_disagrees():
+    # A 4 % shift of the mean. A render's image mean has a standard
+    # deviation of 0.05 / sqrt(768) = 1.8e-3, the difference of six against
+    # six 1.8e-3 sqrt(2 / 6) = 1.04e-3, so 0.02 is t = 19, past the critical
+    # t at 0.005 / 3 with 5 dof (6.0) and the tolerance (5.1e-4); a pixel's
+    # own t is 0.02 / (0.05 sqrt(2 / 6)) = 0.7, far below its threshold.
+    result = stats.agreement(renders(0.52, 6, 0), renders(0.5, 6, 100), 0.01)
+    assert not result["agrees"] and all(c["fails"] for c in result["image_mean"]), result
+    assert result["pixels"]["failed"] == 0
+
+
+def test_one_wrong_pixel_disagrees():
+    # One pixel-channel 50 standard errors (1.44) off, past the critical t
+    # at 0.005 / 2304 with 5 dof (about 30): the image mean of its channel
+    # moves by 1.44 / 768 = 1.9e-3, t = 1.8, so only the per-pixel test sees it.
+    ours = renders(0.5, 6, 0)
+    for image in ours:
+        image[3, 4, 1] += 50 * 0.05 * (2 / 6) ** 0.5
+    result = stats.agreement(ours, renders(0.5, 6, 100), 0.01)
+    assert not result["agrees"] and result["pixels"]["failed"] == 1, result
+
+
+def test_the_scenes_are_the_path_checks():
+    names = bench.bench_scenes()
+    assert "kaleidoscope" not in names and "normals" not in names  # PATH_SKIPPED, NOT_A_RADIANCE
+    assert "kaleidoscope_lit" in names and "gold_spheres" in names
+
+
+def test_lambert_replaces_course_rough_with_its_diffuse_colour():
+    scene = json.loads(mr.scene_text("gold_spheres")[1])
+    measured = bench.measured_scene(scene, "lambert")
+    assert measured["materials"]["green"] == {"type": "lambert", "albedo": [0.1, 0.8, 0.3]}
+    assert measured["materials"]["gold"] == scene["materials"]["gold"]
+    assert bench.measured_scene(scene, "course") == scene
+
+
+def optics_binary():
+    """The optics binary the tests of the workspace built (CI runs ``cargo
+    test`` first), else a debug build made here."""
+    target = os.environ.get("CARGO_TARGET_DIR", os.path.join(mr.ROOT, "target"))
+    for profile in ("release", "debug"):
+        path = os.path.join(target, profile, "optics")
+        if os.access(path, os.X_OK):
+            return path
+    subprocess.run(["cargo", "build", "--quiet", "-p", "optics"], cwd=mr.ROOT, check=True)
+    return os.path.join(target, "debug", "optics")
+
+
+def test_quick_run_writes_the_versioned_record(tmp_path, capsys):
+    out = tmp_path / "bench.json"
+    code = bench.main(["--quick", "--scenes", "first_red_sphere,diffuse", "--variants", "scalar_rgb",
+                       "--optics", optics_binary(), "--out", str(out)])
+    assert code == 0
+    document = json.loads(out.read_text())
+    assert document["schema"] == "bench-vs-mitsuba/1"
+    assert document["machine"]["cores"] == os.cpu_count() and document["date"]
+    assert [e["name"] for e in document["scenes"]] == ["first_red_sphere", "diffuse"]
+    for entry in document["scenes"]:
+        assert len(entry["pairs"]) == 1 and entry["agreement"]["agrees"], entry["agreement"]
+        assert entry["spp"] >= 1 and entry["time_ratio"]["median"] > 0
+        pair = entry["pairs"][0]
+        expected = (pair["mitsuba"]["variance"] * sum(pair["mitsuba"]["seconds"])) / (
+            pair["tracer"]["variance"] * sum(pair["tracer"]["seconds"]))
+        assert entry["efficiency_ratio"]["median"] == pytest.approx(expected, rel=1e-12)
+    assert "| `first_red_sphere` | scalar_rgb |" in capsys.readouterr().out
+
+
+def test_too_few_pairs_and_unknown_scenes_are_refused(tmp_path):
+    with pytest.raises(SystemExit):
+        bench.parse(["--pairs", "2"])
+    assert bench.main(["--scenes", "kaleidoscope", "--optics", sys.executable, "--out", str(tmp_path / "x")]) == 1
