@@ -149,7 +149,7 @@ impl<T: Real> Incidence<T> {
     /// `cos θ_t ≥ 0` on the far side, or `None` under total internal
     /// reflection (`sin θ_t` would exceed 1).
     ///
-    /// Snell's law is decided for a resolved incidence in [`Incidence::snell`]:
+    /// Snell's law is decided for a resolved incidence in `Incidence::snell`:
     /// this, the exact Fresnel law, Schlick's working and
     /// [`crate::specular::refract`] all take `cos θ_t` (or its absence)
     /// from it.
