@@ -149,8 +149,8 @@ impl<T: Real> Conductor<T> {
         let u_ws2 = u * (c * c) + two * c * us.re + u_abs_d; // Re s ≥ 0: no cancellation
         let b = self.eta2 * c;
         let u_wp2 = u * b.norm_sqr() + two * (b.re * us.re + b.im * us.im) + u_abs_d;
-        let r_s = sqr(self.abs_eta2_m1 * u / u_ws2);
-        let r_p = sqr(self.abs_eta2_m1 * abs(brewster) * u / u_wp2);
+        let r_s = sqr(self.abs_eta2_m1 / (u_ws2 / u));
+        let r_p = sqr(self.abs_eta2_m1 * abs(brewster) / (u_wp2 / u));
         // Index-matched (η = 1) reflects nothing; chosen here rather than
         // computed, as 0 / ws2 is NaN at grazing incidence (ws2 = 0).
         let zero = Wide::<T>::zero();
