@@ -46,6 +46,20 @@ and 590 variances at most 4.7e-4; the tolerances, 1e-3 (mean) and 1e-2
 reproduction of the reference only: the harness compares the tracer with
 the committed file.
 
+A sample that moves is another matter: on two AMD EPYC machines the 64 x 48
+tolerances held, but at 320 x 240 one path of ``webgl_seven_spheres`` in a
+pixel took another branch, and that pixel's mean moved by 7e-3 of itself
+(8 means and 5 standard deviations of its 230 400 moved beyond the
+tolerances, the means by at most 0.0095 of their standard error, the
+deviations by at most 0.16 of theirs). Such moves are invisible to the
+harness, which tests each pixel against its standard error, so a path's
+statistics (a ``path`` object with ``samples`` N and both arrays) also
+reproduce when at most ``MOVED_FRACTION`` of an array's elements lie beyond
+its tolerance, each within ``MOVED_STANDARD_ERRORS`` of its standard error:
+sigma / sqrt(N) for a mean, sigma / sqrt(2 (N - 1)) for a standard deviation,
+sigma the larger of the two files' deviations of that pixel. A systematic
+shift moves more elements than that and is still refused.
+
 Usage: ``reproduce.py COMMITTED FRESH [--as NAME]`` prints where FRESH departs
 from COMMITTED, and the spread of their numbers. It exits 0 if FRESH
 reproduces COMMITTED, 1 if it does not, and 2 if it cannot tell (a file that
@@ -72,6 +86,11 @@ F32_TOLERANT = {
 # may move as their float32 images do, across CPUs: ``mitsuba_renders.json``'s
 # mean tolerance, not yet measured on a second CPU for this file.
 FLOAT_TOLERANT = {"mitsuba_full_light.json": 1e-3}
+# A path's statistics: the elements that may move as one sample does (see
+# the module docstring), as a fraction of the array, and by how much.
+MOVED_FRACTION = 1e-4
+MOVED_STANDARD_ERRORS = 0.5
+PATH_MEAN, PATH_STD = "mean_f16le_zlib", "std_bf16le_zlib"
 
 
 def tolerance_for(name):
@@ -133,23 +152,69 @@ def _f32_array(text, key=""):
     return struct.unpack(f"<{len(raw) // 4}f", raw)
 
 
-def _f32_walk(a, b, here, tolerance, found, diffs):
-    """Two base64 float arrays, element by element."""
+def _f32_pair(a, b, here, found):
+    """The two decoded arrays at ``here``, or None (and why, in ``found``)."""
     key = here.rsplit(".", 1)[-1]
     try:
         x, y = _f32_array(a, key), _f32_array(b, key)
     except ValueError as e:
         found.append(f"{here}: not a base64 float array ({e})")
-        return
+        return None
     if len(x) != len(y):
         found.append(f"{here}: {len(x)} values against {len(y)}")
+        return None
+    return x, y
+
+
+def _f32_walk(a, b, here, tolerance, found, diffs, standard_errors=None):
+    """Two base64 float arrays, element by element. With ``standard_errors``
+    (one per element) up to ``MOVED_FRACTION`` of the elements may lie beyond
+    ``tolerance`` if each is within ``MOVED_STANDARD_ERRORS`` of its own."""
+    pair = _f32_pair(a, b, here, found)
+    if pair is None:
         return
-    for i, (p, q) in enumerate(zip(x, y)):
+    beyond = []
+    for i, (p, q) in enumerate(zip(*pair)):
         scaled = abs(p - q) / max(1.0, abs(p), abs(q))
         if diffs is not None and p != q:
             diffs.append(scaled if not math.isnan(scaled) else math.inf)
         if not scaled <= tolerance:  # a NaN is never within it
-            found.append(f"{here}[{i}]: committed {p!r}, regenerated {q!r}")
+            beyond.append(i)
+    moved = [] if standard_errors is None else [
+        i for i in beyond if abs(pair[0][i] - pair[1][i]) <= MOVED_STANDARD_ERRORS * standard_errors[i]]
+    if len(moved) > MOVED_FRACTION * len(pair[0]):
+        found.append(f"{here}: {len(moved)} of {len(pair[0])} values moved within "
+                     f"{MOVED_STANDARD_ERRORS} standard errors, more than {MOVED_FRACTION:g} of them")
+        moved = []
+    moved = set(moved)
+    for i in beyond:
+        if i not in moved:
+            found.append(f"{here}[{i}]: committed {pair[0][i]!r}, regenerated {pair[1][i]!r}")
+
+
+def _path_walk(a, b, path, tolerance, found, diffs, f32):
+    """A path's statistics: its arrays by ``_f32_walk`` with the standard
+    errors of each element, everything else by ``_walk``."""
+    n = a["samples"]
+    deviations = _f32_pair(a[PATH_STD], b[PATH_STD], f"{path}.{PATH_STD}", found)
+    if deviations is None:
+        return
+    sigma = [max(abs(p), abs(q)) for p, q in zip(*deviations)]
+    errors = {PATH_MEAN: [s / math.sqrt(n) for s in sigma],
+              PATH_STD: [s / math.sqrt(2 * (n - 1)) for s in sigma]}
+    for key in a:
+        here = f"{path}.{key}"
+        if key in errors and isinstance(a[key], str) and isinstance(b[key], str):
+            _f32_walk(a[key], b[key], here, f32[key], found, diffs, errors[key])
+        else:
+            _walk(a[key], b[key], here, tolerance, found, diffs, f32)
+
+
+def _is_path(a, b, f32):
+    """Whether ``a`` and ``b`` are a path's statistics compared with tolerances."""
+    return (isinstance(a, dict) and isinstance(b, dict) and list(a) == list(b)
+            and PATH_MEAN in f32 and PATH_STD in f32 and PATH_MEAN in a and PATH_STD in a
+            and type(a.get("samples")) is int and a["samples"] == b.get("samples") and a["samples"] > 1)
 
 
 def spread(committed, fresh, f32_keys=()):
@@ -175,6 +240,8 @@ def _walk(a, b, path, tolerance, found, diffs=None, f32=None):
             diffs.append(scaled if not math.isnan(scaled) else math.inf)
         if not scaled <= tolerance:  # a NaN is never within it
             found.append(f"{here}: committed {a!r}, regenerated {b!r}")
+    elif f32 and _is_path(a, b, f32):
+        _path_walk(a, b, path, tolerance, found, diffs, f32)
     elif isinstance(a, dict):
         if list(a) != list(b):
             found.append(f"{here}: keys {list(a)} against {list(b)}")
@@ -210,8 +277,9 @@ def main(argv):
         if (tolerance or f32) and committed != fresh and not found:
             count, worst = spread(committed, fresh, f32)
             allowed = f"{tolerance:g}" if tolerance else ", ".join(f"{k} {v:g}" for k, v in f32.items())
+            moved = " (beyond it only as a moved sample moves them)" if worst > max([tolerance, *f32.values()]) else ""
             print(f"{count} numbers differ, by at most {worst:.2g} of max(1, |value|)"
-                  f" (tolerance {allowed})")
+                  f" (tolerance {allowed}){moved}")
     except Exception as e:  # noqa: BLE001 - any failure here means "cannot tell", not "differs"
         print(f"reproduce.py: {type(e).__name__}: {e}", file=sys.stderr)
         return 2

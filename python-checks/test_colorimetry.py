@@ -11,6 +11,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import colorimetry  # noqa: E402
 import metals  # noqa: E402
 import reproduce  # noqa: E402
+from reproduce import PATH_MEAN, PATH_STD  # noqa: E402
 
 
 def test_colour_science_reproduces_sharma_2005():
@@ -111,6 +112,52 @@ def test_float_arrays_reproduce_within_their_tolerance_and_nothing_else_moves():
         changed.setdefault("whitted", doc["whitted"])
         found = reproduce.differences(committed, json.dumps(changed).encode(), f32_tolerances=rule)
         assert found, changed
+
+
+def test_a_paths_statistics_reproduce_when_a_few_pixels_move_as_a_sample_does():
+    import base64
+    import struct
+    import zlib
+
+    def f16(v):
+        return base64.b64encode(zlib.compress(struct.pack(f"<{len(v)}e", *v))).decode()
+
+    def bf16(v):
+        bits = struct.unpack(f"<{len(v)}I", struct.pack(f"<{len(v)}f", *v))
+        return base64.b64encode(zlib.compress(struct.pack(f"<{len(v)}H", *(b >> 16 for b in bits)))).decode()
+
+    # 30 000 pixels of mean 1 and deviation 8: a mean's standard error is
+    # 8 / sqrt(64) = 1, a deviation's 8 / sqrt(126) = 0.71; at most three
+    # elements (1e-4 of them) may move beyond the tolerances, each by at
+    # most half of that.
+    n = 30000
+    mean, std = [1.0] * n, [8.0] * n
+    doc = {"path": {"samples": 64, PATH_MEAN: f16(mean), PATH_STD: bf16(std)}}
+    committed = json.dumps(doc).encode()
+    rule = reproduce.f32_tolerances_for("mitsuba_renders.json")
+
+    def moved(means=(), deviations=(), samples=64):
+        m, s = list(mean), list(std)
+        for i, v in means:
+            m[i] = v
+        for i, v in deviations:
+            s[i] = v
+        return json.dumps({"path": {"samples": samples, PATH_MEAN: f16(m), PATH_STD: bf16(s)}}).encode()
+
+    assert reproduce.differences(committed, moved([(7, 1.4), (9, 0.6), (11, 1.25)], [(7, 8.25)]),
+                                 f32_tolerances=rule) == []
+    for changed in (moved([(7, 1.6)]),  # beyond half a standard error
+                    moved([(i, 1.25) for i in range(4)]),  # four moved: more than 1e-4 of them
+                    moved([(i, 1.01) for i in range(n)]),  # a shift of every pixel
+                    moved([], [(7, 8.5)]),  # a deviation beyond half its standard error
+                    moved([(7, 1.25)], samples=63)):  # the sample count is not a statistic
+        assert reproduce.differences(committed, changed, f32_tolerances=rule), changed
+    # Elsewhere nothing moves as a sample: the same arrays outside a path's
+    # statistics (no sample count) hold to the tolerances alone.
+    bare = {"path": {PATH_MEAN: f16(mean), PATH_STD: bf16(std)}}
+    shifted = dict(bare["path"], **{PATH_MEAN: f16([1.25] + mean[1:])})
+    assert reproduce.differences(json.dumps(bare).encode(), json.dumps({"path": shifted}).encode(),
+                                 f32_tolerances=rule)
 
 
 def test_reproduction_tolerates_blas_rounding_and_nothing_else():
