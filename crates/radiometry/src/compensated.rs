@@ -187,10 +187,24 @@ fn square_of_product<T: Real>(a: T, b: T, exact: bool) -> [T; 3] {
 // ever rounded. Each sums its terms in one fixed order (large terms first,
 // then the rounding errors), skipping the ones that are zero by
 // construction.
+//
+// Where the tier's products are exact in the wide precision the sums need
+// less than Sum2: each cancels in one place only, between two terms whose
+// values are exact (squares of narrow numbers, or a `two_sum`'s result), and
+// two such terms within a factor of two of each other subtract exactly
+// (Sterbenz's lemma). So the large terms are added exactly where they
+// cancel, the error terms (a square's low part, a `two_sum`'s error) are
+// added after, and what is rounded is the small result, once or twice:
+// within about one ulp of the wide precision, whatever cancels.
 
 /// `n_t² − n_i²`.
 #[inline(always)]
 pub(crate) fn index_contrast<T: Real>(n_t: T, n_i: T, exact: bool) -> T {
+    if exact {
+        // The two exact squares' difference rounded once: what Sum2 of the
+        // two would give, bit for bit.
+        return n_t * n_t - n_i * n_i;
+    }
     let (t2, t2e) = narrow_prod(n_t, n_t, exact);
     let (i2, i2e) = narrow_prod(n_i, n_i, exact);
     Sum2::of(t2, exact)
@@ -204,6 +218,13 @@ pub(crate) fn index_contrast<T: Real>(n_t: T, n_i: T, exact: bool) -> T {
 /// vanishes at the critical angle.
 #[inline(always)]
 pub(crate) fn snell_discriminant<T: Real>(n_t: T, n_i: T, c: T, exact: bool) -> T {
+    if exact {
+        // (n_t² − n_i²) + (n_i c)²: the contrast and the square's high part
+        // cancel at the critical angle, exactly.
+        let (k, ke) = two_sum(n_t * n_t, -(n_i * n_i));
+        let [ic2, _, ic2e] = square_of_product(n_i, c, exact);
+        return (k + ic2) + (ic2e + ke);
+    }
     let (t2, t2e) = narrow_prod(n_t, n_t, exact);
     let (i2, i2e) = narrow_prod(n_i, n_i, exact);
     let [ic2, ic2m, ic2e] = square_of_product(n_i, c, exact);
@@ -221,6 +242,12 @@ pub(crate) fn snell_discriminant<T: Real>(n_t: T, n_i: T, c: T, exact: bool) -> 
 /// discriminant from the sine.
 #[inline(always)]
 pub(crate) fn snell_discriminant_from_sine<T: Real>(n_t: T, n_i: T, s: T, exact: bool) -> T {
+    if exact {
+        // n_t² and the square's high part cancel at the critical angle,
+        // exactly.
+        let [is2, _, is2e] = square_of_product(n_i, s, exact);
+        return (n_t * n_t - is2) - is2e;
+    }
     let (t2, t2e) = narrow_prod(n_t, n_t, exact);
     let [is2, is2m, is2e] = square_of_product(n_i, s, exact);
     Sum2::of(t2, exact)
@@ -237,6 +264,12 @@ pub(crate) fn snell_discriminant_from_sine<T: Real>(n_t: T, n_i: T, s: T, exact:
 pub(crate) fn brewster_factor<T: Real>(n_t: T, n_i: T, c: T, exact: bool) -> T {
     let [ct2, ct2m, ct2e] = square_of_product(c, n_t, exact);
     let [ci2, ci2m, ci2e] = square_of_product(c, n_i, exact);
+    if exact {
+        // The squares' high parts summed exactly as u + ue; u and n_i²
+        // cancel at Brewster's angle, exactly.
+        let (u, ue) = two_sum(ct2, ci2);
+        return (u - n_i * n_i) + (ue + (ct2e + ci2e));
+    }
     let (i2, i2e) = narrow_prod(n_i, n_i, exact);
     Sum2::of(ct2, exact)
         .plus(ci2)
