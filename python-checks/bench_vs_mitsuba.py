@@ -8,7 +8,10 @@ Run (from the repository root, after ``cargo build --release -p optics``):
         .venv/bin/python python-checks/bench_vs_mitsuba.py
 
 writes ``validation/out/bench-vs-mitsuba.json`` (schema ``bench-vs-mitsuba/1``)
-and prints the table. ``--quick`` is a smoke run (32 x 24, one pair, a
+and prints the table; with ``--docs`` (a full run only) it also writes the
+table into ``docs/results.md`` and its summary into the README, each
+stamped with the command, the machine and the date (``--table JSON
+--docs`` writes them from a record). ``--quick`` is a smoke run (32 x 24, one pair, a
 tenth of a second a run); ``--help`` lists the rest. Without a libLLVM of
 version 17 or later Mitsuba's ``llvm_ad_rgb`` cannot start and is reported
 as not run; ``scalar_rgb`` always runs.
@@ -72,7 +75,7 @@ import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import mitsuba_render as mr  # noqa: E402  (sets scalar_rgb; the variant is set again below)
-from atomic_write import write_json  # noqa: E402
+from atomic_write import write_json, write_text  # noqa: E402
 from bench_statistics import agreement, geometric_mean, pair_variance, spread  # noqa: E402
 
 import drjit as dr  # noqa: E402
@@ -316,6 +319,67 @@ def table(document):
     return "\n".join(lines)
 
 
+# -- the documents ------------------------------------------------------------
+
+RESULTS_MD = os.path.join(mr.ROOT, "docs", "results.md")
+README_MD = os.path.join(mr.ROOT, "README.md")
+SECTION, SUMMARY_SECTION = "bench-vs-mitsuba", "bench-vs-mitsuba-summary"
+
+
+def stamp(document):
+    """The lead line of a measured section, as ``results::Section::measured``
+    writes it: the command, the machine, its load, the date."""
+    m = document["machine"]
+    load = m.get("load_average_at_end") or m.get("load_average_at_start")
+    load = f" (load average {load[0]:.2f})" if load else ""
+    return (f"Measured by `{document['command']}` on {m['cpu'] or m['platform']}, {m['cores']} threads{load}, "
+            f"{document['date'][:10]}; a timing of that machine, not compared.")
+
+
+def summary_text(document):
+    """The README's lines: per variant the geometric means, and the scene
+    where the tracer does worst, from the record."""
+    lines = [stamp(document), ""]
+    for s in document["summary"]:
+        mine = [e for e in document["scenes"] if e["variant"] == s["variant"] and e["comparable"]]
+        if not mine:
+            continue
+        worst = min(mine, key=lambda e: e["efficiency_ratio"]["median"])
+        best = max(mine, key=lambda e: e["efficiency_ratio"]["median"])
+        lines.append(f"- against `{s['variant']}`: efficiency (1 / (variance × time)) "
+                     f"{s['geometric_mean_efficiency_ratio']:.2f}× Mitsuba's, geometric mean over "
+                     f"{s['comparable_scenes']} scenes; from {worst['efficiency_ratio']['median']:.2f}× "
+                     f"(`{worst['name']}`) to {best['efficiency_ratio']['median']:.2f}× (`{best['name']}`); "
+                     f"time at equal samples {s['geometric_mean_time_ratio']:.2f}× Mitsuba's")
+    disagree = [f"`{e['name']}` ({e['variant']})" for e in document["scenes"] if not e["comparable"]]
+    if disagree:
+        lines.append(f"- images that did not agree, so not compared: {', '.join(disagree)}")
+    for variant, why in document["not_run"].items():
+        lines.append(f"- `{variant}` not run: {why}")
+    return "\n".join(lines)
+
+
+def replace_section(text, name, body):
+    """``text`` with ``body`` between the markers of section ``name`` (the
+    markers ``results`` writes); a section not there yet is appended."""
+    begin, end = f"<!-- results: {name} -->\n", f"<!-- /results: {name} -->\n"
+    body = body.rstrip("\n") + "\n"
+    start = text.find(begin)
+    stop = text.find(end, start + len(begin)) if start >= 0 else -1
+    if start < 0 or stop < 0:
+        return f"{text.rstrip(chr(10))}\n\n{begin}{body}{end}"
+    return text[:start + len(begin)] + body + text[stop:]
+
+
+def write_docs(document, results_md=RESULTS_MD, readme_md=README_MD):
+    """The full table into ``docs/results.md``, the summary into the README."""
+    for path, name, body in ((results_md, SECTION, f"{stamp(document)}\n\n{table(document)}"),
+                             (readme_md, SUMMARY_SECTION, summary_text(document))):
+        with open(path, encoding="utf-8") as f:
+            text = f.read()
+        write_text(path, replace_section(text, name, body))
+
+
 def parse(argv):
     p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
                                 formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -338,6 +402,9 @@ def parse(argv):
                                                     "release", "optics"), help="the optics binary")
     p.add_argument("--out", default=DEFAULT_OUT)
     p.add_argument("--table", metavar="JSON", help="print the table of a record this wrote, and stop")
+    p.add_argument("--docs", action="store_true",
+                   help="write the table into docs/results.md and its summary into README.md "
+                        "(from this run, or from --table's record)")
     args = p.parse_args(argv)
     if args.quick:
         args.size, args.pairs, args.seconds = (32, 24), 1, 0.1
@@ -356,7 +423,13 @@ def main(argv):
                   f"expected {SCHEMA!r}", file=sys.stderr)
             return 1
         print(table(document))
+        if args.docs:
+            write_docs(document)
         return 0
+    if args.docs and (args.quick or args.scenes or args.variants != ",".join(VARIANTS)):
+        print("bench_vs_mitsuba.py: --docs: only a full run (every scene, every variant) writes the documents",
+              file=sys.stderr)
+        return 1
     if not os.access(args.optics, os.X_OK):
         print(f"bench_vs_mitsuba.py: --optics {args.optics}: no such executable "
               "(cargo build --release -p optics)", file=sys.stderr)
@@ -406,6 +479,8 @@ def main(argv):
     document["summary"] = [summary(entries, v) for v in args.variants.split(",") if v not in not_run]
     print(table(document))
     write_json(args.out, document)
+    if args.docs:
+        write_docs(document)
     return 0
 
 

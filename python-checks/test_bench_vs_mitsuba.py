@@ -127,3 +127,40 @@ def test_too_few_pairs_and_unknown_scenes_are_refused(tmp_path):
     with pytest.raises(SystemExit):
         bench.parse(["--pairs", "2"])
     assert bench.main(["--scenes", "kaleidoscope", "--optics", sys.executable, "--out", str(tmp_path / "x")]) == 1
+
+
+def test_the_documents_get_the_table_and_summary_between_their_markers(tmp_path):
+    def entry(name, variant, efficiency, time, comparable=True):
+        ratio = {"median": efficiency, "min": efficiency * 0.9, "max": efficiency * 1.1}
+        return {"name": name, "variant": variant, "spp": 64, "comparable": comparable, "mitsuba_bsdf": "native",
+                "seconds": {"tracer": {"median": 1.0}, "mitsuba": {"median": time}},
+                "time_ratio": {"median": time, "min": time, "max": time},
+                "efficiency_ratio": ratio if comparable else None, "load_average": {"median": 1.0}}
+    scenes = [entry("a", "scalar_rgb", 2.0, 3.0), entry("b", "scalar_rgb", 8.0, 3.0),
+              entry("c", "scalar_rgb", 1.0, 1.0, comparable=False)]
+    document = {"command": "python-checks/bench_vs_mitsuba.py --docs", "date": "2026-12-03T10:00:00Z",
+                "machine": {"cpu": "Test CPU", "platform": "x", "cores": 2, "load_average_at_end": [1.5, 1, 1]},
+                "scenes": scenes, "not_run": {"llvm_ad_rgb": "no libLLVM"},
+                "summary": [bench.summary(scenes, "scalar_rgb")]}
+    results_md, readme = tmp_path / "results.md", tmp_path / "README.md"
+    results_md.write_text("# Results\n\n<!-- results: bench-vs-mitsuba -->\nold\n<!-- /results: bench-vs-mitsuba -->\nafter\n")
+    readme.write_text("# Readme\n")
+    bench.write_docs(document, str(results_md), str(readme))
+    text = results_md.read_text()
+    assert "old" not in text and text.endswith("<!-- /results: bench-vs-mitsuba -->\nafter\n")
+    assert ("Measured by `python-checks/bench_vs_mitsuba.py --docs` on Test CPU, 2 threads (load average 1.50), "
+            "2026-12-03") in text
+    assert "| `a` | scalar_rgb |" in text and "| geometric mean (2 scenes) | scalar_rgb |" in text
+    summary = readme.read_text()
+    assert summary.startswith("# Readme\n\n<!-- results: bench-vs-mitsuba-summary -->\n")
+    # The geometric mean of 2 and 8 is 4; the worst scene is a, the best b.
+    assert "4.00× Mitsuba's, geometric mean over 2 scenes; from 2.00× (`a`) to 8.00× (`b`)" in summary
+    assert "`c` (scalar_rgb)" in summary and "`llvm_ad_rgb` not run: no libLLVM" in summary
+    # Written again, the section is replaced, not appended twice.
+    bench.write_docs(document, str(results_md), str(readme))
+    assert readme.read_text() == summary and results_md.read_text() == text
+
+
+def test_docs_are_written_only_by_a_full_run(tmp_path):
+    assert bench.main(["--docs", "--quick", "--optics", sys.executable, "--out", str(tmp_path / "x")]) == 1
+    assert bench.main(["--docs", "--scenes", "diffuse", "--optics", sys.executable, "--out", str(tmp_path / "x")]) == 1
