@@ -206,8 +206,9 @@ impl Share {
 
 /// Streams `input` to `output`; returns how many lines were read and how
 /// many of them gave errors. Lines are held only as they arrive, however
-/// large the block. While one block is evaluated the next is read, and a
-/// reader that fails ends the run after the blocks before it are written.
+/// large the block. While one block is evaluated the one before it is
+/// written and the next is read, and a reader that fails ends the run after
+/// the blocks before it are written.
 pub fn run(
     args: &BatchArgs,
     mut input: impl BufRead,
@@ -217,7 +218,10 @@ pub fn run(
     let (block_lines, steps) = (args.block as usize, args.steps());
     let (mut read, mut failed) = (0usize, 0usize);
     let (mut block, mut next) = (Block::default(), Block::default());
-    let mut shares: Vec<Share> = Vec::new();
+    // The shares of the block being evaluated, and those of the block
+    // before it, being written meanwhile (the first `pending` of them).
+    let (mut shares, mut evaluated): (Vec<Share>, Vec<Share>) = (Vec::new(), Vec::new());
+    let mut pending = 0;
     block.fill(&mut input, block_lines, 1)?;
     while !block.lines.is_empty() {
         let count = block.lines.len().div_ceil(SHARE);
@@ -225,22 +229,111 @@ pub fn run(
             shares.resize_with(count, Share::default);
         }
         let after = read + block.lines.len();
-        let filled = rayon::in_place_scope(|scope| {
+        let (wrote, filled) = rayon::in_place_scope(|scope| {
             let lines = block.lines.chunks(SHARE);
             for (i, (share, lines)) in shares.iter_mut().zip(lines).enumerate() {
                 let (block, first) = (&block, read + i * SHARE + 1);
                 scope.spawn(move |_| share.evaluate(block, lines, first, lang, steps));
             }
-            next.fill(&mut input, block_lines, after + 1)
+            let wrote = write_shares(&mut output, &evaluated[..pending]);
+            (wrote, next.fill(&mut input, block_lines, after + 1))
         });
-        for share in &shares[..count] {
-            output.write_all(&share.out).map_err(ErrorKind::Write)?;
-            failed += share.failed;
+        failed += wrote?;
+        std::mem::swap(&mut shares, &mut evaluated);
+        pending = count;
+        if let Err(error) = filled {
+            write_shares(&mut output, &evaluated[..pending])?;
+            return Err(error);
         }
-        filled?;
         read = after;
         std::mem::swap(&mut block, &mut next);
     }
+    failed += write_shares(&mut output, &evaluated[..pending])?;
     output.flush().map_err(ErrorKind::Write)?;
     Ok((read, failed))
+}
+
+/// Writes the output of `shares` in order; how many of their lines failed.
+fn write_shares(output: &mut impl Write, shares: &[Share]) -> Result<usize> {
+    let mut failed = 0;
+    for share in shares {
+        output.write_all(&share.out).map_err(ErrorKind::Write)?;
+        failed += share.failed;
+    }
+    Ok(failed)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::io::{BufReader, Read};
+
+    /// `count` exact-Fresnel lines, the k-th at `cos_i = k / 100`.
+    fn lines(count: usize) -> String {
+        (1..=count)
+            .map(|k| format!("{{\"law\": \"fresnel\", \"eta\": 1.5, \"cos_i\": 0.{k:02}}}\n"))
+            .collect()
+    }
+
+    fn cosines(output: &[u8]) -> Vec<f64> {
+        String::from_utf8_lossy(output)
+            .lines()
+            .map(|l| {
+                serde_json::from_str::<Value>(l).expect("a record")["inputs"]["cos_i"]
+                    .as_f64()
+                    .expect("cos_i")
+            })
+            .collect()
+    }
+
+    #[test]
+    fn blocks_are_written_in_the_order_read_while_the_next_is_evaluated() {
+        for block in [1, 2, 3, 7, 16384] {
+            let mut output = Vec::new();
+            let args = BatchArgs {
+                block,
+                no_steps: true,
+            };
+            let (read, failed) = run(&args, lines(7).as_bytes(), &mut output, Lang::En).unwrap();
+            assert_eq!((read, failed), (7, 0), "block {block}");
+            let expected: Vec<f64> = (1..=7).map(|k| k as f64 / 100.0).collect();
+            assert_eq!(cosines(&output), expected, "block {block}");
+        }
+    }
+
+    /// Gives its bytes, then fails.
+    struct FailsAfter(std::io::Cursor<Vec<u8>>);
+
+    impl Read for FailsAfter {
+        fn read(&mut self, buf: &mut [u8]) -> std::io::Result<usize> {
+            match self.0.read(buf)? {
+                0 => Err(std::io::Error::other("the disk went away")),
+                n => Ok(n),
+            }
+        }
+    }
+
+    #[test]
+    fn a_reader_that_fails_ends_the_run_after_the_blocks_before_it_are_written() {
+        // The lines of the block being read when the reader fails are
+        // lost; every block before it is written, in order.
+        for (block, complete) in [(1, 5), (2, 4), (16384, 0)] {
+            let input = BufReader::with_capacity(
+                16,
+                FailsAfter(std::io::Cursor::new(lines(5).into_bytes())),
+            );
+            let mut output = Vec::new();
+            let args = BatchArgs {
+                block,
+                no_steps: true,
+            };
+            let error = run(&args, input, &mut output, Lang::En).expect_err("the reader fails");
+            assert!(
+                matches!(error.kind(), ErrorKind::ReadLine { line: 6, .. }),
+                "{error:?}"
+            );
+            let expected: Vec<f64> = (1..=complete).map(|k| k as f64 / 100.0).collect();
+            assert_eq!(cosines(&output), expected, "block {block}");
+        }
+    }
 }
