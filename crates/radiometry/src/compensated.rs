@@ -305,6 +305,10 @@ pub(crate) fn squares_plus<T: Real>(x: T, y: T, k: T, exact: bool) -> TwoPart<T>
 /// of index 1, which vanishes at a near-critical angle when `κ` is small.
 #[inline(always)]
 pub(crate) fn discriminant_from<T: Real>(contrast: TwoPart<T>, c: T, exact: bool) -> T {
+    if exact {
+        // c² is exact, and cancels the contrast's high part exactly.
+        return (contrast.high + c * c) + contrast.low;
+    }
     let (c2, c2e) = narrow_prod(c, c, exact);
     Sum2::of(contrast.high, exact)
         .plus(c2)
@@ -321,13 +325,14 @@ pub(crate) fn discriminant_from<T: Real>(contrast: TwoPart<T>, c: T, exact: bool
 #[inline(always)]
 pub(crate) fn brewster_from<T: Real>(a: TwoPart<T>, c: T, exact: bool) -> T {
     let (c2, c2e) = narrow_prod(c, c, exact);
-    let (m, me) = if exact {
-        // c² and A of a narrow tier: below 2^256, in Dekker's range.
+    if exact {
+        // c² is exact; m = c² A_high is split exactly (c² and A of a narrow
+        // tier lie below 2^256, in Dekker's range), and m cancels the 1
+        // exactly.
         let m = c2 * a.high;
-        (m, dekker_error(c2, a.high, m))
-    } else {
-        two_prod(c2, a.high)
-    };
+        return (m - T::one()) + (dekker_error(c2, a.high, m) + c2 * a.low);
+    }
+    let (m, me) = two_prod(c2, a.high);
     Sum2::of(m, exact)
         .plus(-T::one())
         .plus(me)
