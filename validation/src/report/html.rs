@@ -32,68 +32,412 @@ fn swatch(srgb: [f64; 3]) -> String {
     format!("<span class=swatch style=\"background: rgb({r}, {g}, {b})\"></span>")
 }
 
-/// `report.html`: summary, headline tables, every check, the figures found
-/// in `figures` (file names relative to the report).
+/// The areas of the report, in the order of its first screen: a title, the
+/// check ids it gathers (by prefix; the first area that claims a check
+/// keeps it), and the figures that say it best (file-name prefixes).
+const AREAS: [Area; 6] = [
+    Area {
+        key: "mpmath",
+        title: "Laws against 50-digit mpmath",
+        checks: &["laws.mpmath."],
+        figures: &["fresnel_errors"],
+    },
+    Area {
+        key: "mitsuba-laws",
+        title: "Laws against Mitsuba 3",
+        checks: &["laws.mitsuba."],
+        figures: &["fresnel_curves"],
+    },
+    Area {
+        key: "metals",
+        title: "Metals: spectra and colour",
+        checks: &["colour.colour-science.metals"],
+        figures: &["metal_swatches", "metal_delta_e", "metal_spectra"],
+    },
+    Area {
+        key: "colour",
+        title: "Colour against colour-science",
+        checks: &["colour."],
+        figures: &[],
+    },
+    Area {
+        key: "renders",
+        title: "Renders against Mitsuba 3",
+        checks: &["renders."],
+        figures: &["render_kaleidoscope_lit_path", "render_"],
+    },
+    Area {
+        key: "full-light",
+        title: "All the light",
+        checks: &["full_light."],
+        figures: &[],
+    },
+];
+
+/// One area of the report.
+struct Area {
+    key: &'static str,
+    title: &'static str,
+    checks: &'static [&'static str],
+    figures: &'static [&'static str],
+}
+
+/// The command that writes the report and every figure in it.
+const REGENERATE: &str = "cargo run --release -p optics -- validate";
+
+/// `report.html`: the verdict and one card per area first, each area's
+/// section with its figures beside its numbers, every check in detail, and
+/// the references read; `figures` are file names relative to the report.
 pub fn to_html(report: &Report, figures: &[String]) -> String {
+    let areas = gather(report, figures);
     let mut h = String::new();
     header(&mut h, report);
-    worst_errors(&mut h, report);
+    cards(&mut h, &areas);
+    findings(&mut h, report);
+    for area in &areas {
+        area_section(&mut h, area);
+    }
     metal_colours(&mut h, report);
     speed(&mut h, report);
-    figures_section(&mut h, figures);
+    let claimed: Vec<&String> = areas
+        .iter()
+        .flat_map(|a| a.figures.iter().copied())
+        .collect();
+    let others: Vec<&String> = figures.iter().filter(|f| !claimed.contains(f)).collect();
+    if !others.is_empty() {
+        h.push_str("<h2 id=figures>Other figures</h2>\n<div class=figures>\n");
+        for f in others {
+            figure(&mut h, f);
+        }
+        h.push_str("</div>\n");
+    }
     every_check(&mut h, report);
     references(&mut h, report);
     h
 }
 
-/// The page head, the style and the summary line.
+/// An area with the checks and figures it claimed.
+struct Gathered<'a> {
+    area: &'static Area,
+    checks: Vec<&'a Check>,
+    figures: Vec<&'a String>,
+}
+
+fn gather<'a>(report: &'a Report, figures: &'a [String]) -> Vec<Gathered<'a>> {
+    let mut areas: Vec<Gathered> = AREAS
+        .iter()
+        .map(|area| Gathered {
+            area,
+            checks: Vec::new(),
+            figures: Vec::new(),
+        })
+        .collect();
+    let mut other = Vec::new();
+    for check in &report.checks {
+        match areas
+            .iter_mut()
+            .find(|a| a.area.checks.iter().any(|p| check.id.starts_with(p)))
+        {
+            Some(area) => area.checks.push(check),
+            None => other.push(check),
+        }
+    }
+    for area in &mut areas {
+        for prefix in area.area.figures {
+            let file = |f: &&String| f.rsplit('/').next().unwrap_or(f).starts_with(prefix);
+            for f in figures.iter().filter(file) {
+                if !area.figures.contains(&f) {
+                    area.figures.push(f);
+                }
+            }
+        }
+    }
+    areas.retain(|a| !a.checks.is_empty());
+    if !other.is_empty() {
+        static OTHER: Area = Area {
+            key: "other",
+            title: "Other checks",
+            checks: &[],
+            figures: &[],
+        };
+        areas.push(Gathered {
+            area: &OTHER,
+            checks: other,
+            figures: Vec::new(),
+        });
+    }
+    areas
+}
+
+/// The page head, the style and the verdict.
 fn header(h: &mut String, report: &Report) {
     let s = &report.summary;
     let _ = write!(
         h,
-        "<!doctype html>\n<html lang=en><head><meta charset=utf-8><title>optics validation report</title>\n\
-         <style>body{{font-family:sans-serif;max-width:70em;margin:2em auto;padding:0 1em}}\
-         table{{border-collapse:collapse;margin:1em 0}}td,th{{border:1px solid #ccc;padding:.2em .5em;text-align:left}}\
-         td.num{{text-align:right;font-family:monospace}}.pass{{color:#070}}.fail{{color:#b00;font-weight:bold}}\
-         .swatch{{display:inline-block;width:2em;height:1em;border:1px solid #888;vertical-align:middle}}\
-         details{{margin:.5em 0}}img{{max-width:100%}}code{{background:#f4f4f4}}</style></head><body>\n\
-         <h1>optics validation report</h1>\n<p>Produced by <code>{}</code> ({}). \
-         {} checks: <span class=pass>{} passed</span>, <span class={}>{} failed</span>; {} findings about the references.</p>\n",
+        "<!doctype html>\n<html lang=en><head><meta charset=utf-8>\
+         <meta name=viewport content=\"width=device-width, initial-scale=1\">\
+         <title>optics validation report</title>\n<style>{STYLE}</style></head><body>\n\
+         <h1>optics validation report</h1>\n"
+    );
+    let verdict = if s.failed == 0 {
+        format!("<p class=\"verdict pass\">All {} checks pass.", s.checks)
+    } else {
+        format!(
+            "<p class=\"verdict fail\">{} of {} checks FAIL.",
+            s.failed, s.checks
+        )
+    };
+    let _ = writeln!(
+        h,
+        "{verdict} {} findings about the references (below), which are not failures.</p>\n\
+         <p class=small>Produced by <code>{}</code> ({}); regenerate everything here with <code>{REGENERATE}</code>.</p>",
+        s.findings,
         escape(&report.command),
-        if report.quick { "reduced set" } else { "full set" },
-        s.checks,
-        s.passed,
-        if s.failed > 0 { "fail" } else { "pass" },
-        s.failed,
-        s.findings
+        if report.quick { "the reduced set" } else { "the full set" },
     );
 }
 
-/// Every metric's worst value, one row per check and quantity.
-fn worst_errors(h: &mut String, report: &Report) {
-    h.push_str("<h2>Worst errors per law and reference</h2>\n<table><tr><th>check</th><th>status</th><th>quantity</th><th>worst</th><th>at</th></tr>\n");
-    for check in &report.checks {
+const STYLE: &str = "body{font-family:sans-serif;max-width:72em;margin:1em auto;padding:0 1em;line-height:1.4;overflow-wrap:anywhere}\
+h2{margin-top:2em;border-bottom:1px solid #ddd}\
+.verdict{font-size:1.3em;font-weight:bold}.small{font-size:.9em;color:#444}\
+.cards{display:grid;grid-template-columns:repeat(auto-fill,minmax(15em,1fr));gap:.8em}\
+.card{border:1px solid #ccc;border-radius:.4em;padding:.6em;min-width:0}\
+.card h3{margin:0 0 .3em;font-size:1em}.card a{color:inherit}.card img{width:100%;height:7em;object-fit:contain}\
+.scroll{overflow-x:auto;max-width:100%}\
+table{border-collapse:collapse;margin:.5em 0}td,th{border:1px solid #ccc;padding:.2em .5em;text-align:left;vertical-align:top}\
+td{overflow-wrap:anywhere}td.num{text-align:right;font-family:monospace;white-space:nowrap}\
+.pass{color:#070}.fail{color:#b00;font-weight:bold}\
+.swatch{display:inline-block;width:2em;height:1em;border:1px solid #888;vertical-align:middle}\
+details{margin:.5em 0}summary{cursor:pointer}\
+.side{display:flex;flex-wrap:wrap;gap:1em;align-items:flex-start}.side>*{min-width:0;flex:1 1 24em}\
+.figures{display:flex;flex-wrap:wrap;gap:1em}figure{margin:0;max-width:100%;min-width:0}\
+img{max-width:100%}img.pixels{image-rendering:pixelated}\
+figcaption{font-size:.85em;color:#444;overflow-wrap:anywhere}code{background:#f4f4f4;overflow-wrap:anywhere}";
+
+/// One card per area: its pass count, its headline, its figure.
+fn cards(h: &mut String, areas: &[Gathered]) {
+    h.push_str("<div class=cards>\n");
+    for a in areas {
+        let passed = a.checks.iter().filter(|c| c.passed()).count();
+        let class = if passed == a.checks.len() {
+            "pass"
+        } else {
+            "fail"
+        };
+        let _ = write!(
+            h,
+            "<div class=card><h3><a href=\"#{}\">{}</a></h3><p><span class={class}>{passed} of {} pass</span>",
+            a.area.key,
+            a.area.title,
+            a.checks.len()
+        );
+        if let Some(line) = headline(&a.checks) {
+            let _ = write!(h, "<br>{line}");
+        }
+        h.push_str("</p>");
+        if let Some(f) = a.figures.first() {
+            let _ = write!(h, "<img src=\"{0}\" alt=\"{0}\">", escape(f));
+        }
+        h.push_str("</div>\n");
+    }
+    h.push_str("</div>\n");
+}
+
+/// The area's worst Fresnel error in ulps where it measures them (the
+/// laws held to a bound in ulps alone; an angle's bound grows with its
+/// condition number), else its number of findings.
+fn headline(checks: &[&Check]) -> Option<String> {
+    let worst = checks
+        .iter()
+        .filter(|c| c.id.contains("fresnel") || c.id.ends_with(".random"))
+        .flat_map(|c| c.metrics.iter())
+        .filter(|m| m.name.contains("ulps") && m.worst.is_finite())
+        .max_by(|a, b| a.worst.total_cmp(&b.worst));
+    if let Some(m) = worst {
+        return Some(format!(
+            "worst {} ulps ({})",
+            readable(m.worst),
+            escape(m.name.trim_end_matches(" (ulps)"))
+        ));
+    }
+    let findings: usize = checks.iter().map(|c| c.findings.len()).sum();
+    let plural = if findings == 1 { "" } else { "s" };
+    (findings > 0).then(|| format!("{findings} finding{plural} about the reference"))
+}
+
+/// The findings about the references, in the words of their checks.
+fn findings(h: &mut String, report: &Report) {
+    let all: Vec<(&str, &String)> = report
+        .checks
+        .iter()
+        .flat_map(|c| c.findings.iter().map(move |f| (c.id.as_str(), f)))
+        .collect();
+    if all.is_empty() {
+        return;
+    }
+    let _ = writeln!(
+        h,
+        "<h2 id=findings>What the references get wrong</h2>\n<p>Where a reference departs \
+         from the exact law, reported and not counted as a failure ({}):</p><ul>",
+        all.len()
+    );
+    let item = |h: &mut String, (id, f): &(&str, &String)| {
+        let _ = writeln!(
+            h,
+            "<li>{} <span class=small>({})</span></li>",
+            escape(f),
+            escape(id)
+        );
+    };
+    for f in all.iter().take(4) {
+        item(h, f);
+    }
+    h.push_str("</ul>\n");
+    if all.len() > 4 {
+        let _ = writeln!(h, "<details><summary>{} more</summary><ul>", all.len() - 4);
+        for f in &all[4..] {
+            item(h, f);
+        }
+        h.push_str("</ul></details>\n");
+    }
+}
+
+/// An area: its figures beside the table of its checks' worst values.
+fn area_section(h: &mut String, a: &Gathered) {
+    let _ = writeln!(h, "<h2 id=\"{}\">{}</h2>", a.area.key, a.area.title);
+    let rows: usize = a.checks.iter().map(|c| c.metrics.len().max(1)).sum();
+    h.push_str("<div class=side>\n");
+    if let Some(f) = a.figures.first() {
+        h.push_str("<div>");
+        figure(h, f);
+        h.push_str("</div>\n");
+    }
+    h.push_str("<div>");
+    let folded = rows > 12;
+    if folded {
+        let _ = writeln!(
+            h,
+            "<details><summary>The worst value of each of {} quantities over {} checks</summary>",
+            rows,
+            a.checks.len()
+        );
+    }
+    h.push_str("<div class=scroll><table><tr><th>check</th><th>quantity</th><th>worst</th><th>at</th></tr>\n");
+    for check in &a.checks {
         for m in &check.metrics {
             let _ = writeln!(
                 h,
-                "<tr><td>{}</td><td>{}</td><td>{}</td><td class=num>{:.3e}</td><td>{}</td></tr>",
-                escape(&check.id),
+                "<tr><td>{} {}</td><td>{}</td><td class=num data-check=\"{}\" data-metric=\"{}\" data-value=\"{:e}\">{}</td><td>{}</td></tr>",
                 status(check),
+                escape(short_id(&check.id)),
+                escape(&m.name),
+                escape(&check.id),
                 escape(&m.name),
                 m.worst,
-                escape(&m.at)
+                readable(m.worst),
+                escape(&readable_at(&m.at))
             );
         }
     }
-    h.push_str("</table>\n");
+    h.push_str("</table></div>\n");
+    if folded {
+        h.push_str("</details>\n");
+    }
+    h.push_str("</div></div>\n");
+    if a.figures.len() > 1 {
+        let _ = writeln!(
+            h,
+            "<details><summary>{} more figures</summary><div class=figures>",
+            a.figures.len() - 1
+        );
+        for f in &a.figures[1..] {
+            figure(h, f);
+        }
+        h.push_str("</div></details>\n");
+    }
+}
+
+/// A check's id without the area's part: `renders.mitsuba.shadow.path` as
+/// `mitsuba.shadow.path`.
+fn short_id(id: &str) -> &str {
+    id.split_once('.').map_or(id, |(_, rest)| rest)
+}
+
+/// A figure, named by its file and the command that regenerates it.
+fn figure(h: &mut String, file: &str) {
+    let pixels = if file.contains("render_") {
+        " class=pixels"
+    } else {
+        ""
+    };
+    let _ = writeln!(
+        h,
+        "<figure><img{pixels} src=\"{0}\" alt=\"{0}\"><figcaption>{0}: <code>{REGENERATE}</code></figcaption></figure>",
+        escape(file)
+    );
+}
+
+/// A number for reading: four significant digits, no exponent between
+/// 0.001 and 100 000.
+fn readable(x: f64) -> String {
+    if x == 0.0 || !x.is_finite() {
+        return format!("{x}");
+    }
+    let magnitude = x.abs().log10().floor() as i32;
+    if (-3..5).contains(&magnitude) {
+        let decimals = (3 - magnitude).max(0) as usize;
+        let text = format!("{x:.decimals$}");
+        if text.contains('.') {
+            return text.trim_end_matches('0').trim_end_matches('.').to_owned();
+        }
+        return text;
+    }
+    let text = format!("{x:.3e}");
+    match text.split_once('e') {
+        Some((mantissa, exponent)) if mantissa.contains('.') => {
+            let mantissa = mantissa.trim_end_matches('0').trim_end_matches('.');
+            format!("{mantissa}e{exponent}")
+        }
+        _ => text,
+    }
+}
+
+/// Where a worst value occurred, for reading: a case given as a JSON
+/// request (`case 7: {"law": ...}`) as its fields, `name = value`.
+fn readable_at(at: &str) -> String {
+    let (label, body) = match at.find('{') {
+        Some(i) => (at[..i].trim_end(), &at[i..]),
+        None => return at.to_owned(),
+    };
+    let Ok(serde_json::Value::Object(fields)) = serde_json::from_str::<serde_json::Value>(body)
+    else {
+        return at.to_owned();
+    };
+    let fields: Vec<String> = fields
+        .iter()
+        .map(|(k, v)| match v {
+            serde_json::Value::Number(n) => match n.as_f64() {
+                Some(x) if !n.is_i64() && !n.is_u64() => format!("{k} = {}", readable(x)),
+                _ => format!("{k} = {n}"),
+            },
+            serde_json::Value::String(s) => format!("{k} = {s}"),
+            other => format!("{k} = {other}"),
+        })
+        .collect();
+    let label = label.trim_end_matches(':');
+    if label.is_empty() {
+        fields.join(", ")
+    } else {
+        format!("{label}: {}", fields.join(", "))
+    }
 }
 
 /// The metal shortcuts' worst CIEDE2000, with swatches.
 fn metal_colours(h: &mut String, report: &Report) {
     if !report.metal_delta_e.is_empty() {
-        h.push_str("<h2>Metal colours: CIEDE2000 of the shortcuts from the spectral colour</h2>\n\
+        h.push_str("<h2 id=metal-colours>Metal colours: CIEDE2000 of the shortcuts from the spectral colour</h2>\n\
                     <p>Worst over the angles of incidence; about 1 is a just-noticeable difference.</p>\n\
-                    <table><tr><th>metal</th><th>shortcut</th><th>worst ΔE00</th><th>at</th><th>spectral | shortcut at that angle</th></tr>\n");
+                    <div class=scroll><table><tr><th>metal</th><th>shortcut</th><th>worst ΔE00</th><th>at</th><th>spectral | shortcut at that angle</th></tr>\n");
         for w in &report.metal_delta_e {
             let find = |method: &str| {
                 report
@@ -116,14 +460,14 @@ fn metal_colours(h: &mut String, report: &Report) {
                 find(&w.method)
             );
         }
-        h.push_str("</table>\n");
+        h.push_str("</table></div>\n");
     }
 }
 
 /// The metal-colour timings.
 fn speed(h: &mut String, report: &Report) {
     if !report.speed.is_empty() {
-        h.push_str("<h2>Speed: time per metal colour</h2>\n<table><tr><th>method</th><th>ns per colour</th><th>colours timed</th></tr>\n");
+        h.push_str("<h2 id=speed>Speed: time per metal colour</h2>\n<div class=scroll><table><tr><th>method</th><th>ns per colour</th><th>colours timed</th></tr>\n");
         for t in &report.speed {
             let _ = writeln!(
                 h,
@@ -136,7 +480,7 @@ fn speed(h: &mut String, report: &Report) {
         if let [spectral, rgb] = report.speed.as_slice() {
             let _ = writeln!(
                 h,
-                "</table>\n<p>The spectrum costs {:.1}× the three wavelengths (wall clock, this machine, one run{}).</p>",
+                "</table></div>\n<p>The spectrum costs {:.1}× the three wavelengths (wall clock, this machine, one run{}).</p>",
                 spectral.ns_per_colour / rgb.ns_per_colour,
                 if spectral.optimised {
                     ""
@@ -145,28 +489,14 @@ fn speed(h: &mut String, report: &Report) {
                 }
             );
         } else {
-            h.push_str("</table>\n");
-        }
-    }
-}
-
-/// The figures, by file name relative to the report.
-fn figures_section(h: &mut String, figures: &[String]) {
-    if !figures.is_empty() {
-        h.push_str("<h2>Figures</h2>\n");
-        for f in figures {
-            let _ = writeln!(
-                h,
-                "<figure><img src=\"{0}\" alt=\"{0}\"><figcaption>{0}</figcaption></figure>",
-                escape(f)
-            );
+            h.push_str("</table></div>\n");
         }
     }
 }
 
 /// Every check, failed ones open, with its failures and findings.
 fn every_check(h: &mut String, report: &Report) {
-    h.push_str("<h2>Every check</h2>\n");
+    h.push_str("<h2 id=checks>Every check in detail</h2>\n");
     for check in &report.checks {
         let _ = writeln!(
             h,
@@ -195,7 +525,7 @@ fn every_check(h: &mut String, report: &Report) {
 /// The references read, and the page's end.
 fn references(h: &mut String, report: &Report) {
     h.push_str(
-        "<h2>References</h2>\n<table><tr><th>file</th><th>schema</th><th>regenerate</th></tr>\n",
+        "<h2 id=references>References</h2>\n<div class=scroll><table><tr><th>file</th><th>schema</th><th>regenerate</th></tr>\n",
     );
     for (name, info) in &report.references {
         let _ = writeln!(
@@ -206,7 +536,7 @@ fn references(h: &mut String, report: &Report) {
             escape(&info.regenerate)
         );
     }
-    h.push_str("</table>\n</body></html>\n");
+    h.push_str("</table></div>\n</body></html>\n");
 }
 
 #[cfg(test)]
