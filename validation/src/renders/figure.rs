@@ -5,6 +5,9 @@ use tracer::scene::Scene;
 
 use crate::compare::map::heat_colour;
 
+/// The white columns between a triptych's panels, pixels.
+pub const TRIPTYCH_GAP: u32 = 4;
+
 /// A triptych for the report: ours | Mitsuba | the difference in units of
 /// the tolerance, each panel enlarged.
 #[derive(Clone, Debug)]
@@ -28,7 +31,7 @@ pub(super) fn triptych(
     heat: &[f64],
 ) -> RenderFigure {
     const SCALE: u32 = 4;
-    const GAP: u32 = 4;
+    const GAP: u32 = TRIPTYCH_GAP;
     let (w, h) = (scene.width, scene.height);
     let width = 3 * w * SCALE + 2 * GAP;
     let height = h * SCALE;

@@ -37,7 +37,7 @@ mod runner;
 mod whitted;
 
 pub use checks::RenderChecks;
-pub use figure::RenderFigure;
+pub use figure::{RenderFigure, TRIPTYCH_GAP};
 pub use path::compare_path;
 pub use reference::{
     decode, Decoded, MitsubaRenders, PathImages, PathRender, SceneRenders, Tool, WhittedRender,

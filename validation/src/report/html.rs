@@ -2,8 +2,12 @@
 
 use std::fmt::Write as _;
 
+use radiometry::colour::srgb_encode;
+
 use super::Report;
 use crate::check::Check;
+use crate::compare::map::{heat_colour, LEGEND};
+use crate::renders::TRIPTYCH_GAP;
 
 fn escape(text: &str) -> String {
     let mut out = String::with_capacity(text.len());
@@ -96,6 +100,9 @@ pub fn to_html(report: &Report, figures: &[String]) -> String {
     findings(&mut h, report);
     for area in &areas {
         area_section(&mut h, area);
+        if area.area.key == "renders" {
+            render_gallery(&mut h, report, &area.figures);
+        }
     }
     metal_colours(&mut h, report);
     speed(&mut h, report);
@@ -212,7 +219,10 @@ details{margin:.5em 0}summary{cursor:pointer}\
 .side{display:flex;flex-wrap:wrap;gap:1em;align-items:flex-start}.side>*{min-width:0;flex:1 1 24em}\
 .figures{display:flex;flex-wrap:wrap;gap:1em}figure{margin:0;max-width:100%;min-width:0}\
 img{max-width:100%}img.pixels{image-rendering:pixelated}\
-figcaption{font-size:.85em;color:#444;overflow-wrap:anywhere}code{background:#f4f4f4;overflow-wrap:anywhere}";
+figcaption{font-size:.85em;color:#444;overflow-wrap:anywhere}\
+.render{width:16em;max-width:100%}.flip img{display:block;width:100%;height:100%;object-fit:cover;object-position:0 0}\
+.flip:hover img,.flip:focus img{object-position:50% 0}.flip:focus{outline:2px solid #36c}\
+.ramp{display:inline-block;width:8em;height:1em;border:1px solid #888;vertical-align:middle}code{background:#f4f4f4;overflow-wrap:anywhere}";
 
 /// One card per area: its pass count, its headline, its figure.
 fn cards(h: &mut String, areas: &[Gathered]) {
@@ -344,7 +354,7 @@ fn area_section(h: &mut String, a: &Gathered) {
         h.push_str("</details>\n");
     }
     h.push_str("</div></div>\n");
-    if a.figures.len() > 1 {
+    if a.figures.len() > 1 && a.area.key != "renders" {
         let _ = writeln!(
             h,
             "<details><summary>{} more figures</summary><div class=figures>",
@@ -355,6 +365,67 @@ fn area_section(h: &mut String, a: &Gathered) {
         }
         h.push_str("</div></details>\n");
     }
+}
+
+/// Each render compared: ours, flipping to Mitsuba's under the pointer or
+/// the keyboard's focus (the triptych's first two panels, so the two are
+/// pixel for pixel the same size), and the whole triptych with the
+/// difference map, its scale beside it.
+fn render_gallery(h: &mut String, report: &Report, figures: &[&String]) {
+    if figures.is_empty() {
+        return;
+    }
+    let _ = writeln!(
+        h,
+        "<h3 id=render-figures>Each render: ours, flipping to Mitsuba's</h3>\n\
+         <p>Point at (or tab to) an image to see Mitsuba's render in its place; beside it \
+         ours | Mitsuba | the difference, enlarged without smoothing. {}</p>\n<div class=figures>",
+        heat_legend()
+    );
+    for file in figures {
+        let name = file.rsplit('/').next().unwrap_or(file);
+        let Some(f) = report.render_figures.iter().find(|f| f.file == name) else {
+            figure(h, file);
+            continue;
+        };
+        // Three panels and two gaps across, one panel high.
+        let panel = (f.image.width - 2 * TRIPTYCH_GAP) / 3;
+        let _ = writeln!(
+            h,
+            "<figure class=render><div class=flip tabindex=0 style=\"aspect-ratio:{panel}/{height}\">\
+             <img class=pixels src=\"{src}\" alt=\"ours, or Mitsuba's under the pointer: {name}\"></div>\
+             <figcaption>{label}: ours (pointed at: Mitsuba)</figcaption></figure>",
+            height = f.image.height,
+            src = escape(file),
+            name = escape(name),
+            label = escape(name.trim_start_matches("render_").trim_end_matches(".png")),
+        );
+        figure(h, file);
+    }
+    h.push_str("</div>\n");
+}
+
+/// The difference map's colour scale, drawn from the map's own colours.
+fn heat_legend() -> String {
+    let css = |c: glam::Vec3| {
+        let [r, g, b] = [c.x, c.y, c.z].map(|v| (srgb_encode(f64::from(v)) * 255.0).round() as u8);
+        format!("rgb({r},{g},{b})")
+    };
+    let stops: Vec<String> = (0..=8)
+        .map(|k| {
+            let t = f64::from(k) / 8.0;
+            format!("{} {}%", css(heat_colour(&[t])), k * 100 / 8)
+        })
+        .collect();
+    format!(
+        "<span class=legend><span class=ramp style=\"background:linear-gradient(to right,{})\"></span> \
+         0 to 1 <span class=swatch style=\"background:{}\"></span> beyond 1 \
+         <span class=swatch style=\"background:{}\"></span> masked</span> (the difference map: {})",
+        stops.join(","),
+        css(heat_colour(&[2.0])),
+        css(heat_colour(&[f64::NAN])),
+        escape(LEGEND)
+    )
 }
 
 /// A check's id without the area's part: `renders.mitsuba.shadow.path` as
