@@ -45,36 +45,42 @@ const AREAS: [Area; 6] = [
         title: "Laws against 50-digit mpmath",
         checks: &["laws.mpmath."],
         figures: &["fresnel_errors"],
+        headline: None,
     },
     Area {
         key: "mitsuba-laws",
         title: "Laws against Mitsuba 3",
         checks: &["laws.mitsuba."],
         figures: &["fresnel_curves"],
+        headline: None,
     },
     Area {
         key: "metals",
         title: "Metals: spectra and colour",
         checks: &["colour.colour-science.metals"],
         figures: &["metal_swatches", "metal_delta_e", "metal_spectra"],
+        headline: Some("reflectance: max |ours − exact|"),
     },
     Area {
         key: "colour",
         title: "Colour against colour-science",
         checks: &["colour."],
         figures: &[],
+        headline: Some("CIELAB: max |ours − colour-science|"),
     },
     Area {
         key: "renders",
         title: "Renders against Mitsuba 3",
         checks: &["renders."],
         figures: &["render_kaleidoscope_lit_path", "render_"],
+        headline: Some("|ours − Mitsuba| / tolerance"),
     },
     Area {
         key: "full-light",
         title: "All the light",
         checks: &["full_light."],
         figures: &[],
+        headline: None,
     },
 ];
 
@@ -84,6 +90,9 @@ struct Area {
     title: &'static str,
     checks: &'static [&'static str],
     figures: &'static [&'static str],
+    /// The quantity whose worst value heads the card; `None`: the worst
+    /// Fresnel error in ulps.
+    headline: Option<&'static str>,
 }
 
 /// The command that writes the report and every figure in it.
@@ -166,6 +175,7 @@ fn gather<'a>(report: &'a Report, figures: &'a [String]) -> Vec<Gathered<'a>> {
             title: "Other checks",
             checks: &[],
             figures: &[],
+            headline: None,
         };
         areas.push(Gathered {
             area: &OTHER,
@@ -241,7 +251,7 @@ fn cards(h: &mut String, areas: &[Gathered]) {
             a.area.title,
             a.checks.len()
         );
-        if let Some(line) = headline(&a.checks) {
+        if let Some(line) = headline(a.area.headline, &a.checks) {
             let _ = write!(h, "<br>{line}");
         }
         h.push_str("</p>");
@@ -253,10 +263,21 @@ fn cards(h: &mut String, areas: &[Gathered]) {
     h.push_str("</div>\n");
 }
 
-/// The area's worst Fresnel error in ulps where it measures them (the
-/// laws held to a bound in ulps alone; an angle's bound grows with its
-/// condition number), else its number of findings.
-fn headline(checks: &[&Check]) -> Option<String> {
+/// The worst value of the area's `quantity` over its checks; without one,
+/// its worst Fresnel error in ulps where it measures them (the laws held to
+/// a bound in ulps alone; an angle's bound grows with its condition
+/// number); failing both, its number of findings.
+fn headline(quantity: Option<&str>, checks: &[&Check]) -> Option<String> {
+    let named = quantity.and_then(|name| {
+        checks
+            .iter()
+            .flat_map(|c| c.metrics.iter())
+            .filter(|m| m.name == name)
+            .max_by(|a, b| a.worst.total_cmp(&b.worst))
+    });
+    if let Some(m) = named {
+        return Some(format!("worst {}: {}", readable(m.worst), escape(&m.name)));
+    }
     let worst = checks
         .iter()
         .filter(|c| c.id.contains("fresnel") || c.id.ends_with(".random"))
