@@ -87,10 +87,8 @@ fn a_broken_law_fails_its_check_in_the_report() {
     assert_eq!(failed, ["laws.mitsuba.directions"]);
     assert_eq!(report.summary.failed, 1);
     let html = to_html(&report, &[]);
-    assert!(
-        html.contains("FAIL") && html.contains("1 failed"),
-        "the page says so"
-    );
+    let verdict = format!("1 of {} checks FAIL.", report.summary.checks);
+    assert!(html.contains(&verdict), "the page says so");
 }
 
 #[test]
