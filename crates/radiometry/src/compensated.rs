@@ -400,4 +400,76 @@ mod tests {
         assert_eq!(index_contrast(eta, 1.0, false), exact);
         assert_ne!(eta * eta - 1.0, exact);
     }
+
+    /// The narrow tier's short sums against the full Sum2 of the same
+    /// widened inputs, where they cancel: Snell's discriminant at cosines
+    /// around the critical angle, Brewster's factor around Brewster's
+    /// angle, a conductor's two of each, for indices from 1 + 2^-20 to 10^3,
+    /// from both sides. The short forms add the terms that cancel exactly
+    /// and round what is left: within 2 f64 ulps of the result (Sum2's own
+    /// error is below one).
+    #[test]
+    fn a_narrow_tiers_short_sums_are_within_2_ulps_of_sum2_where_they_cancel() {
+        let mut worst = 0.0f64;
+        let mut check = |short: f64, full: f64, what: &str| {
+            let ulps = (short - full).abs() / f64::ulp_at(full);
+            assert!(
+                ulps <= 2.0,
+                "{what}: {short:e} against {full:e}, {ulps} ulps"
+            );
+            worst = worst.max(ulps);
+        };
+        for &eta in &[1.0 + 2f32.powi(-20), 1.0001, 1.333, 1.5, 2.4, 10.0, 1000.0] {
+            for (n_t, n_i) in [(eta, 1.0), (1.0, eta)] {
+                let (n_t, n_i) = (f64::from(n_t), f64::from(n_i));
+                // The cosines of the critical angle (from inside) and of
+                // Brewster's, and 200 f32 neighbours either side.
+                let critical = (1.0 - (n_t / n_i).powi(2)).max(0.0).sqrt() as f32;
+                let brewster = (n_i / (n_t * n_t + n_i * n_i).sqrt()) as f32;
+                for centre in [critical, brewster] {
+                    let mut c = centre;
+                    for _ in 0..200 {
+                        c = f32::from_bits(c.to_bits().saturating_sub(1));
+                    }
+                    for _ in 0..400 {
+                        let w = f64::from(c);
+                        let s = f64::from((1.0 - c * c).max(0.0).sqrt());
+                        check(
+                            snell_discriminant(n_t, n_i, w, true),
+                            snell_discriminant(n_t, n_i, w, false),
+                            "Snell's discriminant",
+                        );
+                        check(
+                            snell_discriminant_from_sine(n_t, n_i, s, true),
+                            snell_discriminant_from_sine(n_t, n_i, s, false),
+                            "Snell's discriminant from the sine",
+                        );
+                        check(
+                            brewster_factor(n_t, n_i, w, true),
+                            brewster_factor(n_t, n_i, w, false),
+                            "Brewster's factor",
+                        );
+                        // A conductor of small κ from outside.
+                        let (x, y) = (f64::from((n_t / n_i) as f32), f64::from(1e-6f32));
+                        let contrast = squares_plus(x, y, -1.0, true);
+                        let contrast_full = squares_plus(x, y, -1.0, false);
+                        check(
+                            discriminant_from(contrast, w, true),
+                            discriminant_from(contrast_full, w, false),
+                            "a conductor's discriminant",
+                        );
+                        let a = squares_plus(x, y, 1.0, true);
+                        let a_full = squares_plus(x, y, 1.0, false);
+                        check(
+                            brewster_from(a, w, true),
+                            brewster_from(a_full, w, false),
+                            "a conductor's Brewster factor",
+                        );
+                        c = f32::from_bits(c.to_bits() + 1);
+                    }
+                }
+            }
+        }
+        println!("worst {worst:.2} f64 ulps");
+    }
 }
