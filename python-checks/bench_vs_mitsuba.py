@@ -416,10 +416,15 @@ def parse(argv):
 def main(argv):
     args = parse(argv)
     if args.table:
-        with open(args.table, encoding="utf-8") as f:
-            document = json.load(f)
-        if document.get("schema") != SCHEMA:
-            print(f"bench_vs_mitsuba.py: --table {args.table}: schema {document.get('schema')!r}, "
+        try:
+            with open(args.table, encoding="utf-8") as f:
+                document = json.load(f)
+        except (OSError, ValueError) as error:
+            print(f"bench_vs_mitsuba.py: --table {args.table}: {error}", file=sys.stderr)
+            return 1
+        if not isinstance(document, dict) or document.get("schema") != SCHEMA:
+            schema = document.get("schema") if isinstance(document, dict) else None
+            print(f"bench_vs_mitsuba.py: --table {args.table}: schema {schema!r}, "
                   f"expected {SCHEMA!r}", file=sys.stderr)
             return 1
         print(table(document))

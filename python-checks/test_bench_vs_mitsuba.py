@@ -164,3 +164,12 @@ def test_the_documents_get_the_table_and_summary_between_their_markers(tmp_path)
 def test_docs_are_written_only_by_a_full_run(tmp_path):
     assert bench.main(["--docs", "--quick", "--optics", sys.executable, "--out", str(tmp_path / "x")]) == 1
     assert bench.main(["--docs", "--scenes", "diffuse", "--optics", sys.executable, "--out", str(tmp_path / "x")]) == 1
+
+
+def test_a_table_that_is_not_a_record_is_refused_by_name(tmp_path, capsys):
+    for text in ("not json", "[1, 2]", '{"schema": "other/1"}'):
+        path = tmp_path / "record.json"
+        path.write_text(text)
+        assert bench.main(["--table", str(path), "--docs"]) == 1, text
+        assert f"--table {path}" in capsys.readouterr().err
+    assert bench.main(["--table", str(tmp_path / "missing.json")]) == 1

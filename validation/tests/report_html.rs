@@ -18,73 +18,74 @@ use validation::report::{to_html, to_json, Report};
 /// failure, findings, a figure.
 fn sample() -> (Report, Vec<String>) {
     let mut report = Report::new(true, "optics validate --quick");
-    let mut laws = Check::new(
+    let mut laws = check(
         "laws.mitsuba.random",
-        "Fresnel at random inputs",
-        "Mitsuba 3.9.1",
-        "8 f32 ulps",
-    );
-    laws.cases = 1000;
-    laws.measure(
-        "fresnel R: |ours − f64 law| (f32 ulps)",
-        0.94903221167624,
-        r#"case 720: {"law":"fresnel","cos_i":-0.4081333875656128,"eta":0.8534522652626038}"#,
-    );
-    laws.measure(
-        "fresnel R: |Mitsuba − f64 law|",
-        3.5504471460057196e-7,
-        "case 756",
+        1000,
+        &[
+            (
+                "fresnel R: |ours − f64 law| (f32 ulps)",
+                0.94903221167624,
+                r#"case 720: {"law":"fresnel","cos_i":-0.4081333875656128,"eta":0.8534522652626038}"#,
+            ),
+            (
+                "fresnel R: |Mitsuba − f64 law|",
+                3.5504471460057196e-7,
+                "case 756",
+            ),
+        ],
     );
     laws.find("Mitsuba R at eta=1.0001 outside cos=0.01: 7.180912792682648e-2, exact 7.178980365261572e-2 (off by 1.93e-5, 2594 f32 ulps)".into());
-    let mut mpmath = Check::new(
+    let mpmath = check(
         "laws.mpmath.fresnel_dielectric",
-        "Dielectric Fresnel, extremes included",
-        "mpmath",
-        "8 ulps",
+        400,
+        &[
+            (
+                "f64 R_s (ulps)",
+                3.748045487603745,
+                "glass inside critical-1e-12rad",
+            ),
+            (
+                "f64 R_s (relative)",
+                4.3436967647709994e-16,
+                "eta=1-1e-12 outside cos=0.9",
+            ),
+        ],
     );
-    mpmath.cases = 400;
-    mpmath.measure(
-        "f64 R_s (ulps)",
-        3.748045487603745,
-        "glass inside critical-1e-12rad",
-    );
-    mpmath.measure(
-        "f64 R_s (relative)",
-        4.3436967647709994e-16,
-        "eta=1-1e-12 outside cos=0.9",
-    );
-    let mut render = Check::new(
+    let mut render = check(
         "renders.mitsuba.kaleidoscope_lit.path",
-        "kaleidoscope_lit: path against Mitsuba's path, per pixel",
-        "Mitsuba 3.9.1",
-        "Welch t",
+        230_400,
+        &[
+            ("|t|", 3.47751983589165, "pixel (232, 85) R"),
+            ("masked edge pixels", 104.0, ""),
+        ],
     );
-    render.cases = 230_400;
-    render.measure("|t|", 3.47751983589165, "pixel (232, 85) R");
-    render.measure("masked edge pixels", 104.0, "");
     render.fail("pixel (1, 2) R: t = 99".into());
-    let mut colour = Check::new(
+    let colour = check(
         "colour.colour-science.tables",
-        "CIE tables",
-        "colour-science 0.4.7",
-        "bit-identical",
+        471,
+        &[("|ours − colour-science|", 0.0, "x̄(360 nm)")],
     );
-    colour.cases = 471;
-    colour.measure("|ours − colour-science|", 0.0, "x̄(360 nm)");
-    let mut light = Check::new(
+    let light = check(
         "full_light.tracer.kaleidoscope_lit.photon.all_the_light",
-        "all the light",
-        "Mitsuba's ptracer",
-        "Welch t",
+        3,
+        &[("photon / ptracer", 1.0012345678901234, "")],
     );
-    light.cases = 3;
-    light.measure("photon / ptracer", 1.0012345678901234, "");
     report.checks = vec![laws, mpmath, render, colour, light];
     report.summarise();
     (
         report,
         vec!["figures/render_kaleidoscope_lit_path.png".to_owned()],
     )
+}
+
+/// A check of `cases` cases with its worst values `(quantity, value, at)`.
+fn check(id: &str, cases: usize, worst: &[(&str, f64, &str)]) -> Check {
+    let mut check = Check::new(id, &format!("the check {id}"), "a reference", "a tolerance");
+    check.cases = cases;
+    for (name, value, at) in worst {
+        check.measure(name, *value, at);
+    }
+    check
 }
 
 /// Every `(check, quantity) → value` the page carries in its tables.

@@ -280,8 +280,9 @@ fn headline(quantity: Option<&str>, checks: &[&Check]) -> Option<String> {
     }
     let worst = checks
         .iter()
-        .filter(|c| c.id.contains("fresnel") || c.id.ends_with(".random"))
-        .flat_map(|c| c.metrics.iter())
+        .flat_map(|c| c.metrics.iter().map(move |m| (c, m)))
+        .filter(|(c, m)| c.id.contains("fresnel") || m.name.starts_with("fresnel"))
+        .map(|(_, m)| m)
         .filter(|m| m.name.contains("ulps") && m.worst.is_finite())
         .max_by(|a, b| a.worst.total_cmp(&b.worst));
     if let Some(m) = worst {
