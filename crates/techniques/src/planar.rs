@@ -1,0 +1,173 @@
+//! Planar reflections and projected planar shadows: the two 4 × 4 matrices
+//! of the slides, for any plane.
+//!
+//! Both slides' formulas were audited line by line against a derivation
+//! (the matrices below are built as the slides build them and tested
+//! against the direct geometric answer): the reflection matrix
+//! `M = F⁻¹ S(1, −1, 1) F` with `F = R(n, (0, 1, 0)) T(−p)` is right; the
+//! shadow matrix of a point light `l` onto `n · x + d = 0`, and its special
+//! case for `y = 0`, are right, with the caveats the slides give (a shadow
+//! also appears where none is cast), which [`Shadow`] names.
+
+use glam::{DMat3, DMat4, DVec3, DVec4};
+
+/// A plane `n · x + d = 0` with a unit normal `n`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Plane {
+    normal: DVec3,
+    d: f64,
+}
+
+/// Why a plane could not be made.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PlaneError {
+    /// The normal is zero, infinite or NaN: it has no direction.
+    Normal,
+    /// The point is not finite.
+    Point,
+}
+
+impl Plane {
+    /// The plane through `point` with normal along `normal` (normalised
+    /// here, once).
+    pub fn through(point: DVec3, normal: DVec3) -> Result<Self, PlaneError> {
+        let normal = normal.try_normalize().ok_or(PlaneError::Normal)?;
+        if !point.is_finite() {
+            return Err(PlaneError::Point);
+        }
+        Ok(Self {
+            normal,
+            d: -normal.dot(point),
+        })
+    }
+
+    /// The unit normal `n`.
+    pub fn normal(&self) -> DVec3 {
+        self.normal
+    }
+
+    /// `d` of `n · x + d = 0`.
+    pub fn d(&self) -> f64 {
+        self.d
+    }
+
+    /// The signed distance `n · x + d` of `x` from the plane.
+    pub fn distance(&self, x: DVec3) -> f64 {
+        self.normal.dot(x) + self.d
+    }
+
+    /// The plane's point nearest the origin, `−d n`.
+    pub fn point(&self) -> DVec3 {
+        -self.d * self.normal
+    }
+}
+
+/// The rotation taking the unit vector `from` onto the unit vector `to`
+/// (the slides' `R(n, (0, 1, 0))`), by Rodrigues' formula about
+/// `from × to`; for opposite vectors, a half turn about an axis
+/// perpendicular to both.
+fn rotation_between(from: DVec3, to: DVec3) -> DMat3 {
+    let cos = from.dot(to);
+    let axis = from.cross(to);
+    if cos < -1.0 + 1e-12 {
+        let perpendicular = from.any_orthonormal_vector();
+        return DMat3::from_axis_angle(perpendicular, std::f64::consts::PI);
+    }
+    // R = I + [a]× + [a]×² / (1 + cos), exact for unit from, to.
+    let k = DMat3::from_cols(
+        DVec3::new(0.0, axis.z, -axis.y),
+        DVec3::new(-axis.z, 0.0, axis.x),
+        DVec3::new(axis.y, -axis.x, 0.0),
+    );
+    DMat3::IDENTITY + k + k * k * (1.0 / (1.0 + cos))
+}
+
+/// The slides' reflection matrix of `plane`: `M = F⁻¹ S(1, −1, 1) F`, where
+/// `F = R(n, (0, 1, 0)) T(−p)` moves the plane onto `y = 0`. Drawing a
+/// scene's objects through `M` draws their mirror image in the plane; the
+/// lights' positions and directions go through it too.
+pub fn reflection_matrix(plane: &Plane) -> DMat4 {
+    let to_y = DMat4::from_mat3(rotation_between(plane.normal, DVec3::Y))
+        * DMat4::from_translation(-plane.point());
+    let mirror = DMat4::from_scale(DVec3::new(1.0, -1.0, 1.0));
+    to_y.inverse() * mirror * to_y
+}
+
+/// The slides' shadow matrix of a point light at `light` onto `plane`:
+/// `M v` (homogeneous) is where the line from the light through `v` meets
+/// the plane, `p = l − (d + n·l) / (n·(v − l)) (v − l)`.
+pub fn shadow_matrix(light: DVec3, plane: &Plane) -> DMat4 {
+    let (n, d) = (plane.normal, plane.d);
+    let nl = n.dot(light);
+    // Rows of the slides' matrix, written as columns of glam's.
+    let row = |i: usize| {
+        let l = light[i];
+        let mut r = DVec4::new(-l * n.x, -l * n.y, -l * n.z, -l * d);
+        r[i] += nl + d;
+        r
+    };
+    DMat4::from_cols_array_2d(&[
+        row(0).into(),
+        row(1).into(),
+        row(2).into(),
+        [-n.x, -n.y, -n.z, nl],
+    ])
+    .transpose()
+}
+
+/// The slides' special case for the plane `y = 0`, written out as on the
+/// slide.
+pub fn shadow_matrix_y0(light: DVec3) -> DMat4 {
+    let DVec3 { x, y, z } = light;
+    DMat4::from_cols_array_2d(&[
+        [y, -x, 0.0, 0.0],
+        [0.0, 0.0, 0.0, 0.0],
+        [0.0, -z, y, 0.0],
+        [0.0, -1.0, 0.0, y],
+    ])
+    .transpose()
+}
+
+/// What projecting a vertex from a point light onto a plane gives, with the
+/// slides' caveats as outcomes: the matrix projects every vertex, but only
+/// one between the light and the plane casts a shadow there.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Shadow {
+    /// The vertex lies between the light and the plane: its shadow is here.
+    Cast(DVec3),
+    /// The vertex lies beyond the plane, seen from the light: the matrix
+    /// still puts a point on the plane, but no shadow falls there.
+    BeyondPlane(DVec3),
+    /// The plane lies behind the light, seen from the vertex: the matrix
+    /// puts a point on the plane on the far side of the light (an
+    /// "anti-shadow").
+    BehindLight(DVec3),
+    /// The line from the light through the vertex is parallel to the plane
+    /// (or the vertex is the light): it never meets it.
+    Parallel,
+}
+
+/// Where the shadow of `vertex` from a point light at `light` falls on
+/// `plane`, by the shadow matrix, with the outcome decided from the ray
+/// parameter `t` of `light + t (vertex − light)` at the plane: `t > 1`
+/// casts, `0 < t ≤ 1` is beyond the plane, `t ≤ 0` behind the light.
+pub fn project_shadow(light: DVec3, plane: &Plane, vertex: DVec3) -> Shadow {
+    let towards = vertex - light;
+    let along = plane.normal.dot(towards);
+    let h = shadow_matrix(light, plane) * vertex.extend(1.0);
+    if along == 0.0 || h.w == 0.0 || !h.is_finite() {
+        return Shadow::Parallel;
+    }
+    let p = h.truncate() / h.w;
+    let t = -plane.distance(light) / along;
+    if t > 1.0 {
+        Shadow::Cast(p)
+    } else if t > 0.0 {
+        Shadow::BeyondPlane(p)
+    } else {
+        Shadow::BehindLight(p)
+    }
+}
+
+#[cfg(test)]
+mod tests;
