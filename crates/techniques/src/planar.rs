@@ -9,7 +9,7 @@
 //! case for `y = 0`, are right, with the caveats the slides give (a shadow
 //! also appears where none is cast), which [`Shadow`] names.
 
-use glam::{DMat3, DMat4, DVec3, DVec4};
+use glam::{DMat4, DQuat, DVec3, DVec4};
 
 /// A plane `n · x + d = 0` with a unit normal `n`.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -62,33 +62,15 @@ impl Plane {
     }
 }
 
-/// The rotation taking the unit vector `from` onto the unit vector `to`
-/// (the slides' `R(n, (0, 1, 0))`), by Rodrigues' formula about
-/// `from × to`; for opposite vectors, a half turn about an axis
-/// perpendicular to both.
-fn rotation_between(from: DVec3, to: DVec3) -> DMat3 {
-    let cos = from.dot(to);
-    let axis = from.cross(to);
-    if cos < -1.0 + 1e-12 {
-        let perpendicular = from.any_orthonormal_vector();
-        return DMat3::from_axis_angle(perpendicular, std::f64::consts::PI);
-    }
-    // R = I + [a]× + [a]×² / (1 + cos), exact for unit from, to.
-    let k = DMat3::from_cols(
-        DVec3::new(0.0, axis.z, -axis.y),
-        DVec3::new(-axis.z, 0.0, axis.x),
-        DVec3::new(axis.y, -axis.x, 0.0),
-    );
-    DMat3::IDENTITY + k + k * k * (1.0 / (1.0 + cos))
-}
-
 /// The slides' reflection matrix of `plane`: `M = F⁻¹ S(1, −1, 1) F`, where
 /// `F = R(n, (0, 1, 0)) T(−p)` moves the plane onto `y = 0`. Drawing a
 /// scene's objects through `M` draws their mirror image in the plane; the
 /// lights' positions and directions go through it too.
 pub fn reflection_matrix(plane: &Plane) -> DMat4 {
-    let to_y = DMat4::from_mat3(rotation_between(plane.normal, DVec3::Y))
-        * DMat4::from_translation(-plane.point());
+    // R(n, (0, 1, 0)): the shortest rotation taking n onto y (a half turn
+    // when n = −y).
+    let rotation = DQuat::from_rotation_arc(plane.normal, DVec3::Y);
+    let to_y = DMat4::from_quat(rotation) * DMat4::from_translation(-plane.point());
     let mirror = DMat4::from_scale(DVec3::new(1.0, -1.0, 1.0));
     to_y.inverse() * mirror * to_y
 }
