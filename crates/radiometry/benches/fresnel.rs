@@ -9,7 +9,8 @@
 //! may vectorise the loop; nothing is called through a pointer). The
 //! material's constants are fixed for the slice, as they are for a surface.
 //! The slice forms of the crate ([`dielectric_slice`], [`conductor_slice`])
-//! are timed too.
+//! are timed too: they run on the widest instructions the CPU has
+//! ([`Lanes::widest`]), where the closure runs on the build's target.
 //!
 //! The two textbook laws are the baselines, not laws of the suite: the
 //! exact equations as shaders write them, one square root and two
@@ -20,6 +21,7 @@
 use criterion::{black_box, criterion_group, BenchmarkId, Criterion, Throughput};
 use radiometry::fresnel::{
     conductor, conductor_slice, dielectric, dielectric_slice, f0, schlick, schlick_dielectric,
+    Lanes,
 };
 use radiometry::Real;
 
@@ -168,8 +170,10 @@ fn record(run: &results::criterion::Run) -> Result<results::Section, results::Er
     } else {
         "not in the build"
     };
+    let lanes = Lanes::widest();
     let mut table = format!(
-        "Fused multiply-add: {fma}. Time per evaluation over {COSINES} cosines; \
+        "Fused multiply-add: {fma}. The `_slice` forms run on `{lanes:?}`, the \
+         others on the build's target. Time per evaluation over {COSINES} cosines; \
          `÷ textbook` and `÷ Schlick` are the law's time over the textbook \
          form's and Schlick's, in the same tier.\n\n\
          | law | f32 | ÷ textbook | ÷ Schlick | f64 | ÷ textbook | ÷ Schlick |\n\

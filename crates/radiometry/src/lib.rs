@@ -104,7 +104,9 @@
 //! assert!(refract(from_inside, n, 1.5).is_none());
 //! ```
 
-#![forbid(unsafe_code)]
+// One module may call code compiled for wider instructions, after checking
+// the CPU has them (`fresnel::slice`); nothing else is `unsafe`.
+#![deny(unsafe_code)]
 #![warn(missing_docs)]
 // `!(x > 0)` is written on purpose throughout: unlike `x <= 0` it is also true for NaN.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]

@@ -48,6 +48,20 @@ pub trait Real: Float + FloatConst + Debug + Display + Default + Send + Sync + '
     /// them): for `f32` those cannot overflow or underflow when squared in
     /// `f64`, so this is `√(a² + b²)` there, without the scaling.
     fn wide_hypotenuse(a: Self::Wide, b: Self::Wide) -> Self::Wide;
+    /// `[a / x, b / y]` in [`Real::Wide`] for the positive denominators `x`,
+    /// `y` of a law computed from this tier's numbers (sums of their squares
+    /// and products, up to the fourth power of an index). `f32` divides
+    /// once, by `x · y`, which cannot overflow or underflow in `f64` for
+    /// such values, and multiplies: a few more roundings of `f64`, far
+    /// below the one rounding to `f32`, for one division instead of two,
+    /// the slowest step of the law. `f64` divides twice, rounding each
+    /// quotient once.
+    fn wide_quotients(
+        a: Self::Wide,
+        x: Self::Wide,
+        b: Self::Wide,
+        y: Self::Wide,
+    ) -> [Self::Wide; 2];
 }
 
 /// `2^⌊log₂|x|⌋`, no smaller than `min_positive`, times `epsilon`: the
@@ -89,6 +103,11 @@ impl Real for f32 {
     #[inline]
     fn wide_hypotenuse(a: f64, b: f64) -> f64 {
         (a * a + b * b).sqrt()
+    }
+    #[inline]
+    fn wide_quotients(a: f64, x: f64, b: f64, y: f64) -> [f64; 2] {
+        let q = 1.0 / (x * y);
+        [a * (y * q), b * (x * q)]
     }
 }
 
@@ -132,6 +151,10 @@ impl Real for f64 {
     #[inline]
     fn wide_hypotenuse(a: f64, b: f64) -> f64 {
         a.hypotenuse(b)
+    }
+    #[inline]
+    fn wide_quotients(a: f64, x: f64, b: f64, y: f64) -> [f64; 2] {
+        [a / x, b / y]
     }
 }
 

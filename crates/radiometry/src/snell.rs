@@ -84,22 +84,32 @@ impl<T: Real> Incidence<T> {
     /// ```
     #[inline]
     pub fn resolve(cos_i: T, eta: T) -> Option<Self> {
-        if cos_i.is_nan() || !(eta > T::zero() && eta.is_finite()) {
-            return None;
-        }
+        let (incidence, valid) = Self::resolve_unchecked(cos_i, eta);
+        valid.then_some(incidence)
+    }
+
+    /// [`Incidence::resolve`] without the early return, for a law that
+    /// computes its general case whatever the input and chooses after it,
+    /// so that a loop over many cosines has no branch: the incidence (of
+    /// NaNs or meaningless where the input describes no interface), and
+    /// whether the input describes one.
+    #[inline(always)]
+    pub(crate) fn resolve_unchecked(cos_i: T, eta: T) -> (Self, bool) {
+        let valid = !cos_i.is_nan() && eta > T::zero() && eta.is_finite();
         let from_inside = cos_i < T::zero();
         let (n_i, n_t) = if from_inside {
             (eta, T::one())
         } else {
             (T::one(), eta)
         };
-        Some(Self {
+        let incidence = Self {
             abs_cos_i: clamp_unit(cos_i.abs()),
             n_i,
             n_t,
             from_inside,
             sin_i: None,
-        })
+        };
+        (incidence, valid)
     }
 
     /// [`Incidence::resolve`] for a caller that can also measure `sin θ_i`

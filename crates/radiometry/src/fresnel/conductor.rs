@@ -57,7 +57,7 @@ impl<T: Real> ConductorFresnel<T> {
 /// assert!((conductor(1.0_f64, 0.17, 3.1) - f0(0.17, 3.1)).abs() < 1e-15);
 /// assert_eq!(conductor(0.0_f64, 0.17, 3.1), 1.0);
 /// ```
-#[inline]
+#[inline(always)]
 pub fn conductor_polarized<T: Real>(cos_i: T, n: T, kappa: T) -> ConductorFresnel<T> {
     match Conductor::new(n, kappa) {
         Some(conductor) => conductor.polarized(cos_i),
@@ -95,7 +95,7 @@ pub struct Conductor<T: Real> {
 impl<T: Real> Conductor<T> {
     /// The conductor of index `n + i·kappa`; `None` for `n ≤ 0`,
     /// `kappa < 0` or either not finite (NaN included).
-    #[inline]
+    #[inline(always)]
     pub fn new(n: T, kappa: T) -> Option<Self> {
         let valid = n > T::zero() && n.is_finite() && kappa >= T::zero() && kappa.is_finite();
         if !valid {
@@ -124,9 +124,8 @@ impl<T: Real> Conductor<T> {
     /// arrives from the dielectric side); NaN for a NaN cosine.
     #[inline(always)]
     pub fn polarized(&self, cos_i: T) -> ConductorFresnel<T> {
-        if cos_i.is_nan() {
-            return ConductorFresnel::undefined();
-        }
+        // Computed whatever the cosine and a NaN one answered after: no
+        // branch, so a loop over many cosines vectorises.
         let exact = T::PRODUCTS_EXACT_IN_WIDE;
         let c = clamp_unit(cos_i.abs()).widen();
         // s = η cos θ_t = √(η² − 1 + c²), principal branch (Re s ≥ 0).
@@ -156,9 +155,14 @@ impl<T: Real> Conductor<T> {
         let zero = Wide::<T>::zero();
         let matched = self.abs_eta2_m1 == zero;
         let narrow = |r| T::narrow(if matched { zero } else { fraction(r) });
-        ConductorFresnel {
+        let law = ConductorFresnel {
             r_s: narrow(r_s),
             r_p: narrow(r_p),
+        };
+        if cos_i.is_nan() {
+            ConductorFresnel::undefined()
+        } else {
+            law
         }
     }
 
@@ -171,7 +175,7 @@ impl<T: Real> Conductor<T> {
 
 /// Unpolarised reflectance of a conductor of complex index `n + i·kappa`,
 /// exact. See [`conductor_polarized`] for the conventions.
-#[inline]
+#[inline(always)]
 pub fn conductor<T: Real>(cos_i: T, n: T, kappa: T) -> T {
     conductor_polarized(cos_i, n, kappa).reflectance()
 }
@@ -205,18 +209,20 @@ pub fn conductor_rgb<T: Real>(cos_i: T, n: [T; 3], kappa: [T; 3]) -> [T; 3] {
 #[inline]
 fn scaled_root<T: Real>(z: Complex<Wide<T>>) -> (Wide<T>, Complex<Wide<T>>) {
     let zero = Wide::<T>::zero();
-    if z.re == zero && z.im == zero {
-        return (Wide::<T>::one(), Complex::new(zero, z.im));
-    }
     let two_t2 = z.re.abs() + T::wide_hypotenuse(z.re, z.im);
     let t = (two_t2 * Wide::<T>::lit(0.5)).sqrt();
     let u = t + t;
+    // Both halves chosen by value, not by branch, so that a loop vectorises.
     let us = if z.re >= zero {
         Complex::new(two_t2, z.im)
     } else {
         Complex::new(z.im.abs(), two_t2.copysign(z.im))
     };
-    (u, us)
+    if z.re == zero && z.im == zero {
+        (Wide::<T>::one(), Complex::new(zero, z.im))
+    } else {
+        (u, us)
+    }
 }
 
 #[cfg(test)]

@@ -130,9 +130,15 @@ impl<T: Real> DielectricFresnel<T> {
 /// ```
 #[inline]
 pub fn dielectric_polarized<T: Real>(cos_i: T, eta: T) -> DielectricFresnel<T> {
-    match Incidence::resolve(cos_i, eta) {
-        Some(incidence) => dielectric_resolved(&incidence),
-        None => DielectricFresnel::all(T::nan(), None, Incidence::undefined()),
+    // The law is evaluated whatever the input and the answer for input that
+    // describes no interface chosen after it: no branch, so a loop over
+    // many cosines vectorises.
+    let (incidence, valid) = Incidence::resolve_unchecked(cos_i, eta);
+    let law = dielectric_resolved(&incidence);
+    if valid {
+        law
+    } else {
+        DielectricFresnel::all(T::nan(), None, Incidence::undefined())
     }
 }
 
@@ -170,32 +176,35 @@ pub fn dielectric_resolved<T: Real>(incidence: &Incidence<T>) -> DielectricFresn
     // (a + s)² as a² + 2as + s² with s² = d exactly as computed: at grazing
     // incidence this makes r_s = (n_i² − n_t²)/d = −1 to the last bit.
     let ws2 = a * a + (a + a) * s + d;
-    let r_s = sqr(contrast / ws2);
-    let t_s = four_c * (n_i * s / ws2);
 
     // (n_t² c + n_i s)² likewise with n_i² d for (n_i s)²: exact at grazing.
     let n_t2 = n_t * n_t;
     let b = n_t2 * c;
     let wp2 = b * b + (b + b) * (n_i * s) + n_i * n_i * d;
     let brewster = compensated::brewster_factor(n_t, n_i, c, exact);
-    let r_p = sqr(contrast * brewster / wp2);
-    let t_p = four_c * (n_i * n_t2 * s / wp2);
 
+    let [amp_s, amp_p] = T::wide_quotients(contrast, ws2, contrast * brewster, wp2);
+    let [t_s, t_p] = T::wide_quotients(n_i * s, ws2, n_i * n_t2 * s, wp2);
+    let (r_s, r_p) = (sqr(amp_s), sqr(amp_p));
+    let (t_s, t_p) = (four_c * t_s, four_c * t_p);
+
+    let narrow = |x| T::narrow(fraction(x));
+    let general = DielectricFresnel {
+        r_s: narrow(r_s),
+        r_p: narrow(r_p),
+        t_s: narrow(t_s),
+        t_p: narrow(t_p),
+        cos_t: Some(incidence.cos_from_root(s)),
+        incidence: *incidence,
+    };
+    // Chosen by value, not by branch (each case is cheap to have computed).
     if contrast == T::Wide::zero() {
         // Index-matched (n_t = n_i): nothing reflects, θ_t = θ_i.
         DielectricFresnel::all(T::zero(), incidence.cos_transmitted(), *incidence)
     } else if !snell.transmits {
         DielectricFresnel::all(T::one(), None, *incidence)
     } else {
-        let narrow = |x| T::narrow(fraction(x));
-        DielectricFresnel {
-            r_s: narrow(r_s),
-            r_p: narrow(r_p),
-            t_s: narrow(t_s),
-            t_p: narrow(t_p),
-            cos_t: Some(incidence.cos_from_root(s)),
-            incidence: *incidence,
-        }
+        general
     }
 }
 

@@ -40,7 +40,9 @@ pub use schlick::{
     schlick, schlick_dielectric, schlick_dielectric_resolved, schlick_dielectric_working,
     schlick_rgb, SchlickCosine, SchlickDielectric,
 };
-pub use slice::{conductor_slice, dielectric_slice};
+pub use slice::{
+    conductor_slice, conductor_slice_on, dielectric_slice, dielectric_slice_on, Lanes,
+};
 
 /// Normal-incidence reflectance `F0 = ((n − 1)² + κ²) / ((n + 1)² + κ²)` of
 /// an interface from a medium of index 1 into one of index `n + i·kappa`.

@@ -1,11 +1,69 @@
 //! The exact laws over slices of cosines, for callers that evaluate one
 //! material at many angles (a table, a batch of requests, a film row): the
-//! scalar law in a loop the compiler can vectorise, since the laws choose
-//! their special cases without branching.
+//! scalar law in a loop the compiler vectorises, since the laws compute
+//! their general case whatever the input and choose their special cases
+//! after it, without branching.
+//!
+//! # Wider instructions, same bits
+//!
+//! The loop is compiled three times: for the build's own target (on
+//! x86-64 by default SSE2, two `f64` lanes), for AVX2 (four) and for
+//! AVX-512 (eight), and each call takes the widest the CPU has
+//! ([`Lanes::widest`]). Every path gives the same bits: the laws use only
+//! additions, multiplications, divisions and square roots, each correctly
+//! rounded by IEEE 754 whatever the width; Rust never fuses a
+//! multiplication and an addition on its own; and the error-free products
+//! of [`crate::compensated`] take the same exact error by Dekker's split on
+//! every path (the choice of fused multiply-add there is made for the
+//! build, not per path). The test `fresnel_slice_paths_agree_bit_for_bit`
+//! forces each path the CPU has and compares.
 
 use crate::Real;
 
-/// [`super::dielectric`] of each cosine in `cos_i`, written to `out`.
+/// The width of the instructions a slice law runs on.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Lanes {
+    /// The build's own target (SSE2 on the default x86-64 target).
+    Baseline,
+    /// AVX2 (x86-64), four `f64` lanes.
+    Avx2,
+    /// AVX-512 F/DQ/VL (x86-64), eight `f64` lanes.
+    Avx512,
+}
+
+impl Lanes {
+    /// Every width, narrowest first.
+    pub const ALL: [Lanes; 3] = [Lanes::Baseline, Lanes::Avx2, Lanes::Avx512];
+
+    /// Whether this CPU can run this width.
+    pub fn available(self) -> bool {
+        match self {
+            Lanes::Baseline => true,
+            #[cfg(target_arch = "x86_64")]
+            Lanes::Avx2 => std::arch::is_x86_feature_detected!("avx2"),
+            #[cfg(target_arch = "x86_64")]
+            Lanes::Avx512 => {
+                std::arch::is_x86_feature_detected!("avx512f")
+                    && std::arch::is_x86_feature_detected!("avx512dq")
+                    && std::arch::is_x86_feature_detected!("avx512vl")
+            }
+            #[cfg(not(target_arch = "x86_64"))]
+            _ => false,
+        }
+    }
+
+    /// The widest this CPU can run, the one the slice laws take.
+    pub fn widest() -> Self {
+        Self::ALL
+            .into_iter()
+            .rev()
+            .find(|lanes| lanes.available())
+            .unwrap_or(Lanes::Baseline)
+    }
+}
+
+/// [`super::dielectric`] of each cosine in `cos_i`, written to `out`, on
+/// the widest instructions this CPU has.
 ///
 /// ```
 /// use radiometry::fresnel::{dielectric, dielectric_slice};
@@ -19,26 +77,100 @@ use crate::Real;
 ///
 /// If the two slices differ in length.
 pub fn dielectric_slice<T: Real>(cos_i: &[T], eta: T, out: &mut [T]) {
-    each(cos_i, out, |c| super::dielectric(c, eta));
+    dielectric_slice_on(Lanes::widest(), cos_i, eta, out);
 }
 
-/// [`super::conductor`] of each cosine in `cos_i`, written to `out`.
+/// [`super::conductor`] of each cosine in `cos_i`, written to `out`, on the
+/// widest instructions this CPU has.
 ///
 /// # Panics
 ///
 /// If the two slices differ in length.
 pub fn conductor_slice<T: Real>(cos_i: &[T], n: T, kappa: T, out: &mut [T]) {
-    each(cos_i, out, |c| super::conductor(c, n, kappa));
+    conductor_slice_on(Lanes::widest(), cos_i, n, kappa, out);
+}
+
+/// [`dielectric_slice`] on the given width, or on the baseline where this
+/// CPU lacks it: for tests and benchmarks that compare the paths.
+///
+/// # Panics
+///
+/// If the two slices differ in length.
+pub fn dielectric_slice_on<T: Real>(lanes: Lanes, cos_i: &[T], eta: T, out: &mut [T]) {
+    dispatch(lanes, cos_i, out, |c| super::dielectric(c, eta));
+}
+
+/// [`conductor_slice`] on the given width, or on the baseline where this
+/// CPU lacks it.
+///
+/// # Panics
+///
+/// If the two slices differ in length.
+pub fn conductor_slice_on<T: Real>(lanes: Lanes, cos_i: &[T], n: T, kappa: T, out: &mut [T]) {
+    dispatch(lanes, cos_i, out, |c| super::conductor(c, n, kappa));
 }
 
 #[inline(always)]
-fn each<T: Real>(cos_i: &[T], out: &mut [T], law: impl Fn(T) -> T) {
+fn dispatch<T: Real>(lanes: Lanes, cos_i: &[T], out: &mut [T], law: impl Fn(T) -> T) {
     assert_eq!(
         cos_i.len(),
         out.len(),
         "a slice law needs as many outputs as cosines"
     );
+    match lanes {
+        #[cfg(target_arch = "x86_64")]
+        Lanes::Avx512 => wide::avx512(cos_i, out, law),
+        #[cfg(target_arch = "x86_64")]
+        Lanes::Avx2 => wide::avx2(cos_i, out, law),
+        _ => each(cos_i, out, law),
+    }
+}
+
+#[inline(always)]
+fn each<T: Real>(cos_i: &[T], out: &mut [T], law: impl Fn(T) -> T) {
     for (r, &c) in out.iter_mut().zip(cos_i) {
         *r = law(c);
+    }
+}
+
+/// The loop compiled for wider instructions. The only `unsafe` of the
+/// crate: calling a function compiled for instructions the CPU may lack.
+#[cfg(target_arch = "x86_64")]
+#[allow(unsafe_code)]
+mod wide {
+    use super::{each, Lanes};
+    use crate::Real;
+
+    #[target_feature(enable = "avx2")]
+    fn each_avx2<T: Real>(cos_i: &[T], out: &mut [T], law: impl Fn(T) -> T) {
+        each(cos_i, out, law);
+    }
+
+    #[target_feature(enable = "avx512f,avx512dq,avx512vl")]
+    fn each_avx512<T: Real>(cos_i: &[T], out: &mut [T], law: impl Fn(T) -> T) {
+        each(cos_i, out, law);
+    }
+
+    /// The loop on AVX2 where this CPU has it, on the baseline otherwise.
+    #[inline(always)]
+    pub(super) fn avx2<T: Real>(cos_i: &[T], out: &mut [T], law: impl Fn(T) -> T) {
+        if Lanes::Avx2.available() {
+            // SAFETY: this CPU runs AVX2, checked on the line above.
+            unsafe { each_avx2(cos_i, out, law) }
+        } else {
+            each(cos_i, out, law)
+        }
+    }
+
+    /// The loop on AVX-512 where this CPU has it, on the baseline otherwise.
+    #[inline(always)]
+    pub(super) fn avx512<T: Real>(cos_i: &[T], out: &mut [T], law: impl Fn(T) -> T) {
+        if Lanes::Avx512.available() {
+            // SAFETY: this CPU runs AVX-512 F, DQ and VL, checked on the
+            // line above.
+            unsafe { each_avx512(cos_i, out, law) }
+        } else {
+            each(cos_i, out, law)
+        }
     }
 }
