@@ -25,8 +25,9 @@
 //! default x86-64 target has no FMA, so `mul_add` would be a call into libm
 //! for every product, the cost of the whole law. Both give the exact error
 //! (Dekker's for operands below `2^995` in magnitude, whose splitting cannot
-//! overflow; larger ones take `mul_add`), so the results are the same bits
-//! on every target.
+//! overflow; larger ones are split scaled down by a power of two), so the
+//! results are the same bits on every target. No branch is taken on the
+//! way, so loops over the laws vectorise.
 //!
 //! Reference: T. Ogita, S. M. Rump, S. Oishi, "Accurate sum and dot product",
 //! SIAM J. Sci. Comput. 26(6), 2005 (algorithms TwoSum, TwoProduct, Sum2).
@@ -37,7 +38,7 @@ use num_traits::{Float, FloatConst, One, Zero};
 use crate::Real;
 
 /// `a + b` as `(s, e)` with `s = fl(a + b)` and `a + b = s + e` exactly.
-#[inline]
+#[inline(always)]
 fn two_sum<T: Real>(a: T, b: T) -> (T, T) {
     let s = a + b;
     let bb = s - a;
@@ -47,23 +48,40 @@ fn two_sum<T: Real>(a: T, b: T) -> (T, T) {
 
 /// `a · b` as `(p, e)` with `p = fl(a · b)` and `a · b = p + e` exactly
 /// (barring underflow).
-#[inline]
+#[inline(always)]
 fn two_prod<T: Real>(a: T, b: T) -> (T, T) {
     let p = a * b;
     if cfg!(target_feature = "fma") {
         return (p, a.mul_add(b, -p));
     }
-    let limit = T::lit(2f64.powi(995));
-    if !(a.abs() < limit && b.abs() < limit) {
-        return (p, a.mul_add(b, -p));
-    }
-    (p, dekker_error(a, b, p))
+    (p, scaled_dekker_error(a, b, p))
+}
+
+/// [`dekker_error`] for any operands: one of `2^995` or more in magnitude
+/// (whose splitting would overflow) is scaled down by `2^-64` first and the
+/// error scaled back, exactly, as powers of two scale exactly (the scaled
+/// product stays far from underflow: with `|a| ≥ 2^995`, `|a b| ≥ 2^-79`).
+/// The scale is chosen by value, not by branch, so that loops vectorise.
+#[inline(always)]
+fn scaled_dekker_error<T: Real>(a: T, b: T, p: T) -> T {
+    let limit = T::lit(power_of_two(995));
+    let (one, down) = (T::one(), T::lit(power_of_two(-64)));
+    let scale = |x: T| if x.abs() < limit { one } else { down };
+    let (sa, sb) = (scale(a), scale(b));
+    let scaled = dekker_error(a * sa, b * sb, p * sa * sb);
+    scaled / (sa * sb)
+}
+
+/// `2^k` for a normal double's exponent, from the bits: a constant where
+/// `powi` is a call that blocks a loop's vectorisation.
+pub(crate) const fn power_of_two(k: i32) -> f64 {
+    f64::from_bits(((1023 + k) as u64) << 52)
 }
 
 /// The rounding error of `p = fl(a · b)` by Dekker's product (1971): each
 /// operand split into halves of at most half the significand, whose four
 /// products are exact. Exact for `|a|, |b| < 2^995` barring underflow.
-#[inline]
+#[inline(always)]
 fn dekker_error<T: Real>(a: T, b: T, p: T) -> T {
     let split = |x: T| {
         let c = T::lit(T::SPLITTER) * x;
@@ -77,7 +95,7 @@ fn dekker_error<T: Real>(a: T, b: T, p: T) -> T {
 /// [`two_prod`] of two numbers widened from a tier whose products are exact
 /// in the wide one (`exact`, a constant per tier): the error term is zero,
 /// and is not computed.
-#[inline]
+#[inline(always)]
 fn narrow_prod<T: Real>(a: T, b: T, exact: bool) -> (T, T) {
     if exact {
         (a * b, T::zero())
@@ -101,7 +119,7 @@ struct Sum2<T> {
 }
 
 impl<T: Real> Sum2<T> {
-    #[inline]
+    #[inline(always)]
     fn of(first: T, exact: bool) -> Self {
         Self {
             sum: first,
@@ -110,7 +128,7 @@ impl<T: Real> Sum2<T> {
         }
     }
 
-    #[inline]
+    #[inline(always)]
     fn plus(self, term: T) -> Self {
         let (sum, e) = two_sum(self.sum, term);
         Self {
@@ -122,7 +140,7 @@ impl<T: Real> Sum2<T> {
 
     /// Adds a product's rounding error, which is zero when the tier's
     /// products are `exact`.
-    #[inline]
+    #[inline(always)]
     fn plus_error(self, term: T, exact: bool) -> Self {
         if exact && self.exact {
             self
@@ -131,13 +149,13 @@ impl<T: Real> Sum2<T> {
         }
     }
 
-    #[inline]
+    #[inline(always)]
     fn value(self) -> T {
         self.sum + self.error
     }
 
     /// The sum unevaluated, to be carried on.
-    #[inline]
+    #[inline(always)]
     fn parts(self) -> TwoPart<T> {
         TwoPart {
             high: self.sum,
@@ -157,7 +175,7 @@ pub(crate) struct TwoPart<T> {
 
 impl<T: Real> TwoPart<T> {
     /// Rounded to one number.
-    #[inline]
+    #[inline(always)]
     pub(crate) fn value(self) -> T {
         self.high + self.low
     }
@@ -169,7 +187,7 @@ impl<T: Real> TwoPart<T> {
 /// `exact`, `e = 0`, the middle term is zero and `p` (a product of two
 /// widened numbers of the narrow tier, below `2^256`) is split without the
 /// range check.
-#[inline]
+#[inline(always)]
 fn square_of_product<T: Real>(a: T, b: T, exact: bool) -> [T; 3] {
     let (p, e) = narrow_prod(a, b, exact);
     if exact {
@@ -288,7 +306,7 @@ pub(crate) fn brewster_factor<T: Real>(n_t: T, n_i: T, c: T, exact: bool) -> T {
 
 /// `x² − y² + k` for an exact constant `k` (−1, 0 or 1): the real part of
 /// `η² − 1`, `η²` or `η² + 1`.
-#[inline]
+#[inline(always)]
 pub(crate) fn squares_plus<T: Real>(x: T, y: T, k: T, exact: bool) -> TwoPart<T> {
     let (x2, x2e) = narrow_prod(x, x, exact);
     let (y2, y2e) = narrow_prod(y, y, exact);
@@ -377,6 +395,42 @@ mod tests {
         assert_eq!(
             dekker_error(big, 0.75, big * 0.75),
             big.mul_add(0.75, -big * 0.75)
+        );
+    }
+
+    #[test]
+    fn scaled_dekker_error_is_the_fused_multiply_adds_for_huge_operands() {
+        // Operands from 2^990 to the largest double, against factors whose
+        // product stays finite: the scaled split must give the exact error.
+        let mut state = 0x2545_f491_4f6c_dd1d_u64;
+        let mut next = || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state
+        };
+        let mut scaled = 0;
+        for _ in 0..100_000 {
+            let (ra, rb) = (next(), next());
+            let a =
+                (1.0 + (ra >> 12) as f64 / (1u64 << 52) as f64) * 2f64.powi(990 + (ra % 34) as i32);
+            let b = -((rb >> 11) as f64) / (1u64 << 53) as f64 * 2f64.powi(-((rb % 900) as i32));
+            let (a, b) = if ra & 1 == 0 { (a, b) } else { (b, a) };
+            let p = a * b;
+            if !p.is_finite() {
+                continue;
+            }
+            scaled += usize::from(a.abs().max(b.abs()) >= 2f64.powi(995));
+            assert_eq!(
+                scaled_dekker_error(a, b, p).to_bits(),
+                a.mul_add(b, -p).to_bits(),
+                "{a:e} · {b:e}"
+            );
+        }
+        assert!(scaled > 50_000, "only {scaled} cases took the scaled split");
+        assert_eq!(
+            scaled_dekker_error(f64::MAX, 0.75, f64::MAX * 0.75),
+            f64::MAX.mul_add(0.75, -f64::MAX * 0.75)
         );
     }
 

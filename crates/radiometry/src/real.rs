@@ -138,10 +138,11 @@ impl Real for f64 {
         // about one ulp, without the library call of `hypot`.
         let (a, b) = (self.abs(), other.abs());
         let larger = a.max(b);
-        let (scale, unscale) = if larger > 2f64.powi(500) {
-            (2f64.powi(-600), 2f64.powi(600))
-        } else if larger < 2f64.powi(-500) {
-            (2f64.powi(600), 2f64.powi(-600))
+        use crate::compensated::power_of_two;
+        let (scale, unscale) = if larger > power_of_two(500) {
+            (power_of_two(-600), power_of_two(600))
+        } else if larger < power_of_two(-500) {
+            (power_of_two(600), power_of_two(-600))
         } else {
             (1.0, 1.0)
         };

@@ -144,7 +144,7 @@ impl<T: Real> Incidence<T> {
     /// `n_t² cos²θ_t = n_t² − n_i² sin²θ_i`, computed without cancellation,
     /// in the tier's wide precision ([`Real::Wide`]). Negative exactly when
     /// Snell's law has no real solution (total internal reflection).
-    #[inline]
+    #[inline(always)]
     pub(crate) fn discriminant(&self) -> T::Wide {
         let exact = T::PRODUCTS_EXACT_IN_WIDE;
         let (n_t, n_i) = (self.n_t.widen(), self.n_i.widen());
@@ -163,7 +163,7 @@ impl<T: Real> Incidence<T> {
     /// this, the exact Fresnel law, Schlick's working and
     /// [`crate::specular::refract`] all take `cos θ_t` (or its absence)
     /// from it.
-    #[inline]
+    #[inline(always)]
     pub fn cos_transmitted(&self) -> Option<T> {
         if self.n_i == self.n_t {
             // Index-matched: the light goes straight on, θ_t = θ_i exactly
@@ -179,7 +179,7 @@ impl<T: Real> Incidence<T> {
     /// Snell's decision with the discriminant it is made from, for the
     /// exact Fresnel law, which needs the discriminant itself. Index-matched
     /// interfaces are [`Incidence::cos_transmitted`]'s to special-case.
-    #[inline]
+    #[inline(always)]
     pub(crate) fn snell(&self) -> Snell<T::Wide> {
         let discriminant = self.discriminant();
         Snell {
@@ -191,7 +191,7 @@ impl<T: Real> Incidence<T> {
 
     /// `cos θ_t` from `s = √d = n_t cos θ_t` in the wide precision, clamped
     /// against rounding and rounded once to the tier.
-    #[inline]
+    #[inline(always)]
     pub(crate) fn cos_from_root(&self, s: T::Wide) -> T {
         T::narrow(clamp_unit(s / self.n_t.widen()))
     }

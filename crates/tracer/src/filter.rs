@@ -37,7 +37,7 @@ impl Strata {
         while rows * rows > spp {
             rows -= 1;
         }
-        while spp % rows != 0 {
+        while !spp.is_multiple_of(rows) {
             rows -= 1;
         }
         Strata {

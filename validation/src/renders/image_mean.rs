@@ -77,7 +77,7 @@ pub(super) fn judge(
             .unwrap_or(f64::INFINITY);
         if b.mean.abs() > 0.0 {
             let shift = (critical * standard_error + tolerance(b.mean)) / b.mean.abs();
-            if least_shift.map_or(true, |(s, _)| shift < s) {
+            if least_shift.is_none_or(|(s, _)| shift < s) {
                 least_shift = Some((shift, channel));
             }
         }
@@ -95,7 +95,7 @@ pub(super) fn judge(
                 samples: ours.samples,
             }
             .channel(c, kept);
-            statistics::welch(moved, b).map_or(true, |w| !differs(moved.mean, b.mean, w, threshold))
+            statistics::welch(moved, b).is_none_or(|w| !differs(moved.mean, b.mean, w, threshold))
         });
         if agrees_moved {
             check.find(format!(

@@ -167,7 +167,7 @@ impl<T: Real> Conductor<T> {
     }
 
     /// Unpolarised reflectance at `cos_i`, `(R_s + R_p) / 2`.
-    #[inline]
+    #[inline(always)]
     pub fn reflectance(&self, cos_i: T) -> T {
         self.polarized(cos_i).reflectance()
     }

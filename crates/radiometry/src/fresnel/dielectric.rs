@@ -128,7 +128,7 @@ impl<T: Real> DielectricFresnel<T> {
 /// let tir = dielectric_polarized(-0.5_f64, 1.5);
 /// assert!(tir.is_total_internal_reflection() && tir.incidence.from_inside);
 /// ```
-#[inline]
+#[inline(always)]
 pub fn dielectric_polarized<T: Real>(cos_i: T, eta: T) -> DielectricFresnel<T> {
     // The law is evaluated whatever the input and the answer for input that
     // describes no interface chosen after it: no branch, so a loop over
@@ -151,7 +151,7 @@ pub fn dielectric_polarized<T: Real>(cos_i: T, eta: T) -> DielectricFresnel<T> {
 /// let incidence = Incidence::resolve(-0.9_f64, 1.5).unwrap();
 /// assert_eq!(dielectric_resolved(&incidence), dielectric_polarized(-0.9, 1.5));
 /// ```
-#[inline]
+#[inline(always)]
 pub fn dielectric_resolved<T: Real>(incidence: &Incidence<T>) -> DielectricFresnel<T> {
     // Evaluated in the tier's wide precision and rounded once at the end:
     // for `f32`, whose products are exact in `f64`, that leaves one rounding
@@ -217,7 +217,7 @@ pub fn dielectric_resolved<T: Real>(incidence: &Incidence<T>) -> DielectricFresn
 /// assert!((dielectric(-1.0_f64, 1.5) - 0.04).abs() < 1e-16); // symmetric at normal incidence
 /// assert_eq!(dielectric(0.3_f64, 1.0), 0.0); // index-matched: nothing reflects
 /// ```
-#[inline]
+#[inline(always)]
 pub fn dielectric<T: Real>(cos_i: T, eta: T) -> T {
     dielectric_polarized(cos_i, eta).reflectance()
 }

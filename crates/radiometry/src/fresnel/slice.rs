@@ -97,7 +97,7 @@ pub fn conductor_slice<T: Real>(cos_i: &[T], n: T, kappa: T, out: &mut [T]) {
 ///
 /// If the two slices differ in length.
 pub fn dielectric_slice_on<T: Real>(lanes: Lanes, cos_i: &[T], eta: T, out: &mut [T]) {
-    dispatch(lanes, cos_i, out, |c| super::dielectric(c, eta));
+    dispatch(lanes, cos_i, out, &Dielectric(eta));
 }
 
 /// [`conductor_slice`] on the given width, or on the baseline where this
@@ -107,11 +107,47 @@ pub fn dielectric_slice_on<T: Real>(lanes: Lanes, cos_i: &[T], eta: T, out: &mut
 ///
 /// If the two slices differ in length.
 pub fn conductor_slice_on<T: Real>(lanes: Lanes, cos_i: &[T], n: T, kappa: T, out: &mut [T]) {
-    dispatch(lanes, cos_i, out, |c| super::conductor(c, n, kappa));
+    match super::Conductor::new(n, kappa) {
+        // The material's constants once per slice, as for a surface.
+        Some(metal) => dispatch(lanes, cos_i, out, &metal),
+        None => dispatch(lanes, cos_i, out, &Undefined),
+    }
+}
+
+/// A law of one material at a cosine, called in a loop: a trait rather
+/// than a closure, so that its body is inlined into every width's loop.
+trait AtCosine<T>: Sync {
+    fn at(&self, cos_i: T) -> T;
+}
+
+struct Dielectric<T>(T);
+
+impl<T: Real> AtCosine<T> for Dielectric<T> {
+    #[inline(always)]
+    fn at(&self, cos_i: T) -> T {
+        super::dielectric(cos_i, self.0)
+    }
+}
+
+impl<T: Real> AtCosine<T> for super::Conductor<T> {
+    #[inline(always)]
+    fn at(&self, cos_i: T) -> T {
+        self.reflectance(cos_i)
+    }
+}
+
+/// Input that describes no material: NaN at every cosine.
+struct Undefined;
+
+impl<T: Real> AtCosine<T> for Undefined {
+    #[inline(always)]
+    fn at(&self, _: T) -> T {
+        T::nan()
+    }
 }
 
 #[inline(always)]
-fn dispatch<T: Real>(lanes: Lanes, cos_i: &[T], out: &mut [T], law: impl Fn(T) -> T) {
+fn dispatch<T: Real>(lanes: Lanes, cos_i: &[T], out: &mut [T], law: &impl AtCosine<T>) {
     assert_eq!(
         cos_i.len(),
         out.len(),
@@ -127,9 +163,9 @@ fn dispatch<T: Real>(lanes: Lanes, cos_i: &[T], out: &mut [T], law: impl Fn(T) -
 }
 
 #[inline(always)]
-fn each<T: Real>(cos_i: &[T], out: &mut [T], law: impl Fn(T) -> T) {
+fn each<T: Real>(cos_i: &[T], out: &mut [T], law: &impl AtCosine<T>) {
     for (r, &c) in out.iter_mut().zip(cos_i) {
-        *r = law(c);
+        *r = law.at(c);
     }
 }
 
@@ -138,22 +174,22 @@ fn each<T: Real>(cos_i: &[T], out: &mut [T], law: impl Fn(T) -> T) {
 #[cfg(target_arch = "x86_64")]
 #[allow(unsafe_code)]
 mod wide {
-    use super::{each, Lanes};
+    use super::{each, AtCosine, Lanes};
     use crate::Real;
 
     #[target_feature(enable = "avx2")]
-    fn each_avx2<T: Real>(cos_i: &[T], out: &mut [T], law: impl Fn(T) -> T) {
+    fn each_avx2<T: Real>(cos_i: &[T], out: &mut [T], law: &impl AtCosine<T>) {
         each(cos_i, out, law);
     }
 
     #[target_feature(enable = "avx512f,avx512dq,avx512vl")]
-    fn each_avx512<T: Real>(cos_i: &[T], out: &mut [T], law: impl Fn(T) -> T) {
+    fn each_avx512<T: Real>(cos_i: &[T], out: &mut [T], law: &impl AtCosine<T>) {
         each(cos_i, out, law);
     }
 
     /// The loop on AVX2 where this CPU has it, on the baseline otherwise.
     #[inline(always)]
-    pub(super) fn avx2<T: Real>(cos_i: &[T], out: &mut [T], law: impl Fn(T) -> T) {
+    pub(super) fn avx2<T: Real>(cos_i: &[T], out: &mut [T], law: &impl AtCosine<T>) {
         if Lanes::Avx2.available() {
             // SAFETY: this CPU runs AVX2, checked on the line above.
             unsafe { each_avx2(cos_i, out, law) }
@@ -164,7 +200,7 @@ mod wide {
 
     /// The loop on AVX-512 where this CPU has it, on the baseline otherwise.
     #[inline(always)]
-    pub(super) fn avx512<T: Real>(cos_i: &[T], out: &mut [T], law: impl Fn(T) -> T) {
+    pub(super) fn avx512<T: Real>(cos_i: &[T], out: &mut [T], law: &impl AtCosine<T>) {
         if Lanes::Avx512.available() {
             // SAFETY: this CPU runs AVX-512 F, DQ and VL, checked on the
             // line above.
