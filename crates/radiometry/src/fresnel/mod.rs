@@ -63,13 +63,16 @@ pub use slice::{
 /// ```
 #[inline]
 pub fn f0<T: Real>(n: T, kappa: T) -> T {
-    if !(n > T::zero() && kappa >= T::zero()) {
-        return T::nan();
-    }
     let k2 = kappa * kappa;
     let below = (n - T::one()) * (n - T::one()) + k2;
     let above = (n + T::one()) * (n + T::one()) + k2;
-    below / above
+    // Chosen after the computation, not branched around it, so that loops
+    // over the laws that use it vectorise.
+    if n > T::zero() && kappa >= T::zero() {
+        below / above
+    } else {
+        T::nan()
+    }
 }
 
 /// [`f0`] per channel.

@@ -134,9 +134,17 @@ impl<T: Real> SchlickDielectric<T> {
 /// `cos θ_t` it is as close as from the outside.
 ///
 /// This is [`schlick_dielectric_working`]'s reflectance.
-#[inline]
+#[inline(always)]
 pub fn schlick_dielectric<T: Real>(cos_i: T, eta: T) -> T {
-    schlick_dielectric_working(cos_i, eta).map_or(T::nan(), |s| s.reflectance)
+    // Evaluated whatever the input, NaN chosen after it for input that
+    // describes no interface: no branch, so loops vectorise.
+    let (incidence, valid) = Incidence::resolve_unchecked(cos_i, eta);
+    let reflectance = schlick_dielectric_resolved(&incidence).reflectance;
+    if valid {
+        reflectance
+    } else {
+        T::nan()
+    }
 }
 
 /// [`schlick_dielectric`] with its working, for a signed `cos_i` and
@@ -162,6 +170,7 @@ pub fn schlick_dielectric_working<T: Real>(cos_i: T, eta: T) -> Option<SchlickDi
 /// [`schlick_dielectric_working`] at an incidence already resolved, for a
 /// caller that evaluates several laws at one incidence and decides its side
 /// once.
+#[inline(always)]
 pub fn schlick_dielectric_resolved<T: Real>(incidence: &Incidence<T>) -> SchlickDielectric<T> {
     let eta = if incidence.from_inside {
         incidence.n_i
@@ -170,13 +179,17 @@ pub fn schlick_dielectric_resolved<T: Real>(incidence: &Incidence<T>) -> Schlick
     };
     // F0 is the same from both sides: ((η−1)/(η+1))² = ((1/η−1)/(1/η+1))².
     let f0 = f0(eta, T::zero());
+    // Snell's law is decided whichever cosine is taken and the outcome chosen
+    // after it, by value, so that a loop over many cosines vectorises; the
+    // same decision and cosine as `Incidence::cos_transmitted`.
+    let snell = incidence.snell();
+    let cos_t = incidence.cos_from_root(snell.discriminant.max(T::Wide::zero()).sqrt());
     let (cosine, reflectance) = if incidence.n_t >= incidence.n_i {
         (SchlickCosine::Incident, schlick(incidence.abs_cos_i, f0))
+    } else if snell.transmits {
+        (SchlickCosine::Transmitted(cos_t), schlick(cos_t, f0))
     } else {
-        match incidence.cos_transmitted() {
-            Some(cos_t) => (SchlickCosine::Transmitted(cos_t), schlick(cos_t, f0)),
-            None => (SchlickCosine::TotalInternalReflection, T::one()),
-        }
+        (SchlickCosine::TotalInternalReflection, T::one())
     };
     SchlickDielectric {
         reflectance,
