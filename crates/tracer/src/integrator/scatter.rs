@@ -157,7 +157,13 @@ impl Tracer<'_> {
         exact: &[fresnel::Conductor<f32>; 3],
     ) -> Vec3 {
         Vec3::from_array(match self.settings.fresnel {
-            FresnelModel::Exact => exact.map(|law| law.reflectance(cos_i)),
+            // Written out rather than mapped: the three channels inline side
+            // by side, where the compiler evaluates them together.
+            FresnelModel::Exact => [
+                exact[0].reflectance(cos_i),
+                exact[1].reflectance(cos_i),
+                exact[2].reflectance(cos_i),
+            ],
             FresnelModel::Schlick => fresnel::schlick_rgb(cos_i, fresnel::f0_rgb(n, kappa)),
             FresnelModel::Course => {
                 let f0 = fresnel::f0_rgb(n, kappa);
