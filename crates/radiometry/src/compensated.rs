@@ -363,17 +363,22 @@ pub(crate) fn brewster_from<T: Real>(a: TwoPart<T>, c: T, exact: bool) -> T {
 mod tests {
     use super::*;
 
-    #[test]
-    fn dekkers_product_error_is_the_fused_multiply_adds() {
-        // Both are exact, so they agree bit for bit: over 2^±450 (products
-        // far from underflow), and for products of widened f32s (error 0).
-        let mut state = 0x9e37_79b9_7f4a_7c15_u64;
-        let mut next = || {
+    /// A xorshift generator of 64-bit words from `state`: reproducible
+    /// random operands.
+    fn xorshift(mut state: u64) -> impl FnMut() -> u64 {
+        move || {
             state ^= state << 13;
             state ^= state >> 7;
             state ^= state << 17;
             state
-        };
+        }
+    }
+
+    #[test]
+    fn dekkers_product_error_is_the_fused_multiply_adds() {
+        // Both are exact, so they agree bit for bit: over 2^±450 (products
+        // far from underflow), and for products of widened f32s (error 0).
+        let mut next = xorshift(0x9e37_79b9_7f4a_7c15);
         for _ in 0..100_000 {
             let magnitude = |bits: u64| 2f64.powi((bits % 900) as i32 - 450);
             let (ra, rb) = (next(), next());
@@ -402,13 +407,7 @@ mod tests {
     fn scaled_dekker_error_is_the_fused_multiply_adds_for_huge_operands() {
         // Operands from 2^990 to the largest double, against factors whose
         // product stays finite: the scaled split must give the exact error.
-        let mut state = 0x2545_f491_4f6c_dd1d_u64;
-        let mut next = || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            state
-        };
+        let mut next = xorshift(0x2545_f491_4f6c_dd1d);
         let mut scaled = 0;
         for _ in 0..100_000 {
             let (ra, rb) = (next(), next());

@@ -174,7 +174,9 @@ pub fn dielectric_resolved<T: Real>(incidence: &Incidence<T>) -> DielectricFresn
     let four_c = T::Wide::lit(4.0) * c;
 
     // (a + s)² as a² + 2as + s² with s² = d exactly as computed: at grazing
-    // incidence this makes r_s = (n_i² − n_t²)/d = −1 to the last bit.
+    // incidence this makes r_s = (n_i² − n_t²)/d = −1 to the last bit (in
+    // `f32` after its final rounding, the few `f64` roundings of
+    // `wide_quotients` being far below half an `f32` ulp).
     let ws2 = a * a + (a + a) * s + d;
 
     // (n_t² c + n_i s)² likewise with n_i² d for (n_i s)²: exact at grazing.
