@@ -24,6 +24,8 @@ pub mod quiz;
 pub mod record;
 mod render;
 #[cfg(feature = "harness")]
+pub mod tradeoff;
+#[cfg(feature = "harness")]
 mod validate;
 
 pub use error::{Error, ErrorKind};
@@ -168,6 +170,9 @@ enum Command {
     /// Check a render of a scene (PNG or PFM) against the tracer's reference.
     #[cfg(feature = "harness")]
     Compare(compare::CompareArgs),
+    /// Measure what each shortcut a scene allows costs in accuracy and buys in time.
+    #[cfg(feature = "harness")]
+    Tradeoff(tradeoff::TradeoffArgs),
 }
 
 /// The record of a command that evaluates one law with its flags; `None`
@@ -229,6 +234,8 @@ fn run(command: &Command, ui: &Ui) -> error::Result<ExitCode> {
         Command::Validate(args) => return validate::run(args, ui),
         #[cfg(feature = "harness")]
         Command::Compare(args) => return compare::run(args, ui),
+        #[cfg(feature = "harness")]
+        Command::Tradeoff(args) => tradeoff::run(args, ui)?,
         // Evaluated by `law_record` above.
         Command::Fresnel(_) | Command::Refract(_) | Command::Reflect(_) | Command::Shade(_) => {}
     }

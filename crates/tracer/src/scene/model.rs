@@ -121,4 +121,88 @@ impl Scene {
             ..self.clone()
         }
     }
+
+    /// The scene with every `course_rough` material made `lambert` of
+    /// albedo `kd`, each channel at most 1: the suite's energy-conserving
+    /// stand-in for the course's material wherever a physical answer is
+    /// measured (the full-light cross-check, `optics tradeoff --lambert`).
+    /// The course's `kd` is in 1/sr, so its own diffuse albedo is `π kd`.
+    pub fn course_rough_as_lambert(&self) -> Scene {
+        let materials = self
+            .materials
+            .iter()
+            .map(|&m| match m {
+                Material::CourseRough { diffuse, .. } => Material::Lambert {
+                    albedo: diffuse.min(Vec3::ONE),
+                },
+                other => other,
+            })
+            .collect();
+        Scene {
+            materials,
+            ..self.clone()
+        }
+    }
+
+    /// The most light a rough material reflects for what it receives,
+    /// where that is more than 1: the course material's diffuse albedo
+    /// `π kd` (its largest channel) and the material's name; `None` where
+    /// every rough material conserves energy in its diffuse part.
+    pub fn diffuse_gain(&self) -> Option<(f32, &str)> {
+        self.materials
+            .iter()
+            .zip(&self.material_names)
+            .filter_map(|(m, name)| match m {
+                Material::CourseRough { diffuse, .. } => {
+                    Some((std::f32::consts::PI * diffuse.max_element(), name.as_str()))
+                }
+                _ => None,
+            })
+            .filter(|&(gain, _)| gain > 1.0)
+            .max_by(|a, b| a.0.total_cmp(&b.0))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Material;
+    use glam::Vec3;
+
+    fn two_spheres() -> super::Scene {
+        crate::scene::parse(
+            r#"{ "version": 1, "image": { "width": 4, "height": 3 },
+                 "camera": { "type": "course_pinhole" },
+                 "materials": {
+                   "green": { "type": "course_rough", "ambient": [0, 0, 0],
+                              "diffuse": [0.1, 0.8, 0.3], "specular": [1, 1, 1], "shininess": 10 },
+                   "white": { "type": "lambert", "albedo": [0.5, 0.5, 0.5] } },
+                 "objects": [
+                   { "type": "sphere", "center": [0, 0, 4], "radius": 1, "material": "green" },
+                   { "type": "sphere", "center": [3, 0, 4], "radius": 1, "material": "white" } ] }"#,
+        )
+        .unwrap()
+    }
+
+    /// π · 0.8 = 2.513: the course material reflects 2.5 times the light
+    /// it receives in its diffuse part alone; Lambert never more than 1.
+    #[test]
+    fn the_course_materials_diffuse_albedo_is_pi_kd() {
+        let scene = two_spheres();
+        let (gain, name) = scene.diffuse_gain().unwrap();
+        assert!((gain - 2.513_274).abs() < 1e-5, "{gain}");
+        assert_eq!(name, "green");
+        assert_eq!(scene.course_rough_as_lambert().diffuse_gain(), None);
+    }
+
+    #[test]
+    fn the_lambert_stand_in_has_albedo_kd_and_leaves_the_rest() {
+        let scene = two_spheres().course_rough_as_lambert();
+        assert_eq!(
+            scene.materials[0],
+            Material::Lambert {
+                albedo: Vec3::new(0.1, 0.8, 0.3)
+            }
+        );
+        assert_eq!(scene.materials[1], two_spheres().materials[1]);
+    }
 }

@@ -1,0 +1,468 @@
+//! `optics tradeoff`: what each shortcut a scene allows costs in accuracy
+//! and buys in time, measured on whole renders against a converged ground
+//! truth with all the light, by fixed error measures ([`measure`]).
+//!
+//! The sweep ([`sweep::plan`]) varies each setting that applies to the
+//! scene alone from the scene's own and walks `003`'s ladder of
+//! integrators; each point is rendered `--repeats` times (Monte Carlo
+//! points with a new seed each time, so that variance and bias separate),
+//! timed by the median, and held against the truth. The Pareto front per
+//! measure ([`pareto::front`]) says which settings are worth their time.
+
+pub mod measure;
+pub mod pareto;
+mod report;
+pub mod sweep;
+mod truth;
+
+use std::path::{Path, PathBuf};
+
+use serde::Serialize;
+use tracer::job::{Overrides, RenderJob};
+use tracer::render::{Image, Rendered};
+use tracer::scene::{Settings, MAX_IMAGE_SIDE, MAX_SPP};
+
+use crate::error::{self, ErrorKind};
+use crate::lang::say;
+use crate::record::{Answer, Record};
+use crate::Ui;
+use measure::{Errors, Mask};
+
+/// The JSON document's schema name; its version is [`SCHEMA_VERSION`].
+pub const SCHEMA: &str = "optics.tradeoff";
+/// The version of [`SCHEMA`]: raised when a field changes meaning or goes.
+pub const SCHEMA_VERSION: u32 = 1;
+
+#[derive(clap::Args, Debug, Serialize)]
+#[command(after_help = "Examples:
+  optics tradeoff crates/tracer/scenes/kaleidoscope_lit.json --width 160 --height 120
+  optics --json tradeoff crates/tracer/scenes/gold_spheres.json --repeats 5 --out /tmp/gold
+
+Writes SCENE.json (schema optics.tradeoff), SCENE.md (the table) and
+SCENE-pareto.png (time against each error, log-log) into --out, and caches
+the ground truth under --out/truth. See docs/tradeoffs.md for the measures.")]
+pub struct TradeoffArgs {
+    /// The scene file (JSON, see docs/scene-schema.md).
+    pub scene: PathBuf,
+    /// Image width in pixels (default: the scene's); the camera keeps its view.
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=MAX_IMAGE_SIDE as i64))]
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub width: Option<u32>,
+    /// Image height in pixels (default: the scene's).
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=MAX_IMAGE_SIDE as i64))]
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub height: Option<u32>,
+    /// Samples per pixel of the Monte Carlo integrators on the ladder when
+    /// the scene's own integrator is deterministic.
+    #[arg(long, default_value_t = 16, value_parser = clap::value_parser!(u32).range(1..=MAX_SPP as i64))]
+    pub spp: u32,
+    /// Samples per pixel of the ground truth (two halves of half as many).
+    #[arg(long, default_value_t = 1024, value_parser = clap::value_parser!(u32).range(2..=MAX_SPP as i64))]
+    pub truth_spp: u32,
+    /// Renders per setting: the time is their median; Monte Carlo settings
+    /// take a new seed each, and two or more split variance from bias.
+    #[arg(long, default_value_t = 3, value_parser = clap::value_parser!(u32).range(1..=100))]
+    pub repeats: u32,
+    /// Render each setting until its renders add up to this many seconds
+    /// (at most 64 renders), for a steadier median.
+    #[arg(long, default_value_t = 0.5, value_parser = seconds_flag)]
+    pub min_seconds: f64,
+    /// Directory for the results and the truth's cache (created if missing).
+    #[arg(long, short, default_value = "validation/out/tradeoff")]
+    pub out: PathBuf,
+    /// Measure the scene with its course_rough materials made Lambert of
+    /// albedo kd, the suite's energy-conserving stand-in (the course's kd is
+    /// in 1/sr: its diffuse albedo is π kd, up to 2.5 in the course scenes,
+    /// and light multiplies between surfaces that see each other).
+    #[arg(long)]
+    pub lambert: bool,
+    /// Render the ground truth again even when a cached one matches.
+    #[arg(long)]
+    pub fresh: bool,
+    /// Do not draw the Pareto plot (it needs .venv's matplotlib).
+    #[arg(long)]
+    pub no_plot: bool,
+    /// Worker threads (default: all cores).
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1024))]
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub threads: Option<u32>,
+}
+
+/// One point of the sweep, measured.
+#[derive(Clone, Debug, Serialize)]
+pub struct Measured {
+    /// The point.
+    #[serde(flatten)]
+    pub point: sweep::Point,
+    /// The render times, s, in the order taken.
+    pub seconds: Vec<f64>,
+    /// Their median, s.
+    pub seconds_median: f64,
+    /// Rays cast by one render (the mean over the repeats): the cost that
+    /// does not depend on the machine.
+    pub rays: f64,
+    /// The fixed measures.
+    pub errors: Errors,
+    /// 1 / (relative variance × median seconds), Monte Carlo points only.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub efficiency: Option<f64>,
+    /// The measures on whose Pareto front (time against that measure) the
+    /// point lies.
+    pub pareto: Vec<&'static str>,
+}
+
+/// The most renders of one setting that `--min-seconds` asks for.
+const MAX_RENDERS: usize = 64;
+
+/// `--min-seconds`: a finite number of seconds, 0 to 60.
+fn seconds_flag(text: &str) -> Result<f64, String> {
+    match text.parse::<f64>() {
+        Ok(s) if (0.0..=60.0).contains(&s) => Ok(s),
+        Ok(s) => Err(format!("{s} is not between 0 and 60 seconds")),
+        Err(e) => Err(e.to_string()),
+    }
+}
+
+/// A truth whose relative noise is above this is said to be unconverged.
+pub const UNCONVERGED: f64 = 0.01;
+
+/// The measures a front is drawn for, by their JSON names.
+pub const MEASURES: [&str; 3] = ["rel_rmse", "delta_e_mean", "delta_e_p99"];
+
+impl Measured {
+    /// The measure named `name` (one of [`MEASURES`]).
+    pub fn measure(&self, name: &str) -> f64 {
+        match name {
+            "rel_rmse" => self.errors.rel_rmse,
+            "delta_e_mean" => self.errors.delta_e_mean,
+            "delta_e_p99" => self.errors.delta_e_p99,
+            _ => f64::NAN,
+        }
+    }
+}
+
+/// The whole sweep, as written to JSON.
+#[derive(Debug, Serialize)]
+pub struct Sweep {
+    /// [`SCHEMA`].
+    pub schema: &'static str,
+    /// [`SCHEMA_VERSION`].
+    pub version: u32,
+    /// The scene file, as given.
+    pub scene: String,
+    /// Whether course_rough was measured as Lambert (`--lambert`).
+    pub lambert: bool,
+    /// The course material's diffuse albedo `π kd` where it is above 1.
+    pub diffuse_gain: Option<f32>,
+    /// Image size, pixels.
+    pub width: u32,
+    /// Image size, pixels.
+    pub height: u32,
+    /// Pixels whose centre sees an object: those the measures cover.
+    pub surface_pixels: usize,
+    /// The machine and date the times were taken on.
+    pub machine: String,
+    /// `YYYY-MM-DD`, UTC.
+    pub date: String,
+    /// The load average as the sweep ended.
+    pub load: Option<String>,
+    /// The command that made it.
+    pub command: String,
+    /// The ground truth.
+    pub truth: truth::TruthRecord,
+    /// Every point, the scene's own settings first.
+    pub points: Vec<Measured>,
+    /// What was not swept, and why.
+    pub skipped: Vec<sweep::Skipped>,
+}
+
+pub fn run(args: &TradeoffArgs, ui: &Ui) -> error::Result<()> {
+    let lang = ui.lang;
+    let overrides = Overrides {
+        width: args.width,
+        height: args.height,
+        allow_expensive: true,
+        ..Overrides::default()
+    };
+    let scene_error = |error| ErrorKind::Scene {
+        file: args.scene.clone(),
+        error,
+    };
+    let scene = tracer::scene::load(&args.scene).map_err(scene_error)?;
+    let scene = if args.lambert {
+        scene.course_rough_as_lambert()
+    } else {
+        scene
+    };
+    let gain = scene.diffuse_gain().map(|(g, name)| (g, name.to_owned()));
+    let job = RenderJob::new(scene, &overrides).map_err(scene_error)?;
+    let stem = args
+        .scene
+        .file_stem()
+        .map_or_else(|| "scene".to_owned(), |s| s.to_string_lossy().into_owned());
+    let stem = if args.lambert {
+        format!("{stem}-lambert")
+    } else {
+        stem
+    };
+    let files = Files::new(&args.out, &stem);
+    files.prepare()?;
+    let threads = args.threads.map(|t| t as usize);
+    let mask = Mask::from_hits(&job.first_hits());
+    let plan = sweep::plan(&job, args.spp);
+
+    let bar = crate::render::progress_bar(plan.points.len() as u64 + 1).inspect(|bar| {
+        bar.set_style(
+            indicatif::ProgressStyle::with_template(
+                "{bar:40} {pos}/{len} settings, {eta} left: {msg}",
+            )
+            .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+        );
+        bar.set_message("ground truth");
+    });
+    let tick = |message: &str| {
+        if let Some(bar) = &bar {
+            bar.inc(1);
+            bar.set_message(message.to_owned());
+        }
+    };
+    let truth_dir = files.truth_dir();
+    let request = truth::Request {
+        scene_file: &args.scene,
+        spp: args.truth_spp,
+        lambert: args.lambert,
+        dir: &truth_dir,
+        fresh: args.fresh,
+    };
+    let (truth, truth_record) = truth::obtain(&job, &request, &mask, threads)?;
+
+    let mut points = Vec::with_capacity(plan.points.len());
+    for point in plan.points {
+        tick(&point.label);
+        let mut images: Vec<Image> = Vec::new();
+        let mut seconds = Vec::new();
+        let mut rays = 0.0;
+        // At least --repeats renders, and on until they add up to
+        // --min-seconds, so that a fast setting's median is not one tick
+        // of the clock.
+        while seconds.len() < args.repeats as usize
+            || (seconds.iter().sum::<f64>() < args.min_seconds && seconds.len() < MAX_RENDERS)
+        {
+            let settings = Settings {
+                seed: point.settings.seed.wrapping_add(seconds.len() as u64),
+                ..point.settings
+            };
+            let rendered = render(&job, &args.scene, settings, threads)?;
+            seconds.push(rendered.elapsed.as_secs_f64());
+            rays += rendered.rays.total() as f64;
+            // A deterministic setting renders the same image each time.
+            if settings.integrator.samples() || images.is_empty() {
+                images.push(rendered.image);
+            }
+        }
+        let rays = rays / seconds.len() as f64;
+        let errors = measure::errors(&images, &truth, &mask);
+        let seconds_median = median(&seconds);
+        let efficiency = errors
+            .split
+            .filter(|_| point.settings.integrator.samples())
+            .map(|split| 1.0 / (split.variance * seconds_median));
+        points.push(Measured {
+            point,
+            seconds,
+            seconds_median,
+            rays,
+            errors,
+            efficiency,
+            pareto: Vec::new(),
+        });
+    }
+    if let Some(bar) = &bar {
+        bar.finish_and_clear();
+    }
+    mark_fronts(&mut points);
+
+    let sweep = Sweep {
+        schema: SCHEMA,
+        version: SCHEMA_VERSION,
+        scene: args.scene.display().to_string(),
+        lambert: args.lambert,
+        diffuse_gain: gain.as_ref().map(|g| g.0),
+        width: job.scene().width,
+        height: job.scene().height,
+        surface_pixels: mask.count(),
+        machine: results::machine(),
+        date: results::today(),
+        load: results::load(),
+        command: command_line(args),
+        truth: truth_record,
+        points,
+        skipped: plan.skipped,
+    };
+    let json = serde_json::to_string_pretty(&sweep).map_err(ErrorKind::Encode)? + "\n";
+    let markdown = report::markdown(&sweep, &stem);
+    tracer::output::write_all_atomically(&[
+        (files.json.as_path(), json.as_bytes()),
+        (files.markdown.as_path(), markdown.as_bytes()),
+    ])
+    .map_err(ErrorKind::Output)?;
+    let plotted = if args.no_plot {
+        None
+    } else {
+        Some(report::plot(&files.json, &files.plot)?)
+    };
+
+    let mut record = Record::new("tradeoff", String::new(), "");
+    let mut written = vec![
+        files.json.display().to_string().into(),
+        files.markdown.display().to_string().into(),
+    ];
+    if plotted.is_some() {
+        written.push(files.plot.display().to_string().into());
+    }
+    record
+        .inputs_from(args)
+        .set_answer(Answer::List(written), None);
+    for line in report::table(&sweep, lang) {
+        record.step(|| line);
+    }
+    record.step(|| {
+        say!(
+            lang,
+            "written: {}, {}{}",
+            "kiírva: {}, {}{}",
+            files.json.display(),
+            files.markdown.display(),
+            plotted.map_or_else(String::new, |p| format!(", {}", p.display()))
+        )
+    });
+    if let Some((gain, name)) = &gain {
+        record.note(say!(
+            lang,
+            "the material {} reflects up to {:.2} times the light it receives (π kd; the course's kd is in 1/sr): where such surfaces see each other, light multiplies and no truth converges; --lambert measures the scene with the suite's physical stand-in",
+            "a(z) {} anyag a kapott fény legfeljebb {:.2}-szeresét veri vissza (π kd; a kurzus kd-je 1/sr-ben értendő): ahol ilyen felületek látják egymást, a fény sokszorozódik, és nincs konvergens referencia; a --lambert a csomag fizikai helyettesítőjével mér",
+            name,
+            gain
+        ));
+    }
+    if sweep.truth.noise_relative > UNCONVERGED {
+        record.note(say!(
+            lang,
+            "the truth is not converged: its own noise is {:.2} of its energy (above {}), so the relative RMSE and the ΔE of every setting are read through that noise; raise --truth-spp",
+            "a referencia nem konvergált: saját zaja energiájának {:.2} része ({} felett), így minden beállítás relatív RMSE-je és ΔE-je e zajon át látszik; növelje a --truth-spp értékét",
+            sweep.truth.noise_relative,
+            UNCONVERGED
+        ));
+    }
+    for skipped in &sweep.skipped {
+        record.note(format!("not swept: {}: {}", skipped.axis, skipped.why));
+    }
+    record.detail("sweep", &sweep);
+    ui.show_steps(&record)
+}
+
+/// Renders `job`'s scene (read from `file`) with `settings`.
+pub(crate) fn render(
+    job: &RenderJob,
+    file: &Path,
+    settings: Settings,
+    threads: Option<usize>,
+) -> error::Result<Rendered> {
+    let job = RenderJob::with_settings(job.scene().clone(), settings).map_err(|error| {
+        ErrorKind::Scene {
+            file: file.to_owned(),
+            error,
+        }
+    })?;
+    Ok(job.render(threads, &|_| {})?)
+}
+
+/// Marks each point with the fronts it lies on.
+fn mark_fronts(points: &mut [Measured]) {
+    for name in MEASURES {
+        let xy: Vec<(f64, f64)> = points
+            .iter()
+            .map(|p| (p.seconds_median, p.measure(name)))
+            .collect();
+        for i in pareto::front(&xy) {
+            points[i].pareto.push(name);
+        }
+    }
+}
+
+/// The median of `values` (the mean of the middle two for an even count).
+fn median(values: &[f64]) -> f64 {
+    let mut sorted = values.to_vec();
+    sorted.sort_by(f64::total_cmp);
+    let n = sorted.len();
+    match n {
+        0 => f64::NAN,
+        _ if n % 2 == 1 => sorted[n / 2],
+        _ => 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]),
+    }
+}
+
+/// The command line that reproduces the sweep.
+fn command_line(args: &TradeoffArgs) -> String {
+    let mut words = vec![format!("optics tradeoff {}", args.scene.display())];
+    if let Some(w) = args.width {
+        words.push(format!("--width {w}"));
+    }
+    if let Some(h) = args.height {
+        words.push(format!("--height {h}"));
+    }
+    if args.lambert {
+        words.push("--lambert".to_owned());
+    }
+    words.push(format!(
+        "--spp {} --truth-spp {} --repeats {} --min-seconds {}",
+        args.spp, args.truth_spp, args.repeats, args.min_seconds
+    ));
+    words.join(" ")
+}
+
+/// Where a sweep writes.
+struct Files {
+    dir: PathBuf,
+    json: PathBuf,
+    markdown: PathBuf,
+    plot: PathBuf,
+}
+
+impl Files {
+    fn new(dir: &Path, stem: &str) -> Self {
+        Files {
+            dir: dir.to_owned(),
+            json: dir.join(format!("{stem}.json")),
+            markdown: dir.join(format!("{stem}.md")),
+            plot: dir.join(format!("{stem}-pareto.png")),
+        }
+    }
+
+    fn truth_dir(&self) -> PathBuf {
+        self.dir.join("truth")
+    }
+
+    /// Creates the directories, before any render is spent.
+    fn prepare(&self) -> error::Result<()> {
+        std::fs::create_dir_all(self.truth_dir()).map_err(|source| {
+            ErrorKind::Output(tracer::output::OutputError::Io {
+                path: self.truth_dir().display().to_string(),
+                source,
+            })
+        })?;
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::median;
+
+    #[test]
+    fn the_median_of_odd_and_even_counts() {
+        assert_eq!(median(&[3.0, 1.0, 2.0]), 2.0);
+        assert_eq!(median(&[4.0, 1.0, 2.0, 3.0]), 2.5);
+        assert!(median(&[]).is_nan());
+    }
+}

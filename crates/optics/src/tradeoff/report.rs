@@ -1,0 +1,233 @@
+//! A sweep as people read it: the terminal's table, the Markdown section
+//! of `docs/tradeoffs.md` with its verdicts, and the Pareto plot drawn by
+//! `python-checks/plot_tradeoff.py`.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use validation::checkout::Checkout;
+use validation::pipeline::PipelineError;
+use validation::python::{run_tool, Task, ToolError};
+
+use super::{Measured, Sweep};
+use crate::error::{self, ErrorKind};
+use crate::lang::{say, Lang};
+
+/// A ΔE2000 of 1 is the just-noticeable difference: a shortcut whose 99th
+/// percentile stays within this of the scene's own settings' is not seen.
+pub const JUST_NOTICEABLE: f64 = 1.0;
+
+/// A shortcut is worth it where it is not seen and costs at most this
+/// share of the scene's own settings' time.
+pub const WORTH_IT: f64 = 0.9;
+
+/// The table, one line a point, a header first.
+pub fn table(sweep: &Sweep, lang: Lang) -> Vec<String> {
+    let width = sweep
+        .points
+        .iter()
+        .map(|p| p.point.label.chars().count())
+        .max()
+        .unwrap_or(7)
+        .max(7);
+    let mut lines = vec![
+        say!(
+            lang,
+            "{}: {}×{}, {} surface pixels; truth {} spp ({}), relative noise floor {:.1e}",
+            "{}: {}×{}, {} felületi pixel; referencia {} minta ({}), relatív zajszint {:.1e}",
+            sweep.scene,
+            sweep.width,
+            sweep.height,
+            sweep.surface_pixels,
+            sweep.truth.spp,
+            if sweep.truth.cached {
+                "cached"
+            } else {
+                "rendered"
+            },
+            sweep.truth.noise_relative
+        ),
+        format!(
+            "{:<width$}  {:>9}  {:>10}  {:>8}  {:>6}  {:>6}  {:>9}  {:>9}  {:>9}  front",
+            lang.pick("setting", "beállítás"),
+            lang.pick("time s", "idő s"),
+            lang.pick("rays", "sugár"),
+            "rel RMSE",
+            "ΔE avg",
+            "ΔE p99",
+            "variance",
+            "bias²",
+            lang.pick("effic.", "hatékony."),
+        ),
+    ];
+    for p in &sweep.points {
+        let split = p.errors.split;
+        lines.push(format!(
+            "{:<width$}  {:>9}  {:>10}  {:>8}  {:>6.2}  {:>6.2}  {:>9}  {:>9}  {:>9}  {}",
+            p.point.label,
+            format!("{:.3}", p.seconds_median),
+            format!("{:.3e}", p.rays),
+            format!("{:.4}", p.errors.rel_rmse),
+            p.errors.delta_e_mean,
+            p.errors.delta_e_p99,
+            split.map_or_else(|| "-".to_owned(), |s| format!("{:.2e}", s.variance)),
+            split.map_or_else(|| "-".to_owned(), |s| format!("{:.2e}", s.bias_squared)),
+            p.efficiency
+                .map_or_else(|| "-".to_owned(), |e| format!("{e:.3e}")),
+            front_marks(p),
+        ));
+    }
+    lines
+}
+
+/// `R` `A` `P`: on the front of relative RMSE, mean ΔE, 99th-percentile ΔE.
+fn front_marks(p: &Measured) -> String {
+    [
+        ("rel_rmse", 'R'),
+        ("delta_e_mean", 'A'),
+        ("delta_e_p99", 'P'),
+    ]
+    .iter()
+    .map(|&(name, mark)| if p.pareto.contains(&name) { mark } else { '·' })
+    .collect()
+}
+
+/// The scene's section of `docs/tradeoffs.md`.
+pub fn markdown(sweep: &Sweep, stem: &str) -> String {
+    let mut out = format!("## `{stem}`\n\n");
+    out += &format!(
+        "`{}` — {}, {}{}.\n\n",
+        sweep.command,
+        sweep.machine,
+        sweep.date,
+        sweep
+            .load
+            .as_ref()
+            .map_or_else(String::new, |l| format!(", {l}"))
+    );
+    out += &format!(
+        "{}×{} pixels, {} of them surface pixels. Ground truth: {} spp of `{}` \
+         (box filter, max_depth {}), relative noise floor {:.1e}.\n\n",
+        sweep.width,
+        sweep.height,
+        sweep.surface_pixels,
+        sweep.truth.spp,
+        sweep.truth.settings["integrator"].as_str().unwrap_or("?"),
+        sweep.truth.settings["max_depth"],
+        sweep.truth.noise_relative,
+    );
+    if sweep.truth.noise_relative > super::UNCONVERGED {
+        out += &format!(
+            "**The truth is not converged here**: its own noise is {:.2} of its energy \
+             (fireflies), so every setting's error below is read through that noise.\n\n",
+            sweep.truth.noise_relative
+        );
+    }
+    out += "| setting | time (s), median | rays | rel. RMSE | ΔE mean | ΔE p99 | variance | bias² | efficiency | front |\n";
+    out += "|---|---:|---:|---:|---:|---:|---:|---:|---:|:-:|\n";
+    for p in &sweep.points {
+        let split = p.errors.split;
+        let spread = if p.seconds.len() > 1 {
+            let (lo, hi) = p
+                .seconds
+                .iter()
+                .fold((f64::INFINITY, 0.0_f64), |(lo, hi), &s| {
+                    (lo.min(s), hi.max(s))
+                });
+            format!(" ({lo:.3}–{hi:.3})")
+        } else {
+            String::new()
+        };
+        out += &format!(
+            "| {} | {:.3}{} | {:.3e} | {:.4} | {:.2} | {:.2} | {} | {} | {} | {} |\n",
+            p.point.label,
+            p.seconds_median,
+            spread,
+            p.rays,
+            p.errors.rel_rmse,
+            p.errors.delta_e_mean,
+            p.errors.delta_e_p99,
+            split.map_or_else(|| "–".to_owned(), |s| format!("{:.2e}", s.variance)),
+            split.map_or_else(|| "–".to_owned(), |s| format!("{:.2e}", s.bias_squared)),
+            p.efficiency
+                .map_or_else(|| "–".to_owned(), |e| format!("{e:.3e}")),
+            front_marks(p),
+        );
+    }
+    out += "\n";
+    for line in verdicts(sweep) {
+        out += &format!("- {line}\n");
+    }
+    if !sweep.skipped.is_empty() {
+        out += "\nNot swept here: ";
+        out += &sweep
+            .skipped
+            .iter()
+            .map(|s| format!("{} ({})", s.axis, s.why))
+            .collect::<Vec<_>>()
+            .join("; ");
+        out += ".\n";
+    }
+    out += &format!("\n![{stem}: time against each error](tradeoffs/{stem}-pareto.png)\n\n");
+    out
+}
+
+/// Each alternative read against the scene's own settings, by the rule of
+/// [`JUST_NOTICEABLE`] and [`WORTH_IT`].
+pub fn verdicts(sweep: &Sweep) -> Vec<String> {
+    let Some(base) = sweep.points.first() else {
+        return Vec::new();
+    };
+    let mut lines = vec![format!(
+        "The scene's own settings ({}) are {:.3} relative RMSE and ΔE2000 {:.2} (99th percentile {:.2}) from the truth.",
+        base.point.label.trim_start_matches("scene: "),
+        base.errors.rel_rmse,
+        base.errors.delta_e_mean,
+        base.errors.delta_e_p99
+    )];
+    for p in &sweep.points[1..] {
+        let time = p.seconds_median / base.seconds_median.max(f64::MIN_POSITIVE);
+        let seen = p.errors.delta_e_p99 - base.errors.delta_e_p99;
+        let verdict = if seen <= JUST_NOTICEABLE && time <= WORTH_IT {
+            "worth it: not seen, and faster"
+        } else if seen <= JUST_NOTICEABLE {
+            "not seen, and no faster"
+        } else if time <= WORTH_IT {
+            "faster, and seen"
+        } else {
+            "slower or no faster, and seen"
+        };
+        lines.push(format!(
+            "`{}`: {:.2}× the time, ΔE p99 {:+.2} against the scene's settings, relative RMSE {:.3}: {verdict}.",
+            p.point.label, time, seen, p.errors.rel_rmse
+        ));
+    }
+    lines
+}
+
+/// Draws `json`'s Pareto plot into `png` with the checkout's
+/// `python-checks/plot_tradeoff.py` and its `.venv`.
+pub fn plot(json: &Path, png: &Path) -> error::Result<PathBuf> {
+    let checkout = Checkout::find(None).map_err(ErrorKind::Checkout)?;
+    let python = checkout.root().join(".venv/bin/python");
+    let script = "python-checks/plot_tradeoff.py";
+    if !python.is_file() {
+        let error = ToolError::Start {
+            what: Task::Script(script.into()),
+            program: python.display().to_string(),
+            source: std::io::Error::new(
+                std::io::ErrorKind::NotFound,
+                "no .venv: `optics validate` creates it once (or pass --no-plot)",
+            ),
+        };
+        return Err(ErrorKind::Pipeline(PipelineError::Tool(error)).into());
+    }
+    let mut command = Command::new(python);
+    command
+        .arg(checkout.python_checks().join("plot_tradeoff.py"))
+        .arg(json)
+        .arg(png);
+    run_tool(command, Task::Script(script.into()))
+        .map_err(|e| ErrorKind::Pipeline(PipelineError::Tool(e)))?;
+    Ok(png.to_owned())
+}

@@ -1,0 +1,171 @@
+//! The ground truth a sweep is measured against: the scene converged with
+//! all the light ([`sweep::truth_settings`]), rendered as two independent
+//! halves so that its own noise is known, and cached beside the results
+//! under a key of everything it depends on.
+
+use std::path::Path;
+
+use serde::{Deserialize, Serialize};
+use tracer::job::RenderJob;
+use tracer::output::{read_pfm, write_all_atomically};
+use tracer::scene::Settings;
+
+use super::measure::{Mask, Truth};
+use super::sweep;
+use crate::error::{self, ErrorKind};
+
+/// What the sweep's JSON says of its truth.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct TruthRecord {
+    /// The settings of each half (the second half's seed is one more).
+    pub settings: serde_json::Value,
+    /// Samples per pixel over both halves.
+    pub spp: u32,
+    /// Seconds the two halves took to render, when they were rendered.
+    pub seconds: f64,
+    /// Its noise relative to its energy: the floor under the squared
+    /// relative errors measured against it.
+    pub noise_relative: f64,
+    /// Its variance per surface pixel-channel (mean).
+    pub noise: f64,
+    /// Whether it was read from the cache rather than rendered now.
+    #[serde(default)]
+    pub cached: bool,
+    /// The cache key: FNV-1a of the scene file, the size, the settings
+    /// and the tracer's version.
+    pub key: String,
+    /// The cached image, a PFM.
+    pub file: String,
+}
+
+/// What truth a sweep asks for, and where it may be cached.
+pub struct Request<'a> {
+    /// The scene file, as given (its bytes are part of the key).
+    pub scene_file: &'a Path,
+    /// Samples per pixel over both halves.
+    pub spp: u32,
+    /// Whether the scene's course_rough is measured as Lambert.
+    pub lambert: bool,
+    /// The cache's directory.
+    pub dir: &'a Path,
+    /// Render again even when the cache holds this truth.
+    pub fresh: bool,
+}
+
+/// The truth of `job`'s scene as `request` asks, from the cache unless
+/// fresh or stale, else rendered (and cached).
+pub fn obtain(
+    job: &RenderJob,
+    request: &Request<'_>,
+    mask: &Mask,
+    threads: Option<usize>,
+) -> error::Result<(Truth, TruthRecord)> {
+    let Request {
+        scene_file,
+        spp,
+        lambert,
+        dir,
+        fresh,
+    } = *request;
+    let half = sweep::truth_settings(job, (spp / 2).max(1));
+    let scene_bytes = std::fs::read(scene_file).unwrap_or_default();
+    let settings_json = serde_json::to_value(half).map_err(ErrorKind::Encode)?;
+    let key = format!(
+        "{:016x}",
+        fnv1a(&[
+            &scene_bytes,
+            if lambert { b"lambert" } else { b"as written" },
+            format!("{}x{}", job.scene().width, job.scene().height).as_bytes(),
+            settings_json.to_string().as_bytes(),
+            env!("CARGO_PKG_VERSION").as_bytes(),
+        ])
+    );
+    let stem = scene_file
+        .file_stem()
+        .map_or_else(|| "scene".into(), |s| s.to_string_lossy());
+    let stem = if lambert {
+        format!("{stem}-lambert")
+    } else {
+        stem.into_owned()
+    };
+    let image_path = dir.join(format!("{stem}-{key}.pfm"));
+    let meta_path = dir.join(format!("{stem}-{key}.json"));
+    if !fresh {
+        if let Some((truth, record)) = cached(&image_path, &meta_path, &key, mask, job) {
+            return Ok((truth, record));
+        }
+    }
+    let a = super::render(job, scene_file, half, threads)?;
+    let second = Settings {
+        seed: half.seed.wrapping_add(1),
+        ..half
+    };
+    let b = super::render(job, scene_file, second, threads)?;
+    let truth = Truth::from_halves(&a.image, &b.image, mask);
+    let record = TruthRecord {
+        settings: settings_json,
+        spp: 2 * half.spp,
+        seconds: (a.elapsed + b.elapsed).as_secs_f64(),
+        noise_relative: truth.noise_relative(mask),
+        noise: truth.noise,
+        cached: false,
+        key,
+        file: image_path.display().to_string(),
+    };
+    let meta = serde_json::to_string_pretty(&record).map_err(ErrorKind::Encode)? + "\n";
+    let pfm = tracer::output::pfm_bytes(&truth.image);
+    write_all_atomically(&[
+        (image_path.as_path(), pfm.as_slice()),
+        (meta_path.as_path(), meta.as_bytes()),
+    ])
+    .map_err(ErrorKind::Output)?;
+    Ok((truth, record))
+}
+
+/// The cached truth, if both its files read back whole and match `key`
+/// and the job's size.
+fn cached(
+    image_path: &Path,
+    meta_path: &Path,
+    key: &str,
+    mask: &Mask,
+    job: &RenderJob,
+) -> Option<(Truth, TruthRecord)> {
+    let image = read_pfm(&std::fs::read(image_path).ok()?)?;
+    let mut record: TruthRecord = serde_json::from_slice(&std::fs::read(meta_path).ok()?).ok()?;
+    let fits = image.width == job.scene().width && image.height == job.scene().height;
+    if record.key != key || !fits || !record.noise.is_finite() || record.noise < 0.0 {
+        return None;
+    }
+    record.cached = true;
+    Some((Truth::new(image, record.noise, mask), record))
+}
+
+/// FNV-1a, 64 bits, over the parts in order, each followed by a 0 byte.
+fn fnv1a(parts: &[&[u8]]) -> u64 {
+    let mut hash: u64 = 0xcbf2_9ce4_8422_2325;
+    for part in parts {
+        for &byte in part.iter().chain(&[0]) {
+            hash ^= u64::from(byte);
+            hash = hash.wrapping_mul(0x0000_0100_0000_01b3);
+        }
+    }
+    hash
+}
+
+#[cfg(test)]
+mod tests {
+    use super::fnv1a;
+
+    /// The published FNV-1a 64 test vector: "a" hashes to
+    /// 0xaf63dc4c8601ec8c; the separator byte makes ["a"] differ from it
+    /// and ["ab"] from ["a", "b"].
+    #[test]
+    fn the_cache_key_is_fnv1a_with_separators() {
+        let mut hash: u64 = 0xcbf2_9ce4_8422_2325;
+        hash ^= u64::from(b'a');
+        hash = hash.wrapping_mul(0x0000_0100_0000_01b3);
+        assert_eq!(hash, 0xaf63_dc4c_8601_ec8c);
+        assert_ne!(fnv1a(&[b"ab"]), fnv1a(&[b"a", b"b"]));
+    }
+}

@@ -1,0 +1,240 @@
+//! `optics tradeoff`: the sweep's JSON is versioned, its Pareto marks are
+//! the fronts of its own numbers, its errors obey the physics they measure
+//! (the course shader's π, an unbiased path tracer's zero bias), the truth
+//! is cached, and bad flags are refused by name with nothing written.
+#![cfg(feature = "harness")]
+
+use std::path::Path;
+use std::process::{Command, Output};
+
+use serde_json::Value;
+
+fn optics(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_optics"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .expect("the optics binary runs")
+}
+
+fn scene(name: &str) -> String {
+    format!(
+        "{}/../tracer/scenes/{name}.json",
+        env!("CARGO_MANIFEST_DIR")
+    )
+}
+
+/// `optics --json tradeoff` on the scene `name`, small and quick, `extra`
+/// given after (a flag in `extra` replaces the default of that flag).
+fn sweep(name: &str, out: &Path, extra: &[&str]) -> Output {
+    let path = scene(name);
+    let out = out.to_str().unwrap();
+    let defaults = [
+        ("--width", "24"),
+        ("--height", "18"),
+        ("--truth-spp", "32"),
+        ("--repeats", "2"),
+        ("--min-seconds", "0"),
+        ("--out", out),
+    ];
+    let mut args = vec!["--json", "tradeoff", &path, "--no-plot"];
+    for (flag, value) in defaults {
+        let given = extra
+            .iter()
+            .any(|e| *e == flag || e.starts_with(&format!("{flag}=")));
+        if !given {
+            args.extend([flag, value]);
+        }
+    }
+    args.extend_from_slice(extra);
+    optics(&args)
+}
+
+fn read(path: &Path) -> Value {
+    serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
+}
+
+/// The points no other beats on both median time and `measure`.
+fn undominated(points: &[Value], measure: &str) -> Vec<String> {
+    let at = |p: &Value| {
+        (
+            p["seconds_median"].as_f64().unwrap(),
+            p["errors"][measure].as_f64().unwrap(),
+        )
+    };
+    points
+        .iter()
+        .filter(|p| {
+            let (t, e) = at(p);
+            !points.iter().any(|q| {
+                let (u, f) = at(q);
+                u <= t && f <= e && (u < t || f < e)
+            })
+        })
+        .map(|p| p["label"].as_str().unwrap().to_owned())
+        .collect()
+}
+
+#[test]
+fn the_sweep_of_a_scene_is_versioned_and_its_fronts_are_its_own_numbers() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = sweep("shadow", dir.path(), &["--lambert"]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let sweep = read(&dir.path().join("shadow-lambert.json"));
+    assert_eq!(sweep["schema"], "optics.tradeoff");
+    assert_eq!(sweep["version"], 1);
+    assert!(dir.path().join("shadow-lambert.md").is_file());
+    let points = sweep["points"].as_array().unwrap();
+    assert_eq!(points[0]["axis"], "scene");
+    for measure in ["rel_rmse", "delta_e_mean", "delta_e_p99"] {
+        let mut marked: Vec<String> = points
+            .iter()
+            .filter(|p| p["pareto"].as_array().unwrap().iter().any(|m| m == measure))
+            .map(|p| p["label"].as_str().unwrap().to_owned())
+            .collect();
+        let mut want = undominated(points, measure);
+        marked.sort();
+        want.sort();
+        assert_eq!(marked, want, "{measure}");
+    }
+    // No mirror or glass in `shadow`: no Fresnel axis, and it says so.
+    assert!(points.iter().all(|p| p["axis"] != "fresnel"));
+    assert!(sweep["skipped"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .any(|s| s["axis"] == "fresnel"));
+    // The stdout record carries the same sweep.
+    let record: Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(record["law"], "tradeoff");
+    assert_eq!(record["details"]["sweep"]["points"], sweep["points"]);
+}
+
+#[test]
+fn the_measured_errors_obey_the_physics_they_measure() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = sweep("shadow", dir.path(), &["--lambert", "--repeats", "4"]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let sweep = read(&dir.path().join("shadow-lambert.json"));
+    let point = |label: &str| {
+        sweep["points"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|p| p["label"] == label)
+            .unwrap_or_else(|| panic!("no point {label}"))
+            .clone()
+    };
+    // The course shader reads Lambert's albedo as kd in 1/sr: π times too
+    // bright where lit, so its relative error is above 1.
+    let course = point("integrator course");
+    assert!(
+        course["errors"]["rel_rmse"].as_f64().unwrap() > 1.0,
+        "{course}"
+    );
+    // The path tracer is unbiased: its squared bias is within the noise of
+    // four renders, below its variance; its efficiency is 1/(variance × time).
+    let path = point("integrator path, 16 spp");
+    let split = &path["errors"]["split"];
+    let (variance, bias) = (
+        split["variance"].as_f64().unwrap(),
+        split["bias_squared"].as_f64().unwrap(),
+    );
+    assert!(variance > 0.0 && bias < variance, "{split}");
+    let efficiency = path["efficiency"].as_f64().unwrap();
+    let want = 1.0 / (variance * path["seconds_median"].as_f64().unwrap());
+    assert!((efficiency - want).abs() <= 1e-9 * want);
+    // Deterministic settings have no split.
+    assert!(point("integrator local")["errors"].get("split").is_none());
+}
+
+#[test]
+fn the_truth_is_cached_and_rendered_again_on_request() {
+    let dir = tempfile::tempdir().unwrap();
+    let first = sweep("blinn_phong", dir.path(), &["--lambert"]);
+    assert!(
+        first.status.success(),
+        "{}",
+        String::from_utf8_lossy(&first.stderr)
+    );
+    let truth = |out: &Output| {
+        let record: Value = serde_json::from_slice(&out.stdout).unwrap();
+        record["details"]["sweep"]["truth"].clone()
+    };
+    assert_eq!(truth(&first)["cached"], false);
+    let second = sweep("blinn_phong", dir.path(), &["--lambert"]);
+    assert_eq!(truth(&second)["cached"], true);
+    assert_eq!(truth(&second)["key"], truth(&first)["key"]);
+    let fresh = sweep("blinn_phong", dir.path(), &["--lambert", "--fresh"]);
+    assert_eq!(truth(&fresh)["cached"], false);
+    // Another size is another truth.
+    let other = sweep("blinn_phong", dir.path(), &["--lambert", "--width", "20"]);
+    assert_eq!(truth(&other)["cached"], false);
+    assert_ne!(truth(&other)["key"], truth(&first)["key"]);
+}
+
+#[test]
+fn the_course_material_that_multiplies_light_is_named() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = sweep("shadow", dir.path(), &[]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let record: Value = serde_json::from_slice(&out.stdout).unwrap();
+    let notes = record["notes"].to_string();
+    assert!(
+        notes.contains("the material green reflects up to 2.51 times"),
+        "{notes}"
+    );
+}
+
+#[test]
+fn bad_flags_are_refused_by_name_and_nothing_is_written() {
+    let dir = tempfile::tempdir().unwrap();
+    for (flag, value) in [
+        ("--repeats", "0"),
+        ("--min-seconds", "NaN"),
+        ("--min-seconds=-1", ""),
+        ("--truth-spp", "1"),
+        ("--width", "0"),
+    ] {
+        let args: Vec<&str> = [flag, value]
+            .into_iter()
+            .filter(|a| !a.is_empty())
+            .collect();
+        let out = sweep("shadow", dir.path(), &args);
+        assert_eq!(out.status.code(), Some(2), "{flag} {value}");
+        let flag = flag.split('=').next().unwrap();
+        let error: Value = serde_json::from_slice(&out.stdout).unwrap();
+        assert!(
+            error["error"]["field"].as_str().unwrap().contains(flag),
+            "{flag}: {error}"
+        );
+    }
+    let missing = sweep("no_such_scene", dir.path(), &[]);
+    assert_eq!(missing.status.code(), Some(1));
+    assert!(std::fs::read_dir(dir.path()).unwrap().next().is_none());
+    // An --out that is a file: refused before any render, naming it.
+    let file = dir.path().join("a-file");
+    std::fs::write(&file, b"x").unwrap();
+    let out = sweep("shadow", &file, &[]);
+    assert_eq!(out.status.code(), Some(1));
+    let error: Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert!(
+        error["error"]["message"]
+            .as_str()
+            .unwrap()
+            .contains("a-file"),
+        "{error}"
+    );
+}
