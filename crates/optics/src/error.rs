@@ -175,6 +175,13 @@ pub enum ErrorKind {
     /// `optics compare` could not compare, or found the image different.
     #[cfg(feature = "harness")]
     Compare(compare::CompareError),
+    /// `optics tradeoff` on a scene whose physical render is black (no
+    /// light reaches the camera): there is no light transport to trade.
+    #[cfg(feature = "harness")]
+    TruthIsBlack {
+        /// The scene file, as given.
+        file: PathBuf,
+    },
 }
 
 impl Error {
@@ -269,6 +276,8 @@ impl ErrorKind {
             ErrorKind::ChecksFailed { .. } => "harness.checks_failed",
             #[cfg(feature = "harness")]
             ErrorKind::Compare(error) => error.name(),
+            #[cfg(feature = "harness")]
+            ErrorKind::TruthIsBlack { .. } => "tradeoff.truth_is_black",
         }
     }
 
@@ -306,6 +315,8 @@ impl ErrorKind {
             ErrorKind::ChecksFailed { .. } => None,
             #[cfg(feature = "harness")]
             ErrorKind::Compare(error) => error.field(),
+            #[cfg(feature = "harness")]
+            ErrorKind::TruthIsBlack { .. } => Some("SCENE".to_owned()),
         }
     }
 }

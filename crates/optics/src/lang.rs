@@ -120,6 +120,11 @@ fn hungarian(kind: &ErrorKind) -> String {
         }
         #[cfg(feature = "harness")]
         ErrorKind::Compare(error) => compare::compare_hu(error),
+        #[cfg(feature = "harness")]
+        ErrorKind::TruthIsBlack { file } => format!(
+            "SCENE {}: fizikai képe fekete: semmi fény nem jut a kamerába (fényforrás nélküli jelenetben csak a kurzus ambiens tagja látszik), így nincs mit fényterjedésben elcserélni",
+            file.display()
+        ),
     }
 }
 

@@ -101,8 +101,11 @@ pub struct Measured {
     /// Rays cast by one render (the mean over the repeats): the cost that
     /// does not depend on the machine.
     pub rays: f64,
-    /// The fixed measures.
+    /// The fixed measures, against the truth.
     pub errors: Errors,
+    /// The same measures against the scene's own settings' render (the
+    /// mean of its seeds): what this setting itself changes.
+    pub against_scene: Errors,
     /// 1 / (relative variance × median seconds), Monte Carlo points only.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub efficiency: Option<f64>,
@@ -117,10 +120,27 @@ const MAX_RENDERS: usize = 64;
 /// `--min-seconds`: a finite number of seconds, 0 to 60.
 fn seconds_flag(text: &str) -> Result<f64, String> {
     match text.parse::<f64>() {
-        Ok(s) if (0.0..=60.0).contains(&s) => Ok(s),
+        Ok(s) if (0.0..=60.0).contains(&s) || seconds_unchecked() => Ok(s),
         Ok(s) => Err(format!("{s} is not between 0 and 60 seconds")),
         Err(e) => Err(e.to_string()),
     }
+}
+
+#[cfg(test)]
+thread_local! {
+    /// A test-only switch that reverts the range check of `--min-seconds`,
+    /// for the tradeoff-flags fuzz target to find.
+    pub(crate) static SECONDS_UNCHECKED: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+}
+
+#[cfg(test)]
+fn seconds_unchecked() -> bool {
+    SECONDS_UNCHECKED.get()
+}
+
+#[cfg(not(test))]
+fn seconds_unchecked() -> bool {
+    false
 }
 
 /// A truth whose relative noise is above this is said to be unconverged.
@@ -235,44 +255,34 @@ pub fn run(args: &TradeoffArgs, ui: &Ui) -> error::Result<()> {
         fresh: args.fresh,
     };
     let (truth, truth_record) = truth::obtain(&job, &request, &mask, threads)?;
-
-    let mut points = Vec::with_capacity(plan.points.len());
-    for point in plan.points {
-        tick(&point.label);
-        let mut images: Vec<Image> = Vec::new();
-        let mut seconds = Vec::new();
-        let mut rays = 0.0;
-        // At least --repeats renders, and on until they add up to
-        // --min-seconds, so that a fast setting's median is not one tick
-        // of the clock.
-        while seconds.len() < args.repeats as usize
-            || (seconds.iter().sum::<f64>() < args.min_seconds && seconds.len() < MAX_RENDERS)
-        {
-            let settings = Settings {
-                seed: point.settings.seed.wrapping_add(seconds.len() as u64),
-                ..point.settings
-            };
-            let rendered = render(&job, &args.scene, settings, threads)?;
-            seconds.push(rendered.elapsed.as_secs_f64());
-            rays += rendered.rays.total() as f64;
-            // A deterministic setting renders the same image each time.
-            if settings.integrator.samples() || images.is_empty() {
-                images.push(rendered.image);
-            }
+    if truth.is_black() {
+        return Err(ErrorKind::TruthIsBlack {
+            file: args.scene.clone(),
         }
-        let rays = rays / seconds.len() as f64;
-        let errors = measure::errors(&images, &truth, &mask);
-        let seconds_median = median(&seconds);
+        .into());
+    }
+
+    let timed = time_points(&job, &args.scene, &plan.points, args, threads, &tick)?;
+    let mut points = Vec::with_capacity(plan.points.len());
+    let mut scene_render: Option<measure::Truth> = None;
+    for (point, timed) in plan.points.into_iter().zip(timed) {
+        let errors = measure::errors(&timed.images, &truth, &mask);
+        // The first point is the scene's own settings.
+        let reference =
+            scene_render.get_or_insert_with(|| measure::Truth::from_renders(&timed.images, &mask));
+        let against_scene = measure::errors(&timed.images, reference, &mask);
+        let seconds_median = median(&timed.seconds);
         let efficiency = errors
             .split
             .filter(|_| point.settings.integrator.samples())
             .map(|split| 1.0 / (split.variance * seconds_median));
         points.push(Measured {
             point,
-            seconds,
+            rays: timed.rays / timed.seconds.len() as f64,
+            seconds: timed.seconds,
             seconds_median,
-            rays,
             errors,
+            against_scene,
             efficiency,
             pareto: Vec::new(),
         });
@@ -359,6 +369,86 @@ pub fn run(args: &TradeoffArgs, ui: &Ui) -> error::Result<()> {
     }
     record.detail("sweep", &sweep);
     ui.show_steps(&record)
+}
+
+/// One point's renders: the images measured, the times.
+struct Timed {
+    /// One image for a deterministic setting; the first
+    /// [`MAX_KEPT`] seeds' for a Monte Carlo one.
+    images: Vec<Image>,
+    /// Every render's time, s.
+    seconds: Vec<f64>,
+    /// Rays over all the renders.
+    rays: f64,
+}
+
+/// The most seeds of a Monte Carlo point whose images are kept for the
+/// measures (the further renders are timed only).
+const MAX_KEPT: usize = 8;
+
+/// Renders every point in rounds, each round every point once, so that a
+/// drift of the machine's speed falls on all of them alike (A B C … A B C):
+/// after one untimed warm-up render, the first round, then as many more as
+/// each point needs for `--repeats` renders adding up to `--min-seconds`
+/// (at most [`MAX_RENDERS`]). Monte Carlo points take a new seed each time.
+fn time_points(
+    job: &RenderJob,
+    file: &Path,
+    points: &[sweep::Point],
+    args: &TradeoffArgs,
+    threads: Option<usize>,
+    tick: &dyn Fn(&str),
+) -> error::Result<Vec<Timed>> {
+    if let Some(first) = points.first() {
+        render(job, file, first.settings, threads)?;
+    }
+    let mut timed: Vec<Timed> = points
+        .iter()
+        .map(|_| Timed {
+            images: Vec::new(),
+            seconds: Vec::new(),
+            rays: 0.0,
+        })
+        .collect();
+    let mut wanted = vec![args.repeats as usize; points.len()];
+    for round in 0..MAX_RENDERS {
+        let mut rendered_any = false;
+        for (i, point) in points.iter().enumerate() {
+            if timed[i].seconds.len() >= wanted[i] {
+                continue;
+            }
+            if round == 0 {
+                tick(&point.label);
+            }
+            let settings = Settings {
+                seed: point.settings.seed.wrapping_add(round as u64),
+                ..point.settings
+            };
+            let rendered = render(job, file, settings, threads)?;
+            let t = &mut timed[i];
+            t.seconds.push(rendered.elapsed.as_secs_f64());
+            t.rays += rendered.rays.total() as f64;
+            // A deterministic setting renders the same image each time.
+            let keep = if settings.integrator.samples() {
+                MAX_KEPT
+            } else {
+                1
+            };
+            if t.images.len() < keep {
+                t.images.push(rendered.image);
+            }
+            if round == 0 {
+                let first = t.seconds[0].max(1e-6);
+                let enough = (args.min_seconds / first).ceil() as usize;
+                wanted[i] = enough.clamp(args.repeats as usize, MAX_RENDERS);
+            }
+            rendered_any = true;
+        }
+        if !rendered_any {
+            break;
+        }
+    }
+    Ok(timed)
 }
 
 /// Renders `job`'s scene (read from `file`) with `settings`.

@@ -238,3 +238,14 @@ fn bad_flags_are_refused_by_name_and_nothing_is_written() {
         "{error}"
     );
 }
+
+#[test]
+fn a_scene_without_light_has_nothing_to_trade_and_says_so() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = sweep("kaleidoscope", dir.path(), &["--truth-spp", "4"]);
+    assert_eq!(out.status.code(), Some(1));
+    let error: Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(error["error"]["kind"], "tradeoff.truth_is_black");
+    assert_eq!(error["error"]["field"], "SCENE");
+    assert!(!dir.path().join("kaleidoscope.json").exists());
+}

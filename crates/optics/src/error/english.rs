@@ -85,6 +85,12 @@ impl fmt::Display for ErrorKind {
             }
             #[cfg(feature = "harness")]
             ErrorKind::Compare(error) => write!(f, "{error}"),
+            #[cfg(feature = "harness")]
+            ErrorKind::TruthIsBlack { file } => write!(
+                f,
+                "SCENE {}: its physical render is black: no light reaches the camera (a scene without lights shows only the course's ambient term), so there is no light transport to trade",
+                file.display()
+            ),
         }
     }
 }

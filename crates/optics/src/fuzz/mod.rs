@@ -1,7 +1,8 @@
 //! Fuzz targets of the calculator's inputs, run by `cargo test` on stable
 //! Rust: batch lines (`batch_lines`), flag values (`flag_values`), the
-//! render settings' choices (`render_flags`) and the images `optics
-//! compare` reads (`compare_images`).
+//! render settings' choices (`render_flags`), the images `optics
+//! compare` reads (`compare_images`) and `optics tradeoff`'s numeric flags
+//! (`tradeoff_flags`).
 //!
 //! Each target generates inputs from the course's own requests, mutates
 //! them (numbers at the edges of `f64`, wrong types, missing and unknown
@@ -18,6 +19,8 @@ mod batch_lines;
 mod compare_images;
 mod flag_values;
 mod render_flags;
+#[cfg(feature = "harness")]
+mod tradeoff_flags;
 
 use proptest::prelude::*;
 use proptest::test_runner::{Config, TestCaseError, TestRunner};

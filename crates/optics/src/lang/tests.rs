@@ -216,6 +216,10 @@ fn slot(kind: &ErrorKind) -> usize {
             CALCULATOR + render_kinds::SLOTS + harness_kinds::CHECKS_FAILED
         }
         #[cfg(feature = "harness")]
+        ErrorKind::TruthIsBlack { .. } => {
+            CALCULATOR + render_kinds::SLOTS + harness_kinds::TRUTH_IS_BLACK
+        }
+        #[cfg(feature = "harness")]
         ErrorKind::Compare(error) => {
             CALCULATOR
                 + render_kinds::SLOTS

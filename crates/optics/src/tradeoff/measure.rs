@@ -1,5 +1,7 @@
 //! The fixed error measures of a render against the ground truth, the same
-//! for every setting so that none can look good by choosing its own.
+//! for every setting so that none can look good by choosing its own; and
+//! the same measures against the scene's own settings' render, which say
+//! what a shortcut itself changes.
 //!
 //! All are taken over the *surface pixels*, those whose centre sees an
 //! object ([`tracer::job::RenderJob::first_hits`]); the background is
@@ -65,25 +67,45 @@ pub struct Truth {
 }
 
 impl Truth {
-    /// The mean of two independent half renders `a` and `b` of the truth.
-    pub fn from_halves(a: &Image, b: &Image, mask: &Mask) -> Self {
-        let pixels: Vec<Vec3> = a
-            .pixels
-            .iter()
-            .zip(&b.pixels)
-            .map(|(&x, &y)| (x + y) * 0.5)
-            .collect();
-        let image = Image {
-            width: a.width,
-            height: a.height,
-            pixels,
+    /// The mean of independent renders (two halves of the truth, or the
+    /// seeds of a Monte Carlo setting), its noise the per-channel sample
+    /// variance over their count; one render is taken as noiseless.
+    ///
+    /// # Panics
+    ///
+    /// If `renders` is empty.
+    pub fn from_renders(renders: &[Image], mask: &Mask) -> Self {
+        let n = renders.len() as f64;
+        let first = &renders[0];
+        let mean = |i: usize| {
+            renders
+                .iter()
+                .map(|r| r.pixels[i].as_dvec3())
+                .sum::<glam::DVec3>()
+                / n
         };
-        let channels = 3.0 * mask.count().max(1) as f64;
-        let noise = mask
-            .kept()
-            .map(|i| squared(a.pixels[i] - b.pixels[i]) / 4.0)
-            .sum::<f64>()
-            / channels;
+        let image = Image {
+            width: first.width,
+            height: first.height,
+            pixels: (0..first.pixels.len()).map(|i| mean(i).as_vec3()).collect(),
+        };
+        let noise = if renders.len() < 2 {
+            0.0
+        } else {
+            let channels = 3.0 * mask.count().max(1) as f64;
+            let variance: f64 = mask
+                .kept()
+                .map(|i| {
+                    let m = mean(i);
+                    renders
+                        .iter()
+                        .map(|r| (r.pixels[i].as_dvec3() - m).length_squared())
+                        .sum::<f64>()
+                        / (n - 1.0)
+                })
+                .sum();
+            variance / channels / n
+        };
         Truth::new(image, noise, mask)
     }
 
@@ -95,6 +117,12 @@ impl Truth {
             noise,
             energy,
         }
+    }
+
+    /// Whether no light reaches the surface pixels: every relative
+    /// measure is then undefined.
+    pub fn is_black(&self) -> bool {
+        self.energy == 0.0
     }
 
     /// The truth's noise relative to its energy per channel: the floor
@@ -344,7 +372,7 @@ mod tests {
     fn the_truths_noise_is_not_the_renders_error() {
         let mask = Mask::all(2);
         let (a, b) = (grey(&[0.6, 0.4]), grey(&[0.4, 0.6]));
-        let truth = Truth::from_halves(&a, &b, &mask);
+        let truth = Truth::from_renders(&[a, b], &mask);
         assert!((truth.noise - 0.01).abs() < 1e-8, "{}", truth.noise);
         // Against the truth's mean (0.5): squared error 0.01 per channel,
         // all of it the truth's noise; what is left is f32 rounding of the

@@ -14,7 +14,8 @@ use crate::error::{self, ErrorKind};
 use crate::lang::{say, Lang};
 
 /// A ΔE2000 of 1 is the just-noticeable difference: a shortcut whose 99th
-/// percentile stays within this of the scene's own settings' is not seen.
+/// percentile against the scene's own settings' render stays within this
+/// is not seen.
 pub const JUST_NOTICEABLE: f64 = 1.0;
 
 /// A shortcut is worth it where it is not seen and costs at most this
@@ -48,9 +49,9 @@ pub fn table(sweep: &Sweep, lang: Lang) -> Vec<String> {
             sweep.truth.noise_relative
         ),
         format!(
-            "{:<width$}  {:>9}  {:>10}  {:>8}  {:>6}  {:>6}  {:>9}  {:>9}  {:>9}  front",
+            "{:<width$}  {:>9}  {:>10}  {:>8}  {:>6}  {:>6}  {:>9}  {:>9}  {:>9}  {:>7}  front",
             lang.pick("setting", "beállítás"),
-            lang.pick("time s", "idő s"),
+            lang.pick("time ms", "idő ms"),
             lang.pick("rays", "sugár"),
             "rel RMSE",
             "ΔE avg",
@@ -58,14 +59,15 @@ pub fn table(sweep: &Sweep, lang: Lang) -> Vec<String> {
             "variance",
             "bias²",
             lang.pick("effic.", "hatékony."),
+            lang.pick("vs own", "saját"),
         ),
     ];
     for p in &sweep.points {
         let split = p.errors.split;
         lines.push(format!(
-            "{:<width$}  {:>9}  {:>10}  {:>8}  {:>6.2}  {:>6.2}  {:>9}  {:>9}  {:>9}  {}",
+            "{:<width$}  {:>9}  {:>10}  {:>8}  {:>6.2}  {:>6.2}  {:>9}  {:>9}  {:>9}  {:>7.2}  {}",
             p.point.label,
-            format!("{:.3}", p.seconds_median),
+            format!("{:.3}", p.seconds_median * 1e3),
             format!("{:.3e}", p.rays),
             format!("{:.4}", p.errors.rel_rmse),
             p.errors.delta_e_mean,
@@ -74,6 +76,7 @@ pub fn table(sweep: &Sweep, lang: Lang) -> Vec<String> {
             split.map_or_else(|| "-".to_owned(), |s| format!("{:.2e}", s.bias_squared)),
             p.efficiency
                 .map_or_else(|| "-".to_owned(), |e| format!("{e:.3e}")),
+            p.against_scene.delta_e_p99,
             front_marks(p),
         ));
     }
@@ -123,8 +126,8 @@ pub fn markdown(sweep: &Sweep, stem: &str) -> String {
             sweep.truth.noise_relative
         );
     }
-    out += "| setting | time (s), median | rays | rel. RMSE | ΔE mean | ΔE p99 | variance | bias² | efficiency | front |\n";
-    out += "|---|---:|---:|---:|---:|---:|---:|---:|---:|:-:|\n";
+    out += "| setting | time (ms), median (range) | rays | rel. RMSE | ΔE mean | ΔE p99 | variance | bias² | efficiency | ΔE p99 vs own | front |\n";
+    out += "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|:-:|\n";
     for p in &sweep.points {
         let split = p.errors.split;
         let spread = if p.seconds.len() > 1 {
@@ -134,14 +137,14 @@ pub fn markdown(sweep: &Sweep, stem: &str) -> String {
                 .fold((f64::INFINITY, 0.0_f64), |(lo, hi), &s| {
                     (lo.min(s), hi.max(s))
                 });
-            format!(" ({lo:.3}–{hi:.3})")
+            format!(" ({:.3}–{:.3})", lo * 1e3, hi * 1e3)
         } else {
             String::new()
         };
         out += &format!(
-            "| {} | {:.3}{} | {:.3e} | {:.4} | {:.2} | {:.2} | {} | {} | {} | {} |\n",
+            "| {} | {:.3}{} | {:.3e} | {:.4} | {:.2} | {:.2} | {} | {} | {} | {:.2} | {} |\n",
             p.point.label,
-            p.seconds_median,
+            p.seconds_median * 1e3,
             spread,
             p.rays,
             p.errors.rel_rmse,
@@ -151,10 +154,11 @@ pub fn markdown(sweep: &Sweep, stem: &str) -> String {
             split.map_or_else(|| "–".to_owned(), |s| format!("{:.2e}", s.bias_squared)),
             p.efficiency
                 .map_or_else(|| "–".to_owned(), |e| format!("{e:.3e}")),
+            p.against_scene.delta_e_p99,
             front_marks(p),
         );
     }
-    out += "\n";
+    out += "\nAgainst the scene's own settings (time ratio; ΔE2000 p99 against their render):\n\n";
     for line in verdicts(sweep) {
         out += &format!("- {line}\n");
     }
@@ -172,35 +176,81 @@ pub fn markdown(sweep: &Sweep, stem: &str) -> String {
     out
 }
 
-/// Each alternative read against the scene's own settings, by the rule of
+/// What a point is, read against the scene's own settings by the rule of
 /// [`JUST_NOTICEABLE`] and [`WORTH_IT`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Verdict {
+    /// Not seen, and faster: the shortcut is worth taking.
+    WorthIt,
+    /// Not seen, and no faster.
+    Unseen,
+    /// Faster, and seen: a trade.
+    Trade,
+    /// Seen, and no faster.
+    Worse,
+}
+
+impl Verdict {
+    /// The verdict on `p` against the scene's own settings `base`.
+    pub fn of(p: &Measured, base: &Measured) -> Self {
+        let seen = p.against_scene.delta_e_p99 > JUST_NOTICEABLE;
+        let faster = p.seconds_median <= WORTH_IT * base.seconds_median;
+        match (seen, faster) {
+            (false, true) => Verdict::WorthIt,
+            (false, false) => Verdict::Unseen,
+            (true, true) => Verdict::Trade,
+            (true, false) => Verdict::Worse,
+        }
+    }
+
+    fn words(self) -> &'static str {
+        match self {
+            Verdict::WorthIt => "**worth it** (not seen, faster)",
+            Verdict::Unseen => "not seen, no faster",
+            Verdict::Trade => "faster, seen",
+            Verdict::Worse => "seen, no faster",
+        }
+    }
+}
+
+/// One line per axis: each setting's time against the scene's own and its
+/// ΔE p99 against the scene's own render, with its verdict; first the light
+/// the scene's settings leave out.
 pub fn verdicts(sweep: &Sweep) -> Vec<String> {
     let Some(base) = sweep.points.first() else {
         return Vec::new();
     };
     let mut lines = vec![format!(
-        "The scene's own settings ({}) are {:.3} relative RMSE and ΔE2000 {:.2} (99th percentile {:.2}) from the truth.",
+        "The scene's own settings ({}) are {:.3} relative RMSE from the truth, ΔE2000 {:.2} on average and {:.2} at the 99th percentile.",
         base.point.label.trim_start_matches("scene: "),
         base.errors.rel_rmse,
         base.errors.delta_e_mean,
         base.errors.delta_e_p99
     )];
+    let mut axes: Vec<super::sweep::Axis> = Vec::new();
     for p in &sweep.points[1..] {
-        let time = p.seconds_median / base.seconds_median.max(f64::MIN_POSITIVE);
-        let seen = p.errors.delta_e_p99 - base.errors.delta_e_p99;
-        let verdict = if seen <= JUST_NOTICEABLE && time <= WORTH_IT {
-            "worth it: not seen, and faster"
-        } else if seen <= JUST_NOTICEABLE {
-            "not seen, and no faster"
-        } else if time <= WORTH_IT {
-            "faster, and seen"
-        } else {
-            "slower or no faster, and seen"
-        };
-        lines.push(format!(
-            "`{}`: {:.2}× the time, ΔE p99 {:+.2} against the scene's settings, relative RMSE {:.3}: {verdict}.",
-            p.point.label, time, seen, p.errors.rel_rmse
-        ));
+        if !axes.contains(&p.point.axis) {
+            axes.push(p.point.axis);
+        }
+    }
+    for axis in axes {
+        let points: Vec<&Measured> = sweep.points[1..]
+            .iter()
+            .filter(|p| p.point.axis == axis)
+            .collect();
+        let entries: Vec<String> = points
+            .iter()
+            .map(|p| {
+                format!(
+                    "`{}` {:.2}× the time, ΔE p99 {:.2}: {}",
+                    p.point.label,
+                    p.seconds_median / base.seconds_median.max(f64::MIN_POSITIVE),
+                    p.against_scene.delta_e_p99,
+                    Verdict::of(p, base).words()
+                )
+            })
+            .collect();
+        lines.push(format!("{}.", entries.join("; ")));
     }
     lines
 }
@@ -230,4 +280,46 @@ pub fn plot(json: &Path, png: &Path) -> error::Result<PathBuf> {
     run_tool(command, Task::Script(script.into()))
         .map_err(|e| ErrorKind::Pipeline(PipelineError::Tool(e)))?;
     Ok(png.to_owned())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::measure::Errors;
+    use super::super::sweep::{Axis, Point};
+    use super::*;
+    use tracer::scene::Settings;
+
+    fn point(seconds: f64, seen: f64) -> Measured {
+        let errors = Errors {
+            rel_rmse: 0.0,
+            delta_e_mean: 0.0,
+            delta_e_p99: seen,
+            split: None,
+        };
+        Measured {
+            point: Point {
+                axis: Axis::Fresnel,
+                label: "fresnel schlick".into(),
+                settings: Settings::default(),
+            },
+            seconds: vec![seconds],
+            seconds_median: seconds,
+            rays: 1.0,
+            errors,
+            against_scene: errors,
+            efficiency: None,
+            pareto: Vec::new(),
+        }
+    }
+
+    /// The rule at its edges: ΔE p99 1 is not seen, 1.01 is; 0.9× the
+    /// time is faster, 0.91× is not.
+    #[test]
+    fn a_shortcut_is_worth_it_when_not_seen_and_faster() {
+        let base = point(1.0, 0.0);
+        assert_eq!(Verdict::of(&point(0.9, 1.0), &base), Verdict::WorthIt);
+        assert_eq!(Verdict::of(&point(0.91, 1.0), &base), Verdict::Unseen);
+        assert_eq!(Verdict::of(&point(0.5, 1.01), &base), Verdict::Trade);
+        assert_eq!(Verdict::of(&point(2.0, 5.0), &base), Verdict::Worse);
+    }
 }

@@ -101,11 +101,12 @@ pub fn obtain(
         ..half
     };
     let b = super::render(job, scene_file, second, threads)?;
-    let truth = Truth::from_halves(&a.image, &b.image, mask);
+    let seconds = (a.elapsed + b.elapsed).as_secs_f64();
+    let truth = Truth::from_renders(&[a.image, b.image], mask);
     let record = TruthRecord {
         settings: settings_json,
         spp: 2 * half.spp,
-        seconds: (a.elapsed + b.elapsed).as_secs_f64(),
+        seconds,
         noise_relative: truth.noise_relative(mask),
         noise: truth.noise,
         cached: false,

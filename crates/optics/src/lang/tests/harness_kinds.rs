@@ -43,8 +43,11 @@ pub fn pipeline_slot(error: &PipelineError) -> usize {
 /// The slot of failed checks.
 pub const CHECKS_FAILED: usize = 12;
 
+/// The slot of a black truth (`optics tradeoff`).
+pub const TRUTH_IS_BLACK: usize = 13;
+
 /// How many harness slots there are.
-pub const SLOTS: usize = 13;
+pub const SLOTS: usize = 14;
 
 /// An exit status of 3, as a failed tool reports it.
 fn exit_status() -> std::process::ExitStatus {
@@ -178,6 +181,12 @@ pub fn examples() -> Vec<(ErrorKind, Vec<String>)> {
                 checks: 40,
             },
             vec![],
+        ),
+        (
+            ErrorKind::TruthIsBlack {
+                file: "scenes/kaleidoscope.json".into(),
+            },
+            named(&["SCENE", "scenes/kaleidoscope.json"]),
         ),
     ];
     // The other tasks a tool runs for, each translated.
