@@ -46,6 +46,24 @@ def front(points, measure):
     return sorted(on, key=lambda p: (p["seconds_median"], p["errors"][measure]))
 
 
+def labels(points, measure):
+    """One label per cluster of points that land on the same spot (equal
+    error, times within 10 %), its members' names joined, so that coinciding
+    settings do not print over each other; the others unlabelled."""
+    shown = [None] * len(points)
+    for i, p in enumerate(points):
+        for j in range(i):
+            q = points[j]
+            if shown[j] is not None and q["errors"][measure] == p["errors"][measure] and (
+                abs(q["seconds_median"] - p["seconds_median"]) <= 0.1 * q["seconds_median"]
+            ):
+                shown[j] += ", " + p["label"]
+                break
+        else:
+            shown[i] = p["label"]
+    return shown
+
+
 def draw(sweep, png):
     points = sweep["points"]
     fig, axes = plt.subplots(1, len(MEASURES), figsize=(6 * len(MEASURES), 5), squeeze=False)
@@ -54,8 +72,10 @@ def draw(sweep, png):
         ys = [max(p["errors"][measure], FLOOR) for p in points]
         colours = ["C3" if measure in p["pareto"] else "C0" for p in points]
         ax.scatter(xs, ys, c=colours, s=18, zorder=3)
-        for p, x, y in zip(points, xs, ys):
-            ax.annotate(p["label"], (x, y), fontsize=6, xytext=(3, 2), textcoords="offset points")
+        for label, x, y in zip(labels(points, measure), xs, ys):
+            if label is not None:
+                short = label if len(label) <= 80 else label[:77] + "..."
+                ax.annotate(short, (x, y), fontsize=6, xytext=(3, 2), textcoords="offset points")
         line = front(points, measure)
         ax.step(
             [max(p["seconds_median"], 1e-6) for p in line],

@@ -49,3 +49,10 @@ def test_another_schema_is_refused(tmp_path):
     path.write_text(json.dumps(bad))
     with pytest.raises(SystemExit, match="not an optics.tradeoff version 1"):
         plot_tradeoff.load(str(path))
+
+
+def test_coinciding_points_share_one_label():
+    points = sweep()["points"] + [
+        {"label": "twin", "seconds_median": 0.105, "errors": {"rel_rmse": 0.5}, "pareto": []}
+    ]
+    assert plot_tradeoff.labels(points, "rel_rmse") == ["fast, twin", "slow and worse", "exact", None]
