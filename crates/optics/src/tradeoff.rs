@@ -365,10 +365,23 @@ pub fn run(args: &TradeoffArgs, ui: &Ui) -> error::Result<()> {
         ));
     }
     for skipped in &sweep.skipped {
-        record.note(format!("not swept: {}: {}", skipped.axis, skipped.why));
+        record.note(say!(
+            lang,
+            "not swept: {}: {}",
+            "nem mért: {}: {}",
+            skipped.axis,
+            lang.pick(skipped.why, skipped.why_hu)
+        ));
     }
     record.detail("sweep", &sweep);
-    ui.show_steps(&record)
+    ui.show_steps(&record)?;
+    // The notes (what was not swept, a truth not to be trusted) are read
+    // after the table in text too, not only in the JSON.
+    if !ui.json {
+        let notes: String = record.notes.iter().map(|n| format!("{n}\n")).collect();
+        crate::print_out(&notes)?;
+    }
+    Ok(())
 }
 
 /// One point's renders: the images measured, the times.

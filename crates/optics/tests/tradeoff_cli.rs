@@ -249,3 +249,48 @@ fn a_scene_without_light_has_nothing_to_trade_and_says_so() {
     assert_eq!(error["error"]["field"], "SCENE");
     assert!(!dir.path().join("kaleidoscope.json").exists());
 }
+
+#[test]
+fn the_text_says_what_was_not_swept_and_why_in_both_languages() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = scene("shadow");
+    let out_dir = dir.path().to_str().unwrap();
+    for (lang, want) in [
+        (
+            "en",
+            "not swept: fresnel: no mirror or glass: no Fresnel law is evaluated",
+        ),
+        ("hu", "nem mért: fresnel: nincs tükör vagy üveg"),
+    ] {
+        let out = optics(&[
+            "--lang",
+            lang,
+            "tradeoff",
+            &path,
+            "--width",
+            "16",
+            "--height",
+            "12",
+            "--truth-spp",
+            "4",
+            "--repeats",
+            "1",
+            "--min-seconds",
+            "0",
+            "--no-plot",
+            "--out",
+            out_dir,
+        ]);
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let text = String::from_utf8_lossy(&out.stdout);
+        assert!(text.contains(want), "{lang}: {text}");
+        assert!(
+            text.contains("green"),
+            "{lang}: the multiplying material is named: {text}"
+        );
+    }
+}

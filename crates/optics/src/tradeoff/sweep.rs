@@ -54,6 +54,9 @@ pub struct Skipped {
     pub axis: &'static str,
     /// Why it is not swept here.
     pub why: &'static str,
+    /// The same in Hungarian (text output only).
+    #[serde(skip)]
+    pub why_hu: &'static str,
 }
 
 /// The plan: the points to render, the scene's own first, and what was
@@ -119,6 +122,7 @@ pub fn plan(job: &RenderJob, spp: u32) -> Plan {
         skipped.push(Skipped {
             axis: "integrator photon",
             why: "no delta light reaches a rough surface through mirrors or glass: photon renders what path does",
+            why_hu: "egyetlen pont- vagy irányfény sem ér érdes felületet tükrön vagy üvegen át: a photon ugyanazt rajzolja, mint a path",
         });
     }
 
@@ -147,6 +151,7 @@ pub fn plan(job: &RenderJob, spp: u32) -> Plan {
         skipped.push(Skipped {
             axis: "max_depth, throughput_cutoff",
             why: "no mirror or glass sees another or itself, and the integrator does not bounce diffusely: depth never binds",
+            why_hu: "egyik tükör vagy üveg sem látja a másikat vagy önmagát, és az integrátor nem pattan diffúzan: a mélység sosem korlátoz",
         });
     }
 
@@ -166,6 +171,7 @@ pub fn plan(job: &RenderJob, spp: u32) -> Plan {
         skipped.push(Skipped {
             axis: "fresnel",
             why: "no mirror or glass: no Fresnel law is evaluated",
+            why_hu: "nincs tükör vagy üveg: egyetlen Fresnel-törvény sem értékelődik ki",
         });
     }
 
@@ -214,6 +220,7 @@ pub fn plan(job: &RenderJob, spp: u32) -> Plan {
         skipped.push(Skipped {
             axis: "ray_offset",
             why: "no secondary ray leaves a surface: no shadow ray, no mirror or glass",
+            why_hu: "egyetlen másodlagos sugár sem hagy el felületet: nincs árnyéksugár, tükör vagy üveg",
         });
     }
 
@@ -221,10 +228,12 @@ pub fn plan(job: &RenderJob, spp: u32) -> Plan {
         axis: "f32 against f64",
         why:
             "the tracer computes in f32 only; the law crate's f64 tier is not yet a tracer setting",
+        why_hu: "a követő csak f32-ben számol; a törvények f64-es szintje még nem beállítása a követőnek",
     });
     skipped.push(Skipped {
         axis: "RGB against spectrum",
         why: "the tracer has no spectral mode; `optics validate` measures what three channels cost each metal's colour (metals.*)",
+            why_hu: "a követőnek nincs spektrális módja; az `optics validate` méri, mennyibe kerül fémenként a három csatorna (metals.*)",
     });
     Plan { points, skipped }
 }
