@@ -23,6 +23,7 @@ MEASURES = [
     ("rel_rmse", "relative RMSE of radiance"),
     ("delta_e_mean", "mean ΔE2000, displayed"),
     ("delta_e_p99", "99th percentile ΔE2000, displayed"),
+    ("flip_mean", "mean ꟻLIP, displayed"),
 ]
 # Below this an error is drawn at this value: a log axis has no zero.
 FLOOR = 1e-4
@@ -66,8 +67,14 @@ def labels(points, measure):
 
 def draw(sweep, png):
     points = sweep["points"]
-    fig, axes = plt.subplots(1, len(MEASURES), figsize=(6 * len(MEASURES), 5), squeeze=False)
-    for ax, (measure, title) in zip(axes[0], MEASURES):
+    # A sweep written before a measure joined the schema lacks it.
+    measures = [(m, t) for m, t in MEASURES if all(m in p["errors"] for p in points)]
+    rows = (len(measures) + 1) // 2
+    fig, axes = plt.subplots(rows, 2, figsize=(12, 4.75 * rows), squeeze=False)
+    axes = axes.ravel()
+    for ax in axes[len(measures):]:
+        ax.set_visible(False)
+    for ax, (measure, title) in zip(axes, measures):
         xs = [max(p["seconds_median"], 1e-6) for p in points]
         ys = [max(p["errors"][measure], FLOOR) for p in points]
         colours = ["C3" if measure in p["pareto"] else "C0" for p in points]
@@ -90,7 +97,7 @@ def draw(sweep, png):
         ax.set_xlabel("render time, s (median)")
         ax.set_title(title, fontsize=10)
         ax.grid(True, which="both", linewidth=0.3)
-    axes[0][0].legend(fontsize=8)
+    axes[0].legend(fontsize=8)
     fig.suptitle(
         f"{sweep['scene']} at {sweep['width']}×{sweep['height']}: {sweep['command']}\n"
         f"{sweep['machine']}, {sweep['date']}",

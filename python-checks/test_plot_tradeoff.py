@@ -8,7 +8,8 @@ import plot_tradeoff
 
 def sweep():
     def point(label, seconds, rmse, pareto):
-        errors = {"rel_rmse": rmse, "delta_e_mean": rmse * 10, "delta_e_p99": rmse * 30}
+        errors = {"rel_rmse": rmse, "delta_e_mean": rmse * 10, "delta_e_p99": rmse * 30,
+                  "flip_mean": rmse / 2}
         return {"label": label, "seconds_median": seconds, "errors": errors, "pareto": pareto}
 
     return {
@@ -21,9 +22,9 @@ def sweep():
         "machine": "test",
         "date": "2026-12-04",
         "points": [
-            point("fast", 0.1, 0.5, ["rel_rmse", "delta_e_mean", "delta_e_p99"]),
+            point("fast", 0.1, 0.5, ["rel_rmse", "delta_e_mean", "delta_e_p99", "flip_mean"]),
             point("slow and worse", 1.0, 0.6, []),
-            point("exact", 2.0, 0.0, ["rel_rmse", "delta_e_mean", "delta_e_p99"]),
+            point("exact", 2.0, 0.0, ["rel_rmse", "delta_e_mean", "delta_e_p99", "flip_mean"]),
         ],
     }
 
@@ -35,6 +36,17 @@ def test_a_sweep_draws_a_png(tmp_path):
     plot_tradeoff.main(["plot_tradeoff.py", str(path), str(out)])
     assert out.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     assert not (tmp_path / "s.png.tmp").exists()
+
+
+def test_a_sweep_from_before_flip_still_draws(tmp_path):
+    old = sweep()
+    for p in old["points"]:
+        del p["errors"]["flip_mean"]
+    path = tmp_path / "old.json"
+    path.write_text(json.dumps(old))
+    out = tmp_path / "old.png"
+    plot_tradeoff.main(["plot_tradeoff.py", str(path), str(out)])
+    assert out.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
 
 
 def test_the_front_is_the_marked_points_by_time():

@@ -33,6 +33,7 @@ pub mod checkout;
 pub mod colorimetry;
 pub mod compare;
 pub mod exchange;
+pub mod flip;
 pub mod full_light;
 pub mod laws;
 pub mod metals;

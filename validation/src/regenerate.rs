@@ -12,7 +12,7 @@ use crate::python::{run_tool, Task, ToolError};
 
 /// The reference generators and the files each writes, in the order the
 /// full run regenerates them.
-pub const GENERATORS: [(&str, &[&str]); 7] = [
+pub const GENERATORS: [(&str, &[&str]); 8] = [
     ("fresnel_mpmath.py", &["fresnel_mpmath.json"]),
     ("fresnel_random.py", &["fresnel_random.json"]),
     ("mitsuba_laws.py", &["mitsuba_laws.json"]),
@@ -20,6 +20,7 @@ pub const GENERATORS: [(&str, &[&str]); 7] = [
     ("metals.py", &["metals.json"]),
     ("mitsuba_render.py", &["mitsuba_renders.json"]),
     ("mitsuba_full_light.py", &["mitsuba_full_light.json"]),
+    ("flip_reference.py", &["flip.json"]),
 ];
 
 /// Why the regeneration could not be judged.

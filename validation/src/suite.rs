@@ -9,6 +9,7 @@
 use std::path::PathBuf;
 
 use crate::colorimetry::{self, Colorimetry, ColourLaws};
+use crate::flip;
 use crate::full_light::{self, FullLight, FullLightChecks};
 use crate::laws::{self, Laws, Laws64, MitsubaLaws};
 use crate::metals::{self, MetalLaws, MetalsReference};
@@ -251,12 +252,31 @@ impl CheckKind for FullLightChecks {
     }
 }
 
+/// The suite's ꟻLIP against NVIDIA's evaluator.
+pub struct FlipChecks(pub flip::ErrorMap);
+
+impl CheckKind for FlipChecks {
+    fn name(&self) -> &'static str {
+        "ꟻLIP against NVIDIA's evaluator"
+    }
+
+    fn run(&self, context: &Context, report: &mut Report) -> Result<(), ReferenceError> {
+        let reference = flip::FlipReference::load(&context.reference_dir)?;
+        report.note_reference(&context.reference_dir, flip::FILE)?;
+        report
+            .checks
+            .push(flip::check_against_nvidia(self.0, &reference));
+        Ok(())
+    }
+}
+
 /// The kinds of check `optics validate` runs, with the radiometry crate's laws.
 pub fn standard_kinds() -> Vec<Box<dyn CheckKind>> {
     vec![
         Box::new(LawChecks(Laws::radiometry(), Laws64::radiometry())),
         Box::new(ColourChecks(ColourLaws::radiometry())),
         Box::new(MetalChecks(MetalLaws::radiometry())),
+        Box::new(FlipChecks(flip::error_map)),
         Box::new(RenderChecks::tracer()),
         Box::new(FullLightChecks::tracer()),
     ]

@@ -50,11 +50,11 @@ fn every_check_passes_against_the_committed_references() {
         |i, name| seen.push((i, name.to_owned())),
     )
     .expect("committed references load");
-    assert_eq!(seen.len(), 5, "one progress call per kind: {seen:?}");
+    assert_eq!(seen.len(), 6, "one progress call per kind: {seen:?}");
     assert!(report.passed(), "{:#?}", report.checks);
     assert_eq!(report.summary.failed, 0);
     assert_eq!(report.summary.checks, report.checks.len());
-    assert_eq!(report.references.len(), 7, "{:?}", report.references.keys());
+    assert_eq!(report.references.len(), 8, "{:?}", report.references.keys());
     assert_eq!(report.fresnel_curves.len(), 9);
     assert!(report
         .fresnel_curves

@@ -147,7 +147,7 @@ fn seconds_unchecked() -> bool {
 pub const UNCONVERGED: f64 = 0.01;
 
 /// The measures a front is drawn for, by their JSON names.
-pub const MEASURES: [&str; 3] = ["rel_rmse", "delta_e_mean", "delta_e_p99"];
+pub const MEASURES: [&str; 4] = ["rel_rmse", "delta_e_mean", "delta_e_p99", "flip_mean"];
 
 impl Measured {
     /// The measure named `name` (one of [`MEASURES`]).
@@ -156,6 +156,7 @@ impl Measured {
             "rel_rmse" => self.errors.rel_rmse,
             "delta_e_mean" => self.errors.delta_e_mean,
             "delta_e_p99" => self.errors.delta_e_p99,
+            "flip_mean" => self.errors.flip_mean,
             _ => f64::NAN,
         }
     }

@@ -90,7 +90,7 @@ fn the_sweep_of_a_scene_is_versioned_and_its_fronts_are_its_own_numbers() {
     assert!(dir.path().join("shadow-lambert.md").is_file());
     let points = sweep["points"].as_array().unwrap();
     assert_eq!(points[0]["axis"], "scene");
-    for measure in ["rel_rmse", "delta_e_mean", "delta_e_p99"] {
+    for measure in ["rel_rmse", "delta_e_mean", "delta_e_p99", "flip_mean"] {
         let mut marked: Vec<String> = points
             .iter()
             .filter(|p| p["pareto"].as_array().unwrap().iter().any(|m| m == measure))

@@ -39,7 +39,7 @@ fn swatch(srgb: [f64; 3]) -> String {
 /// The areas of the report, in the order of its first screen: a title, the
 /// check ids it gathers (by prefix; the first area that claims a check
 /// keeps it), and the figures that say it best (file-name prefixes).
-const AREAS: [Area; 6] = [
+const AREAS: [Area; 7] = [
     Area {
         key: "mpmath",
         title: "Laws against 50-digit mpmath",
@@ -74,6 +74,13 @@ const AREAS: [Area; 6] = [
         checks: &["renders."],
         figures: &["render_kaleidoscope_lit_path", "render_"],
         headline: Some("|ours − Mitsuba| / tolerance"),
+    },
+    Area {
+        key: "images",
+        title: "ꟻLIP against NVIDIA's evaluator",
+        checks: &["images."],
+        figures: &[],
+        headline: Some("mean: |ours − NVIDIA|"),
     },
     Area {
         key: "full-light",

@@ -12,6 +12,10 @@
 //! - **ΔE2000 of the displayed image**: each pixel as `optics render`'s PNG
 //!   shows it (clamped to [0, 1], 8-bit sRGB) in CIELAB under D65, against
 //!   the truth shown the same way; the mean and the 99th percentile.
+//! - **ꟻLIP** of the displayed image ([`validation::flip`], LDR, at 67
+//!   pixels per degree), the rendering field's perceptual difference:
+//!   the error map of the whole frame (its filters see across the edge of
+//!   the surface), averaged over the surface pixels.
 //! - For a Monte Carlo setting, rendered with `r ≥ 2` seeds, the error
 //!   splits into **variance** (the per-pixel sample variance across seeds,
 //!   of one render) and **bias** (what remains of the mean squared error
@@ -141,6 +145,8 @@ pub struct Errors {
     pub delta_e_mean: f64,
     /// 99th percentile of ΔE2000 of the displayed image.
     pub delta_e_p99: f64,
+    /// Mean LDR ꟻLIP of the displayed image over the surface pixels.
+    pub flip_mean: f64,
     /// The Monte Carlo split, for settings rendered with several seeds.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub split: Option<Split>,
@@ -202,9 +208,14 @@ pub fn errors(images: &[Image], truth: &Truth, mask: &Mask) -> Errors {
         }
     });
     let displayed_truth = displayed(&truth.image, mask);
+    let shown_truth = srgb8(&truth.image);
     let mut delta_e_mean = 0.0;
     let mut delta_e_p99 = 0.0;
+    let mut flip_mean = 0.0;
     for image in images {
+        let map =
+            validation::flip::error_map(&shown_truth, &srgb8(image), image.width, image.height);
+        flip_mean += validation::flip::mean(&map, Some(&mask.0)) / n;
         let mut de: Vec<f64> = displayed(image, mask)
             .iter()
             .zip(&displayed_truth)
@@ -217,6 +228,7 @@ pub fn errors(images: &[Image], truth: &Truth, mask: &Mask) -> Errors {
         rel_rmse: ((squared_error - floor).max(0.0) / energy).sqrt(),
         delta_e_mean,
         delta_e_p99,
+        flip_mean,
         split,
     }
 }
@@ -241,6 +253,15 @@ fn displayed(image: &Image, mask: &Mask) -> Vec<radiometry::colour::Lab> {
                 .map(|c| srgb_decode(f64::from(to_srgb8(c)) / 255.0));
             xyz_to_lab(linear_srgb_to_xyz(shown), white)
         })
+        .collect()
+}
+
+/// The whole image as the PNG displays it: 8-bit sRGB, row-major RGB.
+fn srgb8(image: &Image) -> Vec<u8> {
+    image
+        .pixels
+        .iter()
+        .flat_map(|p| p.to_array().map(to_srgb8))
         .collect()
 }
 
@@ -276,6 +297,7 @@ mod tests {
         assert_eq!(errors.rel_rmse, 0.0);
         assert_eq!(errors.delta_e_mean, 0.0);
         assert_eq!(errors.delta_e_p99, 0.0);
+        assert_eq!(errors.flip_mean, 0.0);
     }
 
     /// Truth (1, 1), render (1, 0.5): Σ(x − t)² = 3·0.25, Σt² = 6, so the
@@ -403,6 +425,22 @@ mod tests {
         // Radiance past 1 displays as 1: no further error.
         let hot = errors(&[image(vec![Vec3::new(7.0, 0.0, 0.0)])], &truth, &mask);
         assert_eq!(hot.delta_e_mean, red.delta_e_mean);
+    }
+
+    /// ꟻLIP orders renders by how far they look from the truth: grey 0.5
+    /// shown against 0.52 and 0.6 (8-bit 188 against 190 and 203).
+    #[test]
+    fn flip_grows_with_the_difference_seen() {
+        let square = |v: f32| Image {
+            width: 16,
+            height: 16,
+            pixels: vec![Vec3::splat(v); 256],
+        };
+        let mask = Mask::all(256);
+        let truth = Truth::new(square(0.5), 0.0, &mask);
+        let near = errors(&[square(0.52)], &truth, &mask).flip_mean;
+        let far = errors(&[square(0.6)], &truth, &mask).flip_mean;
+        assert!(0.0 < near && near < far && far <= 1.0, "{near} {far}");
     }
 
     #[test]

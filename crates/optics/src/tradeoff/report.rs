@@ -49,13 +49,14 @@ pub fn table(sweep: &Sweep, lang: Lang) -> Vec<String> {
             sweep.truth.noise_relative
         ),
         format!(
-            "{:<width$}  {:>9}  {:>10}  {:>8}  {:>6}  {:>6}  {:>9}  {:>9}  {:>9}  {:>7}  front",
+            "{:<width$}  {:>9}  {:>10}  {:>8}  {:>6}  {:>6}  {:>6}  {:>9}  {:>9}  {:>9}  {:>7}  front",
             lang.pick("setting", "beállítás"),
             lang.pick("time ms", "idő ms"),
             lang.pick("rays", "sugár"),
             "rel RMSE",
             "ΔE avg",
             "ΔE p99",
+            "ꟻLIP",
             "variance",
             "bias²",
             lang.pick("effic.", "hatékony."),
@@ -65,13 +66,14 @@ pub fn table(sweep: &Sweep, lang: Lang) -> Vec<String> {
     for p in &sweep.points {
         let split = p.errors.split;
         lines.push(format!(
-            "{:<width$}  {:>9}  {:>10}  {:>8}  {:>6.2}  {:>6.2}  {:>9}  {:>9}  {:>9}  {:>7.2}  {}",
+            "{:<width$}  {:>9}  {:>10}  {:>8}  {:>6.2}  {:>6.2}  {:>6.3}  {:>9}  {:>9}  {:>9}  {:>7.2}  {}",
             p.point.label,
             format!("{:.3}", p.seconds_median * 1e3),
             format!("{:.3e}", p.rays),
             format!("{:.4}", p.errors.rel_rmse),
             p.errors.delta_e_mean,
             p.errors.delta_e_p99,
+            p.errors.flip_mean,
             split.map_or_else(|| "-".to_owned(), |s| format!("{:.2e}", s.variance)),
             split.map_or_else(|| "-".to_owned(), |s| format!("{:.2e}", s.bias_squared)),
             p.efficiency
@@ -83,12 +85,14 @@ pub fn table(sweep: &Sweep, lang: Lang) -> Vec<String> {
     lines
 }
 
-/// `R` `A` `P`: on the front of relative RMSE, mean ΔE, 99th-percentile ΔE.
+/// `R` `A` `P` `F`: on the front of relative RMSE, mean ΔE, 99th-percentile
+/// ΔE, ꟻLIP.
 fn front_marks(p: &Measured) -> String {
     [
         ("rel_rmse", 'R'),
         ("delta_e_mean", 'A'),
         ("delta_e_p99", 'P'),
+        ("flip_mean", 'F'),
     ]
     .iter()
     .map(|&(name, mark)| if p.pareto.contains(&name) { mark } else { '·' })
@@ -126,8 +130,8 @@ pub fn markdown(sweep: &Sweep, stem: &str) -> String {
             sweep.truth.noise_relative
         );
     }
-    out += "| setting | time (ms), median (range) | rays | rel. RMSE | ΔE mean | ΔE p99 | variance | bias² | efficiency | ΔE p99 vs own | front |\n";
-    out += "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|:-:|\n";
+    out += "| setting | time (ms), median (range) | rays | rel. RMSE | ΔE mean | ΔE p99 | ꟻLIP | variance | bias² | efficiency | ΔE p99 vs own | front |\n";
+    out += "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|:-:|\n";
     for p in &sweep.points {
         let split = p.errors.split;
         let spread = if p.seconds.len() > 1 {
@@ -142,7 +146,7 @@ pub fn markdown(sweep: &Sweep, stem: &str) -> String {
             String::new()
         };
         out += &format!(
-            "| {} | {:.3}{} | {:.3e} | {:.4} | {:.2} | {:.2} | {} | {} | {} | {:.2} | {} |\n",
+            "| {} | {:.3}{} | {:.3e} | {:.4} | {:.2} | {:.2} | {:.3} | {} | {} | {} | {:.2} | {} |\n",
             p.point.label,
             p.seconds_median * 1e3,
             spread,
@@ -150,6 +154,7 @@ pub fn markdown(sweep: &Sweep, stem: &str) -> String {
             p.errors.rel_rmse,
             p.errors.delta_e_mean,
             p.errors.delta_e_p99,
+            p.errors.flip_mean,
             split.map_or_else(|| "–".to_owned(), |s| format!("{:.2e}", s.variance)),
             split.map_or_else(|| "–".to_owned(), |s| format!("{:.2e}", s.bias_squared)),
             p.efficiency
@@ -294,6 +299,7 @@ mod tests {
             rel_rmse: 0.0,
             delta_e_mean: 0.0,
             delta_e_p99: seen,
+            flip_mean: 0.0,
             split: None,
         };
         Measured {
