@@ -11,6 +11,7 @@ numbers are the sweep's, nothing is recomputed here. Prints the PNG's path.
 import json
 import os
 import sys
+import textwrap
 
 import matplotlib
 
@@ -98,9 +99,9 @@ def draw(sweep, png):
         ax.set_title(title, fontsize=10)
         ax.grid(True, which="both", linewidth=0.3)
     axes[0].legend(fontsize=8)
+    title = f"{sweep['scene']} at {sweep['width']}×{sweep['height']}: {sweep['command']}"
     fig.suptitle(
-        f"{sweep['scene']} at {sweep['width']}×{sweep['height']}: {sweep['command']}\n"
-        f"{sweep['machine']}, {sweep['date']}",
+        textwrap.fill(title, 110) + f"\n{sweep['machine']}, {sweep['date']}",
         fontsize=9,
     )
     fig.tight_layout()
