@@ -28,6 +28,10 @@ pub struct Check {
     pub failures: Vec<String>,
     /// Disagreements between references, reported and not counted as failures.
     pub findings: Vec<String>,
+    /// The findings in one plain sentence, the worst of them named, for a
+    /// reader who will not read them all; set by the check that found them.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub gist: Option<String>,
 }
 
 /// The worst value of one measured quantity and where it occurred.
@@ -53,6 +57,7 @@ impl Check {
             metrics: Vec::new(),
             failures: Vec::new(),
             findings: Vec::new(),
+            gist: None,
         }
     }
 
@@ -98,6 +103,14 @@ impl Check {
     /// Records a finding.
     pub fn find(&mut self, message: String) {
         self.findings.push(message);
+    }
+
+    /// Sums the findings up in one plain sentence, `gist`, where there are
+    /// any (a check without findings keeps none).
+    pub fn sum_up(&mut self, gist: impl FnOnce(&Self) -> String) {
+        if !self.findings.is_empty() {
+            self.gist = Some(gist(self));
+        }
     }
 }
 

@@ -11,7 +11,8 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use validation::check::Check;
-use validation::report::{to_html, to_json, Report};
+use validation::report::{to_html, to_json, Report, WorstDeltaE};
+use validation::speed::Timing;
 
 /// A report with a check in every area and the awkward content real ones
 /// carry: a JSON request as the place of a worst value, long names, a
@@ -71,6 +72,22 @@ fn sample() -> (Report, Vec<String>) {
         &[("photon / ptracer", 1.0012345678901234, "")],
     );
     report.checks = vec![laws, mpmath, render, colour, light];
+    report.metal_delta_e = vec![WorstDeltaE {
+        metal: "gold".into(),
+        method: "course RGB n, κ (seed 000)".into(),
+        delta_e_2000: 5.257051672420828,
+        at_angle_deg: 0.0,
+    }];
+    report.speed = ["spectral: 85 wavelengths", "course RGB: 3 wavelengths"]
+        .iter()
+        .zip([15220.5761, 437.50055])
+        .map(|(method, ns)| Timing {
+            method: (*method).into(),
+            ns_per_colour: ns,
+            iterations: 20_000,
+            optimised: true,
+        })
+        .collect();
     report.summarise();
     (
         report,
@@ -88,30 +105,46 @@ fn check(id: &str, cases: usize, worst: &[(&str, f64, &str)]) -> Check {
     check
 }
 
-/// Every `(check, quantity) → value` the page carries in its tables.
-fn numbers_in(html: &str) -> BTreeMap<(String, String), f64> {
-    let attribute = |cell: &str, name: &str| {
-        let start = cell.find(&format!("{name}=\""))? + name.len() + 2;
-        let len = cell[start..].find('"')?;
-        Some(unescape(&cell[start..start + len]))
+/// Every number the page carries, by where `report.json` holds it (a JSON
+/// pointer, `data-json`) with its value in full (`data-value`); the page
+/// shows each in one place.
+fn numbers_in(html: &str) -> BTreeMap<String, f64> {
+    let attribute = |tag: &str, name: &str| {
+        let start = tag.find(&format!("{name}=\""))? + name.len() + 2;
+        let len = tag[start..].find('"')?;
+        Some(unescape(&tag[start..start + len]))
     };
     let mut found = BTreeMap::new();
-    for cell in html.split("<td ").skip(1) {
-        let cell = &cell[..cell.find('>').unwrap_or(cell.len())];
-        let (Some(check), Some(metric), Some(value)) = (
-            attribute(cell, "data-check"),
-            attribute(cell, "data-metric"),
-            attribute(cell, "data-value"),
-        ) else {
+    for tag in html.split('<').skip(1) {
+        let tag = &tag[..tag.find('>').unwrap_or(tag.len())];
+        let (Some(pointer), Some(value)) =
+            (attribute(tag, "data-json"), attribute(tag, "data-value"))
+        else {
             continue;
         };
         let value: f64 = value.parse().expect("a number in data-value");
         assert!(
-            found.insert((check, metric), value).is_none(),
-            "a number shown twice"
+            found.insert(pointer.clone(), value).is_none(),
+            "{pointer} shown twice"
         );
     }
     found
+}
+
+/// Every number the page quotes again (`data-quote`: a card's headline),
+/// with the value it shows.
+fn quotes_in(html: &str) -> Vec<(String, f64)> {
+    html.split("data-quote=\"")
+        .skip(1)
+        .map(|rest| {
+            let pointer = unescape(&rest[..rest.find('"').expect("its end")]);
+            let value = rest.split("data-value=\"").nth(1).expect("its value");
+            let value = value[..value.find('"').expect("its end")]
+                .parse()
+                .expect("a number");
+            (pointer, value)
+        })
+        .collect()
 }
 
 fn unescape(text: &str) -> String {
@@ -121,18 +154,45 @@ fn unescape(text: &str) -> String {
         .replace("&amp;", "&")
 }
 
-/// Every `(check, quantity) → value` of `report.json`.
-fn numbers_of(json: &str) -> BTreeMap<(String, String), f64> {
+/// Every number of `report.json` that the page shows as a number: the
+/// summary's counts, each check's cases and worst values, the metals'
+/// worst colour errors and the timings (the figures' data are drawn, not
+/// tabled), by JSON pointer.
+fn numbers_of(json: &str) -> BTreeMap<String, f64> {
     let report: serde_json::Value = serde_json::from_str(json).expect("report.json");
     let mut found = BTreeMap::new();
-    for check in report["checks"].as_array().expect("checks") {
-        for m in check["metrics"].as_array().expect("metrics") {
-            let key = (
-                check["id"].as_str().expect("id").to_owned(),
-                m["name"].as_str().expect("name").to_owned(),
-            );
-            found.insert(key, m["worst"].as_f64().expect("a finite worst"));
+    let mut take = |pointer: String| {
+        let value = report
+            .pointer(&pointer)
+            .and_then(serde_json::Value::as_f64)
+            .unwrap_or_else(|| panic!("no number at {pointer}"));
+        found.insert(pointer, value);
+    };
+    for field in ["checks", "passed", "failed", "findings"] {
+        take(format!("/summary/{field}"));
+    }
+    for (i, check) in report["checks"]
+        .as_array()
+        .expect("checks")
+        .iter()
+        .enumerate()
+    {
+        take(format!("/checks/{i}/cases"));
+        for j in 0..check["metrics"].as_array().expect("metrics").len() {
+            take(format!("/checks/{i}/metrics/{j}/worst"));
         }
+    }
+    for k in 0..report["metal_delta_e"]
+        .as_array()
+        .expect("metal_delta_e")
+        .len()
+    {
+        take(format!("/metal_delta_e/{k}/delta_e_2000"));
+        take(format!("/metal_delta_e/{k}/at_angle_deg"));
+    }
+    for k in 0..report["speed"].as_array().expect("speed").len() {
+        take(format!("/speed/{k}/ns_per_colour"));
+        take(format!("/speed/{k}/iterations"));
     }
     found
 }
@@ -143,7 +203,18 @@ fn the_page_carries_every_number_of_report_json() {
     let html = to_html(&report, &figures);
     let json = to_json(&report);
     assert_eq!(numbers_in(&html), numbers_of(&json));
-    assert_eq!(numbers_of(&json).len(), 8);
+    let quotes = quotes_in(&html);
+    // The two laws' cards quote their worst ulps; the sample has no other headline quantity.
+    assert_eq!(
+        quotes.len(),
+        2,
+        "the cards quote their headlines: {quotes:?}"
+    );
+    for (pointer, value) in quotes {
+        assert_eq!(numbers_of(&json).get(&pointer), Some(&value), "{pointer}");
+    }
+    // 4 counts, 5 checks' cases, 8 worst values, 2 of the metal, 4 timings.
+    assert_eq!(numbers_of(&json).len(), 23);
 }
 
 #[test]
@@ -154,6 +225,35 @@ fn a_page_with_a_row_dropped_is_caught() {
     let end = row + html[row..].find("</tr>").expect("its end") + "</tr>".len();
     let dropped = format!("{}{}", &html[..row], &html[end..]);
     assert_ne!(numbers_in(&dropped), numbers_of(&to_json(&report)));
+}
+
+#[test]
+fn a_page_with_a_timing_or_a_count_dropped_is_caught() {
+    let (report, figures) = sample();
+    let html = to_html(&report, &figures);
+    let json = numbers_of(&to_json(&report));
+    for pointer in [
+        "/speed/1/ns_per_colour",
+        "/summary/findings",
+        "/metal_delta_e/0/at_angle_deg",
+    ] {
+        let cell = html
+            .find(&format!("data-json=\"{pointer}\""))
+            .expect(pointer);
+        let dropped = html.replacen(&html[cell..cell + 12], "data-gone", 1);
+        assert_ne!(numbers_in(&dropped), json, "{pointer}");
+    }
+}
+
+#[test]
+fn a_page_showing_a_wrong_number_is_caught() {
+    let (report, figures) = sample();
+    let html = to_html(&report, &figures).replacen(
+        "data-value=\"5.257051672420828e0\"",
+        "data-value=\"5.26e0\"",
+        1,
+    );
+    assert_ne!(numbers_in(&html), numbers_of(&to_json(&report)));
 }
 
 #[test]

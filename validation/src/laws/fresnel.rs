@@ -115,6 +115,7 @@ pub fn check_dielectric(laws: &Laws, reference: &MitsubaLaws) -> Check {
             ));
         }
     }
+    check.sum_up(|c| mitsuba_gist(c, "fresnel"));
     check
 }
 
@@ -140,7 +141,27 @@ pub fn check_conductor(laws: &Laws, reference: &MitsubaLaws) -> Check {
             [e.r, e.r_s, e.r_p],
         );
     }
+    check.sum_up(|c| mitsuba_gist(c, "fresnel_conductor"));
     check
+}
+
+/// The findings of a law check in one sentence: how far Mitsuba's float32
+/// `law` strays from the exact law at worst, and where.
+fn mitsuba_gist(check: &Check, law: &str) -> String {
+    let worst = ["R", "R_s", "R_p"]
+        .iter()
+        .filter_map(|q| check.worst(&format!("{q}: |Mitsuba − exact|")))
+        .max_by(|a, b| a.worst.total_cmp(&b.worst));
+    match worst {
+        Some(m) => format!(
+            "Mitsuba's float32 `{law}` departs from the exact law by up to {:.1e}, at {} \
+             ({} values beyond {MITSUBA_ABS:.1e}).",
+            m.worst,
+            m.at,
+            check.findings.len()
+        ),
+        None => format!("Mitsuba's float32 `{law}` departs from the exact law."),
+    }
 }
 
 /// Schlick's approximation against its exact definition (Mitsuba has no

@@ -143,6 +143,18 @@ pub fn compare_path(
             super::MITSUBA_RAY_EPSILON
         ));
     }
+    check.sum_up(|c| {
+        format!(
+            "In {name}, Mitsuba's path render departs from ours only where its own ray offsets \
+             move light: {} pixel-channels and {} of the image's mean channels, each explained \
+             by those offsets.",
+            verdicts.offset_findings + verdicts.rule_findings,
+            c.findings
+                .iter()
+                .filter(|f| f.starts_with("the image's mean"))
+                .count()
+        )
+    });
     summarise_failures(&mut check);
     let figure = triptych(name, "path", scene, ours.0, &mitsuba.mean, &heat);
     Some(Compared { check, figure })

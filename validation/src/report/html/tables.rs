@@ -1,0 +1,135 @@
+//! The page's tables after the areas: the metal colours, their timing,
+//! every check, the references read.
+
+use std::fmt::Write as _;
+
+use super::format::{escape, number, readable, status, swatch};
+use crate::report::Report;
+
+/// The metal shortcuts' worst CIEDE2000, with swatches.
+pub(super) fn metal_colours(h: &mut String, report: &Report) {
+    if !report.metal_delta_e.is_empty() {
+        h.push_str("<h2 id=metal-colours>Metal colours: CIEDE2000 of the shortcuts from the spectral colour</h2>\n\
+                    <p>Worst over the angles of incidence; about 1 is a just-noticeable difference.</p>\n\
+                    <div class=scroll><table><tr><th>metal</th><th>shortcut</th><th>worst ΔE00</th><th>at</th><th>spectral | shortcut at that angle</th></tr>\n");
+        for (k, w) in report.metal_delta_e.iter().enumerate() {
+            let find = |method: &str| {
+                report
+                    .metal_colours
+                    .iter()
+                    .find(|c| {
+                        c.metal == w.metal && c.method == method && c.angle_deg == w.at_angle_deg
+                    })
+                    .map(|c| swatch(c.srgb))
+                    .unwrap_or_default()
+            };
+            let at = |field: &str| format!("/metal_delta_e/{k}/{field}");
+            let _ = writeln!(
+                h,
+                "<tr><td>{}</td><td>{}</td>{}{}<td>{} {}</td></tr>",
+                escape(&w.metal),
+                escape(&w.method),
+                number(
+                    "td",
+                    &at("delta_e_2000"),
+                    w.delta_e_2000,
+                    &format!("{:.2}", w.delta_e_2000)
+                ),
+                number(
+                    "td",
+                    &at("at_angle_deg"),
+                    w.at_angle_deg,
+                    &format!("{}°", readable(w.at_angle_deg))
+                ),
+                find("spectral (exact)"),
+                find(&w.method)
+            );
+        }
+        h.push_str("</table></div>\n");
+    }
+}
+
+/// The metal-colour timings.
+pub(super) fn speed(h: &mut String, report: &Report) {
+    if !report.speed.is_empty() {
+        h.push_str("<h2 id=speed>Speed: time per metal colour</h2>\n<div class=scroll><table><tr><th>method</th><th>ns per colour</th><th>colours timed</th></tr>\n");
+        for (k, t) in report.speed.iter().enumerate() {
+            let _ = writeln!(
+                h,
+                "<tr><td>{}</td>{}{}</tr>",
+                escape(&t.method),
+                number(
+                    "td",
+                    &format!("/speed/{k}/ns_per_colour"),
+                    t.ns_per_colour,
+                    &format!("{:.0}", t.ns_per_colour)
+                ),
+                number(
+                    "td",
+                    &format!("/speed/{k}/iterations"),
+                    t.iterations as f64,
+                    &t.iterations.to_string()
+                )
+            );
+        }
+        if let [spectral, rgb] = report.speed.as_slice() {
+            let _ = writeln!(
+                h,
+                "</table></div>\n<p>The spectrum costs {:.1}× the three wavelengths (wall clock, this machine, one run{}).</p>",
+                spectral.ns_per_colour / rgb.ns_per_colour,
+                if spectral.optimised {
+                    ""
+                } else {
+                    "; an unoptimised build: <code>cargo run --release -p optics -- validate</code> gives representative times"
+                }
+            );
+        } else {
+            h.push_str("</table></div>\n");
+        }
+    }
+}
+
+/// Every check, failed ones open, with its failures and findings.
+pub(super) fn every_check(h: &mut String, report: &Report) {
+    h.push_str("<h2 id=checks>Every check in detail</h2>\n");
+    for (i, check) in report.checks.iter().enumerate() {
+        let _ = writeln!(
+            h,
+            "<details{}><summary>{} <b>{}</b>: {} ({} cases)</summary>\n<p>Reference: {}.<br>Tolerance: {}.</p>",
+            if check.passed() { "" } else { " open" },
+            status(check),
+            escape(&check.id),
+            escape(&check.title),
+            number("span", &format!("/checks/{i}/cases"), check.cases as f64, &check.cases.to_string()),
+            escape(&check.reference),
+            escape(&check.tolerance)
+        );
+        for (kind, list) in [("Failures", &check.failures), ("Findings", &check.findings)] {
+            if !list.is_empty() {
+                let _ = writeln!(h, "<p>{kind} ({}):</p><ul>", list.len());
+                for item in list {
+                    let _ = writeln!(h, "<li>{}</li>", escape(item));
+                }
+                h.push_str("</ul>\n");
+            }
+        }
+        h.push_str("</details>\n");
+    }
+}
+
+/// The references read, and the page's end.
+pub(super) fn references(h: &mut String, report: &Report) {
+    h.push_str(
+        "<h2 id=references>References</h2>\n<div class=scroll><table><tr><th>file</th><th>schema</th><th>regenerate</th></tr>\n",
+    );
+    for (name, info) in &report.references {
+        let _ = writeln!(
+            h,
+            "<tr><td>{}</td><td>{}</td><td><code>{}</code></td></tr>",
+            escape(name),
+            escape(&info.schema),
+            escape(&info.regenerate)
+        );
+    }
+    h.push_str("</table></div>\n</body></html>\n");
+}
