@@ -53,6 +53,23 @@ pub fn error_map(reference: &[u8], test: &[u8], width: u32, height: u32) -> Vec<
     nv_flip::flip(reference, test, PIXELS_PER_DEGREE).to_vec()
 }
 
+/// The colour of ꟻLIP value `value` (clamped into [0, 1]) on the magma
+/// scale ꟻLIP's authors draw error maps with (`nv_flip::magma_lut`, 256
+/// entries), as linear RGB for an image that is sRGB-encoded when written.
+pub fn magma(value: f32) -> glam::Vec3 {
+    static LUT: std::sync::OnceLock<Vec<u8>> = std::sync::OnceLock::new();
+    let lut = LUT.get_or_init(|| nv_flip::magma_lut().to_vec());
+    let entries = lut.len() / 3;
+    let t = if value.is_nan() {
+        0.0
+    } else {
+        value.clamp(0.0, 1.0)
+    };
+    let i = 3 * ((t * (entries - 1) as f32).round() as usize);
+    let linear = |byte: u8| radiometry::colour::srgb_decode(f64::from(byte) / 255.0) as f32;
+    glam::Vec3::new(linear(lut[i]), linear(lut[i + 1]), linear(lut[i + 2]))
+}
+
 /// The mean of an error map over the pixels `keep` says (all where `None`);
 /// 0 for none. ꟻLIP's authors name the mean as its one-number summary.
 pub fn mean(map: &[f32], keep: Option<&[bool]>) -> f64 {

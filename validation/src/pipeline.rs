@@ -253,6 +253,7 @@ pub fn run(options: &Options, mut progress: impl FnMut(Step)) -> Result<Outcome,
         None => Vec::new(),
     };
     figures.extend(write_render_figures(&out, &report)?);
+    figures.extend(copy_tradeoff_plots(checkout, &out, &report)?);
     let (json, html) = (to_json(&report), to_html(&report, &figures));
     write_all_atomically(&[
         (&out.join("report.json"), json.as_bytes()),
@@ -395,6 +396,33 @@ fn write_render_figures(out: &Path, report: &Report) -> Result<Vec<String>, Pipe
     for figure in &report.render_figures {
         tracer::output::write_png(&dir.join(&figure.file), &figure.image)?;
         names.push(format!("figures/{}", figure.file));
+    }
+    Ok(names)
+}
+
+/// Copies each trade-off record's Pareto plot (drawn by the command that
+/// wrote the record) beside the report as `figures/tradeoff_STEM.png`, so
+/// that the report stands alone; their names, relative to `out`. A record
+/// without its plot is shown without it.
+fn copy_tradeoff_plots(
+    checkout: &Checkout,
+    out: &Path,
+    report: &Report,
+) -> Result<Vec<String>, PipelineError> {
+    let dir = out.join("figures");
+    let mut names = Vec::new();
+    for record in &report.tradeoffs {
+        let stem = record.stem();
+        let plot = checkout
+            .root()
+            .join(crate::tradeoff::checks::DIR)
+            .join(format!("{stem}-pareto.png"));
+        let Ok(bytes) = std::fs::read(&plot) else {
+            continue;
+        };
+        let name = format!("tradeoff_{stem}.png");
+        write(&dir, &name, &bytes)?;
+        names.push(format!("figures/{name}"));
     }
     Ok(names)
 }

@@ -8,6 +8,7 @@
 
 use std::path::PathBuf;
 
+use crate::check::Check;
 use crate::colorimetry::{self, Colorimetry, ColourLaws};
 use crate::flip;
 use crate::full_light::{self, FullLight, FullLightChecks};
@@ -18,6 +19,7 @@ use crate::reference::ReferenceError;
 use crate::renders::{self, MitsubaRenders, RenderChecks};
 use crate::report::{FresnelCurve, MetalSpectrum, Report, WorstDeltaE};
 use crate::speed;
+use crate::tradeoff;
 use radiometry::spectrum::{self, SAMPLES};
 
 /// What the checks run against, and how much of them.
@@ -197,6 +199,43 @@ impl CheckKind for MetalChecks {
     }
 }
 
+/// The committed speed/accuracy trade-off records (`docs/tradeoffs`):
+/// each checked, each carried into the report for its section.
+pub struct TradeoffChecks;
+
+impl CheckKind for TradeoffChecks {
+    fn name(&self) -> &'static str {
+        "the speed/accuracy trade, as recorded"
+    }
+
+    fn run(&self, context: &Context, report: &mut Report) -> Result<(), ReferenceError> {
+        let dir = context.checkout.join(tradeoff::checks::DIR);
+        let records = tradeoff::checks::read(&dir)?;
+        if records.is_empty() {
+            let mut none = Check::new(
+                "tradeoff.records",
+                "The speed/accuracy trade-off records",
+                tradeoff::checks::DIR,
+                "one record a lit course scene",
+            );
+            none.cases = 1;
+            none.fail(format!(
+                "no record in {}: write them with `{}`",
+                dir.display(),
+                tradeoff::checks::REGENERATE
+            ));
+            report.checks.push(none);
+        }
+        for (file, record) in records {
+            report.checks.push(tradeoff::checks::check(&file, &record));
+            if let Ok(record) = record {
+                report.tradeoffs.push(record);
+            }
+        }
+        Ok(())
+    }
+}
+
 /// Every metal's exact and Schlick reflectance spectra at the reference angles.
 pub fn metal_spectra(laws: &MetalLaws, reference: &MetalsReference) -> Vec<MetalSpectrum> {
     let wavelength_nm: Vec<f64> = (0..SAMPLES).map(spectrum::wavelength_nm).collect();
@@ -279,6 +318,7 @@ pub fn standard_kinds() -> Vec<Box<dyn CheckKind>> {
         Box::new(FlipChecks(flip::error_map)),
         Box::new(RenderChecks::tracer()),
         Box::new(FullLightChecks::tracer()),
+        Box::new(TradeoffChecks),
     ]
 }
 

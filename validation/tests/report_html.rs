@@ -88,12 +88,36 @@ fn sample() -> (Report, Vec<String>) {
             optimised: true,
         })
         .collect();
+    report.tradeoffs = vec![serde_json::from_str(TRADEOFF).expect("the sample record")];
+    report.checks.push(validation::tradeoff::checks::check(
+        Path::new("docs/tradeoffs/gold_spheres-lambert.json"),
+        &Ok(report.tradeoffs[0].clone()),
+    ));
     report.summarise();
     (
         report,
         vec!["figures/render_kaleidoscope_lit_path.png".to_owned()],
     )
 }
+
+/// A trade-off record of two settings, as `optics tradeoff` writes one.
+const TRADEOFF: &str = r#"{"schema": "optics.tradeoff", "version": 1,
+  "scene": "crates/tracer/scenes/gold_spheres.json", "lambert": true, "width": 80, "height": 60,
+  "machine": "a machine, 2 threads", "date": "2026-12-04", "load": "load average 0.5",
+  "command": "optics tradeoff crates/tracer/scenes/gold_spheres.json --lambert",
+  "truth": {"spp": 64, "noise_relative": 3.56e-5},
+  "points": [
+    {"axis": "scene", "label": "scene: whitted, max_depth 63, fresnel exact",
+     "seconds_median": 0.000250786, "rays": 5304.0,
+     "errors": {"rel_rmse": 0.1796523927533933, "delta_e_mean": 2.06, "delta_e_p99": 28.047669109095697, "flip_mean": 0.0678083591684686},
+     "against_scene": {"rel_rmse": 0.0, "delta_e_mean": 0.0, "delta_e_p99": 0.0, "flip_mean": 0.0},
+     "pareto": ["delta_e_mean", "delta_e_p99", "flip_mean"]},
+    {"axis": "fresnel", "label": "fresnel schlick",
+     "seconds_median": 0.000238, "rays": 5304.0,
+     "errors": {"rel_rmse": 0.1791, "delta_e_mean": 2.26, "delta_e_p99": 28.05, "flip_mean": 0.072},
+     "against_scene": {"rel_rmse": 0.01, "delta_e_mean": 0.1, "delta_e_p99": 1.21, "flip_mean": 0.01},
+     "pareto": ["rel_rmse", "delta_e_mean", "delta_e_p99", "flip_mean"], "verdict": "worse"}
+  ]}"#;
 
 /// A check of `cases` cases with its worst values `(quantity, value, at)`.
 fn check(id: &str, cases: usize, worst: &[(&str, f64, &str)]) -> Check {
@@ -190,6 +214,24 @@ fn numbers_of(json: &str) -> BTreeMap<String, f64> {
         take(format!("/metal_delta_e/{k}/delta_e_2000"));
         take(format!("/metal_delta_e/{k}/at_angle_deg"));
     }
+    for (k, record) in report["tradeoffs"]
+        .as_array()
+        .expect("tradeoffs")
+        .iter()
+        .enumerate()
+    {
+        for i in 0..record["points"].as_array().expect("points").len() {
+            for field in [
+                "seconds_median",
+                "errors/rel_rmse",
+                "errors/delta_e_p99",
+                "errors/flip_mean",
+                "against_scene/delta_e_p99",
+            ] {
+                take(format!("/tradeoffs/{k}/points/{i}/{field}"));
+            }
+        }
+    }
     for k in 0..report["speed"].as_array().expect("speed").len() {
         take(format!("/speed/{k}/ns_per_colour"));
         take(format!("/speed/{k}/iterations"));
@@ -204,17 +246,19 @@ fn the_page_carries_every_number_of_report_json() {
     let json = to_json(&report);
     assert_eq!(numbers_in(&html), numbers_of(&json));
     let quotes = quotes_in(&html);
-    // The two laws' cards quote their worst ulps; the sample has no other headline quantity.
+    // The two laws' cards quote their worst ulps, the trade-off's card its
+    // scene's own error; the sample has no other headline quantity.
     assert_eq!(
         quotes.len(),
-        2,
+        3,
         "the cards quote their headlines: {quotes:?}"
     );
     for (pointer, value) in quotes {
         assert_eq!(numbers_of(&json).get(&pointer), Some(&value), "{pointer}");
     }
-    // 4 counts, 5 checks' cases, 8 worst values, 2 of the metal, 4 timings.
-    assert_eq!(numbers_of(&json).len(), 23);
+    // 4 counts, 6 checks' cases, 8 + 4 worst values, 2 of the metal, 4
+    // timings, 2 × 5 of the trade-off's settings.
+    assert_eq!(numbers_of(&json).len(), 38);
 }
 
 #[test]
@@ -274,6 +318,7 @@ fn the_first_screen_gives_the_verdict_and_a_card_per_area() {
         "Colour against colour-science",
         "Renders against Mitsuba 3",
         "All the light",
+        "The speed/accuracy trade, whole renders",
     ] {
         assert!(cards.contains(title), "no card {title}");
     }
@@ -281,7 +326,7 @@ fn the_first_screen_gives_the_verdict_and_a_card_per_area() {
         cards.contains("0 of 1 pass"),
         "the failed render check's card"
     );
-    assert!(html.contains("1 of 5 checks FAIL."));
+    assert!(html.contains("1 of 6 checks FAIL."));
     // Numbers for reading, a request's fields as inputs.
     assert!(html.contains(">3.55e-7<") && html.contains(">0.949<"));
     assert!(html.contains("case 720: cos_i = -0.4081, eta = 0.8535, law = fresnel"));

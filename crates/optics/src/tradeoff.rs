@@ -10,10 +10,12 @@
 //! measure ([`pareto::front`]) says which settings are worth their time.
 
 pub mod measure;
-pub mod pareto;
 mod report;
 pub mod sweep;
 mod truth;
+
+pub use validation::tradeoff::checks::UNCONVERGED;
+pub use validation::tradeoff::{pareto, Verdict, MEASURES, SCHEMA, SCHEMA_VERSION};
 
 use std::path::{Path, PathBuf};
 
@@ -27,11 +29,6 @@ use crate::lang::say;
 use crate::record::{Answer, Record};
 use crate::Ui;
 use measure::{Errors, Mask};
-
-/// The JSON document's schema name; its version is [`SCHEMA_VERSION`].
-pub const SCHEMA: &str = "optics.tradeoff";
-/// The version of [`SCHEMA`]: raised when a field changes meaning or goes.
-pub const SCHEMA_VERSION: u32 = 1;
 
 #[derive(clap::Args, Debug, Serialize)]
 #[command(after_help = "Examples:
@@ -112,6 +109,9 @@ pub struct Measured {
     /// The measures on whose Pareto front (time against that measure) the
     /// point lies.
     pub pareto: Vec<&'static str>,
+    /// What the point is against the scene's own settings (none for them).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub verdict: Option<Verdict>,
 }
 
 /// The most renders of one setting that `--min-seconds` asks for.
@@ -142,12 +142,6 @@ fn seconds_unchecked() -> bool {
 fn seconds_unchecked() -> bool {
     false
 }
-
-/// A truth whose relative noise is above this is said to be unconverged.
-pub const UNCONVERGED: f64 = 0.01;
-
-/// The measures a front is drawn for, by their JSON names.
-pub const MEASURES: [&str; 4] = ["rel_rmse", "delta_e_mean", "delta_e_p99", "flip_mean"];
 
 impl Measured {
     /// The measure named `name` (one of [`MEASURES`]).
@@ -286,12 +280,14 @@ pub fn run(args: &TradeoffArgs, ui: &Ui) -> error::Result<()> {
             against_scene,
             efficiency,
             pareto: Vec::new(),
+            verdict: None,
         });
     }
     if let Some(bar) = &bar {
         bar.finish_and_clear();
     }
     mark_fronts(&mut points);
+    mark_verdicts(&mut points);
 
     let sweep = Sweep {
         schema: SCHEMA,
@@ -491,6 +487,21 @@ fn mark_fronts(points: &mut [Measured]) {
         for i in pareto::front(&xy) {
             points[i].pareto.push(name);
         }
+    }
+}
+
+/// Gives each point after the first, the scene's own settings, its verdict
+/// against them.
+fn mark_verdicts(points: &mut [Measured]) {
+    let Some((base, shortcuts)) = points.split_first_mut() else {
+        return;
+    };
+    for p in shortcuts {
+        p.verdict = Some(Verdict::of(
+            p.against_scene.delta_e_p99,
+            p.seconds_median,
+            base.seconds_median,
+        ));
     }
 }
 

@@ -128,6 +128,7 @@ fn failed_render(name: &str, integrator: &str, error: String) -> Compared {
                 height: 1,
                 pixels: vec![glam::Vec3::ZERO],
             },
+            panels: 1,
         },
     }
 }

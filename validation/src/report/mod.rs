@@ -46,6 +46,9 @@ pub struct Report {
     pub metal_delta_e: Vec<WorstDeltaE>,
     /// Time per metal colour by method.
     pub speed: Vec<Timing>,
+    /// The speed/accuracy trade-off records read (`docs/tradeoffs`), one a
+    /// scene.
+    pub tradeoffs: Vec<crate::tradeoff::record::Record>,
     /// The render triptychs (ours | Mitsuba | difference), written as PNG
     /// by the command beside the report; not part of `report.json`.
     #[serde(skip)]
@@ -139,6 +142,7 @@ impl Report {
             metal_colours: Vec::new(),
             metal_delta_e: Vec::new(),
             speed: Vec::new(),
+            tradeoffs: Vec::new(),
             render_figures: Vec::new(),
         }
     }

@@ -9,18 +9,9 @@ use validation::checkout::Checkout;
 use validation::pipeline::PipelineError;
 use validation::python::{run_tool, Task, ToolError};
 
-use super::{Measured, Sweep};
+use super::{Measured, Sweep, Verdict};
 use crate::error::{self, ErrorKind};
 use crate::lang::{say, Lang};
-
-/// A ΔE2000 of 1 is the just-noticeable difference: a shortcut whose 99th
-/// percentile against the scene's own settings' render stays within this
-/// is not seen.
-pub const JUST_NOTICEABLE: f64 = 1.0;
-
-/// A shortcut is worth it where it is not seen and costs at most this
-/// share of the scene's own settings' time.
-pub const WORTH_IT: f64 = 0.9;
 
 /// The table, one line a point, a header first.
 pub fn table(sweep: &Sweep, lang: Lang) -> Vec<String> {
@@ -181,43 +172,6 @@ pub fn markdown(sweep: &Sweep, stem: &str) -> String {
     out
 }
 
-/// What a point is, read against the scene's own settings by the rule of
-/// [`JUST_NOTICEABLE`] and [`WORTH_IT`].
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Verdict {
-    /// Not seen, and faster: the shortcut is worth taking.
-    WorthIt,
-    /// Not seen, and no faster.
-    Unseen,
-    /// Faster, and seen: a trade.
-    Trade,
-    /// Seen, and no faster.
-    Worse,
-}
-
-impl Verdict {
-    /// The verdict on `p` against the scene's own settings `base`.
-    pub fn of(p: &Measured, base: &Measured) -> Self {
-        let seen = p.against_scene.delta_e_p99 > JUST_NOTICEABLE;
-        let faster = p.seconds_median <= WORTH_IT * base.seconds_median;
-        match (seen, faster) {
-            (false, true) => Verdict::WorthIt,
-            (false, false) => Verdict::Unseen,
-            (true, true) => Verdict::Trade,
-            (true, false) => Verdict::Worse,
-        }
-    }
-
-    fn words(self) -> &'static str {
-        match self {
-            Verdict::WorthIt => "**worth it** (not seen, faster)",
-            Verdict::Unseen => "not seen, no faster",
-            Verdict::Trade => "faster, seen",
-            Verdict::Worse => "seen, no faster",
-        }
-    }
-}
-
 /// One line per axis: each setting's time against the scene's own and its
 /// ΔE p99 against the scene's own render, with its verdict; first the light
 /// the scene's settings leave out.
@@ -251,7 +205,7 @@ pub fn verdicts(sweep: &Sweep) -> Vec<String> {
                     p.point.label,
                     p.seconds_median / base.seconds_median.max(f64::MIN_POSITIVE),
                     p.against_scene.delta_e_p99,
-                    Verdict::of(p, base).words()
+                    p.verdict.map_or("", Verdict::words)
                 )
             })
             .collect();
@@ -285,47 +239,4 @@ pub fn plot(json: &Path, png: &Path) -> error::Result<PathBuf> {
     run_tool(command, Task::Script(script.into()))
         .map_err(|e| ErrorKind::Pipeline(PipelineError::Tool(e)))?;
     Ok(png.to_owned())
-}
-
-#[cfg(test)]
-mod tests {
-    use super::super::measure::Errors;
-    use super::super::sweep::{Axis, Point};
-    use super::*;
-    use tracer::scene::Settings;
-
-    fn point(seconds: f64, seen: f64) -> Measured {
-        let errors = Errors {
-            rel_rmse: 0.0,
-            delta_e_mean: 0.0,
-            delta_e_p99: seen,
-            flip_mean: 0.0,
-            split: None,
-        };
-        Measured {
-            point: Point {
-                axis: Axis::Fresnel,
-                label: "fresnel schlick".into(),
-                settings: Settings::default(),
-            },
-            seconds: vec![seconds],
-            seconds_median: seconds,
-            rays: 1.0,
-            errors,
-            against_scene: errors,
-            efficiency: None,
-            pareto: Vec::new(),
-        }
-    }
-
-    /// The rule at its edges: ΔE p99 1 is not seen, 1.01 is; 0.9× the
-    /// time is faster, 0.91× is not.
-    #[test]
-    fn a_shortcut_is_worth_it_when_not_seen_and_faster() {
-        let base = point(1.0, 0.0);
-        assert_eq!(Verdict::of(&point(0.9, 1.0), &base), Verdict::WorthIt);
-        assert_eq!(Verdict::of(&point(0.91, 1.0), &base), Verdict::Unseen);
-        assert_eq!(Verdict::of(&point(0.5, 1.01), &base), Verdict::Trade);
-        assert_eq!(Verdict::of(&point(2.0, 5.0), &base), Verdict::Worse);
-    }
 }

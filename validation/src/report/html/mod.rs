@@ -3,6 +3,7 @@
 mod format;
 mod renders;
 mod tables;
+mod tradeoff;
 
 use std::fmt::Write as _;
 
@@ -15,7 +16,7 @@ use tables::{every_check, metal_colours, references, speed};
 /// The areas of the report, in the order of its first screen: a title, the
 /// check ids it gathers (by prefix; the first area that claims a check
 /// keeps it), and the figures that say it best (file-name prefixes).
-const AREAS: [Area; 7] = [
+const AREAS: [Area; 8] = [
     Area {
         key: "mpmath",
         title: "Laws against 50-digit mpmath",
@@ -65,6 +66,13 @@ const AREAS: [Area; 7] = [
         figures: &[],
         headline: Some("Mitsuba path's missing share, surface"),
     },
+    Area {
+        key: "tradeoff",
+        title: "The speed/accuracy trade, whole renders",
+        checks: &["tradeoff."],
+        figures: &["tradeoff_kaleidoscope_lit", "tradeoff_"],
+        headline: Some("the scene's own settings: relative RMSE from all the light"),
+    },
 ];
 
 /// One area of the report.
@@ -92,8 +100,10 @@ pub fn to_html(report: &Report, figures: &[String]) -> String {
     findings(&mut h, report);
     for area in &areas {
         area_section(&mut h, area);
-        if area.area.key == "renders" {
-            render_gallery(&mut h, report, &area.figures);
+        match area.area.key {
+            "renders" => render_gallery(&mut h, report, &area.figures),
+            "tradeoff" => tradeoff::tradeoffs(&mut h, report, &area.figures),
+            _ => {}
         }
     }
     metal_colours(&mut h, report);
@@ -227,7 +237,7 @@ details{margin:.5em 0}summary{cursor:pointer}\
 img{max-width:100%}img.pixels{image-rendering:pixelated}\
 figcaption{font-size:.85em;color:#444;overflow-wrap:anywhere}\
 .render{width:16em;max-width:100%}.flip img{display:block;width:100%;height:100%;object-fit:cover;object-position:0 0}\
-.flip:hover img,.flip:focus img{object-position:50% 0}.flip:focus{outline:2px solid #36c}\
+.flip:hover img,.flip:focus img{object-position:var(--second) 0}.flip:focus{outline:2px solid #36c}\
 .ramp{display:inline-block;width:8em;height:1em;border:1px solid #888;vertical-align:middle}code{background:#f4f4f4;overflow-wrap:anywhere}";
 
 /// One card per area: its pass count, its headline, its figure.
@@ -379,7 +389,7 @@ fn area_section(h: &mut String, a: &Gathered) {
         h.push_str("</details>\n");
     }
     h.push_str("</div></div>\n");
-    if a.figures.len() > 1 && a.area.key != "renders" {
+    if a.figures.len() > 1 && !["renders", "tradeoff"].contains(&a.area.key) {
         let _ = writeln!(
             h,
             "<details><summary>{} more figures</summary><div class=figures>",

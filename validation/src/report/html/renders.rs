@@ -7,13 +7,14 @@ use radiometry::colour::srgb_encode;
 use super::figure;
 use super::format::escape;
 use crate::compare::map::{heat_colour, LEGEND};
+use crate::flip;
 use crate::renders::TRIPTYCH_GAP;
 use crate::report::Report;
 
 /// Each render compared: ours, flipping to Mitsuba's under the pointer or
-/// the keyboard's focus (the triptych's first two panels, so the two are
-/// pixel for pixel the same size), and the whole triptych with the
-/// difference map, its scale beside it.
+/// the keyboard's focus (the figure's first two panels, so the two are
+/// pixel for pixel the same size), and the whole figure (ours | Mitsuba |
+/// ꟻLIP | the difference | the mask), the scales beside them.
 pub(super) fn render_gallery(h: &mut String, report: &Report, figures: &[&String]) {
     if figures.is_empty() {
         return;
@@ -21,8 +22,12 @@ pub(super) fn render_gallery(h: &mut String, report: &Report, figures: &[&String
     let _ = writeln!(
         h,
         "<h3 id=render-figures>Each render: ours, flipping to Mitsuba's</h3>\n\
-         <p>Point at (or tab to) an image to see Mitsuba's render in its place; beside it \
-         ours | Mitsuba | the difference, enlarged without smoothing. {}</p>\n<div class=figures>",
+         <p>Point at (or tab to) an image to see Mitsuba's render in its place. Beside it, \
+         enlarged without smoothing: ours | Mitsuba | ꟻLIP of ours against Mitsuba's | the \
+         difference in units of what the test allows | where a check masks pixels, the mask.</p>\n\
+         <p class=small>{}<br>{}<br>The mask: white where a pixel is not compared (an edge pixel, \
+         whose colour depends on where each renderer's float32 ray meets the edge).</p>\n<div class=figures>",
+        flip_legend(),
         heat_legend()
     );
     for file in figures {
@@ -31,11 +36,13 @@ pub(super) fn render_gallery(h: &mut String, report: &Report, figures: &[&String
             figure(h, file);
             continue;
         };
-        // Three panels and two gaps across, one panel high.
-        let panel = (f.image.width - 2 * TRIPTYCH_GAP) / 3;
+        // `panels` panels and the gaps between them across, one panel high;
+        // Mitsuba's panel is the second, a `1 / (panels − 1)` of the way.
+        let panel = (f.image.width - (f.panels - 1) * TRIPTYCH_GAP) / f.panels;
+        let second = 100.0 / f64::from(f.panels.max(2) - 1);
         let _ = writeln!(
             h,
-            "<figure class=render><div class=flip tabindex=0 style=\"aspect-ratio:{panel}/{height}\">\
+            "<figure class=render><div class=flip tabindex=0 style=\"aspect-ratio:{panel}/{height};--second:{second:.4}%\">\
              <img class=pixels src=\"{src}\" alt=\"ours, or Mitsuba's under the pointer: {name}\"></div>\
              <figcaption>{label}: ours (pointed at: Mitsuba)</figcaption></figure>",
             height = f.image.height,
@@ -48,23 +55,39 @@ pub(super) fn render_gallery(h: &mut String, report: &Report, figures: &[&String
     h.push_str("</div>\n");
 }
 
-/// The difference map's colour scale, drawn from the map's own colours.
-fn heat_legend() -> String {
-    let css = |c: glam::Vec3| {
-        let [r, g, b] = [c.x, c.y, c.z].map(|v| (srgb_encode(f64::from(v)) * 255.0).round() as u8);
-        format!("rgb({r},{g},{b})")
-    };
+/// A linear colour as CSS.
+fn css(c: glam::Vec3) -> String {
+    let [r, g, b] = [c.x, c.y, c.z].map(|v| (srgb_encode(f64::from(v)) * 255.0).round() as u8);
+    format!("rgb({r},{g},{b})")
+}
+
+/// A ramp of `colour` over [0, 1] in nine stops.
+fn ramp(colour: impl Fn(f64) -> glam::Vec3) -> String {
     let stops: Vec<String> = (0..=8)
-        .map(|k| {
-            let t = f64::from(k) / 8.0;
-            format!("{} {}%", css(heat_colour(&[t])), k * 100 / 8)
-        })
+        .map(|k| format!("{} {}%", css(colour(f64::from(k) / 8.0)), k * 100 / 8))
         .collect();
     format!(
-        "<span class=legend><span class=ramp style=\"background:linear-gradient(to right,{})\"></span> \
-         0 to 1 <span class=swatch style=\"background:{}\"></span> beyond 1 \
-         <span class=swatch style=\"background:{}\"></span> masked</span> (the difference map: {})",
-        stops.join(","),
+        "<span class=ramp style=\"background:linear-gradient(to right,{})\"></span>",
+        stops.join(",")
+    )
+}
+
+/// ꟻLIP's scale, drawn from the figure's own colours.
+fn flip_legend() -> String {
+    format!(
+        "ꟻLIP: {} 0 (alike) to 1 (as different as two images can look), LDR ꟻLIP at {} \
+         pixels per degree, Mitsuba's render as the reference.",
+        ramp(|t| flip::magma(t as f32)),
+        flip::PIXELS_PER_DEGREE
+    )
+}
+
+/// The difference map's colour scale, drawn from the map's own colours.
+fn heat_legend() -> String {
+    format!(
+        "The difference: {} 0 to 1 <span class=swatch style=\"background:{}\"></span> beyond 1 \
+         <span class=swatch style=\"background:{}\"></span> masked ({}).",
+        ramp(|t| heat_colour(&[t])),
         css(heat_colour(&[2.0])),
         css(heat_colour(&[f64::NAN])),
         escape(LEGEND)

@@ -1,0 +1,197 @@
+//! `optics validate`'s checks of the committed trade-off records: each is
+//! the current version, its every measure is a value the measure can take,
+//! its truth converged, and the fronts and verdicts it carries are the ones
+//! its own numbers give. The records' numbers themselves are the
+//! renderer's measured trade, shown in the report beside these checks.
+
+use std::path::{Path, PathBuf};
+
+use super::record::{Point, Record};
+use super::{pareto, Verdict, MEASURES, SCHEMA, SCHEMA_VERSION};
+use crate::check::Check;
+use crate::reference::{parse, ReferenceError};
+
+/// Where the records are, relative to the checkout.
+pub const DIR: &str = "docs/tradeoffs";
+
+/// The command that writes them.
+pub const REGENERATE: &str = "docs/tradeoffs/make";
+
+/// A truth whose relative noise exceeds this has not converged: the
+/// errors measured against it are its noise as much as the setting's.
+pub const UNCONVERGED: f64 = 0.01;
+
+/// A record file and what reading it gave.
+pub type Read = (PathBuf, Result<Record, ReferenceError>);
+
+/// The records under `dir`, by file name, in name order.
+///
+/// # Errors
+///
+/// A file that cannot be read; a record that is not `optics.tradeoff`
+/// JSON is returned as its error, per file, for its check to report.
+pub fn read(dir: &Path) -> Result<Vec<Read>, ReferenceError> {
+    let io = |source| ReferenceError::Io {
+        path: dir.to_owned(),
+        source,
+    };
+    let mut files: Vec<PathBuf> = std::fs::read_dir(dir)
+        .map_err(io)?
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.extension().is_some_and(|x| x == "json"))
+        .collect();
+    files.sort();
+    files
+        .into_iter()
+        .map(|path| {
+            let text = std::fs::read_to_string(&path).map_err(|source| ReferenceError::Io {
+                path: path.clone(),
+                source,
+            })?;
+            let record = parse(&path, &text, SCHEMA);
+            Ok((path, record))
+        })
+        .collect()
+}
+
+/// The check of one record, `file` named in it.
+pub fn check(file: &Path, record: &Result<Record, ReferenceError>) -> Check {
+    let stem = file
+        .file_stem()
+        .map_or_else(String::new, |s| s.to_string_lossy().into_owned());
+    let mut check = Check::new(
+        &format!("tradeoff.{stem}"),
+        &format!("{stem}: the speed/accuracy trade of every shortcut the scene allows, as recorded"),
+        &format!("{}, written by `{REGENERATE}`", file.display()),
+        &format!(
+            "schema {SCHEMA} version {SCHEMA_VERSION}; every measure finite, ≥ 0 and ꟻLIP ≤ 1; \
+             the truth's relative noise ≤ {UNCONVERGED}; the fronts and verdicts recorded are those \
+             the recorded times and errors give"
+        ),
+    );
+    let record = match record {
+        Ok(record) => record,
+        Err(e) => {
+            check.cases = 1;
+            check.fail(format!("{e}: regenerate with `{REGENERATE}`"));
+            return check;
+        }
+    };
+    check.cases = record.points.len();
+    if record.version != SCHEMA_VERSION {
+        check.fail(format!(
+            "written as version {}, this build reads {SCHEMA_VERSION}: regenerate with `{REGENERATE}`",
+            record.version
+        ));
+    }
+    if !(record.truth.noise_relative <= UNCONVERGED) {
+        check.fail(format!(
+            "the truth ({} spp) has relative noise {:.3e} > {UNCONVERGED}: not converged",
+            record.truth.spp, record.truth.noise_relative
+        ));
+    }
+    check.measure(
+        "the truth's relative noise",
+        record.truth.noise_relative,
+        "",
+    );
+    let Some(base) = record.points.first() else {
+        check.fail("no setting measured".into());
+        return check;
+    };
+    for point in &record.points {
+        physical(&mut check, point);
+    }
+    fronts(&mut check, &record.points);
+    verdicts(&mut check, base, &record.points[1..]);
+    check.measure(
+        "the scene's own settings: relative RMSE from all the light",
+        base.errors.rel_rmse,
+        &base.label,
+    );
+    for p in &record.points[1..] {
+        check.measure(
+            "a shortcut's ΔE p99 against the scene's own",
+            p.against_scene.delta_e_p99,
+            &p.label,
+        );
+    }
+    let worth = record.points[1..]
+        .iter()
+        .filter(|p| p.verdict == Some(Verdict::WorthIt))
+        .count();
+    check.measure(
+        "shortcuts worth taking (not seen, faster)",
+        worth as f64,
+        "",
+    );
+    check
+}
+
+/// Every measure of `point` a value the measure can take.
+fn physical(check: &mut Check, point: &Point) {
+    for (against, errors) in [("truth", &point.errors), ("scene", &point.against_scene)] {
+        for name in MEASURES {
+            let value = errors.get(name);
+            let top = if name == "flip_mean" {
+                1.0
+            } else {
+                f64::INFINITY
+            };
+            if !(value >= 0.0 && value <= top && value.is_finite()) {
+                check.fail(format!(
+                    "`{}`: {name} against the {against} is {value}, outside [0, {top}]",
+                    point.label
+                ));
+            }
+        }
+    }
+    if !(point.seconds_median > 0.0 && point.seconds_median.is_finite()) {
+        check.fail(format!(
+            "`{}`: seconds_median is {}",
+            point.label, point.seconds_median
+        ));
+    }
+    if !(point.rays > 0.0 && point.rays.is_finite()) {
+        check.fail(format!("`{}`: rays is {}", point.label, point.rays));
+    }
+}
+
+/// The fronts recorded against the fronts of the recorded numbers.
+fn fronts(check: &mut Check, points: &[Point]) {
+    for name in MEASURES {
+        let xy: Vec<(f64, f64)> = points
+            .iter()
+            .map(|p| (p.seconds_median, p.errors.get(name)))
+            .collect();
+        let on = pareto::front(&xy);
+        for (i, p) in points.iter().enumerate() {
+            let recorded = p.pareto.iter().any(|m| m == name);
+            if recorded != on.contains(&i) {
+                check.fail(format!(
+                    "`{}`: recorded {} the {name} front, but its numbers put it {}",
+                    p.label,
+                    if recorded { "on" } else { "off" },
+                    if recorded { "off" } else { "on" }
+                ));
+            }
+        }
+    }
+}
+
+/// The verdicts recorded against the rule applied to the recorded numbers.
+fn verdicts(check: &mut Check, base: &Point, shortcuts: &[Point]) {
+    for p in shortcuts {
+        let rule = Verdict::of(
+            p.against_scene.delta_e_p99,
+            p.seconds_median,
+            base.seconds_median,
+        );
+        if p.verdict != Some(rule) {
+            check.fail(format!(
+                "`{}`: recorded verdict {:?}, but its numbers give {rule:?}",
+                p.label, p.verdict
+            ));
+        }
+    }
+}

@@ -1,0 +1,113 @@
+//! An `optics tradeoff` record as the report reads it: the fields it
+//! shows and checks (the command writes more; unknown fields are ignored,
+//! so a record stays readable as fields are added within a version).
+
+use serde::{Deserialize, Serialize};
+
+use super::Verdict;
+
+/// One scene's sweep.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct Record {
+    /// [`super::SCHEMA`].
+    pub schema: String,
+    /// [`super::SCHEMA_VERSION`] when written.
+    pub version: u32,
+    /// The scene file, relative to the checkout.
+    pub scene: String,
+    /// Whether the course's rough material was measured as Lambert.
+    #[serde(default)]
+    pub lambert: bool,
+    /// Image width, pixels.
+    pub width: u32,
+    /// Image height, pixels.
+    pub height: u32,
+    /// The machine the times are of.
+    pub machine: String,
+    /// The day they were taken.
+    pub date: String,
+    /// The machine's load then.
+    #[serde(default)]
+    pub load: String,
+    /// The command that wrote the record.
+    pub command: String,
+    /// The ground truth.
+    pub truth: Truth,
+    /// Every setting measured, the scene's own first.
+    pub points: Vec<Point>,
+}
+
+/// The ground truth a record measures against.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct Truth {
+    /// Its samples per pixel.
+    pub spp: u32,
+    /// Its own noise relative to the image (from its two halves).
+    pub noise_relative: f64,
+}
+
+/// One setting, measured.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct Point {
+    /// What was varied.
+    pub axis: String,
+    /// The setting in words.
+    pub label: String,
+    /// The median render time, s.
+    pub seconds_median: f64,
+    /// Rays cast by one render.
+    pub rays: f64,
+    /// The fixed measures against the truth.
+    pub errors: Errors,
+    /// The same measures against the scene's own settings' render.
+    pub against_scene: Errors,
+    /// 1 / (relative variance × median seconds), Monte Carlo points only.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub efficiency: Option<f64>,
+    /// The measures on whose Pareto front the point lies.
+    pub pareto: Vec<String>,
+    /// The verdict against the scene's own settings (none for them).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub verdict: Option<Verdict>,
+}
+
+/// The fixed measures ([`super::MEASURES`]).
+#[derive(Clone, Copy, Debug, Serialize, Deserialize)]
+pub struct Errors {
+    /// Relative RMSE of linear radiance.
+    pub rel_rmse: f64,
+    /// Mean ΔE2000 of the displayed image.
+    pub delta_e_mean: f64,
+    /// 99th percentile of ΔE2000.
+    pub delta_e_p99: f64,
+    /// Mean LDR ꟻLIP over the surface pixels.
+    pub flip_mean: f64,
+}
+
+impl Errors {
+    /// The measure named `name` (one of [`super::MEASURES`]); NaN for
+    /// another name.
+    pub fn get(&self, name: &str) -> f64 {
+        match name {
+            "rel_rmse" => self.rel_rmse,
+            "delta_e_mean" => self.delta_e_mean,
+            "delta_e_p99" => self.delta_e_p99,
+            "flip_mean" => self.flip_mean,
+            _ => f64::NAN,
+        }
+    }
+}
+
+impl Record {
+    /// The file stem the command gives the record (`gold_spheres-lambert`).
+    pub fn stem(&self) -> String {
+        let name = std::path::Path::new(&self.scene)
+            .file_stem()
+            .map_or_else(|| self.scene.clone(), |s| s.to_string_lossy().into_owned());
+        if self.lambert {
+            format!("{name}-lambert")
+        } else {
+            name
+        }
+    }
+}
