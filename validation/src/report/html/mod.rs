@@ -199,21 +199,24 @@ fn header(h: &mut String, report: &Report) {
         )
     };
     let verdict = if s.failed == 0 {
-        format!("<p class=\"verdict pass\">All {} checks pass.", s.checks)
+        format!(
+            "<p class=\"verdict pass\">All {} checks pass <span class=small>({} passed, {} failed)</span>.",
+            count("checks", s.checks),
+            count("passed", s.passed),
+            count("failed", s.failed)
+        )
     } else {
         format!(
-            "<p class=\"verdict fail\">{} of {} checks FAIL.",
-            s.failed, s.checks
+            "<p class=\"verdict fail\">{} of {} checks FAIL <span class=small>({} passed)</span>.",
+            count("failed", s.failed),
+            count("checks", s.checks),
+            count("passed", s.passed)
         )
     };
     let _ = writeln!(
         h,
-        "{verdict} <span class=small>{} checks: {} passed, {} failed; {} findings about the \
-         references (below), which are not failures.</span></p>\n\
+        "{verdict} {} findings about the references (below), which are not failures.</p>\n\
          <p class=small>Produced by <code>{}</code> ({}); regenerate everything here with <code>{REGENERATE}</code>.</p>",
-        count("checks", s.checks),
-        count("passed", s.passed),
-        count("failed", s.failed),
         count("findings", s.findings),
         escape(&report.command),
         if report.quick { "the reduced set" } else { "the full set" },
@@ -289,7 +292,7 @@ fn headline(quantity: Option<&str>, checks: &[(usize, &Check)]) -> Option<String
         quantity.and_then(|name| metrics().filter(|(_, _, m)| m.name == name).max_by(worst));
     if let Some((at, _, m)) = named {
         let value = quote(&at, m.worst, &readable(m.worst));
-        return Some(format!("worst {value}: {}", escape(&m.name)));
+        return Some(format!("largest {value}: {}", escape(&m.name)));
     }
     let ulps = metrics()
         .filter(|(_, c, m)| c.id.contains("fresnel") || m.name.starts_with("fresnel"))
@@ -417,9 +420,24 @@ fn figure(h: &mut String, file: &str) {
     };
     let _ = writeln!(
         h,
-        "<figure><img{pixels} src=\"{0}\" alt=\"{0}\"><figcaption>{0}: <code>{REGENERATE}</code></figcaption></figure>",
-        escape(file)
+        "<figure><img{pixels} src=\"{0}\" alt=\"{0}\"><figcaption>{0}: <code>{1}</code></figcaption></figure>",
+        escape(file),
+        regenerates(file)
     );
+}
+
+/// The command that draws `file`: the trade-off's plots come with its
+/// records (`docs/tradeoffs/make`), every other figure with the report.
+fn regenerates(file: &str) -> &'static str {
+    if file
+        .rsplit('/')
+        .next()
+        .is_some_and(|name| name.starts_with("tradeoff_"))
+    {
+        crate::tradeoff::checks::REGENERATE
+    } else {
+        REGENERATE
+    }
 }
 
 #[cfg(test)]
