@@ -16,3 +16,4 @@
 
 pub mod empirical_fresnel;
 pub mod planar;
+pub mod refraction;
