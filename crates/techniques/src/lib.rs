@@ -14,6 +14,7 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod dispersion;
 pub mod empirical_fresnel;
 pub mod planar;
 pub mod refraction;
