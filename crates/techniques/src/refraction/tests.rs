@@ -112,6 +112,31 @@ fn cheap_refraction_error_matches_the_plane_of_incidence_values() {
     }
 }
 
+/// With `c = η − 1` entering, the cheap ray stays within 1° of Snell's up
+/// to 35.25° in water and 34.80° in glass (where mpmath's root of the
+/// plane-of-incidence error puts 1°: 35.254°, 34.796°). Checked 0.01° either
+/// side, where the error differs from 1° by 8e-4° (its slope there is
+/// about 0.09° per degree), its rounding by about 1e-14°.
+#[test]
+fn first_order_cheap_refraction_is_within_a_degree_to_35_degrees() {
+    for (eta, one_degree_at) in [(WATER, 35.254), (GLASS, 34.796)] {
+        let error = |degrees: f64| {
+            compare_at(
+                degrees.to_radians(),
+                Side::Outside,
+                eta,
+                Constant::FirstOrder,
+            )
+            .unwrap()
+            .error()
+            .unwrap()
+            .to_degrees()
+        };
+        assert!(error(one_degree_at - 0.01) < 1.0, "{eta}");
+        assert!(error(one_degree_at + 0.01) > 1.0, "{eta}");
+    }
+}
+
 /// Past the critical angle the law has no transmitted ray, and the outcome
 /// says so; just before it, it has. The cheap form knows no critical angle
 /// and still returns a unit vector; with the first-order `c = 1/η − 1`
