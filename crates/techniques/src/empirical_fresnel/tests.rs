@@ -136,6 +136,49 @@ fn fitted_parameters_per_material_are_the_documented_ones() {
     }
 }
 
+/// The metals and the water fitted are the suite's: each constant is the
+/// scene file's value it cites, as the tracer loads it (in `f32`, so
+/// compared after the same rounding, exactly).
+#[test]
+fn suite_materials_are_the_scenes_materials() {
+    use tracer::scene::Material;
+    let scenes = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../tracer/scenes");
+    let material = |file: &str, name: &str| {
+        let scene = tracer::scene::load(&scenes.join(file)).unwrap();
+        let at = scene.material_names.iter().position(|n| n == name).unwrap();
+        scene.materials[at]
+    };
+    for (file, name, ours) in [
+        ("gold_spheres.json", "gold", GOLD),
+        ("webgl_seven_spheres.json", "silver", SILVER),
+        ("inside_water.json", "copper", COPPER),
+    ] {
+        let Material::Conductor { n, kappa, .. } = material(file, name) else {
+            panic!("{file}: {name} is not a conductor");
+        };
+        for (channel, interface) in ours.into_iter().enumerate() {
+            let Interface::Conductor {
+                n: ours_n,
+                kappa: ours_kappa,
+            } = interface
+            else {
+                panic!("{name} channel {channel} is not a conductor here");
+            };
+            let scene = (n[channel], kappa[channel]);
+            assert_eq!(
+                (ours_n as f32, ours_kappa as f32),
+                scene,
+                "{name} channel {channel}"
+            );
+        }
+    }
+    let Material::Dielectric { eta } = material("inside_water.json", "water") else {
+        panic!("water is not a dielectric");
+    };
+    assert_eq!(WATER, Interface::Dielectric { eta: 1.33 });
+    assert_eq!(1.33f32, eta);
+}
+
 /// Flat data fits every power equally: no power is bracketed, and the
 /// outcome says so instead of returning an arbitrary one.
 #[test]
