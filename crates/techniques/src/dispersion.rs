@@ -44,6 +44,14 @@ pub const SELLMEIER_N_BK7: Sellmeier = Sellmeier {
 impl Sellmeier {
     /// The refractive index at `wavelength_nm` (vacuum wavelength,
     /// nanometres); `None` outside [`Sellmeier::valid_nm`] (and for NaN).
+    ///
+    /// ```
+    /// use techniques::dispersion::{fraunhofer_nm, SELLMEIER_N_BK7};
+    /// // Schott's data sheet: n_F = 1.52238 for N-BK7.
+    /// let n_f = SELLMEIER_N_BK7.index_at(fraunhofer_nm::F).unwrap();
+    /// assert!((n_f - 1.52238).abs() < 5e-6);
+    /// assert_eq!(SELLMEIER_N_BK7.index_at(3000.0), None);
+    /// ```
     pub fn index_at(&self, wavelength_nm: f64) -> Option<f64> {
         let (shortest, longest) = self.valid_nm;
         if !(shortest..=longest).contains(&wavelength_nm) {
