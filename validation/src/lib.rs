@@ -47,6 +47,7 @@ pub mod report;
 pub mod speed;
 pub mod statistics;
 pub mod suite;
+pub mod techniques;
 pub mod tradeoff;
 
 pub use check::{Check, Metric};

@@ -199,6 +199,21 @@ impl CheckKind for MetalChecks {
     }
 }
 
+/// The rasteriser-side techniques of `001` against the answers they
+/// stand in for, with N-BK7 (or another glass) as the dispersing glass.
+pub struct TechniqueChecks(pub techniques::dispersion::Sellmeier);
+
+impl CheckKind for TechniqueChecks {
+    fn name(&self) -> &'static str {
+        "the slides' techniques against the exact answers"
+    }
+
+    fn run(&self, _context: &Context, report: &mut Report) -> Result<(), ReferenceError> {
+        report.checks.extend(crate::techniques::check_all(&self.0));
+        Ok(())
+    }
+}
+
 /// The committed speed/accuracy trade-off records (`docs/tradeoffs`):
 /// each checked, each carried into the report for its section.
 pub struct TradeoffChecks;
@@ -318,6 +333,7 @@ pub fn standard_kinds() -> Vec<Box<dyn CheckKind>> {
         Box::new(FlipChecks(flip::error_map)),
         Box::new(RenderChecks::tracer()),
         Box::new(FullLightChecks::tracer()),
+        Box::new(TechniqueChecks(techniques::dispersion::SELLMEIER_N_BK7)),
         Box::new(TradeoffChecks),
     ]
 }

@@ -16,7 +16,7 @@ use tables::{every_check, metal_colours, references, speed};
 /// The areas of the report, in the order of its first screen: a title, the
 /// check ids it gathers (by prefix; the first area that claims a check
 /// keeps it), and the figures that say it best (file-name prefixes).
-const AREAS: [Area; 8] = [
+const AREAS: [Area; 9] = [
     Area {
         key: "mpmath",
         title: "Laws against 50-digit mpmath",
@@ -65,6 +65,13 @@ const AREAS: [Area; 8] = [
         checks: &["full_light."],
         figures: &[],
         headline: Some("Mitsuba path's missing share, surface"),
+    },
+    Area {
+        key: "techniques",
+        title: "The slides' techniques against the exact answers",
+        checks: &["techniques."],
+        figures: &[],
+        headline: Some("into water, c = 1: angle from Snell's law (°)"),
     },
     Area {
         key: "tradeoff",

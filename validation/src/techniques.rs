@@ -1,0 +1,282 @@
+//! The rasteriser-side techniques of `001` (the `techniques` crate)
+//! against the answers they stand in for: N-BK7's Sellmeier index against
+//! Schott's data sheet, the traced prism against the analytic minimum
+//! deviation, the slides' cheap refraction and fitted empirical Fresnel
+//! form against the exact laws, and the projected shadow against the
+//! tracer's own ray–plane intersection. Their measured errors are the
+//! report's numbers for the techniques.
+
+use glam::DVec3;
+use techniques::dispersion::prism::{Passage, Prism};
+use techniques::dispersion::{fraunhofer_nm, Sellmeier};
+use techniques::empirical_fresnel::{self, AngleGrid, SUITE};
+use techniques::planar::{self, Plane, Shadow};
+use techniques::refraction::{self, Constant, Side};
+
+use crate::check::Check;
+
+/// Schott's N-BK7 data sheet: the indices it prints (five decimals) at the
+/// Fraunhofer lines (SCHOTT AG, Optical Glass Data Sheets, glass code
+/// 517642.251).
+pub const N_BK7_DATA_SHEET: [(&str, f64, f64); 4] = [
+    ("n_F", fraunhofer_nm::F, 1.52238),
+    ("n_e", fraunhofer_nm::E, 1.51872),
+    ("n_d", fraunhofer_nm::D, 1.51680),
+    ("n_C", fraunhofer_nm::C, 1.51432),
+];
+
+/// Half a unit in the data sheet's last printed digit.
+pub const DATA_SHEET_ABS: f64 = 5e-6;
+
+/// The Sellmeier index against the data sheet.
+pub fn check_sellmeier(glass: &Sellmeier) -> Check {
+    let mut check = Check::new(
+        "techniques.dispersion.n_bk7",
+        "N-BK7's refractive index by the Sellmeier equation at the Fraunhofer lines",
+        "Schott's N-BK7 data sheet (five printed decimals)",
+        &format!("within {DATA_SHEET_ABS:e}, half a unit in the last printed digit"),
+    );
+    for (line, nm, printed) in N_BK7_DATA_SHEET {
+        check.cases += 1;
+        let Some(n) = glass.index_at(nm) else {
+            check.fail(format!("{line} ({nm} nm): no index"));
+            continue;
+        };
+        let err = (n - printed).abs();
+        check.measure("|Sellmeier − data sheet|", err, &format!("{line}, {nm} nm"));
+        if !(err <= DATA_SHEET_ABS) {
+            check.fail(format!(
+                "{line} ({nm} nm): {n:.7}, the data sheet {printed}"
+            ));
+        }
+    }
+    check
+}
+
+/// How close the traced symmetric passage comes to the analytic minimum
+/// deviation, radians: a few ulps of the angles involved.
+pub const PRISM_ABS: f64 = 1e-12;
+
+/// A 60° prism of `glass` across the visible: the ray traced at the
+/// symmetric incidence with the radiometry refraction law deviates by the
+/// analytic `2 asin(n sin(A/2)) − A`, and rays 0.01 rad to either side
+/// deviate more; the spread between the F and C lines measured.
+pub fn check_prism(glass: &Sellmeier) -> Check {
+    let mut check = Check::new(
+        "techniques.dispersion.prism",
+        "A 60° prism: the traced deviation at symmetric incidence is the analytic minimum deviation",
+        "δ_min = 2 asin(n sin(A/2)) − A (Snell's law at both faces of a symmetric passage)",
+        &format!("within {PRISM_ABS:e} rad; any other incidence deviates more"),
+    );
+    let prism = Prism::new(60f64.to_radians()).expect("60° is an apex angle");
+    let deviation = |n: f64, theta: f64| match prism.trace(n, theta) {
+        Some(Passage::Emerges { deviation, .. }) => Some(deviation),
+        _ => None,
+    };
+    for nm in (400..=700).step_by(25).map(f64::from) {
+        check.cases += 1;
+        let (Some(n), at) = (glass.index_at(nm), format!("{nm} nm")) else {
+            check.fail(format!("{nm} nm: no index"));
+            continue;
+        };
+        let (Some(theta), Some(analytic)) =
+            (prism.symmetric_incidence(n), prism.minimum_deviation(n))
+        else {
+            check.fail(format!("{at}: no symmetric passage for n = {n}"));
+            continue;
+        };
+        let Some(traced) = deviation(n, theta) else {
+            check.fail(format!("{at}: the symmetric ray does not emerge"));
+            continue;
+        };
+        check.measure("|traced − analytic| (rad)", (traced - analytic).abs(), &at);
+        if !((traced - analytic).abs() <= PRISM_ABS) {
+            check.fail(format!("{at}: traced {traced}, analytic {analytic}"));
+        }
+        for other in [theta - 0.01, theta + 0.01] {
+            if deviation(n, other).is_some_and(|d| d <= traced) {
+                check.fail(format!(
+                    "{at}: incidence {other} rad deviates no more than the minimum"
+                ));
+            }
+        }
+    }
+    let spread = [fraunhofer_nm::F, fraunhofer_nm::C]
+        .map(|nm| glass.index_at(nm).and_then(|n| prism.minimum_deviation(n)));
+    if let [Some(f), Some(c)] = spread {
+        check.measure(
+            "F − C spread of the minimum deviation (°)",
+            (f - c).to_degrees(),
+            "",
+        );
+    }
+    check
+}
+
+/// The slides' cheap refraction `t = normalize(−c n + i)` against Snell's
+/// law entering water (their `c = 1`) and glass, and the first-order
+/// `c = η − 1`: the worst angle between the two rays over 0° to 89°. The
+/// check is the identity the erratum rests on: with `c = 1` the cheap ray
+/// bends to exactly half the incidence angle.
+pub fn check_cheap_refraction() -> Check {
+    let mut check = Check::new(
+        "techniques.refraction.cheap",
+        "The slides' cheap refraction against Snell's law, entering water and glass",
+        "Snell's law in vector form (radiometry::specular::refract)",
+        "c = 1 bends by exactly half the incidence angle (to 1e-12 rad); the angles from Snell's law measured",
+    );
+    for (medium, eta) in [("water", 1.33), ("glass", 1.5)] {
+        for (name, constant) in [
+            ("c = 1", refraction::SLIDES_WATER),
+            ("c = η − 1", Constant::FirstOrder),
+        ] {
+            for degree in 0..90 {
+                let theta = f64::from(degree).to_radians();
+                check.cases += 1;
+                let Some(compared) = refraction::compare_at(theta, Side::Outside, eta, constant)
+                else {
+                    check.fail(format!("{medium}, {name}, {degree}°: no comparison"));
+                    continue;
+                };
+                let Some(error) = compared.error() else {
+                    check.fail(format!(
+                        "{medium}, {name}, {degree}°: total internal reflection entering"
+                    ));
+                    continue;
+                };
+                check.measure(
+                    &format!("into {medium}, {name}: angle from Snell's law (°)"),
+                    error.to_degrees(),
+                    &format!("{degree}°"),
+                );
+                if let (refraction::Comparison::Refracts { cheap, .. }, Constant::Fixed(_)) =
+                    (compared, constant)
+                {
+                    let bend = refraction::angle_between(
+                        -refraction::in_plane(theta, Side::Outside),
+                        cheap,
+                    );
+                    if !((bend - theta / 2.0).abs() <= 1e-12) {
+                        check.fail(format!(
+                            "{medium}, {degree}°: c = 1 bends {bend} rad, not half of {theta}"
+                        ));
+                    }
+                }
+            }
+        }
+    }
+    check
+}
+
+/// The slides' empirical Fresnel form fitted to the exact law of each of
+/// the suite's interfaces, beside Schlick: the fit's family holds
+/// Schlick's curve, so its RMS can be no larger unless the fit failed.
+pub fn check_empirical_fresnel() -> Check {
+    let mut check = Check::new(
+        "techniques.empirical_fresnel.fit",
+        "The slides' bias + scale (1 + I·N)^power fitted to the exact Fresnel law, beside Schlick",
+        "the exact dielectric and conductor laws (radiometry), every 0.1° from 0° to 90°",
+        "the fit's RMS no larger than Schlick's (Schlick is one member of the form's family)",
+    );
+    for (name, interface) in SUITE {
+        check.cases += 1;
+        match empirical_fresnel::compare(interface, &AngleGrid::TENTH_OF_A_DEGREE) {
+            Ok(c) => {
+                check.measure("fitted form: RMS error", c.fit.errors.rms, name);
+                check.measure("fitted form: largest error", c.fit.errors.max, name);
+                check.measure("Schlick: RMS error", c.schlick.rms, name);
+                check.measure("Schlick: largest error", c.schlick.max, name);
+                if !(c.fit.errors.rms <= c.schlick.rms) {
+                    check.fail(format!(
+                        "{name}: the fit's RMS {:.3e} exceeds Schlick's {:.3e}",
+                        c.fit.errors.rms, c.schlick.rms
+                    ));
+                }
+            }
+            Err(e) => check.fail(format!("{name}: the fit failed: {e:?}")),
+        }
+    }
+    check
+}
+
+/// The projected shadow against the tracer: over a grid of lights, planes
+/// and vertices, the matrix's point is where the tracer's ray from the
+/// light through the vertex meets the plane (`tracer::geometry::Plane`, in
+/// `f32`), and it is `Cast` exactly when the vertex lies before that hit; where the
+/// matrix puts the point behind the light, the ray misses the plane.
+pub fn check_projected_shadow() -> Check {
+    const RELATIVE: f64 = 1e-4;
+    let mut check = Check::new(
+        "techniques.planar.shadow",
+        "The slides' projected-shadow matrix against the tracer's ray–plane intersection",
+        "tracer::geometry::Plane::intersect (f32) on the ray from the light through the vertex",
+        &format!("the points within {RELATIVE:e} of the distance, relative; Cast exactly when the vertex comes first"),
+    );
+    let normals = [
+        DVec3::Y,
+        DVec3::new(0.3, 1.0, -0.2),
+        DVec3::new(-1.0, 0.5, 0.4),
+    ];
+    for (k, normal) in normals.into_iter().enumerate() {
+        let plane = Plane::through(DVec3::new(0.0, -1.0, 0.0), normal).expect("a plane");
+        let traced_plane = tracer::geometry::Plane {
+            point: plane.point().as_vec3(),
+            normal: plane.normal().as_vec3(),
+            material: 0,
+        };
+        for light in [DVec3::new(0.0, 4.0, 0.0), DVec3::new(2.0, 3.0, -1.0)] {
+            for vertex in [
+                DVec3::new(0.3, 1.0, 0.2),
+                DVec3::new(-1.5, 0.5, 2.0),
+                DVec3::new(1.0, 2.5, -0.5),
+            ] {
+                check.cases += 1;
+                let at = format!("plane {k}, light {light}, vertex {vertex}");
+                let towards = (vertex - light).as_vec3().normalize();
+                let ray = tracer::geometry::Ray::new(light.as_vec3(), towards);
+                let hit = traced_plane.intersect(&ray, 0.0);
+                match (planar::project_shadow(light, &plane, vertex), hit) {
+                    (Shadow::Cast(p) | Shadow::BeyondPlane(p), Some(hit)) => {
+                        let traced = hit.point.as_dvec3();
+                        let distance = (traced - light).length();
+                        let err = (p - traced).length() / distance.max(1.0);
+                        check.measure("|matrix − traced| / distance", err, &at);
+                        if !(err <= RELATIVE) {
+                            check.fail(format!(
+                                "{at}: the matrix puts it at {p}, the ray at {traced}"
+                            ));
+                        }
+                        let first = (vertex - light).length() < distance;
+                        let cast = matches!(
+                            planar::project_shadow(light, &plane, vertex),
+                            Shadow::Cast(_)
+                        );
+                        if first != cast {
+                            check.fail(format!("{at}: Cast is {cast}, the vertex first {first}"));
+                        }
+                    }
+                    // The line meets the plane behind the light, or never:
+                    // the ray from the light through the vertex misses it.
+                    (Shadow::BehindLight(_) | Shadow::Parallel, None) => {}
+                    (outcome, hit) => check.fail(format!(
+                        "{at}: {outcome:?}, but the ray hits at {:?}",
+                        hit.map(|h| h.point)
+                    )),
+                }
+            }
+        }
+    }
+    check
+}
+
+/// Every technique's check, `glass` the dispersing glass (N-BK7 in the
+/// suite; a parameter so that a wrong one can be shown to be caught).
+pub fn check_all(glass: &Sellmeier) -> Vec<Check> {
+    vec![
+        check_sellmeier(glass),
+        check_prism(glass),
+        check_cheap_refraction(),
+        check_empirical_fresnel(),
+        check_projected_shadow(),
+    ]
+}
