@@ -5,6 +5,7 @@
 //!
 //! | module | technique | slides |
 //! |---|---|---|
+//! | [`envmap`] | environment maps: a reflected direction to its texel in a latitude–longitude, cube or sphere map, and back | "Környezet leképezés" |
 //! | [`planar`] | the reflection matrix `M = F⁻¹ S(1, −1, 1) F` of a plane; the projected-shadow matrix of a point light onto a plane | "Tükröződések", "Vetített árnyék" |
 //!
 //! Conventions: `f64` throughout (these are 4 × 4 matrices built once per
@@ -14,4 +15,5 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod envmap;
 pub mod planar;
