@@ -69,7 +69,7 @@ impl EnvmapArgs {
     pub fn solve(&self, via: Via, lang: Lang, steps: Steps) -> Result<Record> {
         let given = via.direction("dir", self.dir)?;
         let title = say!(lang, "Environment map lookup", "Környezeti térkép címzése");
-        let mut record = Record::new("envmap", title, "1").with_steps(steps);
+        let mut record = Record::new("envmap", title, "").with_steps(steps);
         record
             .input("dir", self.dir.0)
             .input("map", self.map.name());
@@ -95,8 +95,10 @@ impl EnvmapArgs {
         if self.map.includes(MapChoice::LatLong) {
             let texel = LatLong::from_direction(r);
             lat_long(&mut record, lang, r.get(), &texel);
-            text.push(format!(
+            text.push(say!(
+                lang,
                 "lat-long: u = {}, v = {}",
+                "szélességi–hosszúsági: u = {}, v = {}",
                 number(texel.u()),
                 number(texel.v())
             ));
@@ -245,8 +247,8 @@ fn back(record: &mut Record, lang: Lang, r: Direction) {
     record.step(|| {
         say!(
             lang,
-            "back from the texel: r = {}",
-            "a texelből vissza: r = {}",
+            "back from the texel, to rounding: r = {}",
+            "a texelből vissza, kerekítésnyi eltéréssel: r = {}",
             vector(r.get().to_array())
         )
     });

@@ -105,7 +105,7 @@ impl ReflectionMatrixArgs {
             "Reflection matrix of a plane",
             "Sík tükrözési mátrixa"
         );
-        let mut record = Record::new("reflection_matrix", title, "1").with_steps(steps);
+        let mut record = Record::new("reflection_matrix", title, "").with_steps(steps);
         self.plane.inputs(&mut record);
         narrate_plane(&mut record, lang, &plane);
         let m = finite_matrix(reflection_matrix(&plane), via, &["plane_point"])?;
@@ -166,7 +166,7 @@ impl ShadowMatrixArgs {
             "Shadow matrix of a point light",
             "Pontfényforrás árnyékmátrixa"
         );
-        let mut record = Record::new("shadow_matrix", title, "1").with_steps(steps);
+        let mut record = Record::new("shadow_matrix", title, "").with_steps(steps);
         record.input("light", self.light.0);
         self.plane.inputs(&mut record);
         if let Some(v) = self.vertex {
