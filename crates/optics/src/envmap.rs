@@ -94,7 +94,7 @@ impl EnvmapArgs {
         }
         if self.map.includes(MapChoice::LatLong) {
             let texel = LatLong::from_direction(r);
-            lat_long(&mut record, lang, r.get(), &texel);
+            lat_long(&mut record, lang, &texel);
             text.push(say!(
                 lang,
                 "lat-long: u = {}, v = {}",
@@ -167,7 +167,7 @@ fn cube(record: &mut Record, lang: Lang, given: DVec3, texel: &CubeTexel) {
     back(record, lang, texel.direction());
 }
 
-fn lat_long(record: &mut Record, lang: Lang, r: DVec3, texel: &LatLong) {
+fn lat_long(record: &mut Record, lang: Lang, texel: &LatLong) {
     record.step(|| {
         say!(
             lang,
@@ -178,7 +178,7 @@ fn lat_long(record: &mut Record, lang: Lang, r: DVec3, texel: &LatLong) {
         )
     });
     record.step(|| {
-        if r.x == 0.0 && r.y == 0.0 {
+        if texel.is_pole() {
             say!(
                 lang,
                 "a pole: every φ names it; φ = 0 by convention",
@@ -205,40 +205,37 @@ fn lat_long(record: &mut Record, lang: Lang, r: DVec3, texel: &LatLong) {
 }
 
 fn sphere(record: &mut Record, lang: Lang, r: DVec3, texel: &SphereTexel) {
-    let texel = match texel {
-        SphereTexel::Disc(texel) => texel,
-        SphereTexel::Rim => {
-            record.step(|| say!(
-                lang,
-                "sphere: r = (0, 0, −1), straight away from the viewer: m = 0 and n = (r + e)/m has no value; the view grazes the sphere's silhouette, and every point of the map's rim stores this direction",
-                "gömbtérkép: r = (0, 0, −1), a nézőtől egyenesen el: m = 0, n = (r + e)/m nem létezik; a nézősugár a gömb körvonalát súrolja, és a térkép teljes pereme ezt az irányt tárolja"
-            ));
-            return;
-        }
+    let SphereTexel::Disc(disc) = texel else {
+        record.step(|| say!(
+            lang,
+            "sphere: r = (0, 0, −1), straight away from the viewer: m = 0 and n = (r + e)/m has no value; the view grazes the sphere's silhouette, and every point of the map's rim stores this direction",
+            "gömbtérkép: r = (0, 0, −1), a nézőtől egyenesen el: m = 0, n = (r + e)/m nem létezik; a nézősugár a gömb körvonalát súrolja, és a térkép teljes pereme ezt az irányt tárolja"
+        ));
+        return;
     };
     record.step(|| {
         say!(
             lang,
             "sphere: e = (0, 0, 1) towards the viewer; m = √(r_x² + r_y² + (r_z + 1)²) = {} (unit r {})",
             "gömbtérkép: e = (0, 0, 1) a néző felé; m = √(r_x² + r_y² + (r_z + 1)²) = {} (egységnyi r = {})",
-            number(texel.m()),
+            number(disc.m()),
             vector(r.to_array())
         )
     });
     record.step(|| {
         format!(
             "n = (r_x/m, r_y/m, (r_z + 1)/m) = {}",
-            vector(texel.normal().to_array())
+            vector(disc.normal().to_array())
         )
     });
     record.step(|| {
         format!(
             "u = (n_x + 1)/2 = {}, v = (n_y + 1)/2 = {}",
-            number(texel.u()),
-            number(texel.v())
+            number(disc.u()),
+            number(disc.v())
         )
     });
-    back(record, lang, SphereTexel::Disc(*texel).direction());
+    back(record, lang, texel.direction());
 }
 
 /// The map's way back, which the texel gives: the check a student can

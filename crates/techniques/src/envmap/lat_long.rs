@@ -35,6 +35,7 @@ use super::{unit_square, Direction, TexelError};
 pub struct LatLong {
     u: f64,
     v: f64,
+    pole: bool,
 }
 
 impl LatLong {
@@ -43,7 +44,8 @@ impl LatLong {
         let r = r.get();
         let across = r.x.hypot(r.y);
         let rho = across.atan2(-r.z);
-        let phi = if across == 0.0 {
+        let pole = across == 0.0;
+        let phi = if pole {
             0.0 // a pole: every φ names it; u = 0 by decision
         } else {
             let phi = r.y.atan2(r.x);
@@ -58,13 +60,25 @@ impl LatLong {
         // u = 1: both are the seam, which belongs to u = 0. `+ 0.0` turns
         // the `−0` of `atan2(−0, x)` into 0.
         let u = if u >= 1.0 { 0.0 } else { u + 0.0 };
-        Self { u, v: rho / PI }
+        Self {
+            u,
+            v: rho / PI,
+            pole,
+        }
     }
 
     /// The texel at `(u, v)`, each in `[0, 1]`.
     pub fn from_uv(u: f64, v: f64) -> Result<Self, TexelError> {
         let (u, v) = unit_square(u, v)?;
-        Ok(Self { u, v })
+        let pole = v == 0.0 || v == 1.0;
+        Ok(Self { u, v, pole })
+    }
+
+    /// Whether the texel is a pole, `r = (0, 0, ∓1)`, where every `φ`
+    /// names the same direction and `u` is 0 by decision (or, given back,
+    /// whatever it was given).
+    pub fn is_pole(&self) -> bool {
+        self.pole
     }
 
     /// `u = φ / 2π`, in `[0, 1)` when computed from a direction.

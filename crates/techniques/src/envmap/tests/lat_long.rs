@@ -71,9 +71,11 @@ fn lat_long_seam_and_poles_are_decided_once() {
         assert!(at(1.0, y, 0.0).u().is_sign_positive(), "y = {y}");
     }
     assert!((0.0..1e-300).contains(&at(1.0, 1e-300, 0.0).u()));
-    // The poles: u = 0 by decision, v = 0 at −z and 1 at +z.
+    // The poles: u = 0 by decision, v = 0 at −z and 1 at +z; said so.
     assert_eq!((at(0.0, 0.0, -1.0).u(), at(0.0, 0.0, -1.0).v()), (0.0, 0.0));
     assert_eq!((at(-0.0, 0.0, 1.0).u(), at(-0.0, 0.0, 1.0).v()), (0.0, 1.0));
+    assert!(at(0.0, 0.0, -1.0).is_pole() && at(-0.0, 0.0, 1.0).is_pole());
+    assert!(!at(1e-300, 0.0, -1.0).is_pole());
     // The quadrants: φ over the whole circle (the slides' "[0, 2π]").
     assert_eq!(at(1.0, 1.0, 0.0).phi(), FRAC_PI_4);
     assert!((at(-1.0, -1.0, 0.0).phi() - 5.0 * FRAC_PI_4).abs() <= 4.0 * f64::EPSILON);
