@@ -76,43 +76,18 @@ impl EnvmapArgs {
         note_normalized(&mut record, lang, "dir", &given);
         let r = Direction::from(given);
         let (mut answer, mut text) = (Map::new(), Vec::new());
+        let mut add = |key: &str, (line, value): (String, Value)| {
+            text.push(line);
+            answer.insert(key.to_owned(), value);
+        };
         if self.map.includes(MapChoice::Cube) {
-            let texel = CubeTexel::from_direction(r);
-            cube(&mut record, lang, self.dir.dvec3(), &texel);
-            text.push(say!(
-                lang,
-                "cube: {} face, u = {}, v = {}",
-                "kocka: {} lap, u = {}, v = {}",
-                texel.face().name(),
-                number(texel.u()),
-                number(texel.v())
-            ));
-            answer.insert(
-                "cube".into(),
-                json!({ "face": texel.face().name(), "u": texel.u(), "v": texel.v() }),
-            );
+            add("cube", cube(&mut record, lang, self.dir.dvec3(), r));
         }
         if self.map.includes(MapChoice::LatLong) {
-            let texel = LatLong::from_direction(r);
-            lat_long(&mut record, lang, &texel);
-            text.push(say!(
-                lang,
-                "lat-long: u = {}, v = {}",
-                "szélességi–hosszúsági: u = {}, v = {}",
-                number(texel.u()),
-                number(texel.v())
-            ));
-            answer.insert(
-                "lat_long".into(),
-                json!({ "u": texel.u(), "v": texel.v(), "phi": texel.phi(), "rho": texel.rho() }),
-            );
+            add("lat_long", lat_long(&mut record, lang, r));
         }
         if self.map.includes(MapChoice::Sphere) {
-            let texel = SphereTexel::from_direction(r);
-            sphere(&mut record, lang, r.get(), &texel);
-            let (line, value) = sphere_answer(lang, &texel);
-            text.push(line);
-            answer.insert("sphere".into(), value);
+            add("sphere", sphere(&mut record, lang, r));
         }
         record
             .detail("direction", r.get().to_array())
@@ -122,8 +97,10 @@ impl EnvmapArgs {
 }
 
 /// The cube map's working, on the vector as given: the ratios are the
-/// same for any length, and these are the numbers a student divides.
-fn cube(record: &mut Record, lang: Lang, given: DVec3, texel: &CubeTexel) {
+/// same for any length, and these are the numbers a student divides. The
+/// answer's line and its JSON.
+fn cube(record: &mut Record, lang: Lang, given: DVec3, r: Direction) -> (String, Value) {
+    let texel = CubeTexel::from_direction(r);
     let face = texel.face();
     let f = face.frame();
     let axis = ["x", "y", "z"];
@@ -165,9 +142,20 @@ fn cube(record: &mut Record, lang: Lang, given: DVec3, texel: &CubeTexel) {
         )
     });
     back(record, lang, texel.direction());
+    let line = say!(
+        lang,
+        "cube: {} face, u = {}, v = {}",
+        "kocka: {} lap, u = {}, v = {}",
+        face.name(),
+        number(texel.u()),
+        number(texel.v())
+    );
+    let value = json!({ "face": face.name(), "u": texel.u(), "v": texel.v() });
+    (line, value)
 }
 
-fn lat_long(record: &mut Record, lang: Lang, texel: &LatLong) {
+fn lat_long(record: &mut Record, lang: Lang, r: Direction) -> (String, Value) {
+    let texel = LatLong::from_direction(r);
     record.step(|| {
         say!(
             lang,
@@ -202,16 +190,26 @@ fn lat_long(record: &mut Record, lang: Lang, texel: &LatLong) {
         )
     });
     back(record, lang, texel.direction());
+    let line = say!(
+        lang,
+        "lat-long: u = {}, v = {}",
+        "szélességi–hosszúsági: u = {}, v = {}",
+        number(texel.u()),
+        number(texel.v())
+    );
+    let value = json!({ "u": texel.u(), "v": texel.v(), "phi": texel.phi(), "rho": texel.rho() });
+    (line, value)
 }
 
-fn sphere(record: &mut Record, lang: Lang, r: DVec3, texel: &SphereTexel) {
+fn sphere(record: &mut Record, lang: Lang, r: Direction) -> (String, Value) {
+    let texel = SphereTexel::from_direction(r);
     let SphereTexel::Disc(disc) = texel else {
         record.step(|| say!(
             lang,
             "sphere: r = (0, 0, −1), straight away from the viewer: m = 0 and n = (r + e)/m has no value; the view grazes the sphere's silhouette, and every point of the map's rim stores this direction",
             "gömbtérkép: r = (0, 0, −1), a nézőtől egyenesen el: m = 0, n = (r + e)/m nem létezik; a nézősugár a gömb körvonalát súrolja, és a térkép teljes pereme ezt az irányt tárolja"
         ));
-        return;
+        return sphere_answer(lang, &texel);
     };
     record.step(|| {
         say!(
@@ -219,7 +217,7 @@ fn sphere(record: &mut Record, lang: Lang, r: DVec3, texel: &SphereTexel) {
             "sphere: e = (0, 0, 1) towards the viewer; m = √(r_x² + r_y² + (r_z + 1)²) = {} (unit r {})",
             "gömbtérkép: e = (0, 0, 1) a néző felé; m = √(r_x² + r_y² + (r_z + 1)²) = {} (egységnyi r = {})",
             number(disc.m()),
-            vector(r.to_array())
+            vector(r.get().to_array())
         )
     });
     record.step(|| {
@@ -236,6 +234,7 @@ fn sphere(record: &mut Record, lang: Lang, r: DVec3, texel: &SphereTexel) {
         )
     });
     back(record, lang, texel.direction());
+    sphere_answer(lang, &texel)
 }
 
 /// The map's way back, which the texel gives: the check a student can
@@ -251,6 +250,7 @@ fn back(record: &mut Record, lang: Lang, r: Direction) {
     });
 }
 
+/// The sphere map's answer line and JSON: the point of the disc, or the rim.
 fn sphere_answer(lang: Lang, texel: &SphereTexel) -> (String, Value) {
     match texel {
         SphereTexel::Disc(t) => (
