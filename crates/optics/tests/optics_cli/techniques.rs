@@ -43,12 +43,41 @@ fn envmap_all_answers_each_map_with_its_outcome() {
 }
 
 #[test]
-fn envmap_explains_in_hungarian() {
-    let output = optics(&["--lang", "hu", "envmap", "--dir", "-3.2,5.1,-8.4"]);
-    assert!(output.status.success());
-    let text = stdout(&output);
-    for phrase in ["kocka", "-Z lap", "gömbtérkép", "eredmény:", "0.690476"] {
-        assert!(text.contains(phrase), "no {phrase:?} in:\n{text}");
+fn the_techniques_explain_in_hungarian() {
+    let floor = ["--plane-point", "0,0,0", "--plane-normal", "0,1,0"];
+    let mut shadow = vec!["shadow-matrix", "--light", "0,4,0", "--vertex", "1,2,0"];
+    shadow.extend(floor);
+    let mut mirror = vec!["reflection-matrix"];
+    mirror.extend(floor);
+    let cases: [(Vec<&str>, &[&str]); 3] = [
+        (
+            vec!["envmap", "--dir", "-3.2,5.1,-8.4"],
+            &[
+                "kocka",
+                "-Z lap",
+                "szélességi–hosszúsági",
+                "gömbtérkép",
+                "0.690476",
+            ],
+        ),
+        (mirror, &["Sík tükrözési mátrixa", "ellenőrzés: det M = -1"]),
+        (
+            shadow,
+            &[
+                "Pontfényforrás árnyékmátrixa",
+                "a csúcs a fény és a sík között van",
+            ],
+        ),
+    ];
+    for (args, phrases) in cases {
+        let mut hu = vec!["--lang", "hu"];
+        hu.extend(&args);
+        let output = optics(&hu);
+        assert!(output.status.success(), "optics {hu:?}");
+        let text = stdout(&output);
+        for phrase in phrases.iter().chain(&["eredmény:"]) {
+            assert!(text.contains(phrase), "no {phrase:?} in:\n{text}");
+        }
     }
 }
 
