@@ -14,11 +14,11 @@
 //!
 //! - `φ` is `atan2(r_y, r_x)`, wrapped into `[0, 2π)`. The slides write
 //!   `arctan(r_y / r_x)`, which covers only `(−π/2, π/2)` and gives `r` and
-//!   its mirror image through the `z` axis the same `φ`: half of the map
-//!   is never looked up (an erratum; `docs/errata.md`).
+//!   its half turn about the `z` axis the same `φ`: half of the map is
+//!   never looked up (an erratum; `docs/errata.md`).
 //! - `ρ` is `atan2(√(r_x² + r_y²), −r_z)`, the same angle for a unit `r`.
 //!   `arccos` has an infinite slope at ±1: near the poles a rounding of
-//!   `r_z` by one unit in the last place moves `ρ` by 1e-8 rad, and
+//!   `r_z` by one unit in the last place moves `ρ` by about 1e-8 rad, and
 //!   `arccos(−r_z)` of `r = (1e-9, 0, −1)` normalised is 0, not 1e-9.
 //!
 //! Seams, decided once: the seam `φ = 0` belongs to `u = 0` (so `u < 1`;
