@@ -8,7 +8,7 @@ use validation::techniques::{check_all, check_sellmeier};
 #[test]
 fn every_technique_check_passes() {
     let checks = check_all(&SELLMEIER_N_BK7);
-    assert_eq!(checks.len(), 5);
+    assert_eq!(checks.len(), 6);
     for check in &checks {
         assert!(check.passed(), "{}: {:?}", check.id, check.failures);
     }
