@@ -92,7 +92,7 @@ fn a_broken_law_fails_its_check_in_the_report() {
     assert_eq!(failed, ["laws.mitsuba.directions"]);
     assert_eq!(report.summary.failed, 1);
     let html = to_html(&report, &[]);
-    let verdict = format!("1 of {} checks FAIL (", report.summary.checks);
+    let verdict = format!("1 of {} checks FAIL.", report.summary.checks);
     assert!(words(&html).contains(&verdict), "the page says so");
 }
 
