@@ -2,6 +2,9 @@
 //! references, the report it writes, a broken law reported as a failed
 //! check, and broken reference files refused with the file and field named.
 
+mod page;
+use page::words;
+
 mod caught;
 
 use std::path::Path;
@@ -227,19 +230,4 @@ fn results_that_do_not_match_the_cases_fail() {
     let check =
         exchange::check_random(&Laws::radiometry(), &Laws64::radiometry(), &cases, &results);
     assert!(!check.passed() && check.failures[0].contains("30 cases but 29 results"));
-}
-
-/// The page's text as a reader sees it: its tags taken out.
-fn words(html: &str) -> String {
-    let mut text = String::with_capacity(html.len());
-    let mut in_tag = false;
-    for c in html.chars() {
-        match c {
-            '<' => in_tag = true,
-            '>' => in_tag = false,
-            _ if !in_tag => text.push(c),
-            _ => {}
-        }
-    }
-    text
 }

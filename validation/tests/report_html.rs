@@ -6,6 +6,9 @@
 //! The browser tests skip, saying so, where no Chromium is installed
 //! (`apt-get install chromium`; `CHROMIUM=/path` names another).
 
+mod page;
+use page::words;
+
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -530,19 +533,4 @@ fn the_browser_probe_finds_a_table_too_wide_and_a_broken_image() {
     assert!(!probe.wide.is_empty(), "{probe:?}");
     assert_eq!(probe.broken, ["figures/missing.png"], "{probe:?}");
     assert!(probe.scroll > probe.width, "{probe:?}");
-}
-
-/// The page's text as a reader sees it: its tags taken out.
-fn words(html: &str) -> String {
-    let mut text = String::with_capacity(html.len());
-    let mut in_tag = false;
-    for c in html.chars() {
-        match c {
-            '<' => in_tag = true,
-            '>' => in_tag = false,
-            _ if !in_tag => text.push(c),
-            _ => {}
-        }
-    }
-    text
 }

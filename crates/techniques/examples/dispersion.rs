@@ -55,7 +55,9 @@ fn render(scene: &Scene) -> Image {
 }
 
 fn index(nm: f64) -> f64 {
-    SELLMEIER_N_BK7.index_at(nm).expect("N-BK7 is tabulated over the CIE grid")
+    SELLMEIER_N_BK7
+        .index_at(nm)
+        .expect("N-BK7 is tabulated over the CIE grid")
 }
 
 /// Each pixel's spectrum (the grey renders' green channel at each λ) as
@@ -66,7 +68,8 @@ fn spectral(scene: &Scene) -> Image {
         .collect();
     let pixels = (0..renders[0].pixels.len())
         .map(|p| {
-            let response: [f64; SAMPLES] = std::array::from_fn(|i| f64::from(renders[i].pixels[p].y));
+            let response: [f64; SAMPLES] =
+                std::array::from_fn(|i| f64::from(renders[i].pixels[p].y));
             let [r, g, b] = xyz_to_linear_srgb(spectrum::reflectance_to_xyz(&response));
             Vec3::new(r as f32, g as f32, b as f32)
         })
@@ -93,7 +96,9 @@ fn three_etas(scene: &Scene) -> Image {
 
 /// A pixel as its PNG displays it, in CIELAB.
 fn displayed(pixel: Vec3) -> Lab {
-    let shown = pixel.to_array().map(|c| srgb_decode(f64::from(to_srgb8(c)) / 255.0));
+    let shown = pixel
+        .to_array()
+        .map(|c| srgb_decode(f64::from(to_srgb8(c)) / 255.0));
     xyz_to_lab(linear_srgb_to_xyz(shown), d65_white())
 }
 
@@ -104,7 +109,10 @@ fn measures(image: &Image, truth: &Image, keep: &[bool]) -> (f64, f64, f64) {
     let (mut error, mut total) = (0.0, 0.0);
     for (p, _) in keep.iter().enumerate().filter(|(_, k)| **k) {
         let (a, t) = (image.pixels[p].as_dvec3(), truth.pixels[p].as_dvec3());
-        delta_e.push(delta_e_2000(displayed(image.pixels[p]), displayed(truth.pixels[p])));
+        delta_e.push(delta_e_2000(
+            displayed(image.pixels[p]),
+            displayed(truth.pixels[p]),
+        ));
         error += (a - t).length_squared();
         total += t.length_squared();
     }
@@ -152,8 +160,14 @@ fn table() -> String {
     );
     let [nr, ng, nb] = CIE_RGB_PRIMARIES_NM.map(index);
     for (what, image) in [
-        (format!("three etas ({nr:.5}, {ng:.5}, {nb:.5} at 700, 546.1, 435.8 nm)"), &r.three),
-        (format!("one index, n_d = {:.5}", index(fraunhofer_nm::D)), &r.single),
+        (
+            format!("three etas ({nr:.5}, {ng:.5}, {nb:.5} at 700, 546.1, 435.8 nm)"),
+            &r.three,
+        ),
+        (
+            format!("one index, n_d = {:.5}", index(fraunhofer_nm::D)),
+            &r.single,
+        ),
     ] {
         let (mean, p99, rmse) = measures(image, &r.spectral, &r.sphere);
         t.push_str(&format!("| {what} | {mean:.2} | {p99:.2} | {rmse:.4} |\n"));
@@ -169,7 +183,11 @@ fn table() -> String {
 fn pictures() {
     let r = renders();
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../docs/images");
-    for (name, image) in [("spectral", &r.spectral), ("three-etas", &r.three), ("single-index", &r.single)] {
+    for (name, image) in [
+        ("spectral", &r.spectral),
+        ("three-etas", &r.three),
+        ("single-index", &r.single),
+    ] {
         write_png(&dir.join(format!("dispersion-{name}.png")), image).expect("docs/images");
     }
 }
