@@ -70,7 +70,7 @@ const AREAS: [Area; 9] = [
         key: "techniques",
         title: "The slides' techniques against the exact answers",
         checks: &["techniques."],
-        figures: &[],
+        figures: &["techniques"],
         headline: Some("into water, c = 1: angle from Snell's law (°)"),
     },
     Area {
