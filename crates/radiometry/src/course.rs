@@ -12,11 +12,17 @@
 //! back towards the side the ray comes from. Source files are named by their
 //! prefix in `shared/seeds/`: `000` (GLSL tutorial), `001` (slides,
 //! "realistic scenes"), `002` (WebGL tracer), `003` (textbook chapter).
+//!
+//! Where a shader's control flow, not a formula, is what the text gets
+//! wrong, the step is written out in [`shader_steps`].
 
 #[allow(unused_imports)]
 use num_traits::{Float, FloatConst, One, Zero};
 
 use crate::{Real, Vector3};
+
+pub mod shader_steps;
+pub use shader_steps::{reflection_loop_002, rough_hit_000, Hit002};
 
 /// `000` lines 1249, 1410, 1868, `vec3 Fresnel(vec3 F0, float cosTheta)`:
 /// `F0 + (1 − F0) · cosθ⁵`.
