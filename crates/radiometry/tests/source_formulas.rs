@@ -794,3 +794,64 @@ fn course_003_shade_code_is_blinn_phong_above_and_shades_surfaces_seen_from_behi
         0.0
     );
 }
+
+/// `003` lines 305 and 312: `L_in cos θ_in` is labelled "irradiance", and
+/// the BRDF defined as `L / (L_in cos θ_in)`. Irradiance is power per area
+/// (W/m²); a radiance times a cosine is still per steradian. The solid
+/// angle `dω` the light arrives from is missing: by the chapter's own
+/// radiance definition (line 26), light of radiance `L` from a patch of
+/// sky `Δω` at `θ` delivers `E = L cos θ Δω`, and the BRDF is
+/// `dL / (L_in cos θ dω)`, in 1/sr (which is why the course's `kd`, taken
+/// as the BRDF, has albedo `π kd`). Measured: a source of 1 W/(sr·m²) at
+/// 60° delivers 0.05 W/m² from 0.1 sr and half that from 0.05 sr, where
+/// `L_in cos θ` stays 0.5 for both; a whole sky of it delivers π W/m².
+/// Tolerances: 4ε relative for the definition (three roundings), 1e-12
+/// for the sky (midpoint quadrature in `cos θ`, exact for the linear
+/// integrand, leaves 80 000 rounded terms).
+#[test]
+fn course_003_radiance_times_cosine_is_not_irradiance() {
+    use radiometry::brdf::{directional_albedo, CourseLambert};
+    use radiometry::radiance::radiance_from_flux;
+    let (l_in, cos) = (1.0_f64, 0.5);
+    for solid_angle in [0.1, 0.05] {
+        // The irradiance E = Φ / A for which the definition gives back l_in.
+        let area = 1.0;
+        let e = l_in * cos * solid_angle;
+        let back = radiance_from_flux(e * area, area, cos, solid_angle);
+        assert!((back / l_in - 1.0).abs() <= 4.0 * EPS, "{back}");
+        assert!(
+            (e - l_in * cos).abs() > 0.4,
+            "the course's irradiance is {} W/(sr·m²), E is {e} W/m²",
+            l_in * cos
+        );
+    }
+    // A uniform sky: E = ∫ L cos θ dω = π L.
+    let cosine_integral = directional_albedo(&CourseLambert { kd: 1.0 }, DVec3::Z, DVec3::Z, 100);
+    let sky = l_in * cosine_integral.albedo;
+    assert!((sky - std::f64::consts::PI).abs() <= 1e-12, "{sky}");
+}
+
+/// `000` lines 429–430 ("the diffuse colour, more correctly its absorbing
+/// capacity") and 490 (`ambient`, "the material's ambient-light absorbing
+/// capacity"): both factors multiply the light the surface sends back
+/// (lines 449, 457), so they are reflectances; a surface absorbs what it
+/// does not reflect. The green material, `kd = (0.1, 0.8, 0.3)` (line 534),
+/// is green because it reflects green most and absorbs it least: as a
+/// normalised Lambertian its albedo is `kd` and it absorbs `1 − kd =
+/// (0.9, 0.2, 0.7)`. Tolerance 1e-12: the quadrature is exact for the
+/// Lambertian's linear integrand, up to rounding of 80 000 terms.
+#[test]
+fn course_000_diffuse_factor_is_a_reflectance_not_an_absorptance() {
+    use radiometry::brdf::{directional_albedo, Lambert};
+    let kd = [0.1, 0.8, 0.3];
+    let reflected =
+        kd.map(|albedo| directional_albedo(&Lambert { albedo }, DVec3::Z, DVec3::Z, 100).albedo);
+    let absorbed = reflected.map(|r| 1.0 - r);
+    for ch in 0..3 {
+        assert!((reflected[ch] - kd[ch]).abs() <= 1e-12, "{reflected:?}");
+        assert!((absorbed[ch] - (1.0 - kd[ch])).abs() <= 1e-12);
+    }
+    // Green, the largest factor, is the most reflected and least absorbed.
+    assert!(reflected[1] > reflected[0] && reflected[1] > reflected[2]);
+    assert!(absorbed[1] < absorbed[0] && absorbed[1] < absorbed[2]);
+}
