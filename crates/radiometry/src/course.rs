@@ -22,7 +22,9 @@ use num_traits::{Float, FloatConst, One, Zero};
 use crate::{Real, Vector3};
 
 pub mod shader_steps;
-pub use shader_steps::{reflection_loop_002, rough_hit_000, Hit002};
+pub use shader_steps::{
+    intersect_mirrors_000, reflection_loop_002, rough_hit_000, Hit002, MirrorHit000,
+};
 
 /// `000` lines 1249, 1410, 1868, `vec3 Fresnel(vec3 F0, float cosTheta)`:
 /// `F0 + (1 − F0) · cosθ⁵`.

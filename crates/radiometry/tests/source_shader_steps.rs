@@ -161,3 +161,38 @@ fn course_002_a_reflection_that_leaves_the_scene_is_mixed_again_with_its_own_sur
         assert!((meant - sky * 0.5).length() <= 16.0 * EPS);
     }
 }
+
+/// `000` lines 1944–1977: `intersectMirrors` starts from `Hit closestHit;`,
+/// never initialised (GLSL leaves it undefined; `intersectScene` sets
+/// `finalHit.didHit = false` first, line 1991), and compares every plane
+/// hit with it. Its answer depends on what that memory held: clear, the
+/// kaleidoscope's triangle (`numSides = 3`, size 2.5, lines 1935, 1950)
+/// is found where it is; holding an earlier hit nearer than the mirrors,
+/// every mirror is hidden and that leftover comes back as the mirror hit.
+/// The ray: the camera (line 1807) through the image point (0.4, 0.3),
+/// which meets the mirror whose outward normal is (1/2, √3/2) at
+/// `t = 1.25 / (n · d)`. Tolerance 1e-9 relative: the listing's π is
+/// 5.9e-10 short, which turns the mirror by about 2e-10 rad and moves `t`
+/// by 2.6e-10 relative here; rounding adds a few ε.
+#[test]
+fn course_000_mirror_search_depends_on_an_uninitialised_hit() {
+    let origin = DVec3::new(0.0, 0.0, -2.0);
+    let direction = (DVec3::new(0.4, 0.3, 0.0) - origin).normalize();
+    let search = |before| course::intersect_mirrors_000(origin, direction, 3, 2.5, before);
+    let clear = search(course::MirrorHit000 {
+        distance: 0.0,
+        did_hit: false,
+    });
+    let normal = DVec3::new(0.5, 3f64.sqrt() / 2.0, 0.0);
+    let expected = 1.25 / normal.dot(direction);
+    assert!(clear.did_hit);
+    assert!(
+        (clear.distance / expected - 1.0).abs() <= 1e-9,
+        "{clear:?} vs {expected}"
+    );
+    let leftover = course::MirrorHit000 {
+        distance: 0.5,
+        did_hit: true,
+    };
+    assert_eq!(search(leftover), leftover, "the mirrors are hidden");
+}

@@ -112,3 +112,68 @@ pub fn reflection_loop_002<V: Vector3>(
     }
     color
 }
+
+/// What `intersectMirrors` reads of `000`'s `Hit` (lines 1787–1795):
+/// whether it hit, and how far along the ray.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MirrorHit000<T> {
+    /// `hitDistance`, the ray parameter of the hit.
+    pub distance: T,
+    /// `didHit`.
+    pub did_hit: bool,
+}
+
+/// `000` lines 1937–1979, `intersectMirrors`, for a ray from `origin` along
+/// unit `direction`: the mirrors of a regular `num_sides`-gon of
+/// circumradius `size` around the z axis, normals `cross(p(i+1) − p(i), z)`
+/// normalised, each intersected by `intersectPlane` (lines 1909–1932: a hit
+/// only where `dot(normal, dir) > 0.001` and `t > 0`), the nearest kept.
+///
+/// `closest_before` is what the local `Hit closestHit;` (line 1944) holds
+/// before the loop: the listing never initialises it, and GLSL leaves an
+/// uninitialised local undefined. `intersectScene` sets `finalHit.didHit =
+/// false` first (line 1991); this function does not, and its first
+/// comparison, `!closestHit.didHit || closestHit.hitDistance >
+/// planeHit.hitDistance` (line 1971), reads the undefined value for every
+/// ray. Passing `did_hit: false` gives what the author meant; a leftover
+/// hit nearer than every mirror hides them all, and is returned as the
+/// mirror hit. (A plane that `intersectPlane` leaves unwritten, erratum 7,
+/// counts as a miss here.)
+pub fn intersect_mirrors_000<V: Vector3>(
+    origin: V,
+    direction: V,
+    num_sides: usize,
+    size: V::Scalar,
+    closest_before: MirrorHit000<V::Scalar>,
+) -> MirrorHit000<V::Scalar> {
+    let zero = V::Scalar::zero();
+    // The listing's π, `3.141592653`, kept as written.
+    #[allow(clippy::approx_constant)]
+    let alpha = V::Scalar::lit(2.0 * 3.141592653) / V::Scalar::lit(num_sides as f64);
+    let corner = |i: usize| {
+        let angle = V::Scalar::lit(i as f64) * alpha;
+        V::new(angle.cos(), angle.sin(), zero) * size
+    };
+    let z = V::new(zero, zero, V::Scalar::one());
+    let mut closest = closest_before;
+    for i in 0..num_sides {
+        let (p1, p2) = (corner(i), corner(i + 1));
+        let edge = p2 - p1;
+        let normal = edge
+            .try_normalize()
+            .and_then(|e| e.cross(z).try_normalize());
+        let Some(normal) = normal else { continue };
+        let denom = normal.dot(direction);
+        if denom <= V::Scalar::lit(0.001) {
+            continue;
+        }
+        let t = (p1 - origin).dot(normal) / denom;
+        if t > zero && (!closest.did_hit || closest.distance > t) {
+            closest = MirrorHit000 {
+                distance: t,
+                did_hit: true,
+            };
+        }
+    }
+    closest
+}
