@@ -44,10 +44,10 @@ fn course_000_shadowed_hit_seen_in_a_mirror_discards_the_path_and_ignores_its_we
 
 /// `000` lines 1151–1185 and 1560–1594: the ambient term only in shadow.
 /// A lit point of the green material (`kd = (0.1, 0.8, 0.3)`, line 1369)
-/// under the white light gets `kd cos θ` alone, which in red is below the
-/// shadow's `0.05 · 0.8 = 0.04` wherever `cos θ < 0.4`: near the terminator
-/// the lit surface is darker than its own shadow, and removing the
-/// occluder darkens it. With the ambient term everywhere (line 424) lit is
+/// under the white light gets `kd cos θ` alone away from the highlight,
+/// which in red is below the shadow's `0.05 · 0.8 = 0.04` wherever
+/// `cos θ < 0.4`: near the terminator the lit surface is darker than its
+/// own shadow, and removing the occluder darkens it. With the ambient term everywhere (line 424) lit is
 /// never darker than shadowed. Margins: at `cos θ = 0.39` red is 0.039
 /// against 0.04, a thousand-fold above rounding.
 #[test]
