@@ -3,14 +3,17 @@
 //! the data-sheet check.
 
 use techniques::dispersion::SELLMEIER_N_BK7;
-use validation::techniques::{check_all, check_sellmeier};
+use tracer::render::Image;
+use tracer::scene::Scene;
+use validation::techniques::dispersion::three_etas;
+use validation::techniques::{check_all, check_dispersion_render, check_sellmeier};
 
 #[test]
 fn every_technique_check_passes() {
     let (checks, curves) = check_all(&SELLMEIER_N_BK7);
     assert_eq!(curves.refraction.len(), 4);
     assert_eq!(curves.fresnel_fits.len(), 3);
-    assert_eq!(checks.len(), 6);
+    assert_eq!(checks.len(), 7);
     for check in &checks {
         assert!(check.passed(), "{}: {:?}", check.id, check.failures);
     }
@@ -34,4 +37,24 @@ fn a_glass_off_schotts_coefficients_fails_the_data_sheet() {
     let check = check_sellmeier(&glass);
     assert!(!check.passed());
     assert_eq!(check.failures.len(), 3, "{:?}", check.failures);
+}
+
+/// The three etas with red and blue taken from each other's render.
+fn red_and_blue_swapped(scene: &Scene) -> Image {
+    let mut image = three_etas(scene);
+    for p in &mut image.pixels {
+        std::mem::swap(&mut p.x, &mut p.z);
+    }
+    image
+}
+
+#[test]
+fn three_etas_with_red_and_blue_swapped_fail_the_dispersion_render() {
+    let check = check_dispersion_render(red_and_blue_swapped);
+    assert!(!check.passed());
+    assert!(
+        check.failures[0].contains("no closer than one index"),
+        "{:?}",
+        check.failures
+    );
 }

@@ -6,6 +6,8 @@
 //! tracer's own ray–plane intersection. Their measured errors are the
 //! report's numbers for the techniques.
 
+pub mod dispersion;
+
 use glam::DVec3;
 use radiometry::course::EmpiricalFresnel;
 use techniques::dispersion::prism::{Passage, Prism};
@@ -467,6 +469,76 @@ pub fn check_envmap() -> Check {
     check
 }
 
+/// How far a pixel that does not see the sphere may move between the
+/// spectral render and the single-index one, relative: nothing there
+/// depends on the index, so only the CIE integral of a flat spectrum,
+/// whose white (the tabulated D65, x = 0.31271, y = 0.32902) is not the
+/// sRGB standard's (0.3127, 0.3290) to the last digit: a flat spectrum
+/// comes back as linear sRGB (0.99992, 1.00009, 0.99998).
+pub const FLAT_SPECTRUM_RELATIVE: f64 = 2e-4;
+
+/// A glass sphere of N-BK7 rendered with dispersion
+/// ([`dispersion`]): the three etas and one index measured against the
+/// spectral answer; the three etas must come closer than one index (a
+/// channel taken from the wrong render would not), and a pixel that does
+/// not see the sphere must come out of the spectral integral as it went in.
+///
+/// `three` makes the three-eta render ([`dispersion::three_etas`] in the
+/// suite).
+pub fn check_dispersion_render(three: fn(&tracer::scene::Scene) -> tracer::render::Image) -> Check {
+    let mut check = Check::new(
+        "techniques.dispersion.sphere",
+        "A glass sphere of N-BK7: the slides' three etas and one index against the spectral render",
+        "85 Whitted renders at the Sellmeier index, integrated with the CIE 1931 tables under D65",
+        &format!(
+            "the three etas closer than one index in ΔE2000 mean and relative RMSE; away from the \
+             sphere the spectral render equals the single-index one within {FLAT_SPECTRUM_RELATIVE:e}, relative"
+        ),
+    );
+    let r = dispersion::renders_with(three);
+    check.cases = r.sphere.len();
+    let (three, one) = (
+        dispersion::measures(&r.three, &r.spectral, &r.sphere),
+        dispersion::measures(&r.single, &r.spectral, &r.sphere),
+    );
+    for (what, (mean, p99, rmse)) in [("three etas", three), ("one index", one)] {
+        check.measure(&format!("{what}: ΔE2000 mean"), mean, "the sphere's pixels");
+        check.measure(&format!("{what}: ΔE2000 p99"), p99, "the sphere's pixels");
+        check.measure(
+            &format!("{what}: relative RMSE"),
+            rmse,
+            "the sphere's pixels",
+        );
+    }
+    if !(three.0 < one.0 && three.2 < one.2) {
+        check.fail(format!(
+            "three etas (ΔE mean {:.3}, RMSE {:.4}) no closer than one index ({:.3}, {:.4})",
+            three.0, three.2, one.0, one.2
+        ));
+    }
+    for (p, _) in r.sphere.iter().enumerate().filter(|(_, s)| !**s) {
+        let (a, b) = (
+            r.spectral.pixels[p].as_dvec3(),
+            r.single.pixels[p].as_dvec3(),
+        );
+        let off = (a - b).abs().max_element() / b.abs().max_element().max(1e-3);
+        check.measure_at(
+            "away from the sphere: |spectral − one index|, relative",
+            off,
+            || format!("pixel {p}"),
+        );
+    }
+    if let Some(m) = check.worst("away from the sphere: |spectral − one index|, relative") {
+        if !(m.worst <= FLAT_SPECTRUM_RELATIVE) {
+            check.fail(format!(
+                "{}: a flat spectrum comes back {:e} off",
+                m.at, m.worst
+            ));
+        }
+    }
+    check
+}
+
 /// Every technique's check, and the curves they measured; `glass` the
 /// dispersing glass (N-BK7 in the suite; a parameter so that a wrong one
 /// can be shown to be caught).
@@ -476,6 +548,7 @@ pub fn check_all(glass: &Sellmeier) -> (Vec<Check>, TechniqueCurves) {
         check_envmap(),
         check_sellmeier(glass),
         check_prism(glass),
+        check_dispersion_render(dispersion::three_etas),
         check_cheap_refraction(&mut curves.refraction),
         check_empirical_fresnel(&mut curves.fresnel_fits),
         check_projected_shadow(),
