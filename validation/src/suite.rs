@@ -2,7 +2,7 @@
 //! references, gathered into one [`Report`].
 //!
 //! A kind of check ([`CheckKind`]) reads the references it needs, appends its
-//! [`Check`](crate::Check)s and its figure data to the report, and says how many steps it
+//! [`Check`]s and its figure data to the report, and says how many steps it
 //! takes for the progress display. Adding a kind (the renders against
 //! Mitsuba, say) is one more implementation in [`standard_kinds`].
 
