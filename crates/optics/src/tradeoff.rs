@@ -9,10 +9,15 @@
 //! timed by the median, and held against the truth. The Pareto front per
 //! measure ([`pareto::front`]) says which settings are worth their time.
 
+mod distribute;
+pub mod jobs;
 pub mod measure;
 mod report;
 pub mod sweep;
 mod truth;
+mod worker;
+
+pub use worker::{run_job, TradeoffJobArgs};
 
 pub use validation::tradeoff::checks::UNCONVERGED;
 pub use validation::tradeoff::{pareto, Verdict, MEASURES, SCHEMA, SCHEMA_VERSION};
@@ -83,6 +88,39 @@ pub struct TradeoffArgs {
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1024))]
     #[serde(skip_serializing_if = "Option::is_none")]
     pub threads: Option<u32>,
+    /// Render nothing: write the sweep as independent jobs, one JSON line
+    /// each, to this file, for `optics tradeoff-job` to run anywhere.
+    #[arg(long, value_name = "JOBS.jsonl", conflicts_with = "collect")]
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub plan: Option<PathBuf>,
+    /// Render nothing: merge the results of the plan's jobs (directories
+    /// of result files, or the files) into the sweep's record; give the
+    /// scene and the flags given to --plan.
+    #[arg(long, value_name = "RESULTS", num_args = 1..)]
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub collect: Vec<PathBuf>,
+}
+
+/// What `optics tradeoff` does, settled from its flags once.
+#[derive(Debug, PartialEq)]
+pub enum Mode<'a> {
+    /// Render and measure the sweep here.
+    Sweep,
+    /// Write its jobs to this file (`--plan`).
+    Plan(&'a Path),
+    /// Measure the results of its jobs (`--collect`).
+    Collect(&'a [PathBuf]),
+}
+
+impl TradeoffArgs {
+    /// The mode the flags ask for (clap refuses `--plan` with `--collect`).
+    pub fn mode(&self) -> Mode<'_> {
+        match (&self.plan, self.collect.as_slice()) {
+            (Some(jobs), _) => Mode::Plan(jobs),
+            (None, []) => Mode::Sweep,
+            (None, results) => Mode::Collect(results),
+        }
+    }
 }
 
 /// One point of the sweep, measured.
@@ -159,6 +197,16 @@ impl Measured {
 /// The whole sweep, as written to JSON.
 #[derive(Debug, Serialize)]
 pub struct Sweep {
+    /// Where it is written (not in the JSON).
+    #[serde(skip)]
+    files: Files,
+    /// Its files' stem (not in the JSON).
+    #[serde(skip)]
+    stem: String,
+    /// The course material that multiplies light, and its name (the
+    /// JSON's `diffuse_gain`).
+    #[serde(skip)]
+    gain: Option<(f32, String)>,
     /// [`SCHEMA`].
     pub schema: &'static str,
     /// [`SCHEMA_VERSION`].
@@ -189,79 +237,189 @@ pub struct Sweep {
     pub points: Vec<Measured>,
     /// What was not swept, and why.
     pub skipped: Vec<sweep::Skipped>,
+    /// Where the renders were run as jobs (`--plan`, `--collect`): absent
+    /// for a sweep rendered in one run.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub collected: Option<distribute::Collected>,
+}
+
+/// What every mode knows before it renders: the scene, settled at its
+/// size, the surface pixels, the sweep's points and the plan's key.
+pub(crate) struct Setup {
+    /// The scene with the size given, at its own settings.
+    pub job: RenderJob,
+    /// The course material's diffuse albedo where above 1, and its name.
+    pub gain: Option<(f32, String)>,
+    /// The files' stem (`shadow-lambert`).
+    pub stem: String,
+    /// Where the results go.
+    files: Files,
+    /// The surface pixels.
+    pub mask: Mask,
+    /// The sweep's points.
+    pub plan: sweep::Plan,
+    /// What the plan is made of.
+    pub key: jobs::PlanKey,
+}
+
+impl Setup {
+    /// Loads the scene `args` names and plans its sweep.
+    pub fn new(args: &TradeoffArgs) -> error::Result<Self> {
+        let overrides = Overrides {
+            width: args.width,
+            height: args.height,
+            allow_expensive: true,
+            ..Overrides::default()
+        };
+        let scene_error = |error| ErrorKind::Scene {
+            file: args.scene.clone(),
+            error,
+        };
+        let scene = tracer::scene::load(&args.scene).map_err(scene_error)?;
+        let scene = if args.lambert {
+            scene.course_rough_as_lambert()
+        } else {
+            scene
+        };
+        let gain = scene.diffuse_gain().map(|(g, name)| (g, name.to_owned()));
+        let job = RenderJob::new(scene, &overrides).map_err(scene_error)?;
+        let stem = args
+            .scene
+            .file_stem()
+            .map_or_else(|| "scene".to_owned(), |s| s.to_string_lossy().into_owned());
+        let stem = if args.lambert {
+            format!("{stem}-lambert")
+        } else {
+            stem
+        };
+        let bytes = std::fs::read(&args.scene).unwrap_or_default();
+        let key = jobs::PlanKey {
+            scene: args.scene.display().to_string(),
+            scene_fnv1a: jobs::scene_fnv1a(&bytes),
+            lambert: args.lambert,
+            width: job.scene().width,
+            height: job.scene().height,
+            spp: args.spp,
+            truth_spp: args.truth_spp,
+            repeats: args.repeats,
+            min_seconds: args.min_seconds,
+        };
+        Ok(Setup {
+            files: Files::new(&args.out, &stem),
+            mask: Mask::from_hits(&job.first_hits()),
+            plan: sweep::plan(&job, args.spp),
+            gain,
+            stem,
+            job,
+            key,
+        })
+    }
+
+    /// The truth's cache as `args` asks for it.
+    fn truth_request<'a>(&'a self, args: &'a TradeoffArgs, dir: &'a Path) -> truth::Request<'a> {
+        truth::Request {
+            scene_file: &args.scene,
+            spp: args.truth_spp,
+            lambert: args.lambert,
+            dir,
+            fresh: args.fresh,
+        }
+    }
+}
+
+/// Where and when the renders were timed.
+pub(crate) struct Provenance {
+    /// The machine (or machines) the times are of.
+    pub machine: String,
+    /// The day (or days) they were taken.
+    pub date: String,
+    /// The load average as the renders ended.
+    pub load: Option<String>,
+    /// The jobs, when the renders were run as jobs.
+    pub collected: Option<distribute::Collected>,
 }
 
 pub fn run(args: &TradeoffArgs, ui: &Ui) -> error::Result<()> {
-    let lang = ui.lang;
-    let overrides = Overrides {
-        width: args.width,
-        height: args.height,
-        allow_expensive: true,
-        ..Overrides::default()
-    };
-    let scene_error = |error| ErrorKind::Scene {
-        file: args.scene.clone(),
-        error,
-    };
-    let scene = tracer::scene::load(&args.scene).map_err(scene_error)?;
-    let scene = if args.lambert {
-        scene.course_rough_as_lambert()
-    } else {
-        scene
-    };
-    let gain = scene.diffuse_gain().map(|(g, name)| (g, name.to_owned()));
-    let job = RenderJob::new(scene, &overrides).map_err(scene_error)?;
-    let stem = args
-        .scene
-        .file_stem()
-        .map_or_else(|| "scene".to_owned(), |s| s.to_string_lossy().into_owned());
-    let stem = if args.lambert {
-        format!("{stem}-lambert")
-    } else {
-        stem
-    };
-    let files = Files::new(&args.out, &stem);
-    files.prepare()?;
+    let setup = Setup::new(args)?;
+    let mode = args.mode();
+    if let Mode::Plan(jobs) = mode {
+        return distribute::plan(&setup, args, jobs, ui);
+    }
+    setup.files.prepare()?;
     let threads = args.threads.map(|t| t as usize);
-    let mask = Mask::from_hits(&job.first_hits());
-    let plan = sweep::plan(&job, args.spp);
-
-    let bar = crate::render::progress_bar(plan.points.len() as u64 + 1).inspect(|bar| {
-        bar.set_style(
-            indicatif::ProgressStyle::with_template(
-                "{bar:40} {pos}/{len} settings, {eta} left: {msg}",
-            )
-            .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
-        );
-        bar.set_message("ground truth");
-    });
-    let tick = |message: &str| {
-        if let Some(bar) = &bar {
-            bar.inc(1);
-            bar.set_message(message.to_owned());
+    let truth_dir = setup.files.truth_dir();
+    let request = setup.truth_request(args, &truth_dir);
+    let (truth, truth_record, timed, provenance) = match mode {
+        Mode::Collect(results) => distribute::collect(&setup, &request, results)?,
+        _ => {
+            let bar =
+                crate::render::progress_bar(setup.plan.points.len() as u64 + 1).inspect(|bar| {
+                    bar.set_style(
+                        indicatif::ProgressStyle::with_template(
+                            "{bar:40} {pos}/{len} settings, {eta} left: {msg}",
+                        )
+                        .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+                    );
+                    bar.set_message("ground truth");
+                });
+            let tick = |message: &str| {
+                if let Some(bar) = &bar {
+                    bar.inc(1);
+                    bar.set_message(message.to_owned());
+                }
+            };
+            let (truth, record) = truth::obtain(&setup.job, &request, &setup.mask, threads)?;
+            if truth.is_black() {
+                return Err(ErrorKind::TruthIsBlack {
+                    file: args.scene.clone(),
+                }
+                .into());
+            }
+            let timed = time_points(&setup, &args.scene, args, threads, &tick)?;
+            if let Some(bar) = &bar {
+                bar.finish_and_clear();
+            }
+            let provenance = Provenance {
+                machine: results::machine(),
+                date: results::today(),
+                load: results::load(),
+                collected: None,
+            };
+            (truth, record, timed, provenance)
         }
     };
-    let truth_dir = files.truth_dir();
-    let request = truth::Request {
-        scene_file: &args.scene,
-        spp: args.truth_spp,
-        lambert: args.lambert,
-        dir: &truth_dir,
-        fresh: args.fresh,
-    };
-    let (truth, truth_record) = truth::obtain(&job, &request, &mask, threads)?;
     if truth.is_black() {
         return Err(ErrorKind::TruthIsBlack {
             file: args.scene.clone(),
         }
         .into());
     }
+    let sweep = measure_points(setup, args, (&truth, truth_record), timed, provenance);
+    write_and_show(&sweep, args, ui)
+}
 
-    let timed = time_points(&job, &args.scene, &plan.points, args, threads, &tick)?;
+/// Every point measured against the truth and against the scene's own
+/// settings, its fronts and its verdict marked: the sweep's record.
+fn measure_points(
+    setup: Setup,
+    args: &TradeoffArgs,
+    (truth, truth_record): (&measure::Truth, truth::TruthRecord),
+    timed: Vec<Timed>,
+    provenance: Provenance,
+) -> Sweep {
+    let Setup {
+        job,
+        gain,
+        stem,
+        files,
+        mask,
+        plan,
+        ..
+    } = setup;
     let mut points = Vec::with_capacity(plan.points.len());
     let mut scene_render: Option<measure::Truth> = None;
     for (point, timed) in plan.points.into_iter().zip(timed) {
-        let errors = measure::errors(&timed.images, &truth, &mask);
+        let errors = measure::errors(&timed.images, truth, &mask);
         // The first point is the scene's own settings.
         let reference =
             scene_render.get_or_insert_with(|| measure::Truth::from_renders(&timed.images, &mask));
@@ -283,31 +441,37 @@ pub fn run(args: &TradeoffArgs, ui: &Ui) -> error::Result<()> {
             verdict: None,
         });
     }
-    if let Some(bar) = &bar {
-        bar.finish_and_clear();
-    }
     mark_fronts(&mut points);
     mark_verdicts(&mut points);
-
-    let sweep = Sweep {
+    Sweep {
         schema: SCHEMA,
         version: SCHEMA_VERSION,
         scene: args.scene.display().to_string(),
         lambert: args.lambert,
         diffuse_gain: gain.as_ref().map(|g| g.0),
+        gain,
+        stem,
+        files,
         width: job.scene().width,
         height: job.scene().height,
         surface_pixels: mask.count(),
-        machine: results::machine(),
-        date: results::today(),
-        load: results::load(),
+        machine: provenance.machine,
+        date: provenance.date,
+        load: provenance.load,
         command: command_line(args),
         truth: truth_record,
         points,
         skipped: plan.skipped,
-    };
-    let json = serde_json::to_string_pretty(&sweep).map_err(ErrorKind::Encode)? + "\n";
-    let markdown = report::markdown(&sweep, &stem);
+        collected: provenance.collected,
+    }
+}
+
+/// Writes the sweep's JSON, Markdown and plot, and prints its record.
+fn write_and_show(sweep: &Sweep, args: &TradeoffArgs, ui: &Ui) -> error::Result<()> {
+    let lang = ui.lang;
+    let files = &sweep.files;
+    let json = serde_json::to_string_pretty(sweep).map_err(ErrorKind::Encode)? + "\n";
+    let markdown = report::markdown(sweep, &sweep.stem);
     tracer::output::write_all_atomically(&[
         (files.json.as_path(), json.as_bytes()),
         (files.markdown.as_path(), markdown.as_bytes()),
@@ -330,7 +494,7 @@ pub fn run(args: &TradeoffArgs, ui: &Ui) -> error::Result<()> {
     record
         .inputs_from(args)
         .set_answer(Answer::List(written), None);
-    for line in report::table(&sweep, lang) {
+    for line in report::table(sweep, lang) {
         record.step(|| line);
     }
     record.step(|| {
@@ -343,7 +507,7 @@ pub fn run(args: &TradeoffArgs, ui: &Ui) -> error::Result<()> {
             plotted.map_or_else(String::new, |p| format!(", {}", p.display()))
         )
     });
-    if let Some((gain, name)) = &gain {
+    if let Some((gain, name)) = &sweep.gain {
         record.note(say!(
             lang,
             "the material {} reflects up to {:.2} times the light it receives (π kd; the course's kd is in 1/sr): where such surfaces see each other, light multiplies and no truth converges; --lambert measures the scene with the suite's physical stand-in",
@@ -370,7 +534,7 @@ pub fn run(args: &TradeoffArgs, ui: &Ui) -> error::Result<()> {
             lang.pick(skipped.why, skipped.why_hu)
         ));
     }
-    record.detail("sweep", &sweep);
+    record.detail("sweep", sweep);
     ui.show_steps(&record)?;
     // The notes (what was not swept, a truth not to be trusted) are read
     // after the table in text too, not only in the JSON.
@@ -382,33 +546,37 @@ pub fn run(args: &TradeoffArgs, ui: &Ui) -> error::Result<()> {
 }
 
 /// One point's renders: the images measured, the times.
-struct Timed {
+pub(crate) struct Timed {
     /// One image for a deterministic setting; the first
-    /// [`MAX_KEPT`] seeds' for a Monte Carlo one.
-    images: Vec<Image>,
+    /// [`jobs::MAX_KEPT`] seeds' for a Monte Carlo one.
+    pub images: Vec<Image>,
     /// Every render's time, s.
-    seconds: Vec<f64>,
+    pub seconds: Vec<f64>,
     /// Rays over all the renders.
-    rays: f64,
+    pub rays: f64,
 }
 
-/// The most seeds of a Monte Carlo point whose images are kept for the
-/// measures (the further renders are timed only).
-const MAX_KEPT: usize = 8;
+/// How many renders a point takes whose first took `first` seconds: at
+/// least `--repeats`, and enough to add up to `--min-seconds`, at most
+/// [`MAX_RENDERS`].
+pub(crate) fn renders_wanted(first: f64, repeats: u32, min_seconds: f64) -> usize {
+    let enough = (min_seconds / first.max(1e-6)).ceil() as usize;
+    enough.clamp(repeats as usize, MAX_RENDERS)
+}
 
 /// Renders every point in rounds, each round every point once, so that a
 /// drift of the machine's speed falls on all of them alike (A B C … A B C):
 /// after one untimed warm-up render, the first round, then as many more as
-/// each point needs for `--repeats` renders adding up to `--min-seconds`
-/// (at most [`MAX_RENDERS`]). Monte Carlo points take a new seed each time.
+/// each point needs ([`renders_wanted`]). Monte Carlo points take a new
+/// seed each time.
 fn time_points(
-    job: &RenderJob,
+    setup: &Setup,
     file: &Path,
-    points: &[sweep::Point],
     args: &TradeoffArgs,
     threads: Option<usize>,
     tick: &dyn Fn(&str),
 ) -> error::Result<Vec<Timed>> {
+    let (job, points) = (&setup.job, &setup.plan.points);
     if let Some(first) = points.first() {
         render(job, file, first.settings, threads)?;
     }
@@ -440,7 +608,7 @@ fn time_points(
             t.rays += rendered.rays.total() as f64;
             // A deterministic setting renders the same image each time.
             let keep = if settings.integrator.samples() {
-                MAX_KEPT
+                jobs::MAX_KEPT
             } else {
                 1
             };
@@ -448,9 +616,7 @@ fn time_points(
                 t.images.push(rendered.image);
             }
             if round == 0 {
-                let first = t.seconds[0].max(1e-6);
-                let enough = (args.min_seconds / first).ceil() as usize;
-                wanted[i] = enough.clamp(args.repeats as usize, MAX_RENDERS);
+                wanted[i] = renders_wanted(t.seconds[0], args.repeats, args.min_seconds);
             }
             rendered_any = true;
         }
@@ -537,6 +703,7 @@ fn command_line(args: &TradeoffArgs) -> String {
 }
 
 /// Where a sweep writes.
+#[derive(Debug)]
 struct Files {
     dir: PathBuf,
     json: PathBuf,
