@@ -13,7 +13,9 @@ mod distribute;
 pub mod jobs;
 pub mod measure;
 mod report;
+mod setup;
 pub mod sweep;
+mod timing;
 mod truth;
 mod worker;
 
@@ -25,15 +27,14 @@ pub use validation::tradeoff::{pareto, Verdict, MEASURES, SCHEMA, SCHEMA_VERSION
 use std::path::{Path, PathBuf};
 
 use serde::Serialize;
-use tracer::job::{Overrides, RenderJob};
-use tracer::render::{Image, Rendered};
-use tracer::scene::{Settings, MAX_IMAGE_SIDE, MAX_SPP};
+use tracer::scene::{MAX_IMAGE_SIDE, MAX_SPP};
 
 use crate::error::{self, ErrorKind};
-use crate::lang::say;
-use crate::record::{Answer, Record};
 use crate::Ui;
-use measure::{Errors, Mask};
+use measure::Errors;
+use setup::Files;
+pub(crate) use setup::Setup;
+pub(crate) use timing::{render, renders_wanted, Timed, MAX_RENDERS};
 
 #[derive(clap::Args, Debug, Serialize)]
 #[command(after_help = "Examples:
@@ -152,9 +153,6 @@ pub struct Measured {
     pub verdict: Option<Verdict>,
 }
 
-/// The most renders of one setting that `--min-seconds` asks for.
-const MAX_RENDERS: usize = 64;
-
 /// `--min-seconds`: a finite number of seconds, 0 to 60.
 fn seconds_flag(text: &str) -> Result<f64, String> {
     match text.parse::<f64>() {
@@ -243,90 +241,6 @@ pub struct Sweep {
     pub collected: Option<distribute::Collected>,
 }
 
-/// What every mode knows before it renders: the scene, settled at its
-/// size, the surface pixels, the sweep's points and the plan's key.
-pub(crate) struct Setup {
-    /// The scene with the size given, at its own settings.
-    pub job: RenderJob,
-    /// The course material's diffuse albedo where above 1, and its name.
-    pub gain: Option<(f32, String)>,
-    /// The files' stem (`shadow-lambert`).
-    pub stem: String,
-    /// Where the results go.
-    files: Files,
-    /// The surface pixels.
-    pub mask: Mask,
-    /// The sweep's points.
-    pub plan: sweep::Plan,
-    /// What the plan is made of.
-    pub key: jobs::PlanKey,
-}
-
-impl Setup {
-    /// Loads the scene `args` names and plans its sweep.
-    pub fn new(args: &TradeoffArgs) -> error::Result<Self> {
-        let overrides = Overrides {
-            width: args.width,
-            height: args.height,
-            allow_expensive: true,
-            ..Overrides::default()
-        };
-        let scene_error = |error| ErrorKind::Scene {
-            file: args.scene.clone(),
-            error,
-        };
-        let scene = tracer::scene::load(&args.scene).map_err(scene_error)?;
-        let scene = if args.lambert {
-            scene.course_rough_as_lambert()
-        } else {
-            scene
-        };
-        let gain = scene.diffuse_gain().map(|(g, name)| (g, name.to_owned()));
-        let job = RenderJob::new(scene, &overrides).map_err(scene_error)?;
-        let stem = args
-            .scene
-            .file_stem()
-            .map_or_else(|| "scene".to_owned(), |s| s.to_string_lossy().into_owned());
-        let stem = if args.lambert {
-            format!("{stem}-lambert")
-        } else {
-            stem
-        };
-        let bytes = std::fs::read(&args.scene).unwrap_or_default();
-        let key = jobs::PlanKey {
-            scene: args.scene.display().to_string(),
-            scene_fnv1a: jobs::scene_fnv1a(&bytes),
-            lambert: args.lambert,
-            width: job.scene().width,
-            height: job.scene().height,
-            spp: args.spp,
-            truth_spp: args.truth_spp,
-            repeats: args.repeats,
-            min_seconds: args.min_seconds,
-        };
-        Ok(Setup {
-            files: Files::new(&args.out, &stem),
-            mask: Mask::from_hits(&job.first_hits()),
-            plan: sweep::plan(&job, args.spp),
-            gain,
-            stem,
-            job,
-            key,
-        })
-    }
-
-    /// The truth's cache as `args` asks for it.
-    fn truth_request<'a>(&'a self, args: &'a TradeoffArgs, dir: &'a Path) -> truth::Request<'a> {
-        truth::Request {
-            scene_file: &args.scene,
-            spp: args.truth_spp,
-            lambert: args.lambert,
-            dir,
-            fresh: args.fresh,
-        }
-    }
-}
-
 /// Where and when the renders were timed.
 pub(crate) struct Provenance {
     /// The machine (or machines) the times are of.
@@ -375,7 +289,7 @@ pub fn run(args: &TradeoffArgs, ui: &Ui) -> error::Result<()> {
                 }
                 .into());
             }
-            let timed = time_points(&setup, &args.scene, args, threads, &tick)?;
+            let timed = timing::time_points(&setup, &args.scene, args, threads, &tick)?;
             if let Some(bar) = &bar {
                 bar.finish_and_clear();
             }
@@ -395,7 +309,7 @@ pub fn run(args: &TradeoffArgs, ui: &Ui) -> error::Result<()> {
         .into());
     }
     let sweep = measure_points(setup, args, (&truth, truth_record), timed, provenance);
-    write_and_show(&sweep, args, ui)
+    report::write_and_show(&sweep, args, ui)
 }
 
 /// Every point measured against the truth and against the scene's own
@@ -466,183 +380,6 @@ fn measure_points(
     }
 }
 
-/// Writes the sweep's JSON, Markdown and plot, and prints its record.
-fn write_and_show(sweep: &Sweep, args: &TradeoffArgs, ui: &Ui) -> error::Result<()> {
-    let lang = ui.lang;
-    let files = &sweep.files;
-    let json = serde_json::to_string_pretty(sweep).map_err(ErrorKind::Encode)? + "\n";
-    let markdown = report::markdown(sweep, &sweep.stem);
-    tracer::output::write_all_atomically(&[
-        (files.json.as_path(), json.as_bytes()),
-        (files.markdown.as_path(), markdown.as_bytes()),
-    ])
-    .map_err(ErrorKind::Output)?;
-    let plotted = if args.no_plot {
-        None
-    } else {
-        Some(report::plot(&files.json, &files.plot)?)
-    };
-
-    let mut record = Record::new("tradeoff", String::new(), "");
-    let mut written = vec![
-        files.json.display().to_string().into(),
-        files.markdown.display().to_string().into(),
-    ];
-    if plotted.is_some() {
-        written.push(files.plot.display().to_string().into());
-    }
-    record
-        .inputs_from(args)
-        .set_answer(Answer::List(written), None);
-    for line in report::table(sweep, lang) {
-        record.step(|| line);
-    }
-    record.step(|| {
-        say!(
-            lang,
-            "written: {}, {}{}",
-            "kiírva: {}, {}{}",
-            files.json.display(),
-            files.markdown.display(),
-            plotted.map_or_else(String::new, |p| format!(", {}", p.display()))
-        )
-    });
-    if let Some((gain, name)) = &sweep.gain {
-        record.note(say!(
-            lang,
-            "the material {} reflects up to {:.2} times the light it receives (π kd; the course's kd is in 1/sr): where such surfaces see each other, light multiplies and no truth converges; --lambert measures the scene with the suite's physical stand-in",
-            "a(z) {} anyag a kapott fény legfeljebb {:.2}-szeresét veri vissza (π kd; a kurzus kd-je 1/sr-ben értendő): ahol ilyen felületek látják egymást, a fény sokszorozódik, és nincs konvergens referencia; a --lambert a csomag fizikai helyettesítőjével mér",
-            name,
-            gain
-        ));
-    }
-    if sweep.truth.noise_relative > UNCONVERGED {
-        record.note(say!(
-            lang,
-            "the truth is not converged: its own noise is {:.2} of its energy (above {}), so the relative RMSE and the ΔE of every setting are read through that noise; raise --truth-spp",
-            "a referencia nem konvergált: saját zaja energiájának {:.2} része ({} felett), így minden beállítás relatív RMSE-je és ΔE-je e zajon át látszik; növelje a --truth-spp értékét",
-            sweep.truth.noise_relative,
-            UNCONVERGED
-        ));
-    }
-    for skipped in &sweep.skipped {
-        record.note(say!(
-            lang,
-            "not swept: {}: {}",
-            "nem mért: {}: {}",
-            skipped.axis,
-            lang.pick(skipped.why, skipped.why_hu)
-        ));
-    }
-    record.detail("sweep", sweep);
-    ui.show_steps(&record)?;
-    // The notes (what was not swept, a truth not to be trusted) are read
-    // after the table in text too, not only in the JSON.
-    if !ui.json {
-        let notes: String = record.notes.iter().map(|n| format!("{n}\n")).collect();
-        crate::print_out(&notes)?;
-    }
-    Ok(())
-}
-
-/// One point's renders: the images measured, the times.
-pub(crate) struct Timed {
-    /// One image for a deterministic setting; the first
-    /// [`jobs::MAX_KEPT`] seeds' for a Monte Carlo one.
-    pub images: Vec<Image>,
-    /// Every render's time, s.
-    pub seconds: Vec<f64>,
-    /// Rays over all the renders.
-    pub rays: f64,
-}
-
-/// How many renders a point takes whose first took `first` seconds: at
-/// least `--repeats`, and enough to add up to `--min-seconds`, at most
-/// [`MAX_RENDERS`].
-pub(crate) fn renders_wanted(first: f64, repeats: u32, min_seconds: f64) -> usize {
-    let enough = (min_seconds / first.max(1e-6)).ceil() as usize;
-    enough.clamp(repeats as usize, MAX_RENDERS)
-}
-
-/// Renders every point in rounds, each round every point once, so that a
-/// drift of the machine's speed falls on all of them alike (A B C … A B C):
-/// after one untimed warm-up render, the first round, then as many more as
-/// each point needs ([`renders_wanted`]). Monte Carlo points take a new
-/// seed each time.
-fn time_points(
-    setup: &Setup,
-    file: &Path,
-    args: &TradeoffArgs,
-    threads: Option<usize>,
-    tick: &dyn Fn(&str),
-) -> error::Result<Vec<Timed>> {
-    let (job, points) = (&setup.job, &setup.plan.points);
-    if let Some(first) = points.first() {
-        render(job, file, first.settings, threads)?;
-    }
-    let mut timed: Vec<Timed> = points
-        .iter()
-        .map(|_| Timed {
-            images: Vec::new(),
-            seconds: Vec::new(),
-            rays: 0.0,
-        })
-        .collect();
-    let mut wanted = vec![args.repeats as usize; points.len()];
-    for round in 0..MAX_RENDERS {
-        let mut rendered_any = false;
-        for (i, point) in points.iter().enumerate() {
-            if timed[i].seconds.len() >= wanted[i] {
-                continue;
-            }
-            if round == 0 {
-                tick(&point.label);
-            }
-            let settings = Settings {
-                seed: point.settings.seed.wrapping_add(round as u64),
-                ..point.settings
-            };
-            let rendered = render(job, file, settings, threads)?;
-            let t = &mut timed[i];
-            t.seconds.push(rendered.elapsed.as_secs_f64());
-            t.rays += rendered.rays.total() as f64;
-            // A deterministic setting renders the same image each time.
-            let keep = if settings.integrator.samples() {
-                jobs::MAX_KEPT
-            } else {
-                1
-            };
-            if t.images.len() < keep {
-                t.images.push(rendered.image);
-            }
-            if round == 0 {
-                wanted[i] = renders_wanted(t.seconds[0], args.repeats, args.min_seconds);
-            }
-            rendered_any = true;
-        }
-        if !rendered_any {
-            break;
-        }
-    }
-    Ok(timed)
-}
-
-/// Renders `job`'s scene (read from `file`) with `settings`.
-pub(crate) fn render(
-    job: &RenderJob,
-    file: &Path,
-    settings: Settings,
-    threads: Option<usize>,
-) -> error::Result<Rendered> {
-    let job = RenderJob::with_settings(job.scene().clone(), settings).map_err(|error| {
-        ErrorKind::Scene {
-            file: file.to_owned(),
-            error,
-        }
-    })?;
-    Ok(job.render(threads, &|_| {})?)
-}
-
 /// Marks each point with the fronts it lies on.
 fn mark_fronts(points: &mut [Measured]) {
     for name in MEASURES {
@@ -700,41 +437,6 @@ fn command_line(args: &TradeoffArgs) -> String {
         args.spp, args.truth_spp, args.repeats, args.min_seconds
     ));
     words.join(" ")
-}
-
-/// Where a sweep writes.
-#[derive(Debug)]
-struct Files {
-    dir: PathBuf,
-    json: PathBuf,
-    markdown: PathBuf,
-    plot: PathBuf,
-}
-
-impl Files {
-    fn new(dir: &Path, stem: &str) -> Self {
-        Files {
-            dir: dir.to_owned(),
-            json: dir.join(format!("{stem}.json")),
-            markdown: dir.join(format!("{stem}.md")),
-            plot: dir.join(format!("{stem}-pareto.png")),
-        }
-    }
-
-    fn truth_dir(&self) -> PathBuf {
-        self.dir.join("truth")
-    }
-
-    /// Creates the directories, before any render is spent.
-    fn prepare(&self) -> error::Result<()> {
-        std::fs::create_dir_all(self.truth_dir()).map_err(|source| {
-            ErrorKind::Output(tracer::output::OutputError::Io {
-                path: self.truth_dir().display().to_string(),
-                source,
-            })
-        })?;
-        Ok(())
-    }
 }
 
 #[cfg(test)]
