@@ -9,7 +9,7 @@
 //! timed by the median, and held against the truth. The Pareto front per
 //! measure ([`pareto::front`]) says which settings are worth their time.
 
-mod distribute;
+pub(crate) mod distribute;
 pub mod jobs;
 pub mod measure;
 mod report;

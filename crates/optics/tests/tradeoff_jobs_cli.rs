@@ -324,11 +324,15 @@ fn a_scene_changed_since_planning_is_refused_by_job_and_by_collect() {
     text.push('\n');
     std::fs::write(&scene, text).unwrap();
     let fresh = dir.path().join("fresh");
-    let message = refused(&run_job(&jobs, 2, &fresh), "jobs.scene_changed", "scene");
+    let message = refused(
+        &run_job(&jobs, 2, &fresh),
+        "jobs.scene_changed",
+        "scene_fnv1a",
+    );
     assert!(message.contains(scene.to_str().unwrap()), "{message}");
     assert!(!fresh.exists(), "no result written");
     let out = collect(&scene, &results, &dir.path().join("collected"));
-    refused(&out, "jobs.scene_changed", "scene");
+    refused(&out, "jobs.scene_changed", "scene_fnv1a");
 }
 
 #[test]

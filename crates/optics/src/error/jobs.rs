@@ -238,7 +238,7 @@ impl JobError {
             JobError::Line { field, .. } => return field.clone(),
             JobError::Schema { .. } => "schema",
             JobError::Version { .. } => "version",
-            JobError::SceneChanged { .. } => "scene",
+            JobError::SceneChanged { .. } => "scene_fnv1a",
             JobError::OtherPlan { .. } => "plan",
             JobError::Duplicate { .. } => "job",
             JobError::Missing { .. } | JobError::NoResults { .. } => "--collect",

@@ -1,8 +1,9 @@
 //! Fuzz targets of the calculator's inputs, run by `cargo test` on stable
 //! Rust: batch lines (`batch_lines`), flag values (`flag_values`), the
 //! render settings' choices (`render_flags`), the images `optics
-//! compare` reads (`compare_images`) and `optics tradeoff`'s numeric flags
-//! (`tradeoff_flags`).
+//! compare` reads (`compare_images`), `optics tradeoff`'s numeric flags
+//! (`tradeoff_flags`) and the job and result lines of a sweep spread over
+//! machines (`tradeoff_jobs`).
 //!
 //! Each target generates inputs from the course's own requests, mutates
 //! them (numbers at the edges of `f64`, wrong types, missing and unknown
@@ -21,6 +22,8 @@ mod flag_values;
 mod render_flags;
 #[cfg(feature = "harness")]
 mod tradeoff_flags;
+#[cfg(feature = "harness")]
+mod tradeoff_jobs;
 
 use proptest::prelude::*;
 use proptest::test_runner::{Config, TestCaseError, TestRunner};

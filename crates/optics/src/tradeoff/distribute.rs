@@ -174,7 +174,7 @@ pub fn collect(
 }
 
 /// The job `result` is of, if it is one of this sweep's plan.
-fn accept(
+pub(crate) fn accept(
     planned: &Planned,
     setup: &Setup,
     result: &JobResult,
