@@ -47,7 +47,7 @@ fn at(line: usize) -> Place {
 pub fn examples() -> Vec<(ErrorKind, Vec<String>)> {
     let os = os_error().to_string();
     let place = "results/job-0003.json:1";
-    let image = |problem| jobs(JobError::Image { at: at(1), problem }, &[place, "images"]);
+    let image = |problem, quoted: &[&str]| jobs(JobError::Image { at: at(1), problem }, quoted);
     vec![
         jobs(
             JobError::Read {
@@ -66,8 +66,8 @@ pub fn examples() -> Vec<(ErrorKind, Vec<String>)> {
             },
             &[
                 "results/job-0003.json:2",
-                "colour",
                 "unknown field `colour`",
+                "colour",
                 "optics.tradeoff-job",
             ],
         ),
@@ -90,7 +90,7 @@ pub fn examples() -> Vec<(ErrorKind, Vec<String>)> {
                 at: at(1),
                 found: 2,
             },
-            &[place, "optics.tradeoff-job"],
+            &[place, "optics.tradeoff-job", "optics"],
         ),
         jobs(
             JobError::NoSuchJob {
@@ -107,7 +107,7 @@ pub fn examples() -> Vec<(ErrorKind, Vec<String>)> {
                 field: "settings",
                 job: 3,
             },
-            &[place, "settings"],
+            &[place, "settings", "optics"],
         ),
         jobs(
             JobError::SceneChanged {
@@ -149,16 +149,25 @@ pub fn examples() -> Vec<(ErrorKind, Vec<String>)> {
             },
             &["3 (integrator path, 16 spp)"],
         ),
-        image(ImageProblem::Encoding { index: 0 }),
-        image(ImageProblem::Size {
-            index: 1,
-            got: (8, 6),
-            expected: (16, 12),
-        }),
-        image(ImageProblem::Count {
-            got: 2,
-            expected: 3,
-        }),
+        image(
+            ImageProblem::Encoding { index: 0 },
+            &[place, "images", "base64"],
+        ),
+        image(
+            ImageProblem::Size {
+                index: 1,
+                got: (8, 6),
+                expected: (16, 12),
+            },
+            &[place, "images"],
+        ),
+        image(
+            ImageProblem::Count {
+                got: 2,
+                expected: 3,
+            },
+            &[place, "images"],
+        ),
         jobs(
             JobError::Times {
                 at: at(1),
