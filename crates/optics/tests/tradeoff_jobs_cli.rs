@@ -404,4 +404,9 @@ fn bad_job_lines_are_refused_by_field_with_nothing_written() {
         .unwrap();
     refused(&out, "jobs.index_needed", "INDEX");
     assert!(!results.exists(), "nothing written");
+    // An --out that is a file: refused by name before the render.
+    let file = dir.path().join("a-file");
+    std::fs::write(&file, b"x").unwrap();
+    let message = refused(&run_job(&jobs, 2, &file), "jobs.write", "--out");
+    assert!(message.contains("a-file"), "{message}");
 }

@@ -13,49 +13,15 @@ use std::sync::OnceLock;
 use super::{edge_number, runner, Coverage};
 use crate::error::jobs::{JobError, LineKind, Place};
 use crate::tradeoff::distribute::accept;
-use crate::tradeoff::jobs::{self, Job, JobResult, Planned, INDEX_UNCHECKED};
+use crate::tradeoff::jobs::{
+    self, Job, JobResult, Planned, INDEX_UNCHECKED, JOB_FIELDS, RESULT_FIELDS,
+};
 use crate::tradeoff::{Setup, TradeoffArgs};
 use glam::Vec3;
 use proptest::prelude::*;
 use proptest::test_runner::TestCaseError;
 use serde_json::{json, Map, Value};
 use tracer::render::Image;
-
-/// The fields of a job line and of a result line.
-const JOB_FIELDS: [&str; 17] = [
-    "schema",
-    "version",
-    "plan",
-    "job",
-    "jobs",
-    "scene",
-    "scene_fnv1a",
-    "lambert",
-    "width",
-    "height",
-    "spp",
-    "truth_spp",
-    "repeats",
-    "min_seconds",
-    "axis",
-    "label",
-    "settings",
-];
-const RESULT_FIELDS: [&str; 13] = [
-    "schema",
-    "version",
-    "plan",
-    "scene_fnv1a",
-    "job",
-    "jobs",
-    "label",
-    "seconds",
-    "rays",
-    "machine",
-    "date",
-    "load",
-    "images",
-];
 
 /// The plan of `shadow` at 8 × 6, made once.
 fn planned() -> &'static (Setup, Planned) {

@@ -14,16 +14,17 @@
 //! Jobs 0 and 1 are the two halves of the ground truth; jobs 2 onwards
 //! the sweep's points in the sweep's order, the scene's own first.
 
-use base64::Engine as _;
+mod result;
+
+pub use result::{encode, JobResult, RESULT_FIELDS};
+
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
 use tracer::job::RenderJob;
-use tracer::output::{pfm_bytes, read_pfm};
-use tracer::render::Image;
 use tracer::scene::Settings;
 
 use super::{sweep, truth};
-use crate::error::jobs::{ImageProblem, JobError, LineKind, Place};
+use crate::error::jobs::{JobError, LineKind, Place};
 
 /// The version of both line schemas ([`LineKind::schema`]): raised when a
 /// field changes meaning or goes.
@@ -224,7 +225,7 @@ impl Planned {
         }
         let planned = &self.jobs[line.job];
         let (given, wanted) = (to_fields(line), to_fields(planned));
-        for name in FIELDS {
+        for name in JOB_FIELDS {
             if !given
                 .get(name)
                 .is_some_and(|g| wanted.get(name).is_some_and(|w| same(g, w)))
@@ -253,7 +254,7 @@ impl Planned {
 }
 
 /// The fields of a job line, by name, in the order [`Job`] declares them.
-const FIELDS: [&str; 17] = [
+pub const JOB_FIELDS: [&str; 17] = [
     "schema",
     "version",
     "plan",
@@ -296,104 +297,6 @@ fn same(a: &Value, b: &Value) -> bool {
         }
         _ => a == b,
     }
-}
-
-/// What a job rendered: one line of `optics.tradeoff-result`.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct JobResult {
-    /// `optics.tradeoff-result`.
-    pub schema: String,
-    /// [`VERSION`].
-    pub version: u32,
-    /// The plan's id.
-    pub plan: String,
-    /// FNV-1a of the scene file the job rendered.
-    pub scene_fnv1a: String,
-    /// The job, from 0.
-    pub job: usize,
-    /// The plan's jobs.
-    pub jobs: usize,
-    /// The job's label.
-    pub label: String,
-    /// Every render's time, s, in the order taken (after one untimed
-    /// warm-up render of a point).
-    pub seconds: Vec<f64>,
-    /// Rays cast over all the renders.
-    pub rays: f64,
-    /// The machine the times were taken on.
-    pub machine: String,
-    /// `YYYY-MM-DD`, UTC.
-    pub date: String,
-    /// The load average as the job ended.
-    pub load: Option<String>,
-    /// The images kept ([`Planned::kept`]), each its PFM file in base64,
-    /// in the order of their seeds.
-    pub images: Vec<String>,
-}
-
-impl JobResult {
-    /// Checks the result's numbers and decodes its images, `kept` of them
-    /// of `width` × `height` pixels.
-    pub fn images(
-        &self,
-        at: &Place,
-        kept: usize,
-        (width, height): (u32, u32),
-    ) -> Result<Vec<Image>, JobError> {
-        let times = |field| JobError::Times {
-            at: at.clone(),
-            field,
-        };
-        let renders = self.seconds.len();
-        if !(1..=64).contains(&renders) || !self.seconds.iter().all(|s| *s >= 0.0 && s.is_finite())
-        {
-            return Err(times("seconds"));
-        }
-        if !(self.rays >= 0.0 && self.rays.is_finite()) {
-            return Err(times("rays"));
-        }
-        if self.images.len() != kept {
-            let problem = ImageProblem::Count {
-                got: self.images.len(),
-                expected: kept,
-            };
-            return Err(image_error(at, problem));
-        }
-        self.images
-            .iter()
-            .enumerate()
-            .map(|(index, text)| {
-                let image = base64::engine::general_purpose::STANDARD
-                    .decode(text)
-                    .ok()
-                    .and_then(|bytes| read_pfm(&bytes))
-                    .ok_or_else(|| image_error(at, ImageProblem::Encoding { index }))?;
-                if (image.width, image.height) != (width, height) {
-                    let problem = ImageProblem::Size {
-                        index,
-                        got: (image.width, image.height),
-                        expected: (width, height),
-                    };
-                    return Err(image_error(at, problem));
-                }
-                Ok(image)
-            })
-            .collect()
-    }
-}
-
-fn image_error(at: &Place, problem: ImageProblem) -> JobError {
-    JobError::Image {
-        at: at.clone(),
-        problem,
-    }
-}
-
-/// An image as a result line carries it: its PFM file in base64, every
-/// `f32` as rendered.
-pub fn encode(image: &Image) -> String {
-    base64::engine::general_purpose::STANDARD.encode(pfm_bytes(image))
 }
 
 /// A line read as `kind`: JSON of the line's fields (none unknown, none
@@ -466,4 +369,96 @@ fn index_unchecked() -> bool {
 #[cfg(not(test))]
 fn index_unchecked() -> bool {
     false
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn keys(value: impl Serialize) -> Vec<String> {
+        match serde_json::to_value(value) {
+            Ok(Value::Object(map)) => map.keys().cloned().collect(),
+            _ => Vec::new(),
+        }
+    }
+
+    fn sorted(fields: &[&str]) -> Vec<String> {
+        let mut fields: Vec<String> = fields.iter().map(|&f| f.to_owned()).collect();
+        fields.sort();
+        fields
+    }
+
+    fn job() -> Job {
+        Job {
+            schema: LineKind::Job.schema().into(),
+            version: VERSION,
+            plan: "0".into(),
+            job: 0,
+            jobs: 1,
+            scene: "s.json".into(),
+            scene_fnv1a: "0".into(),
+            lambert: false,
+            width: 1,
+            height: 1,
+            spp: 1,
+            truth_spp: 2,
+            repeats: 1,
+            min_seconds: 0.0,
+            axis: "truth".into(),
+            label: "truth, half 1 of 2".into(),
+            settings: Value::Null,
+        }
+    }
+
+    /// The lists the checks and the fuzz target name fields by are the
+    /// lines' own fields, every one.
+    #[test]
+    fn the_field_lists_are_the_lines_fields() {
+        assert_eq!(keys(job()), sorted(&JOB_FIELDS));
+        let result = JobResult {
+            schema: LineKind::Result.schema().into(),
+            version: VERSION,
+            plan: "0".into(),
+            scene_fnv1a: "0".into(),
+            job: 0,
+            jobs: 1,
+            label: "l".into(),
+            seconds: vec![0.0],
+            rays: 0.0,
+            machine: "m".into(),
+            date: "d".into(),
+            load: None,
+            images: Vec::new(),
+        };
+        assert_eq!(keys(result), sorted(&RESULT_FIELDS));
+    }
+
+    /// `--min-seconds` 0.1 read back one unit in the last place off is the
+    /// same plan; 0.1 against 0.2 is not.
+    #[test]
+    fn a_plan_id_survives_a_float_read_back_one_ulp_off() {
+        let key = job().key();
+        let nudged = PlanKey {
+            min_seconds: f64::from_bits(0.1_f64.to_bits() + 1),
+            ..PlanKey {
+                min_seconds: 0.1,
+                ..key.clone()
+            }
+        };
+        let exact = PlanKey {
+            min_seconds: 0.1,
+            ..key.clone()
+        };
+        assert_eq!(nudged.id(), exact.id());
+        let other = PlanKey {
+            min_seconds: 0.2,
+            ..key
+        };
+        assert_ne!(other.id(), exact.id());
+        assert!(same(
+            &serde_json::json!(0.1),
+            &serde_json::json!(nudged.min_seconds)
+        ));
+        assert!(!same(&serde_json::json!(0.1), &serde_json::json!(0.2)));
+    }
 }

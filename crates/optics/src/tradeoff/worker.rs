@@ -75,8 +75,7 @@ pub fn run_job(args: &TradeoffJobArgs, ui: &Ui) -> error::Result<()> {
     let setup = Setup::new(&sweep)?;
     let planned = Planned::new(&setup.key, &setup.job, &setup.plan);
     let index = planned.check(&line, &at)?;
-    let result = run(&setup, &planned, index, &sweep, &line)?;
-
+    // Before any render is spent: a result with nowhere to go is refused now.
     std::fs::create_dir_all(&args.out).map_err(|source| {
         let error = tracer::output::OutputError::Io {
             path: args.out.display().to_string(),
@@ -87,6 +86,8 @@ pub fn run_job(args: &TradeoffJobArgs, ui: &Ui) -> error::Result<()> {
             error,
         }
     })?;
+    let result = run(&setup, &planned, index, &sweep, &line)?;
+
     let file = args.out.join(format!("job-{index:04}.json"));
     let json = serde_json::to_string(&result).map_err(ErrorKind::Encode)? + "\n";
     tracer::output::write_atomically(&file, json.as_bytes()).map_err(|error| JobError::Write {
