@@ -8,6 +8,11 @@
 //! points with a new seed each time, so that variance and bias separate),
 //! timed by the median, and held against the truth. The Pareto front per
 //! measure ([`pareto::front`]) says which settings are worth their time.
+//!
+//! A sweep renders here, in one run, or as independent jobs that a
+//! scheduler spreads over machines: `--plan` writes them ([`jobs`]),
+//! `optics tradeoff-job` runs one, `--collect` merges their results; both
+//! end in the same measures and the same record.
 
 pub(crate) mod distribute;
 pub mod jobs;
@@ -253,6 +258,10 @@ pub(crate) struct Provenance {
     pub collected: Option<distribute::Collected>,
 }
 
+/// What the measures read, however it was rendered: the truth, each
+/// point's renders, and where and when they were taken.
+pub(crate) type Renders = (measure::Truth, truth::TruthRecord, Vec<Timed>, Provenance);
+
 pub fn run(args: &TradeoffArgs, ui: &Ui) -> error::Result<()> {
     let setup = Setup::new(args)?;
     let mode = args.mode();
@@ -260,48 +269,14 @@ pub fn run(args: &TradeoffArgs, ui: &Ui) -> error::Result<()> {
         return distribute::plan(&setup, args, jobs, ui);
     }
     setup.files.prepare()?;
-    let threads = args.threads.map(|t| t as usize);
     let truth_dir = setup.files.truth_dir();
     let request = setup.truth_request(args, &truth_dir);
     let (truth, truth_record, timed, provenance) = match mode {
         Mode::Collect(results) => distribute::collect(&setup, &request, results)?,
-        _ => {
-            let bar =
-                crate::render::progress_bar(setup.plan.points.len() as u64 + 1).inspect(|bar| {
-                    bar.set_style(
-                        indicatif::ProgressStyle::with_template(
-                            "{bar:40} {pos}/{len} settings, {eta} left: {msg}",
-                        )
-                        .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
-                    );
-                    bar.set_message("ground truth");
-                });
-            let tick = |message: &str| {
-                if let Some(bar) = &bar {
-                    bar.inc(1);
-                    bar.set_message(message.to_owned());
-                }
-            };
-            let (truth, record) = truth::obtain(&setup.job, &request, &setup.mask, threads)?;
-            if truth.is_black() {
-                return Err(ErrorKind::TruthIsBlack {
-                    file: args.scene.clone(),
-                }
-                .into());
-            }
-            let timed = timing::time_points(&setup, &args.scene, args, threads, &tick)?;
-            if let Some(bar) = &bar {
-                bar.finish_and_clear();
-            }
-            let provenance = Provenance {
-                machine: results::machine(),
-                date: results::today(),
-                load: results::load(),
-                collected: None,
-            };
-            (truth, record, timed, provenance)
-        }
+        _ => timing::render_here(&setup, args, &request)?,
     };
+    // A truth rendered here is refused before the points are; one
+    // collected is known only now.
     if truth.is_black() {
         return Err(ErrorKind::TruthIsBlack {
             file: args.scene.clone(),

@@ -13,9 +13,8 @@ use std::path::{Path, PathBuf};
 use serde::Serialize;
 
 use super::jobs::{self, JobResult, Planned, TRUTH_JOBS};
-use super::measure::Truth;
-use super::truth::{self, TruthRecord};
-use super::{Provenance, Setup, Timed, TradeoffArgs};
+use super::truth;
+use super::{Provenance, Renders, Setup, Timed, TradeoffArgs};
 use crate::error::jobs::{JobError, LineKind, Place};
 use crate::error::{self, ErrorKind};
 use crate::lang::say;
@@ -91,10 +90,6 @@ pub fn plan(setup: &Setup, args: &TradeoffArgs, path: &Path, ui: &Ui) -> error::
     ui.show_steps(&record)
 }
 
-/// What `--collect` gives the sweep: the truth, each point's renders and
-/// where they ran.
-pub type Merged = (Truth, TruthRecord, Vec<Timed>, Provenance);
-
 /// `--collect RESULTS…`: every job's result, checked against this sweep's
 /// plan, merged; the truth's halves cached as a sweep in one run caches
 /// them.
@@ -102,7 +97,7 @@ pub fn collect(
     setup: &Setup,
     request: &truth::Request<'_>,
     results: &[PathBuf],
-) -> error::Result<Merged> {
+) -> error::Result<Renders> {
     let planned = Planned::new(&setup.key, &setup.job, &setup.plan);
     let mut slots: Vec<Option<(Place, JobResult)>> = vec![None; planned.jobs.len()];
     for file in result_files(results)? {

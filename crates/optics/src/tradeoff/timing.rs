@@ -8,8 +8,51 @@ use tracer::job::RenderJob;
 use tracer::render::{Image, Rendered};
 use tracer::scene::Settings;
 
-use super::{jobs, Setup, TradeoffArgs};
+use super::{jobs, truth, Provenance, Renders, Setup, TradeoffArgs};
 use crate::error::{self, ErrorKind};
+
+/// The sweep rendered here: the truth (from the cache when it holds it),
+/// then every point in rounds, with a progress bar on a terminal.
+pub(crate) fn render_here(
+    setup: &Setup,
+    args: &TradeoffArgs,
+    request: &truth::Request<'_>,
+) -> error::Result<Renders> {
+    let threads = args.threads.map(|t| t as usize);
+    let bar = crate::render::progress_bar(setup.plan.points.len() as u64 + 1).inspect(|bar| {
+        bar.set_style(
+            indicatif::ProgressStyle::with_template(
+                "{bar:40} {pos}/{len} settings, {eta} left: {msg}",
+            )
+            .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+        );
+        bar.set_message("ground truth");
+    });
+    let tick = |message: &str| {
+        if let Some(bar) = &bar {
+            bar.inc(1);
+            bar.set_message(message.to_owned());
+        }
+    };
+    let (truth, record) = truth::obtain(&setup.job, request, &setup.mask, threads)?;
+    if truth.is_black() {
+        return Err(ErrorKind::TruthIsBlack {
+            file: args.scene.clone(),
+        }
+        .into());
+    }
+    let timed = time_points(setup, &args.scene, args, threads, &tick)?;
+    if let Some(bar) = &bar {
+        bar.finish_and_clear();
+    }
+    let provenance = Provenance {
+        machine: results::machine(),
+        date: results::today(),
+        load: results::load(),
+        collected: None,
+    };
+    Ok((truth, record, timed, provenance))
+}
 
 /// The most renders of one setting that `--min-seconds` asks for.
 pub(crate) const MAX_RENDERS: usize = 64;
@@ -38,7 +81,7 @@ pub(crate) fn renders_wanted(first: f64, repeats: u32, min_seconds: f64) -> usiz
 /// after one untimed warm-up render, the first round, then as many more as
 /// each point needs ([`renders_wanted`]). Monte Carlo points take a new
 /// seed each time.
-pub(crate) fn time_points(
+fn time_points(
     setup: &Setup,
     file: &Path,
     args: &TradeoffArgs,
