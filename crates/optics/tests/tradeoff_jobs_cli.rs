@@ -289,6 +289,10 @@ fn collect_refuses_another_plan_schema_or_version() {
     let out = tradeoff(&scene, &["--collect", r, "--out", o, "--spp", "4"]);
     let message = refused(&out, "jobs.other_plan", "plan");
     assert!(message.contains("job-0000.json:1"), "{message}");
+    assert!(
+        message.contains("--spp 16 --truth-spp 8"),
+        "the plan's flags: {message}"
+    );
     // A result of another version, then of another schema.
     let file = results.join("job-0005.json");
     let text = std::fs::read_to_string(&file).unwrap();

@@ -147,6 +147,8 @@ pub enum JobError {
         at: Place,
         /// The result's plan.
         found: String,
+        /// The command that plans it, as the result says.
+        planned_as: String,
         /// This sweep's plan.
         expected: String,
     },
@@ -311,11 +313,12 @@ impl fmt::Display for JobError {
             JobError::OtherPlan {
                 at,
                 found,
+                planned_as,
                 expected,
             } => write!(
                 f,
-                "{at}: a result of plan {found}, this sweep is plan {expected}: give --collect \
-                 the scene and the flags given to --plan"
+                "{at}: a result of plan {found} (`{planned_as}`), this sweep is plan \
+                 {expected}: give --collect the scene and the flags given to --plan"
             ),
             JobError::Duplicate { job, first, second } => {
                 write!(f, "job {job} has two results: {first} and {second}")

@@ -63,6 +63,7 @@ fn result_of(planned: &Planned, job: usize) -> JobResult {
         schema: LineKind::Result.schema().to_owned(),
         version: jobs::VERSION,
         plan: line.plan.clone(),
+        planned_as: "optics tradeoff shadow.json".into(),
         scene_fnv1a: line.scene_fnv1a.clone(),
         job,
         jobs: line.jobs,

@@ -85,10 +85,11 @@ pub fn jobs_hu(error: &JobError) -> String {
         JobError::OtherPlan {
             at,
             found,
+            planned_as,
             expected,
         } => format!(
-            "{at}: a(z) {found} terv eredménye, ez a mérés a(z) {expected} terv: a --collect \
-             ugyanazt a jelenetet és kapcsolókat kapja, mint a --plan"
+            "{at}: a(z) {found} terv (`{planned_as}`) eredménye, ez a mérés a(z) {expected} \
+             terv: a --collect ugyanazt a jelenetet és kapcsolókat kapja, mint a --plan"
         ),
         JobError::Duplicate { job, first, second } => {
             format!("a(z) {job}. feladatnak két eredménye van: {first} és {second}")

@@ -186,6 +186,7 @@ pub(crate) fn accept(
         return Err(JobError::OtherPlan {
             at: at.clone(),
             found: result.plan.clone(),
+            planned_as: result.planned_as.clone(),
             expected,
         });
     }

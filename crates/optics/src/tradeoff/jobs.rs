@@ -419,6 +419,7 @@ mod tests {
             schema: LineKind::Result.schema().into(),
             version: VERSION,
             plan: "0".into(),
+            planned_as: "optics tradeoff s.json".into(),
             scene_fnv1a: "0".into(),
             job: 0,
             jobs: 1,

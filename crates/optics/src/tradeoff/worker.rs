@@ -205,6 +205,7 @@ fn run(
         schema: LineKind::Result.schema().to_owned(),
         version: jobs::VERSION,
         plan: line.plan.clone(),
+        planned_as: super::command_line(args),
         scene_fnv1a: line.scene_fnv1a.clone(),
         job: index,
         jobs: line.jobs,

@@ -120,10 +120,12 @@ pub fn examples() -> Vec<(ErrorKind, Vec<String>)> {
             JobError::OtherPlan {
                 at: at(1),
                 found: "0123456789abcdef".into(),
+                planned_as: "optics tradeoff shadow.json --spp 4".into(),
                 expected: "fedcba9876543210".into(),
             },
             &[
                 place,
+                "optics tradeoff shadow.json --spp 4",
                 "0123456789abcdef",
                 "fedcba9876543210",
                 "--collect",

@@ -10,10 +10,11 @@ use crate::error::jobs::{ImageProblem, JobError, Place};
 
 /// The fields of a result line, by name, in the order [`JobResult`]
 /// declares them.
-pub const RESULT_FIELDS: [&str; 13] = [
+pub const RESULT_FIELDS: [&str; 14] = [
     "schema",
     "version",
     "plan",
+    "planned_as",
     "scene_fnv1a",
     "job",
     "jobs",
@@ -36,6 +37,9 @@ pub struct JobResult {
     pub version: u32,
     /// The plan's id.
     pub plan: String,
+    /// The command that plans it (with `--plan`), or renders the same
+    /// sweep in one run: what `--collect` is to be given.
+    pub planned_as: String,
     /// FNV-1a of the scene file the job rendered.
     pub scene_fnv1a: String,
     /// The job, from 0.
