@@ -45,10 +45,15 @@ pub(crate) use timing::{render, renders_wanted, Timed, MAX_RENDERS};
 #[command(after_help = "Examples:
   optics tradeoff crates/tracer/scenes/kaleidoscope_lit.json --width 160 --height 120
   optics --json tradeoff crates/tracer/scenes/gold_spheres.json --repeats 5 --out /tmp/gold
+  optics tradeoff crates/tracer/scenes/shadow.json --lambert --plan jobs.jsonl
+  optics tradeoff crates/tracer/scenes/shadow.json --lambert --collect results
 
 Writes SCENE.json (schema optics.tradeoff), SCENE.md (the table) and
 SCENE-pareto.png (time against each error, log-log) into --out, and caches
-the ground truth under --out/truth. See docs/tradeoffs.md for the measures.")]
+the ground truth under --out/truth. See docs/tradeoffs.md for the measures.
+--plan writes the sweep's render jobs instead (run each with `optics
+tradeoff-job`), and --collect merges their results: docs/cli.md, \"Spread a
+sweep over machines\".")]
 pub struct TradeoffArgs {
     /// The scene file (JSON, see docs/scene-schema.md).
     pub scene: PathBuf,
