@@ -146,6 +146,35 @@ def delta_e_table(report, out):
     return _save(fig, path)
 
 
+def techniques(report, out):
+    """The slides' cheap refraction's angle from Snell's law, and the fitted
+    empirical Fresnel form beside the exact law and Schlick."""
+    curves = report["technique_curves"]
+    fits = curves["fresnel_fits"]
+    fig, axes = plt.subplots(1, 1 + len(fits), figsize=(4 * (1 + len(fits)), 3.2), squeeze=False)
+    ax = axes.flat[0]
+    for c in curves["refraction"]:
+        ax.plot(c["angle_deg"], c["error_deg"], label=c["label"])
+    ax.set_title("cheap refraction against Snell's law", fontsize=10)
+    ax.set_xlim(0, 90)
+    ax.set_xlabel("angle of incidence (deg)")
+    ax.set_ylabel("angle between the rays (deg)")
+    ax.legend(fontsize=7)
+    for ax, c in zip(list(axes.flat)[1:], fits):
+        bias, scale, power = c["form"]
+        ax.plot(c["angle_deg"], c["exact"], "k-", label="exact")
+        ax.plot(c["angle_deg"], c["fitted"], "g--",
+                label=f"fitted: {bias:.3f} + {scale:.3f} (1 + I·N)^{power:.2f}")
+        ax.plot(c["angle_deg"], c["schlick"], "b:", lw=2, label="Schlick")
+        ax.set_title(f"empirical Fresnel, {c['label']}", fontsize=10)
+        ax.set_xlim(0, 90)
+        ax.set_ylim(0, 1.02)
+        ax.set_xlabel("angle of incidence (deg)")
+        ax.legend(fontsize=7)
+    fig.tight_layout()
+    return _save(fig, os.path.join(out, "techniques.png"))
+
+
 def main(report_path, out):
     with open(report_path, encoding="utf-8") as fh:
         report = json.load(fh)
@@ -159,6 +188,8 @@ def main(report_path, out):
         drawn.append(metal_spectra(report, out))
     if report["metal_colours"]:
         drawn += [metal_swatches(report, out), delta_e_table(report, out)]
+    if report.get("technique_curves", {}).get("refraction"):
+        drawn.append(techniques(report, out))
     for path in drawn:
         print(os.path.basename(path))
 

@@ -19,7 +19,12 @@ def tiny_report():
             "metal_colours": [{"metal": "gold", "angle_deg": a, "method": m, "srgb": [1.0, 0.9, 0.6],
                                "lab": [90.0, 1.0, 38.0], "delta_e_2000": 0.0 if m.startswith("spectral") else 5.0}
                               for a in angles for m in ("spectral (exact)", "course RGB")],
-            "metal_delta_e": [{"metal": "gold", "method": "course RGB", "delta_e_2000": 5.0, "at_angle_deg": 0.0}]}
+            "metal_delta_e": [{"metal": "gold", "method": "course RGB", "delta_e_2000": 5.0, "at_angle_deg": 0.0}],
+            "technique_curves": {
+                "refraction": [{"label": "into water, c = 1", "angle_deg": angles, "error_deg": [0.0, 9.0, 7.8]}],
+                "fresnel_fits": [{"label": "glass", "angle_deg": angles, "exact": [0.04, 0.05, 0.9],
+                                  "fitted": [0.046, 0.05, 0.85], "schlick": [0.04, 0.045, 0.95],
+                                  "form": [0.046, 0.912, 4.96]}]}}
 
 
 def test_every_figure_is_drawn(tmp_path, capsys):
@@ -28,7 +33,7 @@ def test_every_figure_is_drawn(tmp_path, capsys):
     plot_report.main(str(report), str(tmp_path / "figures"))
     listed = capsys.readouterr().out.split()
     assert listed == ["fresnel_curves.png", "fresnel_errors.png", "metal_spectra.png", "metal_swatches.png",
-                      "metal_delta_e.png"]
+                      "metal_delta_e.png", "techniques.png"]
     for name in listed:
         assert (tmp_path / "figures" / name).read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
 

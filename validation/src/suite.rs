@@ -208,8 +208,14 @@ impl CheckKind for TechniqueChecks {
         "the slides' techniques against the exact answers"
     }
 
+    fn feeds_figures(&self) -> bool {
+        true // the cheap refraction's error, the fitted Fresnel forms
+    }
+
     fn run(&self, _context: &Context, report: &mut Report) -> Result<(), ReferenceError> {
-        report.checks.extend(crate::techniques::check_all(&self.0));
+        let (checks, curves) = crate::techniques::check_all(&self.0);
+        report.checks.extend(checks);
+        report.technique_curves = curves;
         Ok(())
     }
 }

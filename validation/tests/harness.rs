@@ -2,6 +2,9 @@
 //! references, the report it writes, a broken law reported as a failed
 //! check, and broken reference files refused with the file and field named.
 
+mod page;
+use page::words;
+
 mod caught;
 
 use std::path::Path;
@@ -92,7 +95,7 @@ fn a_broken_law_fails_its_check_in_the_report() {
     assert_eq!(failed, ["laws.mitsuba.directions"]);
     assert_eq!(report.summary.failed, 1);
     let html = to_html(&report, &[]);
-    let verdict = format!("1 of {} checks FAIL (", report.summary.checks);
+    let verdict = format!("1 of {} checks FAIL.", report.summary.checks);
     assert!(words(&html).contains(&verdict), "the page says so");
 }
 
@@ -227,19 +230,4 @@ fn results_that_do_not_match_the_cases_fail() {
     let check =
         exchange::check_random(&Laws::radiometry(), &Laws64::radiometry(), &cases, &results);
     assert!(!check.passed() && check.failures[0].contains("30 cases but 29 results"));
-}
-
-/// The page's text as a reader sees it: its tags taken out.
-fn words(html: &str) -> String {
-    let mut text = String::with_capacity(html.len());
-    let mut in_tag = false;
-    for c in html.chars() {
-        match c {
-            '<' => in_tag = true,
-            '>' => in_tag = false,
-            _ if !in_tag => text.push(c),
-            _ => {}
-        }
-    }
-    text
 }

@@ -6,6 +6,9 @@
 //! The browser tests skip, saying so, where no Chromium is installed
 //! (`apt-get install chromium`; `CHROMIUM=/path` names another).
 
+mod page;
+use page::words;
+
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -71,7 +74,28 @@ fn sample() -> (Report, Vec<String>) {
         3,
         &[("photon / ptracer", 1.0012345678901234, "")],
     );
-    report.checks = vec![laws, mpmath, render, colour, light];
+    let metals = check(
+        "colour.colour-science.metals",
+        20,
+        &[("reflectance: max |ours − exact|", 7.77e-16, "gold 60°")],
+    );
+    let flip = check(
+        "images.flip.nvidia",
+        6,
+        &[("mean: |ours − NVIDIA|", 3.258e-6, "noise pair")],
+    );
+    let techniques = check(
+        "techniques.refraction.cheap",
+        360,
+        &[(
+            "into water, c = 1: angle from Snell's law (°)",
+            10.63,
+            "60°",
+        )],
+    );
+    report.checks = vec![
+        laws, mpmath, metals, colour, render, flip, light, techniques,
+    ];
     report.metal_delta_e = vec![WorstDeltaE {
         metal: "gold".into(),
         method: "course RGB n, κ (seed 000)".into(),
@@ -246,19 +270,20 @@ fn the_page_carries_every_number_of_report_json() {
     let json = to_json(&report);
     assert_eq!(numbers_in(&html), numbers_of(&json));
     let quotes = quotes_in(&html);
-    // The two laws' cards quote their worst ulps, the trade-off's card its
-    // scene's own error; the sample has no other headline quantity.
+    // The two laws' cards quote their worst ulps; the metals', ꟻLIP's,
+    // the techniques' and the trade-off's cards their headline quantity
+    // (the sample's colour, render and light checks measure others).
     assert_eq!(
         quotes.len(),
-        3,
+        6,
         "the cards quote their headlines: {quotes:?}"
     );
     for (pointer, value) in quotes {
         assert_eq!(numbers_of(&json).get(&pointer), Some(&value), "{pointer}");
     }
-    // 4 counts, 6 checks' cases, 8 + 4 worst values, 2 of the metal, 4
-    // timings, 2 × 5 of the trade-off's settings.
-    assert_eq!(numbers_of(&json).len(), 38);
+    // 4 counts, 9 checks' cases, 8 + 3 + 4 worst values, 2 of the metal,
+    // 4 timings, 2 × 5 of the trade-off's settings.
+    assert_eq!(numbers_of(&json).len(), 44);
 }
 
 #[test]
@@ -326,7 +351,8 @@ fn the_first_screen_gives_the_verdict_and_a_card_per_area() {
         cards.contains("0 of 1 pass"),
         "the failed render check's card"
     );
-    assert!(words(&html).contains("1 of 6 checks FAIL (5 passed)."));
+    assert!(words(&html).contains("1 of 9 checks FAIL."));
+    assert!(words(&html).contains("8 passed; 1 findings about the references"));
     // Numbers for reading, a request's fields as inputs.
     assert!(html.contains(">3.55e-7<") && html.contains(">0.949<"));
     assert!(html.contains("case 720: cos_i = -0.4081, eta = 0.8535, law = fresnel"));
@@ -360,6 +386,8 @@ struct Probe {
     wide: Vec<String>,
     broken: Vec<String>,
     errors: Vec<String>,
+    /// The bottom of the lowest card, pixels from the top of the page.
+    cards: f64,
 }
 
 /// The probe, run once the page has loaded, every `<details>` opened. A
@@ -369,6 +397,7 @@ const PROBE: &str = r#"<script>
 window.__errors = [];
 addEventListener('error', e => __errors.push(String(e.message || (e.target && e.target.src))), true);
 addEventListener('load', () => {
+  const cards = Math.max(...[...document.querySelectorAll('.card')].map(c => c.getBoundingClientRect().bottom));
   const width = Math.min(__WIDTH__, document.documentElement.clientWidth);
   document.documentElement.style.width = width + 'px';
   document.querySelectorAll('details').forEach(d => d.open = true);
@@ -384,7 +413,7 @@ addEventListener('load', () => {
       wide.push(e.tagName + ' ' + Math.round(r.left) + '..' + Math.round(r.right) + ' ' + (e.textContent || '').slice(0, 40));
   }
   const broken = [...document.images].filter(i => !(i.complete && i.naturalWidth > 0)).map(i => i.getAttribute('src'));
-  document.body.setAttribute('data-probe', JSON.stringify({width, scroll, wide, broken, errors: __errors}));
+  document.body.setAttribute('data-probe', JSON.stringify({width, scroll, wide, broken, errors: __errors, cards}));
 });
 </script>"#;
 
@@ -469,7 +498,14 @@ fn the_report_fits_the_window_in_a_browser_at_1400_and_400_pixels() {
     let html = to_html(&report, &figures);
     let shot = std::env::temp_dir().join("optics-report-first-screen.png");
     let (_wide, path) = page(&html, 1400);
-    assert_fits(&open(&chromium, &path, 1400, Some(&shot)), 1400);
+    let probe = open(&chromium, &path, 1400, Some(&shot));
+    assert_fits(&probe, 1400);
+    // The first screen (1400 × 900) shows the verdict and every card.
+    assert!(
+        probe.cards <= 900.0,
+        "the last card ends at {} px",
+        probe.cards
+    );
     assert!(
         std::fs::metadata(&shot).is_ok_and(|m| m.len() > 0),
         "no screenshot"
@@ -497,19 +533,4 @@ fn the_browser_probe_finds_a_table_too_wide_and_a_broken_image() {
     assert!(!probe.wide.is_empty(), "{probe:?}");
     assert_eq!(probe.broken, ["figures/missing.png"], "{probe:?}");
     assert!(probe.scroll > probe.width, "{probe:?}");
-}
-
-/// The page's text as a reader sees it: its tags taken out.
-fn words(html: &str) -> String {
-    let mut text = String::with_capacity(html.len());
-    let mut in_tag = false;
-    for c in html.chars() {
-        match c {
-            '<' => in_tag = true,
-            '>' => in_tag = false,
-            _ if !in_tag => text.push(c),
-            _ => {}
-        }
-    }
-    text
 }

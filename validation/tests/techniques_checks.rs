@@ -7,8 +7,10 @@ use validation::techniques::{check_all, check_sellmeier};
 
 #[test]
 fn every_technique_check_passes() {
-    let checks = check_all(&SELLMEIER_N_BK7);
-    assert_eq!(checks.len(), 5);
+    let (checks, curves) = check_all(&SELLMEIER_N_BK7);
+    assert_eq!(curves.refraction.len(), 4);
+    assert_eq!(curves.fresnel_fits.len(), 3);
+    assert_eq!(checks.len(), 6);
     for check in &checks {
         assert!(check.passed(), "{}: {:?}", check.id, check.failures);
     }

@@ -99,6 +99,17 @@ impl Via {
     pub fn direction(self, field: &str, v: Vec3Arg) -> Result<Direction, DomainError> {
         self.check(field, |name| domain::direction(name, v.dvec3()))
     }
+
+    /// A position: every component finite, each named as a direction's
+    /// are (`--light.y`).
+    pub fn point(self, field: &str, v: Vec3Arg) -> Result<DVec3, DomainError> {
+        self.check(field, |name| {
+            for (axis, c) in ["x", "y", "z"].into_iter().zip(v.0) {
+                domain::finite(&format!("{name}.{axis}"), c)?;
+            }
+            Ok(v.dvec3())
+        })
+    }
 }
 
 #[cfg(test)]
@@ -134,6 +145,13 @@ mod tests {
         assert_eq!(
             err.to_string(),
             "--normal must be a non-zero direction, got (0, 0, 0)"
+        );
+        let err = Via::Flags
+            .point("plane_point", Vec3Arg([0.0, f64::NAN, 1.0]))
+            .unwrap_err();
+        assert_eq!(
+            err.to_string(),
+            "--plane-point.y must be a finite number, got NaN"
         );
     }
 }

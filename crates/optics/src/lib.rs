@@ -12,6 +12,7 @@
 pub mod batch;
 #[cfg(feature = "harness")]
 mod compare;
+mod envmap;
 pub mod error;
 #[cfg(test)]
 mod fuzz;
@@ -20,6 +21,7 @@ mod inspect;
 pub mod lang;
 pub mod laws;
 mod missing_light;
+mod planar;
 pub mod quiz;
 pub mod record;
 mod render;
@@ -133,6 +135,7 @@ fn reader_gone(error: &Error) -> bool {
   optics quiz seed
   optics fresnel --eta 1.5 --theta-i-deg 60
   optics --json refract --wi 0,0.6,0.8 --normal 0,0,1 --eta 1.5
+  optics envmap --dir -3.2,5.1,-8.4 --map cube
   optics --lang hu quiz f0 --n 1.4"
 )]
 struct Cli {
@@ -158,6 +161,12 @@ enum Command {
     Reflect(laws::ReflectArgs),
     /// Radiance reflected by a BRDF under a directional light.
     Shade(laws::ShadeArgs),
+    /// Where a reflected direction is looked up in a cube, lat-long or sphere map.
+    Envmap(envmap::EnvmapArgs),
+    /// The 4 × 4 matrix that mirrors a scene in a plane.
+    ReflectionMatrix(planar::ReflectionMatrixArgs),
+    /// The 4 × 4 matrix that projects a scene's shadow from a point light onto a plane.
+    ShadowMatrix(planar::ShadowMatrixArgs),
     /// Evaluate JSON Lines requests from stdin, one JSON result per line.
     Batch(batch::BatchArgs),
     /// Render a scene file to PNG and a float image.
@@ -187,6 +196,9 @@ fn law_record(command: &Command, lang: Lang) -> Option<error::Result<Record>> {
         Command::Refract(args) => args.solve(via, lang, steps),
         Command::Reflect(args) => args.solve(via, lang, steps),
         Command::Shade(args) => args.solve(via, lang, steps),
+        Command::Envmap(args) => args.solve(via, lang, steps),
+        Command::ReflectionMatrix(args) => args.solve(via, lang, steps),
+        Command::ShadowMatrix(args) => args.solve(via, lang, steps),
         Command::Quiz(args) => match args.exercise.as_ref()? {
             quiz::Exercise::F0(a) => a.solve(via, lang, steps),
             quiz::Exercise::Lambert(a) => a.solve(via, lang, steps),
@@ -242,7 +254,13 @@ fn run(command: &Command, ui: &Ui) -> error::Result<ExitCode> {
         #[cfg(feature = "harness")]
         Command::TradeoffJob(args) => tradeoff::run_job(args, ui)?,
         // Evaluated by `law_record` above.
-        Command::Fresnel(_) | Command::Refract(_) | Command::Reflect(_) | Command::Shade(_) => {}
+        Command::Fresnel(_)
+        | Command::Refract(_)
+        | Command::Reflect(_)
+        | Command::Shade(_)
+        | Command::Envmap(_)
+        | Command::ReflectionMatrix(_)
+        | Command::ShadowMatrix(_) => {}
     }
     Ok(ExitCode::SUCCESS)
 }

@@ -11,12 +11,20 @@
 //! travel, pointing *towards* the surface, and the unit normal `n` points
 //! back towards the side the ray comes from. Source files are named by their
 //! prefix in `shared/seeds/`: `000` (GLSL tutorial), `001` (slides,
-//! "realistic scenes"), `003` (textbook chapter).
+//! "realistic scenes"), `002` (WebGL tracer), `003` (textbook chapter).
+//!
+//! Where a shader's control flow, not a formula, is what the text gets
+//! wrong, the step is written out in [`shader_steps`].
 
 #[allow(unused_imports)]
 use num_traits::{Float, FloatConst, One, Zero};
 
 use crate::{Real, Vector3};
+
+pub mod shader_steps;
+pub use shader_steps::{
+    intersect_mirrors_000, reflection_loop_002, rough_hit_000, Hit002, MirrorHit000,
+};
 
 /// `000` lines 1249, 1410, 1868, `vec3 Fresnel(vec3 F0, float cosTheta)`:
 /// `F0 + (1 − F0) · cosθ⁵`.
@@ -28,6 +36,37 @@ use crate::{Real, Vector3};
 #[inline]
 pub fn fresnel_000_glsl<T: Real>(f0: T, cos_theta: T) -> T {
     f0 + (T::one() - f0) * cos_theta.powi(5)
+}
+
+/// GLSL's `pow(x, y)` as GPU compilers commonly lower it, `exp2(y · log2 x)`.
+///
+/// The specification defines `pow` only for `x > 0`, and for `x = 0` with
+/// `y > 0` ("Results are undefined if x < 0", GLSL ES 1.00 §8.2); this
+/// lowering gives NaN for every `x < 0`, whatever `y`, and `0` for `x = 0`,
+/// `y > 0`. A compiler may instead fold a constant `pow(x, 2.0)` into
+/// `x * x`, which is defined everywhere: what a shader that feeds `pow` a
+/// negative base shows depends on the GPU.
+#[inline]
+pub fn glsl_pow<T: Real>(x: T, y: T) -> T {
+    (y * x.log2()).exp2()
+}
+
+/// `000` lines 1241–1247 (again at 1402–1408 and 1860–1866),
+/// `getMaterialF0`: per channel
+/// `(pow(n − 1, 2) + pow(k, 2)) / (pow(n + 1, 2) + pow(k, 2))`, with `pow`
+/// lowered as [`glsl_pow`].
+///
+/// The formula is [`crate::fresnel::f0`]; the code is **wrong** for the
+/// course's own gold, `n = (0.17, 0.35, 1.5)` (lines 1385, 1843): `n − 1 < 0`
+/// in red and green, where GLSL leaves `pow` undefined. Lowered as here,
+/// F0 is NaN in those channels, and so is every mirror weight it enters;
+/// where the compiler folds `pow(x, 2.0)` into `x * x` it is right.
+/// `(n − 1.0) * (n − 1.0)` would be defined on every GPU.
+#[inline]
+pub fn f0_000_glsl<T: Real>(n: T, k: T) -> T {
+    let two = T::one() + T::one();
+    (glsl_pow(n - T::one(), two) + glsl_pow(k, two))
+        / (glsl_pow(n + T::one(), two) + glsl_pow(k, two))
 }
 
 /// `003` line 175, boxed: `R = v + 2 N cos(α)`, with `cos α = −v·N`.
@@ -213,6 +252,49 @@ pub fn tangent_003<V: Vector3>(v: V, n: V) -> V {
     let cos_alpha = -v.dot(n);
     let sin_alpha = (V::Scalar::one() - cos_alpha * cos_alpha).sqrt();
     (v + n) * (V::Scalar::one() / sin_alpha)
+}
+
+/// `003` lines 415–426, `shade(N, V, L, inRad)`, one channel:
+/// `inRad · kd · cos θ + inRad · ks · cos^shine δ` with `cos θ = N·L`,
+/// `H = normalize(V + L)` and `cos δ = N·H`; zero for `cos θ < 0` ("self
+/// shadow"), the diffuse part alone for `cos δ < 0`. Here `V` and `L` point
+/// from the surface to the viewer and to the light (the BRDF section, line
+/// 293), unlike the `V` of the chapter's reflection code; `kd`, `ks` and
+/// `shine` are the listing's globals.
+///
+/// Right where both directions are above the surface: it is
+/// `L_in · f_r · cos θ` with [`crate::brdf::BlinnPhong`], the boxed formula
+/// of lines 388–389. **Wrong** below the viewer's horizon: it never looks at
+/// `N·V`. A surface seen from behind with the light in front is shaded as if
+/// seen from the front, where the BRDF is 0; seen from straight opposite
+/// the light (`V = −L`) the half vector is `normalize(0)`, undefined in GLSL
+/// and NaN here. Line 357 credits the clamp `cos⁺θ` with hiding a point
+/// "seen from inside, from the other side", but `θ` is the light's angle: the
+/// clamp hides points the light reaches from behind (the code's comment,
+/// "self shadow"), and nothing hides points the viewer sees from behind.
+#[inline]
+pub fn shade_003_code<V: Vector3>(
+    n: V,
+    v: V,
+    l: V,
+    in_rad: V::Scalar,
+    kd: V::Scalar,
+    ks: V::Scalar,
+    shine: V::Scalar,
+) -> V::Scalar {
+    let zero = V::Scalar::zero();
+    let cos_theta = n.dot(l);
+    if cos_theta < zero {
+        return zero;
+    }
+    let diffuse_rad = in_rad * kd * cos_theta;
+    let sum = v + l;
+    let h = sum * (V::Scalar::one() / sum.length());
+    let cos_delta = n.dot(h);
+    if cos_delta < zero {
+        return diffuse_rad;
+    }
+    diffuse_rad + in_rad * ks * cos_delta.powf(shine)
 }
 
 /// `001` lines 380–386, the slide formula `t = r i + (w − k) n` with `r = n₁/n₂`,

@@ -663,3 +663,195 @@ fn course_003_quiz_4_critical_angle_of_index_10_is_5_74_degrees() {
     let past = (theta + 1e-6).to_radians();
     assert!(refract(DVec3::new(past.sin(), 0.0, -past.cos()), DVec3::Z, 10.0).is_none());
 }
+
+/// `000` lines 1241–1247 (and 1402–1408, 1860–1866), `getMaterialF0`:
+/// `pow(n − 1.0, 2.0)` for the course's gold, `n = (0.17, 0.35, 1.5)`,
+/// `k = (3.1, 2.7, 1.9)`. Red and green have `n − 1 < 0`, where GLSL's `pow`
+/// is undefined (GLSL ES 1.00 §8.2); lowered as `exp2(2 log2 x)` their F0 is
+/// NaN, and so is every mirror weight `Fresnel(F0, cos θ)` makes of it. Blue
+/// (`n − 1 = 0.5 > 0`) is the law's F0. Tolerance 64ε relative for blue:
+/// each lowered `pow` is `exp2` of `2 log2 x` with `|log2 x| < 1.5`, whose
+/// rounding `exp2` turns into a relative error of about `2 ln 2 · 1.5 ε + ε`,
+/// and F0 is a ratio of two sums of two of them.
+#[test]
+fn course_000_f0_feeds_pow_a_negative_base_for_gold() {
+    let (n, k): ([f64; 3], [f64; 3]) = ([0.17, 0.35, 1.5], [3.1, 2.7, 1.9]);
+    for ch in 0..3 {
+        let law = f0(n[ch], k[ch]);
+        assert!(law > 0.0 && law < 1.0, "{ch}: {law}");
+        let shader = course::f0_000_glsl(n[ch], k[ch]);
+        if ch < 2 {
+            assert!(n[ch] - 1.0 < 0.0, "the base of pow is negative");
+            assert!(shader.is_nan(), "{ch}: {shader}");
+            assert!(course::fresnel_000_glsl(shader, 0.5).is_nan());
+        } else {
+            assert!(
+                (shader / law - 1.0).abs() <= 64.0 * EPS,
+                "{shader} vs {law}"
+            );
+        }
+    }
+    // `pow(x, 2.0)` folded into `x * x` is defined for any x: the law.
+    assert_eq!(
+        ((0.17f64 - 1.0) * (0.17 - 1.0) + 3.1 * 3.1) / ((0.17 + 1.0) * (0.17 + 1.0) + 3.1 * 3.1),
+        f0(0.17, 3.1)
+    );
+}
+
+/// `003` line 257, looking up from the bottom of a pool: "if we *decrease*
+/// the angle of incidence, that is look further away, total reflection
+/// appears". Backwards: the angle is measured from the normal (line 146),
+/// looking further away increases it, and total internal reflection needs
+/// it *above* the critical angle, asin(1/1.333) = 48.6° for water. A viewer
+/// at depth 2 m sees through the surface out to 2 tan 48.6° = 2.27 m and
+/// the mirrored pool beyond. Exact: `transmitted_angle` decides refraction
+/// on `sin θ / η > 1`, and the 1° grid stays 0.4° from the critical angle.
+#[test]
+fn course_003_pool_total_internal_reflection_needs_a_larger_angle_not_a_smaller_one() {
+    let eta_path = 1.0_f64 / 1.333; // water to air, n_t / n_i
+    let critical = critical_angle(eta_path).unwrap();
+    assert_eq!(format!("{:.1}", critical.to_degrees()), "48.6");
+    assert_eq!(format!("{:.2}", 2.0 * critical.tan()), "2.27");
+    for deg in 0..90 {
+        let theta = f64::from(deg).to_radians();
+        let refracts = transmitted_angle(theta, eta_path).is_some();
+        assert_eq!(refracts, theta < critical, "{deg}°");
+    }
+    // Decreasing the angle from 60° to 30° ends total reflection; it does
+    // not start it.
+    assert!(transmitted_angle(60f64.to_radians(), eta_path).is_none());
+    assert!(transmitted_angle(30f64.to_radians(), eta_path).is_some());
+}
+
+/// `003` lines 415–426, `shade(N, V, L, inRad)`: Blinn-Phong as the boxed
+/// formula (lines 388–389) has it, `L_in f_r cos θ` with `brdf::BlinnPhong`,
+/// wherever light and viewer are above the surface, and it gives the quiz's
+/// answers (quiz 3: 2.4, quiz 5: 2.5). But it never checks `N·V`: seen from
+/// behind, with the light in front, it shades the surface as if seen from
+/// the front, where the BRDF is 0, and seen from straight opposite the light
+/// it normalises a zero half vector: NaN. Line 357 says the clamp `cos⁺θ`
+/// hides a point seen from the other side; `θ` is the light's angle, so it
+/// hides points lit from behind (the code's "self shadow"), nothing else.
+///
+/// Tolerance 1e-13 relative: a dozen roundings on each side, and the lobe's
+/// `cos δ` from two normalisations an ulp or two apart, raised to
+/// `shine ≤ 50`, moves by at most 50 · 4ε = 4.4e-14 relative.
+#[test]
+fn course_003_shade_code_is_blinn_phong_above_and_shades_surfaces_seen_from_behind() {
+    use radiometry::brdf::{BlinnPhong, Brdf};
+    let n = DVec3::Z;
+    let at = |theta_deg: f64, phi_deg: f64| {
+        let (t, p) = (theta_deg.to_radians(), phi_deg.to_radians());
+        DVec3::new(t.sin() * p.cos(), t.sin() * p.sin(), t.cos())
+    };
+    for (kd, ks, shine) in [(0.6, 0.0, 1.0), (0.0, 2f64.sqrt(), 3.0), (0.1, 1.0, 50.0)] {
+        let blinn = BlinnPhong { kd, ks, shine };
+        for l in [
+            at(0.0, 0.0),
+            at(30.0, 10.0),
+            at(60.0, 200.0),
+            at(85.0, 90.0),
+        ] {
+            for v in [
+                at(0.0, 0.0),
+                at(20.0, 190.0),
+                at(45.0, 30.0),
+                at(80.0, 300.0),
+            ] {
+                let code = course::shade_003_code(n, v, l, 5.0, kd, ks, shine);
+                let law = 5.0 * blinn.eval(n, l, v) * n.dot(l);
+                assert!(
+                    (code - law).abs() <= 1e-13 * law.abs().max(1.0),
+                    "{kd} {ks} {shine} {l} {v}: {code} vs {law}"
+                );
+            }
+        }
+    }
+    // The quiz: light from (0, 3, 4), L_in = 5; quiz 3 kd = 0.6 (2.4), quiz 5
+    // ks = √2, shine 3, camera towards (0, 4, 3) (2.5).
+    let (l, v) = (DVec3::new(0.0, 0.6, 0.8), DVec3::new(0.0, 0.8, 0.6));
+    let quiz_3 = course::shade_003_code(n, v, l, 5.0, 0.6, 0.0, 1.0);
+    let quiz_5 = course::shade_003_code(n, v, l, 5.0, 0.0, 2f64.sqrt(), 3.0);
+    assert!((quiz_3 - 2.4).abs() <= 1e-14 && (quiz_5 - 2.5).abs() <= 1e-14);
+
+    let blinn = BlinnPhong {
+        kd: 0.6,
+        ks: 2f64.sqrt(),
+        shine: 3.0,
+    };
+    // Seen from behind (N·V = −0.6), lit from the front: shaded, where the
+    // BRDF is 0.
+    let behind = DVec3::new(0.0, 0.8, -0.6);
+    let code = course::shade_003_code(n, behind, l, 5.0, blinn.kd, blinn.ks, blinn.shine);
+    assert!(code >= 5.0 * 0.6 * 0.8, "{code}");
+    assert_eq!(blinn.eval(n, l, behind), 0.0);
+    // Seen from straight opposite the light: normalize(0) is NaN.
+    assert!(course::shade_003_code(n, -l, l, 5.0, blinn.kd, blinn.ks, blinn.shine).is_nan());
+    // Lit from behind: zero, the "self shadow" the code's comment names.
+    let l_behind = DVec3::new(0.0, 0.6, -0.8);
+    assert_eq!(
+        course::shade_003_code(n, v, l_behind, 5.0, blinn.kd, blinn.ks, blinn.shine),
+        0.0
+    );
+}
+
+/// `003` lines 305 and 312: `L_in cos θ_in` is labelled "irradiance", and
+/// the BRDF defined as `L / (L_in cos θ_in)`. Irradiance is power per area
+/// (W/m²); a radiance times a cosine is still per steradian. The solid
+/// angle `dω` the light arrives from is missing: by the chapter's own
+/// radiance definition (line 26), light of radiance `L` from a patch of
+/// sky `Δω` at `θ` delivers `E = L cos θ Δω`, and the BRDF is
+/// `dL / (L_in cos θ dω)`, in 1/sr (which is why the course's `kd`, taken
+/// as the BRDF, has albedo `π kd`). Measured: a source of 1 W/(sr·m²) at
+/// 60° delivers 0.05 W/m² from 0.1 sr and half that from 0.05 sr, where
+/// `L_in cos θ` stays 0.5 for both; a whole sky of it delivers π W/m².
+/// Tolerances: 4ε relative for the definition (three roundings), 1e-12
+/// for the sky (midpoint quadrature in `cos θ`, exact for the linear
+/// integrand, leaves 80 000 rounded terms).
+#[test]
+fn course_003_radiance_times_cosine_is_not_irradiance() {
+    use radiometry::brdf::{directional_albedo, CourseLambert};
+    use radiometry::radiance::radiance_from_flux;
+    let (l_in, cos) = (1.0_f64, 0.5);
+    for solid_angle in [0.1, 0.05] {
+        // The irradiance E = Φ / A for which the definition gives back l_in.
+        let area = 1.0;
+        let e = l_in * cos * solid_angle;
+        let back = radiance_from_flux(e * area, area, cos, solid_angle);
+        assert!((back / l_in - 1.0).abs() <= 4.0 * EPS, "{back}");
+        assert!(
+            (e - l_in * cos).abs() > 0.4,
+            "the course's irradiance is {} W/(sr·m²), E is {e} W/m²",
+            l_in * cos
+        );
+    }
+    // A uniform sky: E = ∫ L cos θ dω = π L.
+    let cosine_integral = directional_albedo(&CourseLambert { kd: 1.0 }, DVec3::Z, DVec3::Z, 100);
+    let sky = l_in * cosine_integral.albedo;
+    assert!((sky - std::f64::consts::PI).abs() <= 1e-12, "{sky}");
+}
+
+/// `000` lines 429–430 ("the diffuse colour, more correctly its absorbing
+/// capacity") and 490 (`ambient`, "the material's ambient-light absorbing
+/// capacity"): both factors multiply the light the surface sends back
+/// (lines 449, 457), so they are reflectances; a surface absorbs what it
+/// does not reflect. The green material, `kd = (0.1, 0.8, 0.3)` (line 534),
+/// is green because it reflects green most and absorbs it least: as a
+/// normalised Lambertian its albedo is `kd` and it absorbs `1 − kd =
+/// (0.9, 0.2, 0.7)`. Tolerance 1e-12: the quadrature is exact for the
+/// Lambertian's linear integrand, up to rounding of 80 000 terms.
+#[test]
+fn course_000_diffuse_factor_is_a_reflectance_not_an_absorptance() {
+    use radiometry::brdf::{directional_albedo, Lambert};
+    let kd = [0.1, 0.8, 0.3];
+    let reflected =
+        kd.map(|albedo| directional_albedo(&Lambert { albedo }, DVec3::Z, DVec3::Z, 100).albedo);
+    let absorbed = reflected.map(|r| 1.0 - r);
+    for ch in 0..3 {
+        assert!((reflected[ch] - kd[ch]).abs() <= 1e-12, "{reflected:?}");
+        assert!((absorbed[ch] - (1.0 - kd[ch])).abs() <= 1e-12);
+    }
+    // Green, the largest factor, is the most reflected and least absorbed.
+    assert!(reflected[1] > reflected[0] && reflected[1] > reflected[2]);
+    assert!(absorbed[1] < absorbed[0] && absorbed[1] < absorbed[2]);
+}

@@ -133,6 +133,11 @@ pub enum Shadow {
 /// `plane`, by the shadow matrix, with the outcome decided from the ray
 /// parameter `t` of `light + t (vertex − light)` at the plane: `t > 1`
 /// casts, `0 < t ≤ 1` is beyond the plane, `t ≤ 0` behind the light.
+///
+/// Assumes `light` and `vertex` finite, and small enough that the matrix
+/// product stays in `f64`: a NaN, or a product that overflowed, reads as
+/// [`Shadow::Parallel`]. Check them where they enter, as `optics
+/// shadow-matrix` does.
 pub fn project_shadow(light: DVec3, plane: &Plane, vertex: DVec3) -> Shadow {
     let towards = vertex - light;
     let along = plane.normal.dot(towards);

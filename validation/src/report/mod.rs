@@ -46,6 +46,9 @@ pub struct Report {
     pub metal_delta_e: Vec<WorstDeltaE>,
     /// Time per metal colour by method.
     pub speed: Vec<Timing>,
+    /// The techniques' measured curves: the cheap refraction's error, the
+    /// fitted empirical Fresnel forms.
+    pub technique_curves: crate::techniques::TechniqueCurves,
     /// The speed/accuracy trade-off records read (`docs/tradeoffs`), one a
     /// scene.
     pub tradeoffs: Vec<crate::tradeoff::record::Record>,
@@ -142,6 +145,7 @@ impl Report {
             metal_colours: Vec::new(),
             metal_delta_e: Vec::new(),
             speed: Vec::new(),
+            technique_curves: Default::default(),
             tradeoffs: Vec::new(),
             render_figures: Vec::new(),
         }

@@ -2,8 +2,9 @@
 //! Rust: batch lines (`batch_lines`), flag values (`flag_values`), the
 //! render settings' choices (`render_flags`), the images `optics
 //! compare` reads (`compare_images`), `optics tradeoff`'s numeric flags
-//! (`tradeoff_flags`) and the job and result lines of a sweep spread over
-//! machines (`tradeoff_jobs`).
+//! (`tradeoff_flags`), the job and result lines of a sweep spread over
+//! machines (`tradeoff_jobs`) and the vectors of `optics envmap`,
+//! `reflection-matrix` and `shadow-matrix` (`technique_flags`).
 //!
 //! Each target generates inputs from the course's own requests, mutates
 //! them (numbers at the edges of `f64`, wrong types, missing and unknown
@@ -20,6 +21,7 @@ mod batch_lines;
 mod compare_images;
 mod flag_values;
 mod render_flags;
+mod technique_flags;
 #[cfg(feature = "harness")]
 mod tradeoff_flags;
 #[cfg(feature = "harness")]

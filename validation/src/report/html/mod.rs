@@ -70,7 +70,7 @@ const AREAS: [Area; 9] = [
         key: "techniques",
         title: "The slides' techniques against the exact answers",
         checks: &["techniques."],
-        figures: &[],
+        figures: &["techniques"],
         headline: Some("into water, c = 1: angle from Snell's law (°)"),
     },
     Area {
@@ -207,23 +207,29 @@ fn header(h: &mut String, report: &Report) {
     };
     let verdict = if s.failed == 0 {
         format!(
-            "<p class=\"verdict pass\">All {} checks pass <span class=small>({} passed, {} failed)</span>.",
-            count("checks", s.checks),
+            "<p class=\"verdict pass\">All {} checks pass.</p>",
+            count("checks", s.checks)
+        )
+    } else {
+        format!(
+            "<p class=\"verdict fail\">{} of {} checks FAIL.</p>",
+            count("failed", s.failed),
+            count("checks", s.checks)
+        )
+    };
+    let tally = if s.failed == 0 {
+        format!(
+            "{} passed, {} failed",
             count("passed", s.passed),
             count("failed", s.failed)
         )
     } else {
-        format!(
-            "<p class=\"verdict fail\">{} of {} checks FAIL <span class=small>({} passed)</span>.",
-            count("failed", s.failed),
-            count("checks", s.checks),
-            count("passed", s.passed)
-        )
+        format!("{} passed", count("passed", s.passed))
     };
     let _ = writeln!(
         h,
-        "{verdict} {} findings about the references (below), which are not failures.</p>\n\
-         <p class=small>Produced by <code>{}</code> ({}); regenerate everything here with <code>{REGENERATE}</code>.</p>",
+        "{verdict}\n<p class=small>{tally}; {} findings about the references (below), which are not \
+         failures. Produced by <code>{}</code> ({}); regenerate everything here with <code>{REGENERATE}</code>.</p>",
         count("findings", s.findings),
         escape(&report.command),
         if report.quick { "the reduced set" } else { "the full set" },
@@ -232,10 +238,10 @@ fn header(h: &mut String, report: &Report) {
 
 const STYLE: &str = "body{font-family:sans-serif;max-width:72em;margin:1em auto;padding:0 1em;line-height:1.4;overflow-wrap:anywhere}\
 h2{margin-top:2em;border-bottom:1px solid #ddd}\
-.verdict{font-size:1.3em;font-weight:bold}.small{font-size:.9em;color:#444}\
-.cards{display:grid;grid-template-columns:repeat(auto-fill,minmax(15em,1fr));gap:.8em}\
+.verdict{font-size:1.3em;font-weight:bold;margin-bottom:.2em}.small{font-size:.9em;color:#444}\
+.cards{display:grid;grid-template-columns:repeat(auto-fill,minmax(12.5em,1fr));gap:.6em}\
 .card{border:1px solid #ccc;border-radius:.4em;padding:.6em;min-width:0}\
-.card h3{margin:0 0 .3em;font-size:1em}.card a{color:inherit}.card img{width:100%;height:7em;object-fit:contain}\
+.card h3{margin:0 0 .3em;font-size:1em}.card a{color:inherit}.card img{width:100%;height:6em;object-fit:contain}\
 .scroll{overflow-x:auto;max-width:100%}\
 table{border-collapse:collapse;margin:.5em 0}td,th{border:1px solid #ccc;padding:.2em .5em;text-align:left;vertical-align:top}\
 td{overflow-wrap:anywhere}td.num{text-align:right;font-family:monospace;white-space:nowrap}\
