@@ -140,6 +140,19 @@ fn a_plan_writes_one_line_per_job_and_renders_nothing() {
         assert_eq!(line["label"], point["label"]);
         assert_eq!(line["settings"], point["settings"]);
     }
+    // With --json, one record: the plan's file, its id and its jobs.
+    let again = dir.path().join("again.jsonl");
+    let out = tradeoff(&scene, &["--plan", again.to_str().unwrap()]);
+    let record: Value = serde_json::from_slice(&out.stdout).expect("one JSON record");
+    assert_eq!(record["law"], "tradeoff");
+    assert_eq!(record["answer"][0], again.to_str().unwrap());
+    assert_eq!(record["details"]["plan"], lines[0]["plan"]);
+    assert_eq!(record["details"]["jobs"], lines.len());
+    assert_eq!(
+        std::fs::read(&again).unwrap(),
+        std::fs::read(dir.path().join("jobs.jsonl")).unwrap()
+    );
+    std::fs::remove_file(&again).unwrap();
     // Nothing rendered: no results, no truth cached.
     let mut want = vec!["jobs.jsonl", "one", "shadow.json"];
     want.sort();
