@@ -27,6 +27,8 @@ pub mod compare;
 mod english;
 #[cfg(feature = "harness")]
 pub mod harness;
+#[cfg(feature = "harness")]
+pub mod jobs;
 pub mod render;
 
 /// The outcome of a step that can fail with one of the suite's own errors.
@@ -182,6 +184,10 @@ pub enum ErrorKind {
         /// The scene file, as given.
         file: PathBuf,
     },
+    /// A sweep spread over machines: a job or result line refused, a job
+    /// not in the plan, results missing or given twice.
+    #[cfg(feature = "harness")]
+    Jobs(jobs::JobError),
 }
 
 impl Error {
@@ -219,6 +225,13 @@ impl From<ErrorKind> for Error {
 impl From<compare::CompareError> for Error {
     fn from(error: compare::CompareError) -> Self {
         ErrorKind::Compare(error).into()
+    }
+}
+
+#[cfg(feature = "harness")]
+impl From<jobs::JobError> for Error {
+    fn from(error: jobs::JobError) -> Self {
+        ErrorKind::Jobs(error).into()
     }
 }
 
@@ -278,6 +291,8 @@ impl ErrorKind {
             ErrorKind::Compare(error) => error.name(),
             #[cfg(feature = "harness")]
             ErrorKind::TruthIsBlack { .. } => "tradeoff.truth_is_black",
+            #[cfg(feature = "harness")]
+            ErrorKind::Jobs(error) => error.name(),
         }
     }
 
@@ -317,6 +332,8 @@ impl ErrorKind {
             ErrorKind::Compare(error) => error.field(),
             #[cfg(feature = "harness")]
             ErrorKind::TruthIsBlack { .. } => Some("SCENE".to_owned()),
+            #[cfg(feature = "harness")]
+            ErrorKind::Jobs(error) => error.field(),
         }
     }
 }

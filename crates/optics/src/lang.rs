@@ -9,6 +9,8 @@ use radiometry::domain::{self, DomainError, Expected};
 mod compare;
 #[cfg(feature = "harness")]
 mod harness;
+#[cfg(feature = "harness")]
+mod jobs;
 pub mod needs;
 mod render;
 
@@ -125,6 +127,8 @@ fn hungarian(kind: &ErrorKind) -> String {
             "SCENE {}: fizikai képe fekete: semmi fény nem jut a kamerába (fényforrás nélküli jelenetben csak a kurzus ambiens tagja látszik), így nincs mit fényterjedésben elcserélni",
             file.display()
         ),
+        #[cfg(feature = "harness")]
+        ErrorKind::Jobs(error) => jobs::jobs_hu(error),
     }
 }
 

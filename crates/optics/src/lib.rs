@@ -182,6 +182,9 @@ enum Command {
     /// Measure what each shortcut a scene allows costs in accuracy and buys in time.
     #[cfg(feature = "harness")]
     Tradeoff(tradeoff::TradeoffArgs),
+    /// Run one job of a sweep planned with `optics tradeoff --plan`.
+    #[cfg(feature = "harness")]
+    TradeoffJob(tradeoff::TradeoffJobArgs),
 }
 
 /// The record of a command that evaluates one law with its flags; `None`
@@ -248,6 +251,8 @@ fn run(command: &Command, ui: &Ui) -> error::Result<ExitCode> {
         Command::Compare(args) => return compare::run(args, ui),
         #[cfg(feature = "harness")]
         Command::Tradeoff(args) => tradeoff::run(args, ui)?,
+        #[cfg(feature = "harness")]
+        Command::TradeoffJob(args) => tradeoff::run_job(args, ui)?,
         // Evaluated by `law_record` above.
         Command::Fresnel(_)
         | Command::Refract(_)

@@ -8,11 +8,23 @@
 //! points with a new seed each time, so that variance and bias separate),
 //! timed by the median, and held against the truth. The Pareto front per
 //! measure ([`pareto::front`]) says which settings are worth their time.
+//!
+//! A sweep renders here, in one run, or as independent jobs that a
+//! scheduler spreads over machines: `--plan` writes them ([`jobs`]),
+//! `optics tradeoff-job` runs one, `--collect` merges their results; both
+//! end in the same measures and the same record.
 
+pub(crate) mod distribute;
+pub mod jobs;
 pub mod measure;
 mod report;
+mod setup;
 pub mod sweep;
+mod timing;
 mod truth;
+mod worker;
+
+pub use worker::{run_job, TradeoffJobArgs};
 
 pub use validation::tradeoff::checks::UNCONVERGED;
 pub use validation::tradeoff::{pareto, Verdict, MEASURES, SCHEMA, SCHEMA_VERSION};
@@ -20,24 +32,28 @@ pub use validation::tradeoff::{pareto, Verdict, MEASURES, SCHEMA, SCHEMA_VERSION
 use std::path::{Path, PathBuf};
 
 use serde::Serialize;
-use tracer::job::{Overrides, RenderJob};
-use tracer::render::{Image, Rendered};
-use tracer::scene::{Settings, MAX_IMAGE_SIDE, MAX_SPP};
+use tracer::scene::{MAX_IMAGE_SIDE, MAX_SPP};
 
 use crate::error::{self, ErrorKind};
-use crate::lang::say;
-use crate::record::{Answer, Record};
 use crate::Ui;
-use measure::{Errors, Mask};
+use measure::Errors;
+use setup::Files;
+pub(crate) use setup::Setup;
+pub(crate) use timing::{render, renders_wanted, Timed, MAX_RENDERS};
 
 #[derive(clap::Args, Debug, Serialize)]
 #[command(after_help = "Examples:
   optics tradeoff crates/tracer/scenes/kaleidoscope_lit.json --width 160 --height 120
   optics --json tradeoff crates/tracer/scenes/gold_spheres.json --repeats 5 --out /tmp/gold
+  optics tradeoff crates/tracer/scenes/shadow.json --lambert --plan jobs.jsonl
+  optics tradeoff crates/tracer/scenes/shadow.json --lambert --collect results
 
 Writes SCENE.json (schema optics.tradeoff), SCENE.md (the table) and
 SCENE-pareto.png (time against each error, log-log) into --out, and caches
-the ground truth under --out/truth. See docs/tradeoffs.md for the measures.")]
+the ground truth under --out/truth. See docs/tradeoffs.md for the measures.
+--plan writes the sweep's render jobs instead (run each with `optics
+tradeoff-job`), and --collect merges their results: docs/cli.md, \"Spread a
+sweep over machines\".")]
 pub struct TradeoffArgs {
     /// The scene file (JSON, see docs/scene-schema.md).
     pub scene: PathBuf,
@@ -83,6 +99,39 @@ pub struct TradeoffArgs {
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1024))]
     #[serde(skip_serializing_if = "Option::is_none")]
     pub threads: Option<u32>,
+    /// Render nothing: write the sweep as independent jobs, one JSON line
+    /// each, to this file, for `optics tradeoff-job` to run anywhere.
+    #[arg(long, value_name = "JOBS.jsonl", conflicts_with = "collect")]
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub plan: Option<PathBuf>,
+    /// Render nothing: merge the results of the plan's jobs (directories
+    /// of result files, or the files) into the sweep's record; give the
+    /// scene and the flags given to --plan.
+    #[arg(long, value_name = "RESULTS", num_args = 1..)]
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub collect: Vec<PathBuf>,
+}
+
+/// What `optics tradeoff` does, settled from its flags once.
+#[derive(Debug, PartialEq)]
+pub enum Mode<'a> {
+    /// Render and measure the sweep here.
+    Sweep,
+    /// Write its jobs to this file (`--plan`).
+    Plan(&'a Path),
+    /// Measure the results of its jobs (`--collect`).
+    Collect(&'a [PathBuf]),
+}
+
+impl TradeoffArgs {
+    /// The mode the flags ask for (clap refuses `--plan` with `--collect`).
+    pub fn mode(&self) -> Mode<'_> {
+        match (&self.plan, self.collect.as_slice()) {
+            (Some(jobs), _) => Mode::Plan(jobs),
+            (None, []) => Mode::Sweep,
+            (None, results) => Mode::Collect(results),
+        }
+    }
 }
 
 /// One point of the sweep, measured.
@@ -113,9 +162,6 @@ pub struct Measured {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub verdict: Option<Verdict>,
 }
-
-/// The most renders of one setting that `--min-seconds` asks for.
-const MAX_RENDERS: usize = 64;
 
 /// `--min-seconds`: a finite number of seconds, 0 to 60.
 fn seconds_flag(text: &str) -> Result<f64, String> {
@@ -159,6 +205,16 @@ impl Measured {
 /// The whole sweep, as written to JSON.
 #[derive(Debug, Serialize)]
 pub struct Sweep {
+    /// Where it is written (not in the JSON).
+    #[serde(skip)]
+    files: Files,
+    /// Its files' stem (not in the JSON).
+    #[serde(skip)]
+    stem: String,
+    /// The course material that multiplies light, and its name (the
+    /// JSON's `diffuse_gain`).
+    #[serde(skip)]
+    gain: Option<(f32, String)>,
     /// [`SCHEMA`].
     pub schema: &'static str,
     /// [`SCHEMA_VERSION`].
@@ -189,79 +245,75 @@ pub struct Sweep {
     pub points: Vec<Measured>,
     /// What was not swept, and why.
     pub skipped: Vec<sweep::Skipped>,
+    /// Where the renders were run as jobs (`--plan`, `--collect`): absent
+    /// for a sweep rendered in one run.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub collected: Option<distribute::Collected>,
 }
 
-pub fn run(args: &TradeoffArgs, ui: &Ui) -> error::Result<()> {
-    let lang = ui.lang;
-    let overrides = Overrides {
-        width: args.width,
-        height: args.height,
-        allow_expensive: true,
-        ..Overrides::default()
-    };
-    let scene_error = |error| ErrorKind::Scene {
-        file: args.scene.clone(),
-        error,
-    };
-    let scene = tracer::scene::load(&args.scene).map_err(scene_error)?;
-    let scene = if args.lambert {
-        scene.course_rough_as_lambert()
-    } else {
-        scene
-    };
-    let gain = scene.diffuse_gain().map(|(g, name)| (g, name.to_owned()));
-    let job = RenderJob::new(scene, &overrides).map_err(scene_error)?;
-    let stem = args
-        .scene
-        .file_stem()
-        .map_or_else(|| "scene".to_owned(), |s| s.to_string_lossy().into_owned());
-    let stem = if args.lambert {
-        format!("{stem}-lambert")
-    } else {
-        stem
-    };
-    let files = Files::new(&args.out, &stem);
-    files.prepare()?;
-    let threads = args.threads.map(|t| t as usize);
-    let mask = Mask::from_hits(&job.first_hits());
-    let plan = sweep::plan(&job, args.spp);
+/// Where and when the renders were timed.
+pub(crate) struct Provenance {
+    /// The machine (or machines) the times are of.
+    pub machine: String,
+    /// The day (or days) they were taken.
+    pub date: String,
+    /// The load average as the renders ended.
+    pub load: Option<String>,
+    /// The jobs, when the renders were run as jobs.
+    pub collected: Option<distribute::Collected>,
+}
 
-    let bar = crate::render::progress_bar(plan.points.len() as u64 + 1).inspect(|bar| {
-        bar.set_style(
-            indicatif::ProgressStyle::with_template(
-                "{bar:40} {pos}/{len} settings, {eta} left: {msg}",
-            )
-            .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
-        );
-        bar.set_message("ground truth");
-    });
-    let tick = |message: &str| {
-        if let Some(bar) = &bar {
-            bar.inc(1);
-            bar.set_message(message.to_owned());
-        }
+/// What the measures read, however it was rendered: the truth, each
+/// point's renders, and where and when they were taken.
+pub(crate) type Renders = (measure::Truth, truth::TruthRecord, Vec<Timed>, Provenance);
+
+pub fn run(args: &TradeoffArgs, ui: &Ui) -> error::Result<()> {
+    let setup = Setup::new(args)?;
+    let mode = args.mode();
+    if let Mode::Plan(jobs) = mode {
+        return distribute::plan(&setup, args, jobs, ui);
+    }
+    setup.files.prepare()?;
+    let truth_dir = setup.files.truth_dir();
+    let request = setup.truth_request(args, &truth_dir);
+    let (truth, truth_record, timed, provenance) = match mode {
+        Mode::Collect(results) => distribute::collect(&setup, &request, results)?,
+        _ => timing::render_here(&setup, args, &request)?,
     };
-    let truth_dir = files.truth_dir();
-    let request = truth::Request {
-        scene_file: &args.scene,
-        spp: args.truth_spp,
-        lambert: args.lambert,
-        dir: &truth_dir,
-        fresh: args.fresh,
-    };
-    let (truth, truth_record) = truth::obtain(&job, &request, &mask, threads)?;
+    // A truth rendered here is refused before the points are; one
+    // collected is known only now.
     if truth.is_black() {
         return Err(ErrorKind::TruthIsBlack {
             file: args.scene.clone(),
         }
         .into());
     }
+    let sweep = measure_points(setup, args, (&truth, truth_record), timed, provenance);
+    report::write_and_show(&sweep, args, ui)
+}
 
-    let timed = time_points(&job, &args.scene, &plan.points, args, threads, &tick)?;
+/// Every point measured against the truth and against the scene's own
+/// settings, its fronts and its verdict marked: the sweep's record.
+fn measure_points(
+    setup: Setup,
+    args: &TradeoffArgs,
+    (truth, truth_record): (&measure::Truth, truth::TruthRecord),
+    timed: Vec<Timed>,
+    provenance: Provenance,
+) -> Sweep {
+    let Setup {
+        job,
+        gain,
+        stem,
+        files,
+        mask,
+        plan,
+        ..
+    } = setup;
     let mut points = Vec::with_capacity(plan.points.len());
     let mut scene_render: Option<measure::Truth> = None;
     for (point, timed) in plan.points.into_iter().zip(timed) {
-        let errors = measure::errors(&timed.images, &truth, &mask);
+        let errors = measure::errors(&timed.images, truth, &mask);
         // The first point is the scene's own settings.
         let reference =
             scene_render.get_or_insert_with(|| measure::Truth::from_renders(&timed.images, &mask));
@@ -283,198 +335,29 @@ pub fn run(args: &TradeoffArgs, ui: &Ui) -> error::Result<()> {
             verdict: None,
         });
     }
-    if let Some(bar) = &bar {
-        bar.finish_and_clear();
-    }
     mark_fronts(&mut points);
     mark_verdicts(&mut points);
-
-    let sweep = Sweep {
+    Sweep {
         schema: SCHEMA,
         version: SCHEMA_VERSION,
         scene: args.scene.display().to_string(),
         lambert: args.lambert,
         diffuse_gain: gain.as_ref().map(|g| g.0),
+        gain,
+        stem,
+        files,
         width: job.scene().width,
         height: job.scene().height,
         surface_pixels: mask.count(),
-        machine: results::machine(),
-        date: results::today(),
-        load: results::load(),
+        machine: provenance.machine,
+        date: provenance.date,
+        load: provenance.load,
         command: command_line(args),
         truth: truth_record,
         points,
         skipped: plan.skipped,
-    };
-    let json = serde_json::to_string_pretty(&sweep).map_err(ErrorKind::Encode)? + "\n";
-    let markdown = report::markdown(&sweep, &stem);
-    tracer::output::write_all_atomically(&[
-        (files.json.as_path(), json.as_bytes()),
-        (files.markdown.as_path(), markdown.as_bytes()),
-    ])
-    .map_err(ErrorKind::Output)?;
-    let plotted = if args.no_plot {
-        None
-    } else {
-        Some(report::plot(&files.json, &files.plot)?)
-    };
-
-    let mut record = Record::new("tradeoff", String::new(), "");
-    let mut written = vec![
-        files.json.display().to_string().into(),
-        files.markdown.display().to_string().into(),
-    ];
-    if plotted.is_some() {
-        written.push(files.plot.display().to_string().into());
+        collected: provenance.collected,
     }
-    record
-        .inputs_from(args)
-        .set_answer(Answer::List(written), None);
-    for line in report::table(&sweep, lang) {
-        record.step(|| line);
-    }
-    record.step(|| {
-        say!(
-            lang,
-            "written: {}, {}{}",
-            "kiírva: {}, {}{}",
-            files.json.display(),
-            files.markdown.display(),
-            plotted.map_or_else(String::new, |p| format!(", {}", p.display()))
-        )
-    });
-    if let Some((gain, name)) = &gain {
-        record.note(say!(
-            lang,
-            "the material {} reflects up to {:.2} times the light it receives (π kd; the course's kd is in 1/sr): where such surfaces see each other, light multiplies and no truth converges; --lambert measures the scene with the suite's physical stand-in",
-            "a(z) {} anyag a kapott fény legfeljebb {:.2}-szeresét veri vissza (π kd; a kurzus kd-je 1/sr-ben értendő): ahol ilyen felületek látják egymást, a fény sokszorozódik, és nincs konvergens referencia; a --lambert a csomag fizikai helyettesítőjével mér",
-            name,
-            gain
-        ));
-    }
-    if sweep.truth.noise_relative > UNCONVERGED {
-        record.note(say!(
-            lang,
-            "the truth is not converged: its own noise is {:.2} of its energy (above {}), so the relative RMSE and the ΔE of every setting are read through that noise; raise --truth-spp",
-            "a referencia nem konvergált: saját zaja energiájának {:.2} része ({} felett), így minden beállítás relatív RMSE-je és ΔE-je e zajon át látszik; növelje a --truth-spp értékét",
-            sweep.truth.noise_relative,
-            UNCONVERGED
-        ));
-    }
-    for skipped in &sweep.skipped {
-        record.note(say!(
-            lang,
-            "not swept: {}: {}",
-            "nem mért: {}: {}",
-            skipped.axis,
-            lang.pick(skipped.why, skipped.why_hu)
-        ));
-    }
-    record.detail("sweep", &sweep);
-    ui.show_steps(&record)?;
-    // The notes (what was not swept, a truth not to be trusted) are read
-    // after the table in text too, not only in the JSON.
-    if !ui.json {
-        let notes: String = record.notes.iter().map(|n| format!("{n}\n")).collect();
-        crate::print_out(&notes)?;
-    }
-    Ok(())
-}
-
-/// One point's renders: the images measured, the times.
-struct Timed {
-    /// One image for a deterministic setting; the first
-    /// [`MAX_KEPT`] seeds' for a Monte Carlo one.
-    images: Vec<Image>,
-    /// Every render's time, s.
-    seconds: Vec<f64>,
-    /// Rays over all the renders.
-    rays: f64,
-}
-
-/// The most seeds of a Monte Carlo point whose images are kept for the
-/// measures (the further renders are timed only).
-const MAX_KEPT: usize = 8;
-
-/// Renders every point in rounds, each round every point once, so that a
-/// drift of the machine's speed falls on all of them alike (A B C … A B C):
-/// after one untimed warm-up render, the first round, then as many more as
-/// each point needs for `--repeats` renders adding up to `--min-seconds`
-/// (at most [`MAX_RENDERS`]). Monte Carlo points take a new seed each time.
-fn time_points(
-    job: &RenderJob,
-    file: &Path,
-    points: &[sweep::Point],
-    args: &TradeoffArgs,
-    threads: Option<usize>,
-    tick: &dyn Fn(&str),
-) -> error::Result<Vec<Timed>> {
-    if let Some(first) = points.first() {
-        render(job, file, first.settings, threads)?;
-    }
-    let mut timed: Vec<Timed> = points
-        .iter()
-        .map(|_| Timed {
-            images: Vec::new(),
-            seconds: Vec::new(),
-            rays: 0.0,
-        })
-        .collect();
-    let mut wanted = vec![args.repeats as usize; points.len()];
-    for round in 0..MAX_RENDERS {
-        let mut rendered_any = false;
-        for (i, point) in points.iter().enumerate() {
-            if timed[i].seconds.len() >= wanted[i] {
-                continue;
-            }
-            if round == 0 {
-                tick(&point.label);
-            }
-            let settings = Settings {
-                seed: point.settings.seed.wrapping_add(round as u64),
-                ..point.settings
-            };
-            let rendered = render(job, file, settings, threads)?;
-            let t = &mut timed[i];
-            t.seconds.push(rendered.elapsed.as_secs_f64());
-            t.rays += rendered.rays.total() as f64;
-            // A deterministic setting renders the same image each time.
-            let keep = if settings.integrator.samples() {
-                MAX_KEPT
-            } else {
-                1
-            };
-            if t.images.len() < keep {
-                t.images.push(rendered.image);
-            }
-            if round == 0 {
-                let first = t.seconds[0].max(1e-6);
-                let enough = (args.min_seconds / first).ceil() as usize;
-                wanted[i] = enough.clamp(args.repeats as usize, MAX_RENDERS);
-            }
-            rendered_any = true;
-        }
-        if !rendered_any {
-            break;
-        }
-    }
-    Ok(timed)
-}
-
-/// Renders `job`'s scene (read from `file`) with `settings`.
-pub(crate) fn render(
-    job: &RenderJob,
-    file: &Path,
-    settings: Settings,
-    threads: Option<usize>,
-) -> error::Result<Rendered> {
-    let job = RenderJob::with_settings(job.scene().clone(), settings).map_err(|error| {
-        ErrorKind::Scene {
-            file: file.to_owned(),
-            error,
-        }
-    })?;
-    Ok(job.render(threads, &|_| {})?)
 }
 
 /// Marks each point with the fronts it lies on.
@@ -534,40 +417,6 @@ fn command_line(args: &TradeoffArgs) -> String {
         args.spp, args.truth_spp, args.repeats, args.min_seconds
     ));
     words.join(" ")
-}
-
-/// Where a sweep writes.
-struct Files {
-    dir: PathBuf,
-    json: PathBuf,
-    markdown: PathBuf,
-    plot: PathBuf,
-}
-
-impl Files {
-    fn new(dir: &Path, stem: &str) -> Self {
-        Files {
-            dir: dir.to_owned(),
-            json: dir.join(format!("{stem}.json")),
-            markdown: dir.join(format!("{stem}.md")),
-            plot: dir.join(format!("{stem}-pareto.png")),
-        }
-    }
-
-    fn truth_dir(&self) -> PathBuf {
-        self.dir.join("truth")
-    }
-
-    /// Creates the directories, before any render is spent.
-    fn prepare(&self) -> error::Result<()> {
-        std::fs::create_dir_all(self.truth_dir()).map_err(|source| {
-            ErrorKind::Output(tracer::output::OutputError::Io {
-                path: self.truth_dir().display().to_string(),
-                source,
-            })
-        })?;
-        Ok(())
-    }
 }
 
 #[cfg(test)]

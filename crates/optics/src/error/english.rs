@@ -91,6 +91,8 @@ impl fmt::Display for ErrorKind {
                 "SCENE {}: its physical render is black: no light reaches the camera (a scene without lights shows only the course's ambient term), so there is no light transport to trade",
                 file.display()
             ),
+            #[cfg(feature = "harness")]
+            ErrorKind::Jobs(error) => write!(f, "{error}"),
         }
     }
 }

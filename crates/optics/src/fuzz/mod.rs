@@ -2,7 +2,8 @@
 //! Rust: batch lines (`batch_lines`), flag values (`flag_values`), the
 //! render settings' choices (`render_flags`), the images `optics
 //! compare` reads (`compare_images`), `optics tradeoff`'s numeric flags
-//! (`tradeoff_flags`) and the vectors of `optics envmap`,
+//! (`tradeoff_flags`), the job and result lines of a sweep spread over
+//! machines (`tradeoff_jobs`) and the vectors of `optics envmap`,
 //! `reflection-matrix` and `shadow-matrix` (`technique_flags`).
 //!
 //! Each target generates inputs from the course's own requests, mutates
@@ -23,6 +24,8 @@ mod render_flags;
 mod technique_flags;
 #[cfg(feature = "harness")]
 mod tradeoff_flags;
+#[cfg(feature = "harness")]
+mod tradeoff_jobs;
 
 use proptest::prelude::*;
 use proptest::test_runner::{Config, TestCaseError, TestRunner};

@@ -10,6 +10,8 @@ use std::collections::BTreeSet;
 mod compare_kinds;
 #[cfg(feature = "harness")]
 mod harness_kinds;
+#[cfg(feature = "harness")]
+mod jobs_kinds;
 mod render_kinds;
 
 /// The operating system's message that examples quote.
@@ -152,6 +154,8 @@ fn every_kind() -> Vec<(Error, Vec<String>)> {
     kinds.extend(harness_kinds::examples());
     #[cfg(feature = "harness")]
     kinds.extend(compare_kinds::examples());
+    #[cfg(feature = "harness")]
+    kinds.extend(jobs_kinds::examples());
     for expected in Expected::ALL {
         let error = DomainError::OutOfRange {
             name: "--eta".into(),
@@ -226,6 +230,14 @@ fn slot(kind: &ErrorKind) -> usize {
                 + harness_kinds::SLOTS
                 + compare_kinds::compare_slot(error)
         }
+        #[cfg(feature = "harness")]
+        ErrorKind::Jobs(error) => {
+            CALCULATOR
+                + render_kinds::SLOTS
+                + harness_kinds::SLOTS
+                + compare_kinds::SLOTS
+                + jobs_kinds::jobs_slot(error)
+        }
     }
 }
 
@@ -233,7 +245,11 @@ fn slot(kind: &ErrorKind) -> usize {
 const CALCULATOR: usize = 22;
 
 #[cfg(feature = "harness")]
-const SLOTS: usize = CALCULATOR + render_kinds::SLOTS + harness_kinds::SLOTS + compare_kinds::SLOTS;
+const SLOTS: usize = CALCULATOR
+    + render_kinds::SLOTS
+    + harness_kinds::SLOTS
+    + compare_kinds::SLOTS
+    + jobs_kinds::SLOTS;
 #[cfg(not(feature = "harness"))]
 const SLOTS: usize = CALCULATOR + render_kinds::SLOTS;
 

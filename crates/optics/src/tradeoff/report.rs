@@ -9,9 +9,11 @@ use validation::checkout::Checkout;
 use validation::pipeline::PipelineError;
 use validation::python::{run_tool, Task, ToolError};
 
-use super::{Measured, Sweep, Verdict};
+use super::{Measured, Sweep, TradeoffArgs, Verdict, UNCONVERGED};
 use crate::error::{self, ErrorKind};
 use crate::lang::{say, Lang};
+use crate::record::{Answer, Record};
+use crate::Ui;
 
 /// The table, one line a point, a header first.
 pub fn table(sweep: &Sweep, lang: Lang) -> Vec<String> {
@@ -212,6 +214,85 @@ pub fn verdicts(sweep: &Sweep) -> Vec<String> {
         lines.push(format!("{}.", entries.join("; ")));
     }
     lines
+}
+
+/// Writes the sweep's JSON, Markdown and plot, and prints its record.
+pub fn write_and_show(sweep: &Sweep, args: &TradeoffArgs, ui: &Ui) -> error::Result<()> {
+    let lang = ui.lang;
+    let files = &sweep.files;
+    let json = serde_json::to_string_pretty(sweep).map_err(ErrorKind::Encode)? + "\n";
+    let markdown = markdown(sweep, &sweep.stem);
+    tracer::output::write_all_atomically(&[
+        (files.json.as_path(), json.as_bytes()),
+        (files.markdown.as_path(), markdown.as_bytes()),
+    ])
+    .map_err(ErrorKind::Output)?;
+    let plotted = if args.no_plot {
+        None
+    } else {
+        Some(plot(&files.json, &files.plot)?)
+    };
+
+    let mut record = Record::new("tradeoff", String::new(), "");
+    let mut written = vec![
+        files.json.display().to_string().into(),
+        files.markdown.display().to_string().into(),
+    ];
+    if plotted.is_some() {
+        written.push(files.plot.display().to_string().into());
+    }
+    record
+        .inputs_from(args)
+        .set_answer(Answer::List(written), None);
+    for line in table(sweep, lang) {
+        record.step(|| line);
+    }
+    record.step(|| {
+        say!(
+            lang,
+            "written: {}, {}{}",
+            "kiírva: {}, {}{}",
+            files.json.display(),
+            files.markdown.display(),
+            plotted.map_or_else(String::new, |p| format!(", {}", p.display()))
+        )
+    });
+    if let Some((gain, name)) = &sweep.gain {
+        record.note(say!(
+            lang,
+            "the material {} reflects up to {:.2} times the light it receives (π kd; the course's kd is in 1/sr): where such surfaces see each other, light multiplies and no truth converges; --lambert measures the scene with the suite's physical stand-in",
+            "a(z) {} anyag a kapott fény legfeljebb {:.2}-szeresét veri vissza (π kd; a kurzus kd-je 1/sr-ben értendő): ahol ilyen felületek látják egymást, a fény sokszorozódik, és nincs konvergens referencia; a --lambert a csomag fizikai helyettesítőjével mér",
+            name,
+            gain
+        ));
+    }
+    if sweep.truth.noise_relative > UNCONVERGED {
+        record.note(say!(
+            lang,
+            "the truth is not converged: its own noise is {:.2} of its energy (above {}), so the relative RMSE and the ΔE of every setting are read through that noise; raise --truth-spp",
+            "a referencia nem konvergált: saját zaja energiájának {:.2} része ({} felett), így minden beállítás relatív RMSE-je és ΔE-je e zajon át látszik; növelje a --truth-spp értékét",
+            sweep.truth.noise_relative,
+            UNCONVERGED
+        ));
+    }
+    for skipped in &sweep.skipped {
+        record.note(say!(
+            lang,
+            "not swept: {}: {}",
+            "nem mért: {}: {}",
+            skipped.axis,
+            lang.pick(skipped.why, skipped.why_hu)
+        ));
+    }
+    record.detail("sweep", sweep);
+    ui.show_steps(&record)?;
+    // The notes (what was not swept, a truth not to be trusted) are read
+    // after the table in text too, not only in the JSON.
+    if !ui.json {
+        let notes: String = record.notes.iter().map(|n| format!("{n}\n")).collect();
+        crate::print_out(&notes)?;
+    }
+    Ok(())
 }
 
 /// Draws `json`'s Pareto plot into `png` with the checkout's

@@ -3,11 +3,12 @@
 //! halves so that its own noise is known, and cached beside the results
 //! under a key of everything it depends on.
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 use serde::{Deserialize, Serialize};
 use tracer::job::RenderJob;
 use tracer::output::{read_pfm, write_all_atomically};
+use tracer::render::Image;
 use tracer::scene::Settings;
 
 use super::measure::{Mask, Truth};
@@ -52,6 +53,85 @@ pub struct Request<'a> {
     pub fresh: bool,
 }
 
+/// Where the truth a request asks for is cached, under which key.
+pub struct Cache {
+    /// The settings of the first half (the second's seed is one more).
+    pub half: Settings,
+    settings_json: serde_json::Value,
+    key: String,
+    image_path: PathBuf,
+    meta_path: PathBuf,
+}
+
+impl Cache {
+    /// The cache entry of `job`'s truth as `request` asks for it.
+    pub fn new(job: &RenderJob, request: &Request<'_>) -> error::Result<Self> {
+        let half = sweep::truth_settings(job, (request.spp / 2).max(1));
+        let scene_bytes = std::fs::read(request.scene_file).unwrap_or_default();
+        let settings_json = serde_json::to_value(half).map_err(ErrorKind::Encode)?;
+        let key = format!(
+            "{:016x}",
+            fnv1a(&[
+                &scene_bytes,
+                if request.lambert {
+                    b"lambert"
+                } else {
+                    b"as written"
+                },
+                format!("{}x{}", job.scene().width, job.scene().height).as_bytes(),
+                settings_json.to_string().as_bytes(),
+                env!("CARGO_PKG_VERSION").as_bytes(),
+            ])
+        );
+        let stem = request
+            .scene_file
+            .file_stem()
+            .map_or_else(|| "scene".into(), |s| s.to_string_lossy());
+        let stem = if request.lambert {
+            format!("{stem}-lambert")
+        } else {
+            stem.into_owned()
+        };
+        Ok(Cache {
+            half,
+            settings_json,
+            image_path: request.dir.join(format!("{stem}-{key}.pfm")),
+            meta_path: request.dir.join(format!("{stem}-{key}.json")),
+            key,
+        })
+    }
+
+    /// The truth of the two halves `a` and `b`, rendered in `seconds`
+    /// together, written to the cache whole or not at all.
+    pub fn store(
+        self,
+        a: Image,
+        b: Image,
+        seconds: f64,
+        mask: &Mask,
+    ) -> error::Result<(Truth, TruthRecord)> {
+        let truth = Truth::from_renders(&[a, b], mask);
+        let record = TruthRecord {
+            settings: self.settings_json,
+            spp: 2 * self.half.spp,
+            seconds,
+            noise_relative: truth.noise_relative(mask),
+            noise: truth.noise,
+            cached: false,
+            key: self.key,
+            file: self.image_path.display().to_string(),
+        };
+        let meta = serde_json::to_string_pretty(&record).map_err(ErrorKind::Encode)? + "\n";
+        let pfm = tracer::output::pfm_bytes(&truth.image);
+        write_all_atomically(&[
+            (self.image_path.as_path(), pfm.as_slice()),
+            (self.meta_path.as_path(), meta.as_bytes()),
+        ])
+        .map_err(ErrorKind::Output)?;
+        Ok((truth, record))
+    }
+}
+
 /// The truth of `job`'s scene as `request` asks, from the cache unless
 /// fresh or stale, else rendered (and cached).
 pub fn obtain(
@@ -60,67 +140,21 @@ pub fn obtain(
     mask: &Mask,
     threads: Option<usize>,
 ) -> error::Result<(Truth, TruthRecord)> {
-    let Request {
-        scene_file,
-        spp,
-        lambert,
-        dir,
-        fresh,
-    } = *request;
-    let half = sweep::truth_settings(job, (spp / 2).max(1));
-    let scene_bytes = std::fs::read(scene_file).unwrap_or_default();
-    let settings_json = serde_json::to_value(half).map_err(ErrorKind::Encode)?;
-    let key = format!(
-        "{:016x}",
-        fnv1a(&[
-            &scene_bytes,
-            if lambert { b"lambert" } else { b"as written" },
-            format!("{}x{}", job.scene().width, job.scene().height).as_bytes(),
-            settings_json.to_string().as_bytes(),
-            env!("CARGO_PKG_VERSION").as_bytes(),
-        ])
-    );
-    let stem = scene_file
-        .file_stem()
-        .map_or_else(|| "scene".into(), |s| s.to_string_lossy());
-    let stem = if lambert {
-        format!("{stem}-lambert")
-    } else {
-        stem.into_owned()
-    };
-    let image_path = dir.join(format!("{stem}-{key}.pfm"));
-    let meta_path = dir.join(format!("{stem}-{key}.json"));
-    if !fresh {
-        if let Some((truth, record)) = cached(&image_path, &meta_path, &key, mask, job) {
-            return Ok((truth, record));
+    let cache = Cache::new(job, request)?;
+    if !request.fresh {
+        if let Some(found) = cached(&cache.image_path, &cache.meta_path, &cache.key, mask, job) {
+            return Ok(found);
         }
     }
-    let a = super::render(job, scene_file, half, threads)?;
+    let half = cache.half;
+    let a = super::render(job, request.scene_file, half, threads)?;
     let second = Settings {
         seed: half.seed.wrapping_add(1),
         ..half
     };
-    let b = super::render(job, scene_file, second, threads)?;
+    let b = super::render(job, request.scene_file, second, threads)?;
     let seconds = (a.elapsed + b.elapsed).as_secs_f64();
-    let truth = Truth::from_renders(&[a.image, b.image], mask);
-    let record = TruthRecord {
-        settings: settings_json,
-        spp: 2 * half.spp,
-        seconds,
-        noise_relative: truth.noise_relative(mask),
-        noise: truth.noise,
-        cached: false,
-        key,
-        file: image_path.display().to_string(),
-    };
-    let meta = serde_json::to_string_pretty(&record).map_err(ErrorKind::Encode)? + "\n";
-    let pfm = tracer::output::pfm_bytes(&truth.image);
-    write_all_atomically(&[
-        (image_path.as_path(), pfm.as_slice()),
-        (meta_path.as_path(), meta.as_bytes()),
-    ])
-    .map_err(ErrorKind::Output)?;
-    Ok((truth, record))
+    cache.store(a.image, b.image, seconds, mask)
 }
 
 /// The cached truth, if both its files read back whole and match `key`
@@ -143,7 +177,7 @@ fn cached(
 }
 
 /// FNV-1a, 64 bits, over the parts in order, each followed by a 0 byte.
-fn fnv1a(parts: &[&[u8]]) -> u64 {
+pub fn fnv1a(parts: &[&[u8]]) -> u64 {
     let mut hash: u64 = 0xcbf2_9ce4_8422_2325;
     for part in parts {
         for &byte in part.iter().chain(&[0]) {

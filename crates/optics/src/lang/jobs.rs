@@ -1,0 +1,117 @@
+//! The errors of a sweep spread over machines in Hungarian: an exhaustive
+//! `match` over their kinds.
+
+use crate::error::jobs::{listed, ImageProblem, JobError, LineKind};
+
+use super::render::output_hu;
+
+/// `feladatsor` or `eredménysor`: what a line was read as.
+fn line_hu(kind: LineKind) -> &'static str {
+    match kind {
+        LineKind::Job => "feladatsor",
+        LineKind::Result => "eredménysor",
+    }
+}
+
+fn image_hu(problem: &ImageProblem) -> String {
+    match problem {
+        ImageProblem::Encoding { index } => {
+            format!("images[{index}] nem egy PFM-kép base64 kódolással")
+        }
+        ImageProblem::Size {
+            index,
+            got,
+            expected,
+        } => format!(
+            "images[{index}] {} × {} képpontos, a terv szerint {} × {}",
+            got.0, got.1, expected.0, expected.1
+        ),
+        ImageProblem::Count { got, expected } => format!(
+            "az images {got} képet tartalmaz, a feladat renderelései közül {expected} marad meg"
+        ),
+    }
+}
+
+/// A sweep's job or result refused.
+pub fn jobs_hu(error: &JobError) -> String {
+    match error {
+        JobError::Read {
+            field,
+            path,
+            source,
+        } => format!("{field} {}: nem olvasható: {source}", path.display()),
+        JobError::Line {
+            kind,
+            at,
+            field,
+            message,
+        } => {
+            let field = field
+                .as_ref()
+                .map_or_else(String::new, |f| format!("{f}: "));
+            format!(
+                "{at}: nem érvényes {} ({}): {field}{message}",
+                line_hu(*kind),
+                kind.schema()
+            )
+        }
+        JobError::Schema { kind, at, found } => format!(
+            "{at}: a schema értéke {found:?}, {:?} kellene",
+            kind.schema()
+        ),
+        JobError::Version { kind, at, found } => format!(
+            "{at}: a(z) {} {found}. változata; ez az optics a(z) {}. változatot olvassa",
+            kind.schema(),
+            crate::tradeoff::jobs::VERSION
+        ),
+        JobError::NoSuchJob {
+            field,
+            at,
+            index,
+            jobs,
+        } => format!(
+            "{field} {index}: a(z) {} terv {jobs} feladatból áll (0–{})",
+            at.path.display(),
+            jobs.saturating_sub(1)
+        ),
+        JobError::NotPlanned { at, field, job } => format!(
+            "{at}: a(z) {field} nem az, amit a terv a(z) {job}. feladatnak ad: a sort \
+             átírták, vagy az optics egy másik változata tervezte; újra kell tervezni"
+        ),
+        JobError::SceneChanged { scene, at } => format!(
+            "a(z) {} jelenetfájl megváltozott a tervezés óta ({at}); újra kell tervezni",
+            scene.display()
+        ),
+        JobError::OtherPlan {
+            at,
+            found,
+            planned_as,
+            expected,
+        } => format!(
+            "{at}: a(z) {found} terv (`{planned_as}`) eredménye, ez a mérés a(z) {expected} \
+             terv: a --collect ugyanazt a jelenetet és kapcsolókat kapja, mint a --plan"
+        ),
+        JobError::Duplicate { job, first, second } => {
+            format!("a(z) {job}. feladatnak két eredménye van: {first} és {second}")
+        }
+        JobError::Missing { jobs, count, of } => format!(
+            "{of} feladatból {count} eredménye hiányzik: {}",
+            listed(jobs, *count)
+        ),
+        JobError::Image { at, problem } => format!("{at}: {}", image_hu(problem)),
+        JobError::Times { at, field } => format!(
+            "{at}: a(z) {field} értékei véges, nemnegatív számok kellenek legyenek, egy–64 \
+             renderelésnyi"
+        ),
+        JobError::NoResults { path } => format!(
+            "--collect {}: nincs benne eredményfájl (*.json, *.jsonl)",
+            path.display()
+        ),
+        JobError::IndexNeeded { path, lines } => format!(
+            "INDEX: a(z) {} {lines} sort tartalmaz; meg kell adni a feladat sorszámát (0–{})",
+            path.display(),
+            lines.saturating_sub(1)
+        ),
+        JobError::Write { field, error } => format!("{field}: {}", output_hu(error)),
+    }
+}

@@ -1,0 +1,134 @@
+//! What every mode of `optics tradeoff` settles before it renders: the
+//! scene at its size, the surface pixels, the sweep's points, the plan's
+//! key, and where the results go.
+
+use std::path::{Path, PathBuf};
+
+use tracer::job::{Overrides, RenderJob};
+
+use super::measure::Mask;
+use super::{jobs, sweep, truth, TradeoffArgs};
+use crate::error::{self, ErrorKind};
+
+/// What every mode knows before it renders: the scene, settled at its
+/// size, the surface pixels, the sweep's points and the plan's key.
+pub(crate) struct Setup {
+    /// The scene with the size given, at its own settings.
+    pub job: RenderJob,
+    /// The course material's diffuse albedo where above 1, and its name.
+    pub gain: Option<(f32, String)>,
+    /// The files' stem (`shadow-lambert`).
+    pub stem: String,
+    /// Where the results go.
+    pub files: Files,
+    /// The surface pixels.
+    pub mask: Mask,
+    /// The sweep's points.
+    pub plan: sweep::Plan,
+    /// What the plan is made of.
+    pub key: jobs::PlanKey,
+}
+
+impl Setup {
+    /// Loads the scene `args` names and plans its sweep.
+    pub fn new(args: &TradeoffArgs) -> error::Result<Self> {
+        let overrides = Overrides {
+            width: args.width,
+            height: args.height,
+            allow_expensive: true,
+            ..Overrides::default()
+        };
+        let scene_error = |error| ErrorKind::Scene {
+            file: args.scene.clone(),
+            error,
+        };
+        let scene = tracer::scene::load(&args.scene).map_err(scene_error)?;
+        let scene = if args.lambert {
+            scene.course_rough_as_lambert()
+        } else {
+            scene
+        };
+        let gain = scene.diffuse_gain().map(|(g, name)| (g, name.to_owned()));
+        let job = RenderJob::new(scene, &overrides).map_err(scene_error)?;
+        let stem = args
+            .scene
+            .file_stem()
+            .map_or_else(|| "scene".to_owned(), |s| s.to_string_lossy().into_owned());
+        let stem = if args.lambert {
+            format!("{stem}-lambert")
+        } else {
+            stem
+        };
+        let bytes = std::fs::read(&args.scene).unwrap_or_default();
+        let key = jobs::PlanKey {
+            scene: args.scene.display().to_string(),
+            scene_fnv1a: jobs::scene_fnv1a(&bytes),
+            lambert: args.lambert,
+            width: job.scene().width,
+            height: job.scene().height,
+            spp: args.spp,
+            truth_spp: args.truth_spp,
+            repeats: args.repeats,
+            min_seconds: args.min_seconds,
+        };
+        Ok(Setup {
+            files: Files::new(&args.out, &stem),
+            mask: Mask::from_hits(&job.first_hits()),
+            plan: sweep::plan(&job, args.spp),
+            gain,
+            stem,
+            job,
+            key,
+        })
+    }
+
+    /// The truth's cache as `args` asks for it.
+    pub fn truth_request<'a>(
+        &'a self,
+        args: &'a TradeoffArgs,
+        dir: &'a Path,
+    ) -> truth::Request<'a> {
+        truth::Request {
+            scene_file: &args.scene,
+            spp: args.truth_spp,
+            lambert: args.lambert,
+            dir,
+            fresh: args.fresh,
+        }
+    }
+}
+
+/// Where a sweep writes.
+#[derive(Debug)]
+pub struct Files {
+    dir: PathBuf,
+    pub json: PathBuf,
+    pub markdown: PathBuf,
+    pub plot: PathBuf,
+}
+
+impl Files {
+    pub fn new(dir: &Path, stem: &str) -> Self {
+        Files {
+            dir: dir.to_owned(),
+            json: dir.join(format!("{stem}.json")),
+            markdown: dir.join(format!("{stem}.md")),
+            plot: dir.join(format!("{stem}-pareto.png")),
+        }
+    }
+
+    pub fn truth_dir(&self) -> PathBuf {
+        self.dir.join("truth")
+    }
+
+    /// Creates the directories, before any render is spent.
+    pub fn prepare(&self) -> error::Result<()> {
+        std::fs::create_dir_all(self.truth_dir()).map_err(|source| {
+            ErrorKind::Output(tracer::output::OutputError::Io {
+                path: self.truth_dir().display().to_string(),
+                source,
+            })
+        })?;
+        Ok(())
+    }
+}
