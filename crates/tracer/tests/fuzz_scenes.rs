@@ -1,6 +1,6 @@
 //! The fuzz target of scene files: the course scenes mutated as JSON
 //! (values replaced by hostile ones, fields removed, renamed or added,
-//! values wrapped in arrays) and then as bytes (flipped, inserted, cut,
+//! values wrapped in arrays, bump maps given to objects) and then as bytes (flipped, inserted, cut,
 //! a scene appended, a byte-order mark), read through `scene::parse_bytes`
 //! and, when accepted, rendered at 4 × 3 by each integrator (the photon
 //! map with 2 passes of 64 photons). The promises checked on every
@@ -78,6 +78,9 @@ enum Edit {
     /// `render.ray_offset` set to a choice that carries a value (`fixed`,
     /// `scaled`), the value hostile: the renders must stay finite.
     RayOffset(&'static str, f64),
+    /// `objects[i].bump` set to a bump map, its kind or numbers often
+    /// hostile: the bent normals must keep the renders finite.
+    Bump(usize, Value),
 }
 
 /// One change to the bytes of a file.
@@ -164,6 +167,24 @@ fn hostile_value() -> impl Strategy<Value = Value> {
     })
 }
 
+/// The bump maps a hostile file gives an object: each kind with hostile
+/// numbers, a gentle sine (so that some are accepted and rendered), and
+/// any value at all.
+fn bump() -> impl Strategy<Value = Value> {
+    prop_oneof![
+        1 => Just(serde_json::json!({ "type": "flat" })),
+        2 => (hostile_number(), hostile_number())
+            .prop_map(|(du, dv)| serde_json::json!({ "type": "slope", "du": du, "dv": dv })),
+        2 => (hostile_number(), hostile_number()).prop_map(|(amplitude, period)| {
+            serde_json::json!({ "type": "sine", "amplitude": amplitude, "period": period })
+        }),
+        2 => (-0.1..0.1f64, 0.004..1.0f64).prop_map(|(amplitude, period)| {
+            serde_json::json!({ "type": "sine", "amplitude": amplitude, "period": period })
+        }),
+        1 => hostile_value(),
+    ]
+}
+
 fn edit() -> impl Strategy<Value = Edit> {
     let field = prop_oneof![
         Just("type".to_owned()),
@@ -181,6 +202,7 @@ fn edit() -> impl Strategy<Value = Edit> {
         1 => any::<usize>().prop_map(Edit::WrapInArray),
         1 => (prop_oneof![Just("fixed"), Just("scaled")], hostile_number())
             .prop_map(|(kind, x)| Edit::RayOffset(kind, x)),
+        2 => (any::<usize>(), bump()).prop_map(|(i, b)| Edit::Bump(i, b)),
     ]
 }
 
@@ -290,6 +312,14 @@ fn apply(value: &mut Value, edit: &Edit) {
         Edit::WrapInArray(i) => {
             if let Some(slot) = value.pointer_mut(&at(*i)) {
                 *slot = Value::Array(vec![slot.take()]);
+            }
+        }
+        Edit::Bump(i, bump) => {
+            if let Some(Value::Array(objects)) = value.get_mut("objects") {
+                let n = objects.len();
+                if let Some(Value::Object(object)) = objects.get_mut(i % n.max(1)) {
+                    object.insert("bump".into(), bump.clone());
+                }
             }
         }
         Edit::RayOffset(kind, x) => {
