@@ -199,7 +199,8 @@ impl HeightField {
     pub fn sine(amplitude: f64, period: f64) -> Result<Self, FieldError> {
         finite(Parameter::Amplitude, amplitude)?;
         finite(Parameter::Period, period)?;
-        if !(period >= MIN_PERIOD) {
+        // Finite by now, so `<` also refuses no NaN by accident.
+        if period < MIN_PERIOD {
             return Err(FieldError::PeriodTooShort { period });
         }
         not_too_steep(Parameter::Amplitude, TAU * amplitude.abs() / period)?;
@@ -264,7 +265,7 @@ pub fn perturbed_normal(normal: DVec3, tangents: &Tangents, slopes: Slopes) -> O
     }
     let Tangents { p_u, p_v } = *tangents;
     let area = p_u.cross(p_v).length();
-    if !(area > 0.0 && area.is_finite()) {
+    if !area.is_finite() || area <= 0.0 {
         return None;
     }
     let bend = (normal.cross(p_v) * b_u - normal.cross(p_u) * b_v) / area;

@@ -65,7 +65,7 @@ impl Hit {
     /// Whether a ray along `ray_direction` met a two-sided surface from
     /// behind its declared normal: decided by the geometric normal, once
     /// for both of the normals below.
-    fn from_behind(&self, ray_direction: Vec3) -> bool {
+    fn met_from_behind(&self, ray_direction: Vec3) -> bool {
         self.two_sided && self.normal.dot(ray_direction) > 0.0
     }
 
@@ -73,7 +73,7 @@ impl Hit {
     /// surfaces; the outward normal for closed ones. Secondary rays start
     /// off the surface along it, and a light below it is below the horizon.
     pub fn facing_normal(&self, ray_direction: Vec3) -> Vec3 {
-        if self.from_behind(ray_direction) {
+        if self.met_from_behind(ray_direction) {
             -self.normal
         } else {
             self.normal
@@ -84,7 +84,7 @@ impl Hit {
     /// the BRDF and the cosines of the lights see. Without a bump map it
     /// is the facing normal itself.
     pub fn shading_normal(&self, ray_direction: Vec3) -> Vec3 {
-        if self.from_behind(ray_direction) {
+        if self.met_from_behind(ray_direction) {
             -self.shading
         } else {
             self.shading
