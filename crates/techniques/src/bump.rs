@@ -67,8 +67,10 @@ pub const MIN_PERIOD: f64 = 16.0 * STEP;
 /// parametrisation; beyond it the bent normal says nothing more.
 pub const MAX_SLOPE: f64 = 1e6;
 
-/// A height field `h(u, v)`, metres, built only through its checked
-/// constructors (its parameters finite, its slopes at most [`MAX_SLOPE`]).
+/// A height field `h(u, v)`, metres. Build it with [`HeightField::slope`]
+/// or [`HeightField::sine`], which check its parameters (finite, a period
+/// of at least [`MIN_PERIOD`], slopes of at most [`MAX_SLOPE`]); the
+/// variants are public to be matched on.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum HeightField {
     /// `h = 0`: the surface as it is.
