@@ -379,6 +379,8 @@ struct Coverage {
     kinds: BTreeMap<String, usize>,
     fields: BTreeMap<&'static str, usize>,
     accepted: usize,
+    /// Accepted with a bump map on some object.
+    bumped: usize,
     rendered: usize,
     not_finite: usize,
 }
@@ -416,6 +418,7 @@ fn check(bytes: &[u8], coverage: &Mutex<Coverage>) -> Result<(), String> {
         Ok(scene) => scene,
     };
     coverage.accepted += 1;
+    coverage.bumped += usize::from(scene.bumps.iter().any(Option::is_some));
     accepted_is_the_schema(bytes)?;
     // Each integrator under its default pixel filter, and Whitted under the
     // box filter too (its jittered rays meet what the centre's do not).
@@ -514,8 +517,8 @@ fn hostile_scene_files_keep_the_readers_promises() {
         start.elapsed().as_secs_f64()
     );
     println!(
-        "accepted {}, renders finite {}, renders refused as not finite {}",
-        c.accepted, c.rendered, c.not_finite
+        "accepted {} ({} with a bump map), renders finite {}, renders refused as not finite {}",
+        c.accepted, c.bumped, c.rendered, c.not_finite
     );
     println!("error kinds reached: {:?}", c.kinds);
     println!(
@@ -525,8 +528,9 @@ fn hostile_scene_files_keep_the_readers_promises() {
         c.fields
     );
     assert!(
-        c.accepted > 0 && c.kinds.len() >= 8,
-        "a timid generator: {:?}",
+        c.accepted > 0 && c.bumped > 0 && c.kinds.len() >= 8,
+        "a timid generator: {} bumped, {:?}",
+        c.bumped,
         c.kinds
     );
 }
