@@ -23,6 +23,7 @@
 //!
 //! | module | technique | slides |
 //! |---|---|---|
+//! | [`bump`] | bump mapping: a height field's finite-difference slopes `b_u`, `b_v` bend the shading normal, `N' = N + b_u (n̂ × P_v) − b_v (n̂ × P_u)` (Blinn) | "Felületi egyenetlenség leképezés - Bump mapping" |
 //! | [`envmap`] | environment maps: a reflected direction to its texel in a latitude–longitude, cube or sphere map, and back | "Környezet leképezés" |
 //! | [`planar`] | the reflection matrix `M = F⁻¹ S(1, −1, 1) F` of a plane; the projected-shadow matrix of a point light onto a plane | "Tükröződések", "Vetített árnyék" |
 //! | [`refraction`] | the cheap refraction `t = normalize(−c n + i)` against Snell's law, from either side | "Snell törvénye" |
@@ -61,6 +62,7 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod bump;
 pub mod dispersion;
 pub mod empirical_fresnel;
 pub mod envmap;

@@ -47,7 +47,11 @@ pub struct Hit {
     /// Unit normal. For a sphere it points outside (so `dot(normal,
     /// direction) > 0` means the ray arrived from inside); for the two-sided
     /// plane and tube it is the normal as declared, whichever side was hit.
+    /// The geometric normal: offsets, sides and visibility follow it.
     pub normal: Vec3,
+    /// The unit normal shading uses, on the same side as `normal`: `normal`
+    /// bent by the object's bump map ([`crate::bump`]), or `normal` itself.
+    pub shading: Vec3,
     /// Whether the surface has no inside (plane, tube): shading uses the
     /// side of the normal the ray came from.
     pub two_sided: bool,
@@ -58,13 +62,32 @@ pub struct Hit {
 }
 
 impl Hit {
-    /// The normal on the side the ray came from, for two-sided surfaces; the
-    /// outward normal for closed ones.
-    pub fn shading_normal(&self, ray_direction: Vec3) -> Vec3 {
-        if self.two_sided && self.normal.dot(ray_direction) > 0.0 {
+    /// Whether a ray along `ray_direction` met a two-sided surface from
+    /// behind its declared normal: decided by the geometric normal, once
+    /// for both of the normals below.
+    fn met_from_behind(&self, ray_direction: Vec3) -> bool {
+        self.two_sided && self.normal.dot(ray_direction) > 0.0
+    }
+
+    /// The geometric normal on the side the ray came from, for two-sided
+    /// surfaces; the outward normal for closed ones. Secondary rays start
+    /// off the surface along it, and a light below it is below the horizon.
+    pub fn facing_normal(&self, ray_direction: Vec3) -> Vec3 {
+        if self.met_from_behind(ray_direction) {
             -self.normal
         } else {
             self.normal
+        }
+    }
+
+    /// The shading normal on the side [`Hit::facing_normal`] chose: what
+    /// the BRDF and the cosines of the lights see. Without a bump map it
+    /// is the facing normal itself.
+    pub fn shading_normal(&self, ray_direction: Vec3) -> Vec3 {
+        if self.met_from_behind(ray_direction) {
+            -self.shading
+        } else {
+            self.shading
         }
     }
 }
@@ -154,6 +177,7 @@ impl Sphere {
             point,
             error,
             normal,
+            shading: normal,
             two_sided: false,
             material: self.material,
             object: 0,
@@ -193,6 +217,7 @@ impl Plane {
             point,
             error,
             normal: self.normal,
+            shading: self.normal,
             two_sided: true,
             material: self.material,
             object: 0,

@@ -34,6 +34,7 @@
 //! | [`job`] | the way in: a scene with its settings settled once, rendered and written |
 //! | [`scene`] | the JSON scene schema, parsing and validation (`docs/scene-schema.md`), the settings |
 //! | [`geometry`] | rays, spheres, two-sided planes, the kaleidoscope's mirror tube |
+//! | [`bump`] | an object's bump map: the hit's shading normal bent, its geometry untouched |
 //! | [`camera`] | the course's pinhole and the look-at camera unprojected through the inverse view-projection |
 //! | [`filter`] | the pixel filter: stratified, jittered rays over the pixel (box) or its centre |
 //! | [`spawn`] | where secondary rays start: the hit's error bound, or the course's fixed epsilon |
@@ -59,6 +60,7 @@
 #![warn(missing_docs)]
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
+pub mod bump;
 pub mod camera;
 pub mod chains;
 pub mod filter;

@@ -370,9 +370,10 @@ fn each_refusal_carries_its_field_and_kind() {
     }
 }
 
-/// `scene::COURSE_SCENES` names every scene file in `crates/tracer/scenes/`
-/// and nothing else, so a scene added or removed there is seen by every
-/// test, bench and example that walks the list.
+/// `scene::COURSE_SCENES` and `scene::TECHNIQUE_SCENES` name every scene
+/// file in `crates/tracer/scenes/` and nothing else, so a scene added or
+/// removed there is seen by every test, bench and example that walks the
+/// lists.
 #[test]
 fn the_course_scene_list_is_the_scene_folder() {
     let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes");
@@ -384,7 +385,11 @@ fn the_course_scene_list_is_the_scene_folder() {
         })
         .collect();
     on_disk.sort();
-    let mut listed: Vec<String> = tracer::scene::COURSE_SCENES.map(String::from).to_vec();
+    let mut listed: Vec<String> = tracer::scene::COURSE_SCENES
+        .iter()
+        .chain(&tracer::scene::TECHNIQUE_SCENES)
+        .map(|s| String::from(*s))
+        .collect();
     listed.sort();
     assert_eq!(on_disk, listed);
 }

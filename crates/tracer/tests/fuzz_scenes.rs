@@ -1,6 +1,6 @@
 //! The fuzz target of scene files: the course scenes mutated as JSON
 //! (values replaced by hostile ones, fields removed, renamed or added,
-//! values wrapped in arrays) and then as bytes (flipped, inserted, cut,
+//! values wrapped in arrays, bump maps given to objects) and then as bytes (flipped, inserted, cut,
 //! a scene appended, a byte-order mark), read through `scene::parse_bytes`
 //! and, when accepted, rendered at 4 × 3 by each integrator (the photon
 //! map with 2 passes of 64 photons). The promises checked on every
@@ -78,6 +78,9 @@ enum Edit {
     /// `render.ray_offset` set to a choice that carries a value (`fixed`,
     /// `scaled`), the value hostile: the renders must stay finite.
     RayOffset(&'static str, f64),
+    /// `objects[i].bump` set to a bump map, its kind or numbers often
+    /// hostile: the bent normals must keep the renders finite.
+    Bump(usize, Value),
 }
 
 /// One change to the bytes of a file.
@@ -164,6 +167,24 @@ fn hostile_value() -> impl Strategy<Value = Value> {
     })
 }
 
+/// The bump maps a hostile file gives an object: each kind with hostile
+/// numbers, a gentle sine (so that some are accepted and rendered), and
+/// any value at all.
+fn bump() -> impl Strategy<Value = Value> {
+    prop_oneof![
+        1 => Just(serde_json::json!({ "type": "flat" })),
+        2 => (hostile_number(), hostile_number())
+            .prop_map(|(du, dv)| serde_json::json!({ "type": "slope", "du": du, "dv": dv })),
+        2 => (hostile_number(), hostile_number()).prop_map(|(amplitude, period)| {
+            serde_json::json!({ "type": "sine", "amplitude": amplitude, "period": period })
+        }),
+        2 => (-0.1..0.1f64, 0.004..1.0f64).prop_map(|(amplitude, period)| {
+            serde_json::json!({ "type": "sine", "amplitude": amplitude, "period": period })
+        }),
+        1 => hostile_value(),
+    ]
+}
+
 fn edit() -> impl Strategy<Value = Edit> {
     let field = prop_oneof![
         Just("type".to_owned()),
@@ -181,6 +202,7 @@ fn edit() -> impl Strategy<Value = Edit> {
         1 => any::<usize>().prop_map(Edit::WrapInArray),
         1 => (prop_oneof![Just("fixed"), Just("scaled")], hostile_number())
             .prop_map(|(kind, x)| Edit::RayOffset(kind, x)),
+        2 => (any::<usize>(), bump()).prop_map(|(i, b)| Edit::Bump(i, b)),
     ]
 }
 
@@ -292,6 +314,14 @@ fn apply(value: &mut Value, edit: &Edit) {
                 *slot = Value::Array(vec![slot.take()]);
             }
         }
+        Edit::Bump(i, bump) => {
+            if let Some(Value::Array(objects)) = value.get_mut("objects") {
+                let n = objects.len();
+                if let Some(Value::Object(object)) = objects.get_mut(i % n.max(1)) {
+                    object.insert("bump".into(), bump.clone());
+                }
+            }
+        }
         Edit::RayOffset(kind, x) => {
             if let Some(render) = value.get_mut("render").and_then(Value::as_object_mut) {
                 let offset = serde_json::Number::from_f64(*x).map_or(Value::Null, Value::Number);
@@ -349,6 +379,8 @@ struct Coverage {
     kinds: BTreeMap<String, usize>,
     fields: BTreeMap<&'static str, usize>,
     accepted: usize,
+    /// Accepted with a bump map on some object.
+    bumped: usize,
     rendered: usize,
     not_finite: usize,
 }
@@ -386,6 +418,7 @@ fn check(bytes: &[u8], coverage: &Mutex<Coverage>) -> Result<(), String> {
         Ok(scene) => scene,
     };
     coverage.accepted += 1;
+    coverage.bumped += usize::from(scene.bumps.iter().any(Option::is_some));
     accepted_is_the_schema(bytes)?;
     // Each integrator under its default pixel filter, and Whitted under the
     // box filter too (its jittered rays meet what the centre's do not).
@@ -484,8 +517,8 @@ fn hostile_scene_files_keep_the_readers_promises() {
         start.elapsed().as_secs_f64()
     );
     println!(
-        "accepted {}, renders finite {}, renders refused as not finite {}",
-        c.accepted, c.rendered, c.not_finite
+        "accepted {} ({} with a bump map), renders finite {}, renders refused as not finite {}",
+        c.accepted, c.bumped, c.rendered, c.not_finite
     );
     println!("error kinds reached: {:?}", c.kinds);
     println!(
@@ -495,8 +528,9 @@ fn hostile_scene_files_keep_the_readers_promises() {
         c.fields
     );
     assert!(
-        c.accepted > 0 && c.kinds.len() >= 8,
-        "a timid generator: {:?}",
+        c.accepted > 0 && c.bumped > 0 && c.kinds.len() >= 8,
+        "a timid generator: {} bumped, {:?}",
+        c.bumped,
         c.kinds
     );
 }

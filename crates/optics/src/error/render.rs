@@ -3,6 +3,7 @@
 //! own (the JSON path of a scene error), or `--output` for an image.
 
 use radiometry::domain::DomainError;
+use techniques::bump::FieldError;
 use tracer::output::OutputError;
 use tracer::scene::ErrorKind as Scene;
 
@@ -32,6 +33,10 @@ pub fn scene_name(kind: &Scene) -> &'static str {
         Scene::TooExpensive { .. } => "scene.too_expensive",
         Scene::DielectricWithoutInside => "scene.dielectric_without_inside",
         Scene::CourseHasNoRefraction => "scene.course_has_no_refraction",
+        Scene::Bump(FieldError::NotFinite { .. }) => "scene.bump.not_finite",
+        Scene::Bump(FieldError::PeriodTooShort { .. }) => "scene.bump.period_too_short",
+        Scene::Bump(FieldError::TooSteep { .. }) => "scene.bump.too_steep",
+        Scene::BumpOnSmoothSurface => "scene.bump_on_smooth_surface",
     }
 }
 

@@ -3,6 +3,7 @@
 
 use std::path::Path;
 
+use techniques::bump::{FieldError, MAX_SLOPE, MIN_PERIOD};
 use tracer::output::OutputError;
 use tracer::scene::error::JsonType;
 use tracer::scene::{ErrorKind as Scene, SceneError, MAX_PIXELS, SCHEMA_VERSION};
@@ -87,6 +88,20 @@ pub(super) fn scene_kind_hu(kind: &Scene) -> String {
         Scene::CourseHasNoRefraction => "a kurzus árnyalójában nincs fénytörés; a \
                                          dielektrikumokat a --integrator whitted vagy path \
                                          kapcsolóval kell renderelni"
+            .to_owned(),
+        Scene::Bump(FieldError::NotFinite { value, .. }) => {
+            format!("véges számnak kell lennie, kapott érték: {value}")
+        }
+        Scene::Bump(FieldError::PeriodTooShort { period }) => format!(
+            "legalább {MIN_PERIOD} (16 véges differencia lépés) kell legyen, kapott érték: \
+             {period}"
+        ),
+        Scene::Bump(FieldError::TooSteep { slope, .. }) => {
+            format!("{slope:e} meredekséget ad, többet a megengedett {MAX_SLOPE:e} értéknél")
+        }
+        Scene::BumpOnSmoothSurface => "a felületi egyenetlenség leképezése csak érdes és \
+                                       megvilágítatlan anyagok árnyalását hajlítja, a \
+                                       fémekét és a dielektrikumokét nem"
             .to_owned(),
     }
 }

@@ -49,11 +49,15 @@ impl Material {
 impl Tracer<'_> {
     fn occluded(&self, ray: &Ray, counts: &mut RayCounts) -> bool {
         counts.shadow += 1;
-        self.intersect(ray).is_some()
+        self.intersect_surface(ray).is_some()
     }
 
     /// Reflected radiance from the delta lights at a rough surface:
     /// `Σ f_r(wi, wo) E(wi)`, with shadow rays stopped at point lights.
+    /// `n` is the shading normal, which the BRDF and the light's cosine
+    /// see; a light below the geometric horizon is dark whatever `n` says
+    /// (a bump map's bent normal may lean towards it), and shadow rays start
+    /// off the geometric surface.
     pub(crate) fn direct(
         &self,
         hit: &Hit,
@@ -62,6 +66,7 @@ impl Tracer<'_> {
         material: &Material,
         counts: &mut RayCounts,
     ) -> Vec3 {
+        let side = hit.facing_normal(-wo);
         let mut sum = Vec3::ZERO;
         for (light, _) in self
             .scene
@@ -73,6 +78,9 @@ impl Tracer<'_> {
             let Some((wi, irradiance, stop_at)) = arrival(light, hit, n) else {
                 continue;
             };
+            if !(wi.dot(side) > 0.0) {
+                continue;
+            }
             if irradiance.max_element() <= 0.0 {
                 continue;
             }
@@ -81,7 +89,7 @@ impl Tracer<'_> {
                 continue;
             }
             if self.machinery.shadow_rays {
-                let origin = spawn::origin(hit, n, self.settings.ray_offset);
+                let origin = spawn::origin(hit, side, self.settings.ray_offset);
                 let mut shadow = Ray::new(origin, wi);
                 if let Some(position) = stop_at {
                     // Aimed at the light from the moved origin, and stopped there.

@@ -151,8 +151,20 @@ impl<'a> Tracer<'a> {
 
 impl Tracer<'_> {
     /// The nearest hit along `ray`, robustly: the stable sphere roots,
-    /// planes and the tube seen from both sides.
+    /// planes and the tube seen from both sides; its shading normal bent by
+    /// the object's bump map, if it has one ([`crate::bump`]).
     pub fn intersect(&self, ray: &Ray) -> Option<Hit> {
+        let mut hit = self.intersect_surface(ray)?;
+        let object = hit.object as usize;
+        if let Some(Some(field)) = self.scene.bumps.get(object) {
+            hit.shading = crate::bump::shading_normal(&self.scene.objects[object], field, &hit);
+        }
+        Some(hit)
+    }
+
+    /// The nearest hit along `ray` on the smooth surfaces, its shading
+    /// normal the geometric one: all that a shadow ray asks.
+    pub(crate) fn intersect_surface(&self, ray: &Ray) -> Option<Hit> {
         self.nearest(ray, |object, bounded| match object {
             Object::Sphere(s) => s.intersect(bounded, 0.0, s.roots(bounded)),
             Object::Plane(p) => p.intersect(bounded, 0.0),

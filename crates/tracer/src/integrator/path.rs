@@ -47,10 +47,17 @@ impl Tracer<'_> {
                     // Cosine-weighted hemisphere sampling: pdf = cos θ / π,
                     // so the weight f_r cos θ / pdf is π f_r.
                     let wi = cosine_sample(n, rng.next_f32(), rng.next_f32());
+                    // About a bump map's bent normal the hemisphere may dip
+                    // below the surface: that light is lost, as a bump map
+                    // loses it (without one, `wi · n > 0` always).
+                    let side = hit.facing_normal(ray.direction);
+                    if !(wi.dot(side) > 0.0) {
+                        return sum;
+                    }
                     let f = material.brdf(n, wi, wo);
                     beta *= f * std::f32::consts::PI;
                     (
-                        Ray::new(spawn::origin(&hit, n, self.settings.ray_offset), wi),
+                        Ray::new(spawn::origin(&hit, side, self.settings.ray_offset), wi),
                         Bounce::Diffuse,
                     )
                 }

@@ -45,7 +45,7 @@ impl Material {
     pub fn surface(&self, hit: &Hit) -> Surface {
         match *self {
             Material::Flat { radiance } => Surface::Shows(radiance),
-            Material::NormalColour => Surface::Shows(hit.normal * 0.5 + 0.5),
+            Material::NormalColour => Surface::Shows(hit.shading * 0.5 + 0.5),
             Material::CourseRough { .. } | Material::Lambert { .. } => Surface::Rough,
             Material::Conductor { .. } | Material::Dielectric { .. } => Surface::Smooth,
         }

@@ -6,6 +6,7 @@
 use std::fmt;
 
 use radiometry::domain::DomainError;
+use techniques::bump::FieldError;
 
 use super::{MAX_PIXELS, SCHEMA_VERSION};
 
@@ -132,6 +133,12 @@ pub enum ErrorKind {
     DielectricWithoutInside,
     /// A dielectric under the course's shader, which has no refraction.
     CourseHasNoRefraction,
+    /// A bump map's parameter outside its domain (`techniques::bump`'s
+    /// own kinds; the error names the parameter's field).
+    Bump(FieldError),
+    /// A bump map on a mirror or glass, whose lobes follow the geometric
+    /// normal here.
+    BumpOnSmoothSurface,
 }
 
 /// The types of JSON values, as the schema and the file have them.
@@ -293,6 +300,11 @@ impl fmt::Display for ErrorKind {
             ErrorKind::CourseHasNoRefraction => f.write_str(
                 "the course's shader has no refraction; render dielectrics with \
                  --integrator whitted or path",
+            ),
+            ErrorKind::Bump(error) => write!(f, "{error}"),
+            ErrorKind::BumpOnSmoothSurface => f.write_str(
+                "a bump map bends the shading of rough and unlit materials only, \
+                 not of a conductor or dielectric",
             ),
         }
     }

@@ -104,9 +104,10 @@ fn json_path(path: &serde_path_to_error::Path) -> String {
 }
 
 /// Rewrites each `{"type": "sphere", ...}` as `{"sphere": {...}}`, serde's
-/// external tagging. Serde's internally tagged enums buffer their content
-/// and lose the path of an error inside it; externally tagged ones keep it.
-/// Returns the paths retagged, where an unknown kind is the `"type"`'s.
+/// external tagging, and likewise an object's `"bump"`. Serde's internally
+/// tagged enums buffer their content and lose the path of an error inside
+/// it; externally tagged ones keep it. Returns the paths retagged, where an
+/// unknown kind is the `"type"`'s.
 fn retag(scene: &mut Value) -> Result<Vec<String>, SceneError> {
     let Some(top) = scene.as_object_mut() else {
         return Ok(Vec::new()); // serde reports the wrong type with its path
@@ -130,29 +131,52 @@ fn retag(scene: &mut Value) -> Result<Vec<String>, SceneError> {
     }
     let mut tagged = Vec::new();
     for (path, value) in places {
-        let Value::Object(fields) = value else {
+        let Some(body) = retag_one(&path, value)? else {
             continue; // serde reports the wrong type with its path
         };
         tagged.push(path.clone());
-        let kind = match fields.remove("type") {
-            Some(Value::String(kind)) => kind,
-            Some(other) => {
-                return Err(SceneError::new(
-                    format!("{path}.type"),
-                    ErrorKind::TypeNotString {
-                        got: other.to_string(),
-                    },
-                ))
+        if path.starts_with("objects") {
+            if let Some(bump) = body.get_mut("bump") {
+                let bump_path = format!("{path}.bump");
+                if retag_one(&bump_path, bump)?.is_some() {
+                    tagged.push(bump_path);
+                }
             }
-            None => {
-                return Err(SceneError::new(
-                    format!("{path}.type"),
-                    ErrorKind::TypeMissing,
-                ))
-            }
-        };
-        let body = Value::Object(std::mem::take(fields));
-        *value = Value::Object(serde_json::Map::from_iter([(kind, body)]));
+        }
     }
     Ok(tagged)
+}
+
+/// Rewrites one `{"type": kind, ...}` at `path` as `{kind: {...}}` and
+/// hands back the body; `None` for a value that is not an object.
+fn retag_one<'v>(
+    path: &str,
+    value: &'v mut Value,
+) -> Result<Option<&'v mut serde_json::Map<String, Value>>, SceneError> {
+    let Value::Object(fields) = value else {
+        return Ok(None);
+    };
+    let kind = match fields.remove("type") {
+        Some(Value::String(kind)) => kind,
+        Some(other) => {
+            return Err(SceneError::new(
+                format!("{path}.type"),
+                ErrorKind::TypeNotString {
+                    got: other.to_string(),
+                },
+            ))
+        }
+        None => {
+            return Err(SceneError::new(
+                format!("{path}.type"),
+                ErrorKind::TypeMissing,
+            ))
+        }
+    };
+    let body = Value::Object(std::mem::take(fields));
+    *value = Value::Object(serde_json::Map::from_iter([(kind, body)]));
+    Ok(value
+        .as_object_mut()
+        .and_then(|m| m.values_mut().next())
+        .and_then(Value::as_object_mut))
 }

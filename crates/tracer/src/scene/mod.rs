@@ -63,6 +63,11 @@ pub const COURSE_SCENES: [&str; 11] = [
     "inside_water",
 ];
 
+/// The scenes that ship beside the course's to show a technique of `001`
+/// (`docs/techniques.md`): rendered for the documents and read by the
+/// tests, but not among the [`COURSE_SCENES`] the harness cross-checks.
+pub const TECHNIQUE_SCENES: [&str; 1] = ["bump_sphere"];
+
 /// The largest image side accepted, in pixels. 16384 is the largest texture
 /// side common GPUs allow and four times a 4K display; a larger image is
 /// almost certainly a typo, and 16384² RGB floats are already 3 GiB.

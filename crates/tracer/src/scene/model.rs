@@ -2,6 +2,8 @@
 
 use glam::Vec3;
 
+use techniques::bump::HeightField;
+
 use super::Settings;
 use crate::camera::Camera;
 use crate::geometry::Object;
@@ -25,6 +27,9 @@ pub struct Scene {
     pub material_names: Vec<String>,
     /// The objects.
     pub objects: Vec<Object>,
+    /// Each object's bump map, parallel to `objects`: `None` where the
+    /// geometric normal shades (see [`crate::bump`]).
+    pub bumps: Vec<Option<HeightField>>,
     /// The lights.
     pub lights: Vec<Light>,
     /// The scene's own settings, settled over the defaults (a

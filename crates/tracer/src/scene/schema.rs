@@ -128,6 +128,10 @@ pub enum ObjectSpec {
         radius: f64,
         /// Material name.
         material: String,
+        /// A bump map over the sphere's `(φ / 2π, θ / π)`: it bends the
+        /// shading normal only.
+        #[serde(default)]
+        bump: Option<BumpSpec>,
     },
     /// An infinite plane, visible and reflective from both sides.
     Plane {
@@ -137,6 +141,10 @@ pub enum ObjectSpec {
         normal: [f64; 3],
         /// Material name.
         material: String,
+        /// A bump map over the plane's `(u, v)`, metres along its tangents:
+        /// it bends the shading normal only.
+        #[serde(default)]
+        bump: Option<BumpSpec>,
     },
     /// The homework's kaleidoscope: a regular-polygon tube of mirrors,
     /// infinite along its axis.
@@ -151,6 +159,30 @@ pub enum ObjectSpec {
         radius: f64,
         /// Material name.
         material: String,
+    },
+}
+
+/// A bump map's height field, as written (`techniques::bump::HeightField`):
+/// heights in metres over the object's `(u, v)`.
+#[derive(Clone, Copy, Debug, Deserialize)]
+#[serde(rename_all = "snake_case", deny_unknown_fields)]
+pub enum BumpSpec {
+    /// No height: the object as it is.
+    Flat {},
+    /// `h = du · u + dv · v`: a constant tilt.
+    Slope {
+        /// `∂h/∂u`, m per unit of `u`, `|du| ≤ 1e6`.
+        du: f64,
+        /// `∂h/∂v`, m per unit of `v`, `|dv| ≤ 1e6`.
+        dv: f64,
+    },
+    /// `h = amplitude · sin(2π u / period) · sin(2π v / period)`.
+    Sine {
+        /// Height of a bump, m.
+        amplitude: f64,
+        /// Period in `u` and `v`, at least 1/256; `2π |amplitude| / period
+        /// ≤ 1e6`.
+        period: f64,
     },
 }
 

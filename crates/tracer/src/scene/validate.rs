@@ -7,7 +7,9 @@ use glam::{DVec3, Vec3};
 use radiometry::domain::{self, DomainError};
 use radiometry::fresnel;
 
-use super::schema::{CameraSpec, LightSpec, MaterialSpec, ObjectSpec, SceneFile};
+use techniques::bump::HeightField;
+
+use super::schema::{BumpSpec, CameraSpec, LightSpec, MaterialSpec, ObjectSpec, SceneFile};
 use super::{
     ErrorKind, Light, Material, Scene, SceneError, Settings, MAX_IMAGE_SIDE, MAX_PIXELS,
     SCHEMA_VERSION,
@@ -121,14 +123,18 @@ impl SceneFile {
             materials.push(validate_material(&format!("materials.{name}"), spec)?);
             material_names.push(name.clone());
         }
-        let objects = self
+        let (objects, bumps) = self
             .objects
             .iter()
             .enumerate()
             .map(|(i, spec)| {
-                validate_object(&format!("objects[{i}]"), spec, &material_names, &materials)
+                let p = format!("objects[{i}]");
+                let object = validate_object(&p, spec, &material_names, &materials)?;
+                let material = &materials[object.material() as usize];
+                let bump = validate_bump(&p, spec, material)?;
+                Ok((object, bump))
             })
-            .collect::<Result<_, _>>()?;
+            .collect::<Result<(Vec<_>, Vec<_>), SceneError>>()?;
         let lights = self
             .lights
             .iter()
@@ -145,6 +151,7 @@ impl SceneFile {
             materials,
             material_names,
             objects,
+            bumps,
             lights,
             settings,
         };
@@ -234,6 +241,7 @@ fn validate_object(
             center,
             radius,
             material,
+            ..
         } => Object::Sphere(Sphere {
             center: finite3(&format!("{p}.center"), *center)?,
             radius: positive(&format!("{p}.radius"), *radius)?,
@@ -243,6 +251,7 @@ fn validate_object(
             point,
             normal,
             material,
+            ..
         } => {
             let material = not_dielectric(material_index(material)?)?;
             Object::Plane(Plane {
@@ -269,6 +278,41 @@ fn validate_object(
             ))
         }
     })
+}
+
+/// An object's bump map, `None` without one: its height field's
+/// parameters in their domains (`techniques::bump`), on a rough or unlit
+/// material. A mirror's or a glass's side and lobes are decided by the
+/// normal they are given (`scatter`), which a bent normal could turn
+/// against the surface's own, so a bump on one is refused.
+fn validate_bump(
+    p: &str,
+    spec: &ObjectSpec,
+    material: &Material,
+) -> Result<Option<HeightField>, SceneError> {
+    let (ObjectSpec::Sphere {
+        bump: Some(bump), ..
+    }
+    | ObjectSpec::Plane {
+        bump: Some(bump), ..
+    }) = spec
+    else {
+        return Ok(None);
+    };
+    let path = format!("{p}.bump");
+    let field = match *bump {
+        BumpSpec::Flat {} => Ok(HeightField::Flat),
+        BumpSpec::Slope { du, dv } => HeightField::slope(du, dv),
+        BumpSpec::Sine { amplitude, period } => HeightField::sine(amplitude, period),
+    }
+    .map_err(|error| {
+        let field = format!("{path}.{}", error.parameter().name());
+        SceneError::new(field, ErrorKind::Bump(error))
+    })?;
+    if material.is_specular() {
+        return Err(SceneError::new(path, ErrorKind::BumpOnSmoothSurface));
+    }
+    Ok(Some(field))
 }
 
 fn validate_light(p: &str, spec: &LightSpec) -> Result<Light, SceneError> {

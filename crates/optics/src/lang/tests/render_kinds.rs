@@ -4,6 +4,7 @@
 use super::{named, os_error};
 use crate::error::ErrorKind;
 use radiometry::domain::{DomainError, Expected};
+use techniques::bump::{FieldError, Parameter};
 use tracer::output::OutputError;
 use tracer::scene::{ErrorKind as Scene, SceneError};
 
@@ -33,30 +34,34 @@ pub fn scene_slot(kind: &Scene) -> usize {
         Scene::WrongShape { .. } => 20,
         Scene::RadianceOverflow { .. } => 21,
         Scene::TooExpensive { .. } => 22,
+        Scene::Bump(FieldError::NotFinite { .. }) => 23,
+        Scene::Bump(FieldError::PeriodTooShort { .. }) => 24,
+        Scene::Bump(FieldError::TooSteep { .. }) => 25,
+        Scene::BumpOnSmoothSurface => 26,
     }
 }
 
 /// The place of an output error's kind among the render slots.
 pub fn output_slot(error: &OutputError) -> usize {
     match error {
-        OutputError::Io { .. } => 23,
-        OutputError::NoDirectory { .. } => 24,
-        OutputError::PfmIsPng { .. } => 25,
-        OutputError::Png { .. } => 26,
-        OutputError::Unwritable { .. } => 27,
-        OutputError::NotARegularFile { .. } => 28,
-        OutputError::IsAnInput { .. } => 29,
+        OutputError::Io { .. } => 27,
+        OutputError::NoDirectory { .. } => 28,
+        OutputError::PfmIsPng { .. } => 29,
+        OutputError::Png { .. } => 30,
+        OutputError::Unwritable { .. } => 31,
+        OutputError::NotARegularFile { .. } => 32,
+        OutputError::IsAnInput { .. } => 33,
     }
 }
 
 /// The slot of the threads' failure.
-pub const THREADS: usize = 30;
+pub const THREADS: usize = 34;
 
 /// The slot of a pixel that left `f32`.
-pub const NOT_FINITE: usize = 31;
+pub const NOT_FINITE: usize = 35;
 
 /// How many render slots there are.
-pub const SLOTS: usize = 32;
+pub const SLOTS: usize = 36;
 
 /// A thread pool that cannot start: its spawner fails.
 pub fn thread_pool_error() -> rayon::ThreadPoolBuildError {
@@ -193,6 +198,28 @@ pub fn examples() -> Vec<(ErrorKind, Vec<String>)> {
             Scene::CourseHasNoRefraction,
             &["--integrator", "whitted", "path"],
         ),
+        scene(
+            "objects[0].bump.du",
+            Scene::Bump(FieldError::NotFinite {
+                parameter: Parameter::Du,
+                value: f64::INFINITY,
+            }),
+            &[],
+        ),
+        scene(
+            "objects[0].bump.period",
+            Scene::Bump(FieldError::PeriodTooShort { period: 0.001 }),
+            &["0.001"],
+        ),
+        scene(
+            "objects[0].bump.amplitude",
+            Scene::Bump(FieldError::TooSteep {
+                parameter: Parameter::Amplitude,
+                slope: 6.283e7,
+            }),
+            &["6.283e7"],
+        ),
+        scene("objects[0].bump", Scene::BumpOnSmoothSurface, &[]),
         output(
             OutputError::Io {
                 path: "out/a.png".into(),
