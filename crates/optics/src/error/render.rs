@@ -32,6 +32,8 @@ pub fn scene_name(kind: &Scene) -> &'static str {
         Scene::TooExpensive { .. } => "scene.too_expensive",
         Scene::DielectricWithoutInside => "scene.dielectric_without_inside",
         Scene::CourseHasNoRefraction => "scene.course_has_no_refraction",
+        Scene::EnvironmentImage { .. } => "scene.environment_image",
+        Scene::BackgroundWithEnvironment => "scene.background_with_environment",
     }
 }
 

@@ -33,6 +33,8 @@ pub fn scene_slot(kind: &Scene) -> usize {
         Scene::WrongShape { .. } => 20,
         Scene::RadianceOverflow { .. } => 21,
         Scene::TooExpensive { .. } => 22,
+        Scene::EnvironmentImage { .. } => 32,
+        Scene::BackgroundWithEnvironment => 33,
     }
 }
 
@@ -56,7 +58,7 @@ pub const THREADS: usize = 30;
 pub const NOT_FINITE: usize = 31;
 
 /// How many render slots there are.
-pub const SLOTS: usize = 32;
+pub const SLOTS: usize = 34;
 
 /// A thread pool that cannot start: its spawner fails.
 pub fn thread_pool_error() -> rayon::ThreadPoolBuildError {
@@ -188,6 +190,19 @@ pub fn examples() -> Vec<(ErrorKind, Vec<String>)> {
             &["gold", "glass"],
         ),
         scene("objects[2].material", Scene::DielectricWithoutInside, &[]),
+        scene(
+            "environment.faces[1]",
+            Scene::EnvironmentImage {
+                file: "sky/nx.png".into(),
+                problem: tracer::scene::error::ImageProblem::Size {
+                    width: 64,
+                    height: 32,
+                    expected: tracer::scene::error::SizeRule::SideOfFirstFace(32),
+                },
+            },
+            &["sky/nx.png"],
+        ),
+        scene("background", Scene::BackgroundWithEnvironment, &[]),
         scene(
             "materials.glass",
             Scene::CourseHasNoRefraction,
