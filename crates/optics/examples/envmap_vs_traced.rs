@@ -103,13 +103,29 @@ fn main() {
                 "| {mirrors} | {kind:?} | {:.4} | {:.3} | {:.2} | {:.4} |",
                 e.rel_rmse, e.delta_e_mean, e.delta_e_p99, e.flip_mean
             );
-            if mirrors == "two" {
+            if let Some(split) = c.split {
+                for (part, e, n) in [
+                    (
+                        "where it shows the other",
+                        split.seeing_a_mirror,
+                        split.seeing_a_mirror_pixels,
+                    ),
+                    ("elsewhere", split.elsewhere, split.elsewhere_pixels),
+                ] {
+                    println!(
+                        "| two, {part} ({n} px) | {kind:?} | {:.4} | {:.3} | {:.2} | {:.4} |",
+                        e.rel_rmse, e.delta_e_mean, e.delta_e_p99, e.flip_mean
+                    );
+                }
                 strip(
                     &c,
                     &out.join(format!("envmap_two_spheres_{kind:?}.png").to_lowercase()),
                 );
             }
-            pairs.push(json!({ "mirrors": mirrors, "surroundings": kind, "distance": SELF_REFLECTION_D, "errors": e }));
+            pairs.push(json!({
+                "mirrors": mirrors, "surroundings": kind, "distance": SELF_REFLECTION_D,
+                "errors": e, "pixels": c.mask.count(), "split": c.split,
+            }));
         }
     }
     let record = json!({

@@ -34,6 +34,8 @@ use glam::Vec3;
 use serde::Serialize;
 use serde_json::{json, Value};
 use tracer::environment::{capture_cube, Environment};
+use tracer::geometry::Ray;
+use tracer::integrator::{Machinery, Tracer};
 use tracer::job::RenderJob;
 use tracer::render::Image;
 use tracer::scene::{self, Scene};
@@ -62,6 +64,23 @@ pub struct Comparison {
     pub mask: Mask,
     /// (a) against (b) over the mask.
     pub errors: Errors,
+    /// Where mirrors see each other: (a) against (b) over the mirror
+    /// pixels whose reflected ray meets another mirror, and over the rest,
+    /// with their pixel counts; `None` for a lone mirror.
+    pub split: Option<MirrorSplit>,
+}
+
+/// The errors of two mirrors, where each shows the other and elsewhere.
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct MirrorSplit {
+    /// Over the pixels whose reflected ray meets the other mirror.
+    pub seeing_a_mirror: Errors,
+    /// Their count.
+    pub seeing_a_mirror_pixels: usize,
+    /// Over the other mirror pixels.
+    pub elsewhere: Errors,
+    /// Their count.
+    pub elsewhere_pixels: usize,
 }
 
 /// The mirror: a smooth conductor reflecting about 0.9 in each channel at
@@ -174,17 +193,62 @@ fn compare(scene: &Scene, centres: &[[f64; 3]], cube: u32) -> Comparison {
     let mirrors = centres.len() as u32;
     let on_mirror: Vec<Option<u32>> = hits.iter().map(|h| h.filter(|&i| i < mirrors)).collect();
     let mask = Mask::from_hits(&on_mirror);
-    let errors = errors(
-        std::slice::from_ref(&mapped),
-        &Truth::new(traced.clone(), 0.0, &mask),
-        &mask,
-    );
+    let measure = |mask: &Mask| {
+        errors(
+            std::slice::from_ref(&mapped),
+            &Truth::new(traced.clone(), 0.0, mask),
+            mask,
+        )
+    };
+    let errors = measure(&mask);
+    let split = (centres.len() > 1).then(|| {
+        let sees = sees_a_mirror(scene, mirrors, &on_mirror);
+        let (one, other): (Vec<_>, Vec<_>) = on_mirror
+            .iter()
+            .zip(&sees)
+            .map(|(hit, &sees)| (hit.filter(|_| sees), hit.filter(|_| !sees)))
+            .unzip();
+        let (seeing, elsewhere) = (Mask::from_hits(&one), Mask::from_hits(&other));
+        MirrorSplit {
+            seeing_a_mirror: measure(&seeing),
+            seeing_a_mirror_pixels: seeing.count(),
+            elsewhere: measure(&elsewhere),
+            elsewhere_pixels: elsewhere.count(),
+        }
+    });
     Comparison {
         traced,
         mapped,
         mask,
         errors,
+        split,
     }
+}
+
+/// Whether each pixel's primary ray, reflected at the mirror it meets
+/// (`on_mirror`), meets one of the first `mirrors` objects next.
+fn sees_a_mirror(scene: &Scene, mirrors: u32, on_mirror: &[Option<u32>]) -> Vec<bool> {
+    let tracer = Tracer::new(
+        scene,
+        scene.settings,
+        Machinery::everything(scene, &scene.settings),
+    );
+    let width = scene.width as usize;
+    on_mirror
+        .iter()
+        .enumerate()
+        .map(|(i, hit)| {
+            hit.is_some() && {
+                let ray = scene.camera.ray((i % width) as u32, (i / width) as u32);
+                tracer.intersect(&ray).is_some_and(|h| {
+                    let r = radiometry::specular::reflect(-ray.direction, h.normal);
+                    // A classification, not a render: any offset off the surface will do.
+                    let next = Ray::new(h.point + h.normal * 1e-3, r);
+                    tracer.intersect(&next).is_some_and(|n| n.object < mirrors)
+                })
+            }
+        })
+        .collect()
 }
 
 /// One mirror sphere of radius 1 at the origin among the surroundings at

@@ -46,14 +46,14 @@ pub(super) fn validate(spec: &EnvironmentSpec, dir: &Path) -> Result<Arc<Environ
             }
         }
         EnvironmentSpec::Cube { faces, scale } => {
-            let mut read = Vec::with_capacity(6);
+            let mut read: Vec<Texels> = Vec::with_capacity(6);
             for (k, file) in faces.iter().enumerate() {
                 let field = format!("environment.faces[{k}]");
                 let texels = read_png(&field, &dir.join(file))?;
                 let (width, height) = (texels.width(), texels.height());
                 let rule = match read.first() {
                     _ if width != height => Some(SizeRule::Square),
-                    Some(first) if Texels::width(first) != width => {
+                    Some(first) if first.width() != width => {
                         Some(SizeRule::SideOfFirstFace(first.width()))
                     }
                     _ => None,
