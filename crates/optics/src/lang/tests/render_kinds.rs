@@ -202,7 +202,11 @@ pub fn examples() -> Vec<(ErrorKind, Vec<String>)> {
             },
             &["sky/nx.png"],
         ),
-        scene("background", Scene::BackgroundWithEnvironment, &[]),
+        scene(
+            "background",
+            Scene::BackgroundWithEnvironment,
+            &["environment"],
+        ),
         scene(
             "materials.glass",
             Scene::CourseHasNoRefraction,
