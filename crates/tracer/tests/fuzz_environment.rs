@@ -15,15 +15,26 @@
 //! test-only fault `EnvironmentSizeUnchecked` (`scene::faults`) accepts
 //! images of any size, and the target must then fail.
 
+use std::collections::BTreeMap;
 use std::path::Path;
+use std::sync::Mutex;
 
 use image::ImageEncoder;
 use proptest::prelude::*;
 use proptest::test_runner::{Config, RngAlgorithm, TestCaseError, TestError, TestRng, TestRunner};
 use serde_json::json;
 use tracer::job::{Overrides, RenderJob};
+use tracer::scene::error::ImageProblem;
 use tracer::scene::faults::{self, Fault};
 use tracer::scene::{self, ErrorKind, IntegratorKind, RenderSpec};
+
+/// What the cases reached: each problem (and size rule), and how many
+/// scenes were accepted and rendered.
+type Coverage = Mutex<BTreeMap<String, usize>>;
+
+fn reached(coverage: &Coverage, what: String) {
+    *coverage.lock().unwrap().entry(what).or_default() += 1;
+}
 
 /// The sizes a hostile file has.
 const SIZES: [(u32, u32); 10] = [
@@ -174,7 +185,7 @@ fn scene_file(case: &Case, dir: &Path) -> Vec<u8> {
     .into_bytes()
 }
 
-fn check(case: &Case) -> Result<(), TestCaseError> {
+fn check(case: &Case, coverage: &Coverage) -> Result<(), TestCaseError> {
     let dir = tempfile::tempdir().unwrap();
     let file = scene_file(case, dir.path());
     let scene = match scene::parse_bytes_in(&file, dir.path()) {
@@ -183,10 +194,16 @@ fn check(case: &Case) -> Result<(), TestCaseError> {
             let named = field == "environment.image"
                 || (0..6).any(|k| field == format!("environment.faces[{k}]"));
             prop_assert!(named, "{error:?} names {field:?}");
-            prop_assert!(
-                matches!(error.kind(), ErrorKind::EnvironmentImage { .. }),
-                "{error:?}"
-            );
+            let ErrorKind::EnvironmentImage { problem, .. } = error.kind() else {
+                return Err(TestCaseError::fail(format!("{error:?}")));
+            };
+            let what = match problem {
+                ImageProblem::Read(_) => "read".to_owned(),
+                ImageProblem::Decode(_) => "decode".to_owned(),
+                ImageProblem::Pixels(_) => "pixels".to_owned(),
+                ImageProblem::Size { expected, .. } => format!("size {expected:?}"),
+            };
+            reached(coverage, what);
             return Ok(());
         }
         Ok(scene) => scene,
@@ -204,6 +221,7 @@ fn check(case: &Case) -> Result<(), TestCaseError> {
         let image = job.render(Some(1), &|_| {}).expect("rendered").image;
         prop_assert!(image.pixels.iter().all(|p| p.is_finite()), "not finite");
     }
+    reached(coverage, "accepted and rendered".to_owned());
     Ok(())
 }
 
@@ -214,7 +232,7 @@ fn cases() -> u32 {
         .unwrap_or(256)
 }
 
-fn run(cases: u32) -> Result<(), TestError<Case>> {
+fn run(cases: u32, coverage: &Coverage) -> Result<(), TestError<Case>> {
     let config = Config {
         cases,
         failure_persistence: None,
@@ -222,13 +240,28 @@ fn run(cases: u32) -> Result<(), TestError<Case>> {
         ..Config::default()
     };
     let rng = TestRng::deterministic_rng(RngAlgorithm::ChaCha);
-    TestRunner::new_with_rng(config, rng).run(&case(), |case| check(&case))
+    TestRunner::new_with_rng(config, rng).run(&case(), |case| check(&case, coverage))
 }
 
 #[test]
 fn hostile_environment_images_keep_the_readers_promises() {
-    if let Err(error) = run(cases()) {
+    let coverage = Coverage::default();
+    if let Err(error) = run(cases(), &coverage) {
         panic!("{error}");
+    }
+    let reached = coverage.into_inner().unwrap();
+    println!("environment fuzz: {} cases, reached {reached:?}", cases());
+    // Every refusal a hostile file can earn (a file always exists here,
+    // so never `read`), and acceptances rendered.
+    for what in [
+        "decode",
+        "pixels",
+        "size AtMost(8192)",
+        "size TwiceAsWideAsHigh",
+        "size Square",
+        "accepted and rendered",
+    ] {
+        assert!(reached.contains_key(what), "a timid generator: {reached:?}");
     }
 }
 
@@ -237,7 +270,8 @@ fn hostile_environment_images_keep_the_readers_promises() {
 /// texels: the target finds the panic.
 #[test]
 fn the_fuzz_target_finds_environment_sizes_unchecked() {
-    let found = faults::with(Fault::EnvironmentSizeUnchecked, || run(cases()));
+    let coverage = Coverage::default();
+    let found = faults::with(Fault::EnvironmentSizeUnchecked, || run(cases(), &coverage));
     match found {
         Err(TestError::Fail(reason, case)) => {
             assert!(reason.message().contains("index out of bounds"), "{reason}");
