@@ -11,7 +11,7 @@
 //! |---|---|---|
 //! | [`Environment::DirectionColour`] | `scale · (d + 1) / 2` along unit `d` | procedural, exact: for tests |
 //! | [`Environment::LatLong`] | a `2h × h` image, `u` across, `v` down | the slides' latitude–longitude map |
-//! | [`Environment::Cube`] | six square faces of one side, OpenGL's order | the slides' cube map; also what [`capture_cube`] makes |
+//! | [`Environment::Cube`] | six square faces of one side, OpenGL's order, from six images or one cross ([`CROSS`]) | the slides' cube map; also what [`capture_cube`] makes |
 //!
 //! **Texels.** Row 0 of an image is `v = 0` and column 0 is `u = 0` (the
 //! first row of a texture upload is `t = 0` in OpenGL). Texel `(i, j)` of
@@ -147,6 +147,34 @@ impl CubeMap {
     }
 }
 
+/// The horizontal cross: where each face of [`Face::ALL`] lies in a
+/// cube map given as one image four faces wide and three high, as
+/// `(column, row)` in faces, each face as is (its `u` across, its `v`
+/// down, as in its own file). The middle row is `−X, +Z, +X, −Z`, with `+Y`
+/// above `+Z` and `−Y` below it: with Table 8.19's orientations this is
+/// the one such cross that runs on across every edge where two faces
+/// touch (`tests::the_cross_runs_on_across_its_inner_edges`).
+pub const CROSS: [(u32, u32); 6] = [(2, 1), (0, 1), (1, 0), (1, 2), (1, 1), (3, 1)];
+
+/// The six faces cut from a cross image of faces of `side` texels, in
+/// [`Face::ALL`]'s order. The caller has checked that `cross` is
+/// `4 side × 3 side`.
+pub(crate) fn cut_cross(cross: &Texels, side: u32) -> Vec<Texels> {
+    CROSS
+        .iter()
+        .map(|&(column, row)| {
+            let texels = (0..side * side)
+                .map(|k| cross.get(column * side + k % side, row * side + k / side))
+                .collect();
+            Texels {
+                width: side,
+                height: side,
+                texels,
+            }
+        })
+        .collect()
+}
+
 /// The place of `face` in [`Face::ALL`].
 fn face_index(face: Face) -> usize {
     match face {
@@ -274,6 +302,38 @@ mod tests {
         assert_eq!(t.bilinear(0.0, 0.5 / 2.0, true), Vec3::new(1.5, 0.0, 1.0));
         // Clamped at the edge instead.
         assert_eq!(t.bilinear(0.0, 0.5 / 2.0, false), Vec3::new(0.0, 0.0, 1.0));
+    }
+
+    /// Where two faces of the cross touch, the directions on either side
+    /// of the edge are one (to 1e-15): the cross is the cube unfolded.
+    #[test]
+    fn the_cross_runs_on_across_its_inner_edges() {
+        let at = |column: u32, row: u32| {
+            let k = CROSS.iter().position(|&p| p == (column, row))?;
+            Some(Face::ALL[k])
+        };
+        let mut edges = 0;
+        for (k, &(column, row)) in CROSS.iter().enumerate() {
+            let face = Face::ALL[k];
+            for (right, below) in [(1, 0), (0, 1)] {
+                let Some(next) = at(column + right, row + below) else {
+                    continue;
+                };
+                edges += 1;
+                for t in [0.1, 0.5, 0.9] {
+                    let ((u0, v0), (u1, v1)) = if right == 1 {
+                        ((1.0, t), (0.0, t))
+                    } else {
+                        ((t, 1.0), (t, 0.0))
+                    };
+                    let a = CubeTexel::from_uv(face, u0, v0).unwrap().direction().get();
+                    let b = CubeTexel::from_uv(next, u1, v1).unwrap().direction().get();
+                    assert!((a - b).length() < 1e-15, "{face:?} | {next:?} at {t}");
+                }
+            }
+        }
+        // −X|+Z, +Z|+X, +X|−Z across; +Y over +Z, +Z over −Y.
+        assert_eq!(edges, 5);
     }
 
     #[test]

@@ -168,6 +168,97 @@ fn cube_faces_are_read_in_opengls_order() {
     }
 }
 
+/// The same six colours as one horizontal cross (`environment::CROSS`):
+/// each axis direction sees its own face's colour, exactly, and a cross
+/// whose texels hold the direction-colour sky of their own directions
+/// gives that sky back in every direction (to 0.02: 8-bit codes, 1/255
+/// of the range, and the filter at a face's edge, at 32 texels a side).
+#[test]
+fn a_cube_cross_is_cut_into_its_faces() {
+    let dir = tempfile::tempdir().unwrap();
+    let codes = [
+        [255, 0, 0],
+        [0, 255, 0],
+        [0, 0, 255],
+        [255, 255, 0],
+        [0, 255, 255],
+        [255, 0, 255],
+    ];
+    let side = 32u32;
+    let mut one = vec![0u8; (3 * 4 * side * 3 * side) as usize];
+    let mut sky = one.clone();
+    // The layout as docs/scene-schema.md draws it, written out here apart
+    // from `environment::CROSS`: +X, −X, +Y, −Y, +Z, −Z at (column, row).
+    let drawn = [(2, 1), (0, 1), (1, 0), (1, 2), (1, 1), (3, 1)];
+    for (k, &(column, row)) in drawn.iter().enumerate() {
+        for j in 0..side {
+            for i in 0..side {
+                let (x, y) = (column * side + i, row * side + j);
+                let at = (3 * (y * 4 * side + x)) as usize;
+                one[at..at + 3].copy_from_slice(&codes[k]);
+            }
+        }
+    }
+    for (k, &(column, row)) in tracer::environment::CROSS.iter().enumerate() {
+        for j in 0..side {
+            for i in 0..side {
+                let (x, y) = (column * side + i, row * side + j);
+                let at = (3 * (y * 4 * side + x)) as usize;
+                let (u, v) = (
+                    (i as f64 + 0.5) / side as f64,
+                    (j as f64 + 0.5) / side as f64,
+                );
+                let d = CubeTexel::from_uv(Face::ALL[k], u, v)
+                    .unwrap()
+                    .direction()
+                    .get();
+                let colour = (d + 1.0) / 2.0;
+                let code = |c: f64| (radiometry::colour::srgb_encode(c) * 255.0).round() as u8;
+                sky[at..at + 3].copy_from_slice(&colour.to_array().map(code));
+            }
+        }
+    }
+    let rgb = image::ExtendedColorType::Rgb8;
+    std::fs::write(
+        dir.path().join("one.png"),
+        png(4 * side, 3 * side, rgb, &one),
+    )
+    .unwrap();
+    std::fs::write(
+        dir.path().join("sky.png"),
+        png(4 * side, 3 * side, rgb, &sky),
+    )
+    .unwrap();
+    let whitted = settings(IntegratorKind::Whitted);
+    let scene = sky_scene(
+        json!({ "type": "cube_cross", "image": "one.png" }),
+        dir.path(),
+    )
+    .unwrap();
+    for (face, code) in Face::ALL.into_iter().zip(codes) {
+        let axis = CubeTexel::from_uv(face, 0.5, 0.5)
+            .unwrap()
+            .direction()
+            .get()
+            .as_vec3();
+        let got = radiance_along(&scene, &whitted, &Ray::new(Vec3::ZERO, axis));
+        assert_eq!(got, Vec3::from_array(code.map(linear)), "{face:?}");
+    }
+    let scene = sky_scene(
+        json!({ "type": "cube_cross", "image": "sky.png" }),
+        dir.path(),
+    )
+    .unwrap();
+    for d in directions() {
+        let got = radiance_along(&scene, &whitted, &Ray::new(Vec3::ZERO, d));
+        let expected = (d + Vec3::ONE) * 0.5;
+        assert!(
+            (got - expected).abs().max_element() < 0.02,
+            "{d}: {got} vs {expected}"
+        );
+    }
+}
+
 /// One case per line: the environment, the files in the directory, the
 /// field refused and what is wrong there.
 #[test]
@@ -194,6 +285,11 @@ fn environment_images_are_refused_by_field() {
     let size = |expected| move |p: &ImageProblem| matches!(p, ImageProblem::Size { expected: e, .. } if *e == expected);
     type Check = Box<dyn Fn(&ImageProblem) -> bool>;
     let cases: Vec<(Value, &str, Check)> = vec![
+        (
+            json!({ "type": "cube_cross", "image": "wide.png" }),
+            "environment.image",
+            Box::new(size(SizeRule::FourByThreeFaces)),
+        ),
         (
             json!({ "type": "lat_long", "image": "missing.png" }),
             "environment.image",

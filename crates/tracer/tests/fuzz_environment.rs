@@ -2,9 +2,9 @@
 //! of 1, past 8192, neither square nor twice as wide as high, cube faces
 //! of several sides) and pixel formats (grey, 16-bit, with alpha), then
 //! mutated byte by byte (overwritten, inserted, deleted, truncated), named
-//! by a lat-long or cube environment, read through `scene::parse_bytes_in`
-//! and, when accepted, rendered at 16 × 12 under a mirror sphere that
-//! reflects nearly every direction. The promises checked on every case:
+//! by a lat-long, cube or cube-cross environment, read through
+//! `scene::parse_bytes_in` and, when accepted, rendered at 16 × 12 under a
+//! mirror sphere that reflects nearly every direction. The promises checked on every case:
 //!
 //! - no panic;
 //! - a refusal names the field that gave the file (`environment.image`,
@@ -37,7 +37,7 @@ fn reached(coverage: &Coverage, what: String) {
 }
 
 /// The sizes a hostile file has.
-const SIZES: [(u32, u32); 10] = [
+const SIZES: [(u32, u32); 13] = [
     (1, 1),
     (2, 1),
     (2, 2),
@@ -46,6 +46,9 @@ const SIZES: [(u32, u32); 10] = [
     (8, 4),
     (3, 7),
     (16, 8),
+    (4, 3),
+    (8, 6),
+    (12, 8),
     (8193, 1),
     (1, 8193),
 ];
@@ -75,8 +78,19 @@ enum Mutation {
     Truncate(usize),
 }
 
-/// A case: a lat-long map (one picture) or a cube (six).
-type Case = (bool, Vec<Picture>);
+/// What a case's pictures are.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Map {
+    /// One lat-long picture.
+    LatLong,
+    /// Six cube faces.
+    Cube,
+    /// One cube cross.
+    Cross,
+}
+
+/// A case: the map and its pictures.
+type Case = (Map, Vec<Picture>);
 
 fn picture(mutated: bool) -> impl Strategy<Value = Picture> {
     let format = prop_oneof![
@@ -104,10 +118,11 @@ fn picture(mutated: bool) -> impl Strategy<Value = Picture> {
         })
 }
 
-/// A lat-long picture, or six faces: most often one good face repeated,
-/// some replaced by pictures of their own.
+/// A lat-long picture or a cross, or six faces: most often one good face
+/// repeated, some replaced by pictures of their own.
 fn case() -> impl Strategy<Value = Case> {
-    let lat_long = picture(true).prop_map(|p| (true, vec![p]));
+    let lat_long = picture(true).prop_map(|p| (Map::LatLong, vec![p]));
+    let cross = picture(true).prop_map(|p| (Map::Cross, vec![p]));
     let good_face = (prop::sample::select(vec![2usize, 3, 4]), Just(Format::Rgb8)).prop_map(
         |(size, format)| Picture {
             size,
@@ -121,9 +136,9 @@ fn case() -> impl Strategy<Value = Case> {
     )
         .prop_map(|(good, own)| {
             let faces = own.into_iter().map(|p| p.unwrap_or(good.clone())).collect();
-            (false, faces)
+            (Map::Cube, faces)
         });
-    prop_oneof![lat_long, cube]
+    prop_oneof![lat_long, cube, cross]
 }
 
 /// The bytes of `p`: encoded at its size and format, then mutated.
@@ -162,17 +177,17 @@ fn bytes_of(p: &Picture) -> Vec<u8> {
 
 /// The scene of a case, its pictures written into `dir`.
 fn scene_file(case: &Case, dir: &Path) -> Vec<u8> {
-    let (lat_long, pictures) = case;
+    let (map, pictures) = case;
     let mut names = Vec::new();
     for (k, p) in pictures.iter().enumerate() {
         let name = format!("{k}.png");
         std::fs::write(dir.join(&name), bytes_of(p)).unwrap();
         names.push(name);
     }
-    let environment = if *lat_long {
-        json!({ "type": "lat_long", "image": names[0] })
-    } else {
-        json!({ "type": "cube", "faces": names })
+    let environment = match map {
+        Map::LatLong => json!({ "type": "lat_long", "image": names[0] }),
+        Map::Cross => json!({ "type": "cube_cross", "image": names[0] }),
+        Map::Cube => json!({ "type": "cube", "faces": names }),
     };
     json!({
         "version": 1, "image": { "width": 16, "height": 12 },
@@ -259,6 +274,7 @@ fn hostile_environment_images_keep_the_readers_promises() {
         "size AtMost(8192)",
         "size TwiceAsWideAsHigh",
         "size Square",
+        "size FourByThreeFaces",
         "accepted and rendered",
     ] {
         assert!(reached.contains_key(what), "a timid generator: {reached:?}");

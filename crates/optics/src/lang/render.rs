@@ -115,6 +115,9 @@ fn image_problem_hu(problem: &ImageProblem) -> String {
                     "a szélességi–hosszúsági térkép kétszer olyan széles, mint magas".to_owned()
                 }
                 SizeRule::Square => "a kocka lapja négyzet alakú".to_owned(),
+                SizeRule::FourByThreeFaces => {
+                    "a kockakereszt négy négyzet alakú lap széles és három magas".to_owned()
+                }
                 SizeRule::SideOfFirstFace(side) => {
                     format!("a kocka minden lapjának oldala az első lapé, {side} képpont")
                 }

@@ -14,7 +14,7 @@ use super::error::{ImageProblem, SizeRule};
 use super::faults::{self, Fault};
 use super::schema::EnvironmentSpec;
 use super::{ErrorKind, SceneError};
-use crate::environment::{CubeMap, Environment, Texels};
+use crate::environment::{cut_cross, CubeMap, Environment, Texels};
 
 /// The longest side of an environment image accepted, texels: a lat-long
 /// map of 8192 × 4096 (0.4 GiB of `f32` radiance) resolves 0.044°, finer
@@ -42,6 +42,26 @@ pub(super) fn validate(spec: &EnvironmentSpec, dir: &Path) -> Result<Arc<Environ
             }
             Environment::LatLong {
                 texels,
+                scale: scale_of(*scale)?,
+            }
+        }
+        EnvironmentSpec::CubeCross { image, scale } => {
+            let field = "environment.image";
+            let cross = read_png(field, &dir.join(image))?;
+            let (width, height) = (cross.width(), cross.height());
+            let side = width / 4;
+            let fits = width % 4 == 0 && side > 0 && height == 3 * side;
+            if !fits && !faults::undone(Fault::EnvironmentSizeUnchecked) {
+                return Err(size(
+                    field,
+                    image,
+                    width,
+                    height,
+                    SizeRule::FourByThreeFaces,
+                ));
+            }
+            Environment::Cube {
+                map: CubeMap::of_side(side, cut_cross(&cross, side)),
                 scale: scale_of(*scale)?,
             }
         }

@@ -172,6 +172,8 @@ pub enum SizeRule {
     TwiceAsWideAsHigh,
     /// A cube face: square.
     Square,
+    /// A cube cross: four faces wide and three high, the faces square.
+    FourByThreeFaces,
     /// A cube face after the first: the first face's side, pixels.
     SideOfFirstFace(u32),
     /// Any image: each side at most this many pixels.
@@ -202,6 +204,9 @@ impl fmt::Display for ImageProblem {
                         f.write_str("a lat-long map is twice as wide as high")
                     }
                     SizeRule::Square => f.write_str("a cube face is square"),
+                    SizeRule::FourByThreeFaces => {
+                        f.write_str("a cube cross is four square faces wide and three high")
+                    }
                     SizeRule::SideOfFirstFace(side) => write!(
                         f,
                         "every cube face has the first face's side, {side} pixels"

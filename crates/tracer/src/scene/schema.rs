@@ -199,6 +199,14 @@ pub enum EnvironmentSpec {
         /// Multiplies every texel's linear value, ≥ 0 (default 1).
         scale: Option<f64>,
     },
+    /// A cube map in one PNG: the horizontal cross, four faces wide and
+    /// three high (see `crate::environment::CROSS`).
+    CubeCross {
+        /// The PNG file.
+        image: String,
+        /// Multiplies every texel's linear value, ≥ 0 (default 1).
+        scale: Option<f64>,
+    },
     /// A cube map: six square PNGs of one side.
     Cube {
         /// The faces' files in OpenGL's order: `+X, −X, +Y, −Y, +Z, −Z`.
