@@ -36,6 +36,7 @@
 //! | [`geometry`] | rays, spheres, two-sided planes, the kaleidoscope's mirror tube |
 //! | [`bump`] | an object's bump map: the hit's shading normal bent, its geometry untouched |
 //! | [`camera`] | the course's pinhole and the look-at camera unprojected through the inverse view-projection |
+//! | [`environment`] | what rays that leave the scene receive: a procedural sky, a lat-long or cube map looked up through `techniques::envmap`, and the slides' capture of a cube map by tracing |
 //! | [`filter`] | the pixel filter: stratified, jittered rays over the pixel (box) or its centre |
 //! | [`spawn`] | where secondary rays start: the hit's error bound, or the course's fixed epsilon |
 //! | [`integrator`] | `local`, `whitted`, `path`, `photon` (the path tracer plus a caustic photon map) and the course shader's loop, one file each, and the shared scatter step |
@@ -63,6 +64,7 @@
 pub mod bump;
 pub mod camera;
 pub mod chains;
+pub mod environment;
 pub mod filter;
 pub mod geometry;
 pub mod integrator;

@@ -37,6 +37,8 @@ pub fn scene_name(kind: &Scene) -> &'static str {
         Scene::Bump(FieldError::PeriodTooShort { .. }) => "scene.bump.period_too_short",
         Scene::Bump(FieldError::TooSteep { .. }) => "scene.bump.too_steep",
         Scene::BumpOnSmoothSurface => "scene.bump_on_smooth_surface",
+        Scene::EnvironmentImage { .. } => "scene.environment_image",
+        Scene::BackgroundWithEnvironment => "scene.background_with_environment",
     }
 }
 

@@ -5,7 +5,7 @@ use std::path::Path;
 
 use techniques::bump::{FieldError, MAX_SLOPE, MIN_PERIOD};
 use tracer::output::OutputError;
-use tracer::scene::error::JsonType;
+use tracer::scene::error::{ImageProblem, JsonType, SizeRule};
 use tracer::scene::{ErrorKind as Scene, SceneError, MAX_PIXELS, SCHEMA_VERSION};
 
 use super::domain_hu;
@@ -103,6 +103,45 @@ pub(super) fn scene_kind_hu(kind: &Scene) -> String {
                                        megvilágítatlan anyagok árnyalását hajlítja, a \
                                        fémekét és a dielektrikumokét nem"
             .to_owned(),
+        Scene::EnvironmentImage { file, problem } => {
+            format!("{file} {}", image_problem_hu(problem))
+        }
+        Scene::BackgroundWithEnvironment => "a környezet helyettesíti a hátteret: a background \
+                                             és az environment közül csak az egyiket kell \
+                                             megadni"
+            .to_owned(),
+    }
+}
+
+fn image_problem_hu(problem: &ImageProblem) -> String {
+    match problem {
+        ImageProblem::Read(source) => format!("nem olvasható: {source}"),
+        ImageProblem::Decode(message) => format!("nem dekódolható PNG: {message}"),
+        ImageProblem::Pixels(format) => {
+            format!("képpontjai {format} típusúak; a környezet 8 bites RGB vagy RGBA")
+        }
+        ImageProblem::Size {
+            width,
+            height,
+            expected,
+        } => {
+            let rule = match expected {
+                SizeRule::TwiceAsWideAsHigh => {
+                    "a szélességi–hosszúsági térkép kétszer olyan széles, mint magas".to_owned()
+                }
+                SizeRule::Square => "a kocka lapja négyzet alakú".to_owned(),
+                SizeRule::FourByThreeFaces => {
+                    "a kockakereszt négy négyzet alakú lap széles és három magas".to_owned()
+                }
+                SizeRule::SideOfFirstFace(side) => {
+                    format!("a kocka minden lapjának oldala az első lapé, {side} képpont")
+                }
+                SizeRule::AtMost(side) => {
+                    format!("egyik oldala sem lehet több {side} képpontnál")
+                }
+            };
+            format!("{width} × {height} képpontos; {rule}")
+        }
     }
 }
 

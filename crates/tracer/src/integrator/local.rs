@@ -11,7 +11,7 @@ use crate::geometry::Ray;
 impl Tracer<'_> {
     pub(super) fn local(&self, ray: &Ray, counts: &mut RayCounts) -> Vec3 {
         let Some(hit) = self.intersect(ray) else {
-            return self.scene.background;
+            return self.scene.escaped(ray.direction);
         };
         let material = &self.scene.materials[hit.material as usize];
         match material.surface(&hit) {

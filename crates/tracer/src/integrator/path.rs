@@ -28,7 +28,7 @@ impl Tracer<'_> {
         let mut depth = 0;
         loop {
             let Some(hit) = self.intersect(&ray) else {
-                return sum + beta * self.scene.background;
+                return sum + beta * self.scene.escaped(ray.direction);
             };
             let material = &self.scene.materials[hit.material as usize];
             let wo = -ray.direction;

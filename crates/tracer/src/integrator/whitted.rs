@@ -20,7 +20,7 @@ impl Tracer<'_> {
         counts: &mut RayCounts,
     ) -> Vec3 {
         let Some(hit) = self.intersect(ray) else {
-            return self.scene.background;
+            return self.scene.escaped(ray.direction);
         };
         let material = &self.scene.materials[hit.material as usize];
         let wo = -ray.direction;

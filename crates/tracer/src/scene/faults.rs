@@ -23,6 +23,10 @@ pub enum Fault {
     RadianceNotScaledAcrossInterfaces,
     /// Photons keep their flux at mirrors and glass: no Fresnel factor.
     PhotonsUnweightedAtMirrors,
+    /// Environment images taken whatever their size: a lat-long map of
+    /// any aspect, cube faces neither square nor of one side (each then
+    /// read by the first face's side).
+    EnvironmentSizeUnchecked,
     /// Photons that reach a rough surface straight from the light are put
     /// in the caustic map too, so the direct light is counted twice.
     PhotonsStoredBeforeAnyMirror,

@@ -116,6 +116,7 @@ fn retag(scene: &mut Value) -> Result<Vec<String>, SceneError> {
     for (key, value) in top.iter_mut() {
         match (key.as_str(), value) {
             ("camera", v) => places.push(("camera".into(), v)),
+            ("environment", v) => places.push(("environment".into(), v)),
             ("materials", Value::Object(m)) => {
                 for (name, v) in m.iter_mut() {
                     places.push((format!("materials.{name}"), v));

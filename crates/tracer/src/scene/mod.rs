@@ -16,12 +16,14 @@
 //! | `json` | bytes to text to the schema, errors with their JSON path |
 //! | `shape` | the shapes serde would accept beyond the schema, refused |
 //! | [`validate`] | the schema to the model, each value in its domain |
+//! | [`environment`] | the environment's scale and image files, read and sized once |
 //! | [`bound`] | the largest radiance the scene's numbers can give, within `f32` |
 //! | [`model`] | the validated scene the integrators read |
 //! | [`settings`] | render settings as given and as settled |
 //! | [`error`] | the kinds of refusal |
 
 pub mod bound;
+pub mod environment;
 pub mod error;
 #[doc(hidden)]
 pub mod faults;
@@ -77,17 +79,24 @@ pub const MAX_IMAGE_SIDE: u32 = 16_384;
 /// `f32` radiance).
 pub const MAX_PIXELS: u64 = 8192 * 8192;
 
-/// Reads and validates a scene file.
+/// Reads and validates a scene file; an environment's image files are
+/// named relative to its directory.
 pub fn load(path: &std::path::Path) -> Result<Scene, SceneError> {
     let bytes = std::fs::read(path).map_err(|source| {
         let file = path.display().to_string();
         SceneError::new(".", ErrorKind::Read { file, source })
     })?;
-    parse_bytes(&bytes)
+    parse_bytes_in(&bytes, path.parent().unwrap_or(std::path::Path::new("")))
+}
+
+/// [`parse_bytes`], an environment's image files named relative to `dir`.
+pub fn parse_bytes_in(bytes: &[u8], dir: &std::path::Path) -> Result<Scene, SceneError> {
+    json::scene_file(json::text(bytes)?)?.validate_in(dir)
 }
 
 /// Parses and validates a scene from the bytes of a file: UTF-8 (a bad
-/// byte is refused with its line and column), one JSON object.
+/// byte is refused with its line and column), one JSON object; an
+/// environment's image files are named relative to the current directory.
 pub fn parse_bytes(bytes: &[u8]) -> Result<Scene, SceneError> {
     parse(json::text(bytes)?)
 }

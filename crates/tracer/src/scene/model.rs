@@ -1,11 +1,14 @@
 //! The validated scene, in the tracer's `f32`: what the integrators read.
 
+use std::sync::Arc;
+
 use glam::Vec3;
 
 use techniques::bump::HeightField;
 
 use super::Settings;
 use crate::camera::Camera;
+use crate::environment::Environment;
 use crate::geometry::Object;
 
 /// A validated scene in the tracer's `f32`.
@@ -17,8 +20,11 @@ pub struct Scene {
     pub height: u32,
     /// The camera.
     pub camera: Camera,
-    /// Radiance of escaping rays.
+    /// Radiance of escaping rays, where there is no `environment`.
     pub background: Vec3,
+    /// What escaping rays receive by direction, in place of `background`
+    /// (shared: a map is read once however often the scene is copied).
+    pub environment: Option<Arc<Environment>>,
     /// The course's ambient radiance.
     pub ambient: Vec3,
     /// Materials, indexed by the objects.
@@ -117,6 +123,15 @@ pub enum Light {
 }
 
 impl Scene {
+    /// The radiance a ray travelling in `direction` receives when it meets
+    /// nothing: the environment's there, else the constant background.
+    pub fn escaped(&self, direction: Vec3) -> Vec3 {
+        match &self.environment {
+            Some(environment) => environment.radiance(direction),
+            None => self.background,
+        }
+    }
+
     /// The same scene rendered at another size (the camera keeps its view).
     pub fn resized(&self, width: u32, height: u32) -> Scene {
         Scene {

@@ -19,9 +19,14 @@ pub struct SceneFile {
     pub image: ImageSpec,
     /// How primary rays are made.
     pub camera: CameraSpec,
-    /// Radiance of rays that leave the scene, W/(sr·m²) per channel.
+    /// Radiance of rays that leave the scene, W/(sr·m²) per channel
+    /// (black when not given; not given with an `environment`).
     #[serde(default)]
-    pub background: [f64; 3],
+    pub background: Option<[f64; 3]>,
+    /// What rays that leave the scene receive, by direction: replaces
+    /// `background`.
+    #[serde(default)]
+    pub environment: Option<EnvironmentSpec>,
     /// The course's ambient light, radiance per channel, used by the `local`
     /// and `whitted` integrators (the path tracer computes indirect light
     /// instead).
@@ -204,5 +209,41 @@ pub enum LightSpec {
         position: [f64; 3],
         /// Radiant intensity, W/sr per channel.
         intensity: [f64; 3],
+    },
+}
+
+/// An environment, as written: what rays that leave the scene receive, by
+/// direction (`crate::environment`). Image files are PNG, 8-bit RGB or
+/// RGBA (alpha ignored), sRGB-encoded, named relative to the scene file's
+/// directory.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(rename_all = "snake_case", deny_unknown_fields)]
+pub enum EnvironmentSpec {
+    /// `scale · (d + 1) / 2` along the unit direction `d`: procedural.
+    DirectionColour {
+        /// Multiplies the colour, ≥ 0 (default 1).
+        scale: Option<f64>,
+    },
+    /// A latitude–longitude image, twice as wide as high.
+    LatLong {
+        /// The PNG file.
+        image: String,
+        /// Multiplies every texel's linear value, ≥ 0 (default 1).
+        scale: Option<f64>,
+    },
+    /// A cube map in one PNG: the horizontal cross, four faces wide and
+    /// three high (see `crate::environment::CROSS`).
+    CubeCross {
+        /// The PNG file.
+        image: String,
+        /// Multiplies every texel's linear value, ≥ 0 (default 1).
+        scale: Option<f64>,
+    },
+    /// A cube map: six square PNGs of one side.
+    Cube {
+        /// The faces' files in OpenGL's order: `+X, −X, +Y, −Y, +Z, −Z`.
+        faces: [String; 6],
+        /// Multiplies every texel's linear value, ≥ 0 (default 1).
+        scale: Option<f64>,
     },
 }

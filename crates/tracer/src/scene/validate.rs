@@ -105,8 +105,15 @@ pub fn image_size(path: &str, width: f64, height: f64) -> Result<(u32, u32), Sce
 }
 
 impl SceneFile {
-    /// Checks every value against its domain and builds the [`Scene`].
+    /// Checks every value against its domain and builds the [`Scene`];
+    /// an environment's files are named relative to the current directory.
     pub fn validate(&self) -> Result<Scene, SceneError> {
+        self.validate_in(std::path::Path::new(""))
+    }
+
+    /// [`SceneFile::validate`], an environment's files named relative to
+    /// `dir` (the scene file's directory).
+    pub fn validate_in(&self, dir: &std::path::Path) -> Result<Scene, SceneError> {
         if self.version != SCHEMA_VERSION {
             return Err(SceneError::new(
                 "version",
@@ -115,7 +122,16 @@ impl SceneFile {
         }
         let (width, height) = image_size("image", self.image.width, self.image.height)?;
         let camera = validate_camera(&self.camera, width, height)?;
-        let background = non_negative3("background", self.background)?;
+        let background = match self.background {
+            Some(_) if self.environment.is_some() => {
+                return Err(SceneError::new(
+                    "background",
+                    ErrorKind::BackgroundWithEnvironment,
+                ))
+            }
+            Some(background) => non_negative3("background", background)?,
+            None => Vec3::ZERO,
+        };
         let ambient = non_negative3("ambient", self.ambient)?;
         let mut material_names = Vec::new();
         let mut materials = Vec::new();
@@ -142,11 +158,17 @@ impl SceneFile {
             .map(|(i, spec)| validate_light(&format!("lights[{i}]"), spec))
             .collect::<Result<_, _>>()?;
         let settings = Settings::default().settle("render", &self.render)?;
+        let environment = self
+            .environment
+            .as_ref()
+            .map(|spec| super::environment::validate(spec, dir))
+            .transpose()?;
         let scene = Scene {
             width,
             height,
             camera,
             background,
+            environment,
             ambient,
             materials,
             material_names,

@@ -38,6 +38,8 @@ pub fn scene_slot(kind: &Scene) -> usize {
         Scene::Bump(FieldError::PeriodTooShort { .. }) => 24,
         Scene::Bump(FieldError::TooSteep { .. }) => 25,
         Scene::BumpOnSmoothSurface => 26,
+        Scene::EnvironmentImage { .. } => 36,
+        Scene::BackgroundWithEnvironment => 37,
     }
 }
 
@@ -61,7 +63,7 @@ pub const THREADS: usize = 34;
 pub const NOT_FINITE: usize = 35;
 
 /// How many render slots there are.
-pub const SLOTS: usize = 36;
+pub const SLOTS: usize = 38;
 
 /// A thread pool that cannot start: its spawner fails.
 pub fn thread_pool_error() -> rayon::ThreadPoolBuildError {
@@ -193,6 +195,23 @@ pub fn examples() -> Vec<(ErrorKind, Vec<String>)> {
             &["gold", "glass"],
         ),
         scene("objects[2].material", Scene::DielectricWithoutInside, &[]),
+        scene(
+            "environment.faces[1]",
+            Scene::EnvironmentImage {
+                file: "sky/nx.png".into(),
+                problem: tracer::scene::error::ImageProblem::Size {
+                    width: 64,
+                    height: 32,
+                    expected: tracer::scene::error::SizeRule::SideOfFirstFace(32),
+                },
+            },
+            &["sky/nx.png"],
+        ),
+        scene(
+            "background",
+            Scene::BackgroundWithEnvironment,
+            &["environment"],
+        ),
         scene(
             "materials.glass",
             Scene::CourseHasNoRefraction,
