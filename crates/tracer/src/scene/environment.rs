@@ -138,9 +138,11 @@ pub(super) fn read_png(field: &str, path: &Path) -> Result<Texels, SceneError> {
     decode_png(&bytes).map_err(|problem| refusal(field, &shown, problem))
 }
 
-/// The bytes of a PNG file as linear values (see [`read_png`]). The size
-/// is checked from the header before any pixel is decoded, and the
-/// decoder's own limits bound what it allocates.
+/// The bytes of a PNG file as linear values: 8-bit RGB or RGBA (alpha
+/// ignored), each code decoded by the sRGB transfer function, each side 1
+/// to [`MAX_ENVIRONMENT_SIDE`]. The size is checked from the header before
+/// any pixel is decoded, and the decoder's own limits bound what it
+/// allocates.
 pub fn decode_png(bytes: &[u8]) -> Result<Texels, ImageProblem> {
     let decode = |e: image::ImageError| ImageProblem::Decode(e.to_string());
     let decoder =
