@@ -32,12 +32,15 @@ fn table() -> String {
             &r.single,
         ),
     ] {
-        let (mean, p99, rmse) = measures(image, &r.spectral, &r.sphere);
-        t.push_str(&format!("| {what} | {mean:.2} | {p99:.2} | {rmse:.4} |\n"));
+        let e = measures(image, &r);
+        t.push_str(&format!(
+            "| {what} | {:.2} | {:.2} | {:.4} |\n",
+            e.delta_e_mean, e.delta_e_p99, e.rel_rmse
+        ));
     }
     t.push_str(&format!(
         "\n{} of {} pixels see the sphere; the spectral answer renders it at {SAMPLES} wavelengths.\n",
-        r.sphere.iter().filter(|k| **k).count(),
+        r.sphere.iter().filter(|k| k.is_some()).count(),
         r.sphere.len()
     ));
     t

@@ -16,7 +16,6 @@
 
 pub(crate) mod distribute;
 pub mod jobs;
-pub mod measure;
 mod report;
 mod setup;
 pub mod sweep;
@@ -27,7 +26,7 @@ mod worker;
 pub use worker::{run_job, TradeoffJobArgs};
 
 pub use validation::tradeoff::checks::UNCONVERGED;
-pub use validation::tradeoff::{pareto, Verdict, MEASURES, SCHEMA, SCHEMA_VERSION};
+pub use validation::tradeoff::{measure, pareto, Verdict, MEASURES, SCHEMA, SCHEMA_VERSION};
 
 use std::path::{Path, PathBuf};
 

@@ -14,22 +14,22 @@
 //! takes channel c from a render at `n(λ_c)`, `λ_c` the CIE RGB primaries
 //! (700, 546.1, 435.8 nm); the single index is `n_d` (587.56 nm).
 //!
-//! Measured over the pixels that see the sphere: ΔE2000 of the displayed
-//! images (8-bit sRGB, CIELAB under D65) against the spectral one, mean
-//! and 99th percentile, and the relative RMSE of linear radiance.
+//! Measured over the pixels that see the sphere by the suite's fixed
+//! measures ([`crate::tradeoff::measure`], those of `optics tradeoff`):
+//! ΔE2000 of the displayed images against the spectral one, mean and 99th
+//! percentile, and the relative RMSE of linear radiance.
 
 use std::path::Path;
 
 use glam::Vec3;
-use radiometry::colour::{
-    d65_white, delta_e_2000, linear_srgb_to_xyz, srgb_decode, xyz_to_lab, xyz_to_linear_srgb, Lab,
-};
+use radiometry::colour::xyz_to_linear_srgb;
 use radiometry::spectrum::{self, SAMPLES};
 use techniques::dispersion::{fraunhofer_nm, CIE_RGB_PRIMARIES_NM, SELLMEIER_N_BK7};
 use tracer::job::RenderJob;
-use tracer::output::to_srgb8;
 use tracer::render::Image;
 use tracer::scene::{self, Material, Scene};
+
+use crate::tradeoff::measure::{errors, Errors, Mask, Truth};
 
 /// The scene with the sphere's glass at index `n`.
 pub fn at_index(scene: &Scene, n: f64) -> Scene {
@@ -92,32 +92,16 @@ pub fn three_etas(scene: &Scene) -> Image {
     }
 }
 
-/// A pixel as its PNG displays it, in CIELAB.
-fn displayed(pixel: Vec3) -> Lab {
-    let shown = pixel
-        .to_array()
-        .map(|c| srgb_decode(f64::from(to_srgb8(c)) / 255.0));
-    xyz_to_lab(linear_srgb_to_xyz(shown), d65_white())
-}
-
-/// ΔE2000 mean and 99th percentile, and the relative RMSE, of `image`
-/// against `truth` over the pixels `keep` says.
-pub fn measures(image: &Image, truth: &Image, keep: &[bool]) -> (f64, f64, f64) {
-    let mut delta_e: Vec<f64> = Vec::new();
-    let (mut error, mut total) = (0.0, 0.0);
-    for (p, _) in keep.iter().enumerate().filter(|(_, k)| **k) {
-        let (a, t) = (image.pixels[p].as_dvec3(), truth.pixels[p].as_dvec3());
-        delta_e.push(delta_e_2000(
-            displayed(image.pixels[p]),
-            displayed(truth.pixels[p]),
-        ));
-        error += (a - t).length_squared();
-        total += t.length_squared();
-    }
-    delta_e.sort_by(f64::total_cmp);
-    let mean = delta_e.iter().sum::<f64>() / delta_e.len() as f64;
-    let p99 = delta_e[((0.99 * delta_e.len() as f64).ceil() as usize).clamp(1, delta_e.len()) - 1];
-    (mean, p99, (error / total).sqrt())
+/// `image` against the spectral render by the suite's fixed measures
+/// ([`crate::tradeoff::measure`]: relative RMSE of radiance, ΔE2000 of the
+/// displayed image, ꟻLIP) over the pixels that see the sphere.
+pub fn measures(image: &Image, r: &Renders) -> Errors {
+    let mask = Mask::from_hits(&r.sphere);
+    errors(
+        std::slice::from_ref(image),
+        &Truth::new(r.spectral.clone(), 0.0, &mask),
+        &mask,
+    )
 }
 
 /// The three renders compared, and where the sphere is.
@@ -128,8 +112,8 @@ pub struct Renders {
     pub three: Image,
     /// One index, `n_d`.
     pub single: Image,
-    /// The pixels that see the sphere.
-    pub sphere: Vec<bool>,
+    /// Each pixel's first hit where it is the sphere, `None` elsewhere.
+    pub sphere: Vec<Option<u32>>,
 }
 
 /// The dispersion scene rendered the three ways.
@@ -152,9 +136,7 @@ pub fn renders_with(three: fn(&Scene) -> Image) -> Renders {
     let sphere = job
         .first_hits()
         .iter()
-        .map(|hit| {
-            hit.is_some_and(|object| scene.objects[object as usize].material() == glass as u32)
-        })
+        .map(|hit| hit.filter(|&object| scene.objects[object as usize].material() == glass as u32))
         .collect();
     Renders {
         spectral: spectral(&scene),

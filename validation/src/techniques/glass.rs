@@ -135,25 +135,33 @@ pub fn check_dispersion_render(three: fn(&tracer::scene::Scene) -> tracer::rende
     let r = dispersion::renders_with(three);
     check.cases = r.sphere.len();
     let (three, one) = (
-        dispersion::measures(&r.three, &r.spectral, &r.sphere),
-        dispersion::measures(&r.single, &r.spectral, &r.sphere),
+        dispersion::measures(&r.three, &r),
+        dispersion::measures(&r.single, &r),
     );
-    for (what, (mean, p99, rmse)) in [("three etas", three), ("one index", one)] {
-        check.measure(&format!("{what}: ΔE2000 mean"), mean, "the sphere's pixels");
-        check.measure(&format!("{what}: ΔE2000 p99"), p99, "the sphere's pixels");
+    for (what, e) in [("three etas", three), ("one index", one)] {
+        check.measure(
+            &format!("{what}: ΔE2000 mean"),
+            e.delta_e_mean,
+            "the sphere's pixels",
+        );
+        check.measure(
+            &format!("{what}: ΔE2000 p99"),
+            e.delta_e_p99,
+            "the sphere's pixels",
+        );
         check.measure(
             &format!("{what}: relative RMSE"),
-            rmse,
+            e.rel_rmse,
             "the sphere's pixels",
         );
     }
-    if !(three.0 < one.0 && three.2 < one.2) {
+    if !(three.delta_e_mean < one.delta_e_mean && three.rel_rmse < one.rel_rmse) {
         check.fail(format!(
             "three etas (ΔE mean {:.3}, RMSE {:.4}) no closer than one index ({:.3}, {:.4})",
-            three.0, three.2, one.0, one.2
+            three.delta_e_mean, three.rel_rmse, one.delta_e_mean, one.rel_rmse
         ));
     }
-    for (p, _) in r.sphere.iter().enumerate().filter(|(_, s)| !**s) {
+    for (p, _) in r.sphere.iter().enumerate().filter(|(_, s)| s.is_none()) {
         let (a, b) = (
             r.spectral.pixels[p].as_dvec3(),
             r.single.pixels[p].as_dvec3(),

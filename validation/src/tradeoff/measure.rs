@@ -12,7 +12,7 @@
 //! - **ΔE2000 of the displayed image**: each pixel as `optics render`'s PNG
 //!   shows it (clamped to [0, 1], 8-bit sRGB) in CIELAB under D65, against
 //!   the truth shown the same way; the mean and the 99th percentile.
-//! - **ꟻLIP** of the displayed image ([`validation::flip`], LDR, at 67
+//! - **ꟻLIP** of the displayed image ([`crate::flip`], LDR, at 67
 //!   pixels per degree), the rendering field's perceptual difference:
 //!   the error map of the whole frame (its filters see across the edge of
 //!   the surface), averaged over the surface pixels.
@@ -26,7 +26,7 @@
 use glam::Vec3;
 use radiometry::colour::{d65_white, delta_e_2000, linear_srgb_to_xyz, srgb_decode, xyz_to_lab};
 use serde::Serialize;
-use tracer::output::to_srgb8;
+use tracer::output::{srgb8, to_srgb8};
 use tracer::render::Image;
 
 /// The surface pixels: `true` where the pixel's centre sees an object.
@@ -213,9 +213,8 @@ pub fn errors(images: &[Image], truth: &Truth, mask: &Mask) -> Errors {
     let mut delta_e_p99 = 0.0;
     let mut flip_mean = 0.0;
     for image in images {
-        let map =
-            validation::flip::error_map(&shown_truth, &srgb8(image), image.width, image.height);
-        flip_mean += validation::flip::mean(&map, Some(&mask.0)) / n;
+        let map = crate::flip::error_map(&shown_truth, &srgb8(image), image.width, image.height);
+        flip_mean += crate::flip::mean(&map, Some(&mask.0)) / n;
         let mut de: Vec<f64> = displayed(image, mask)
             .iter()
             .zip(&displayed_truth)
@@ -253,15 +252,6 @@ fn displayed(image: &Image, mask: &Mask) -> Vec<radiometry::colour::Lab> {
                 .map(|c| srgb_decode(f64::from(to_srgb8(c)) / 255.0));
             xyz_to_lab(linear_srgb_to_xyz(shown), white)
         })
-        .collect()
-}
-
-/// The whole image as the PNG displays it: 8-bit sRGB, row-major RGB.
-fn srgb8(image: &Image) -> Vec<u8> {
-    image
-        .pixels
-        .iter()
-        .flat_map(|p| p.to_array().map(to_srgb8))
         .collect()
 }
 
