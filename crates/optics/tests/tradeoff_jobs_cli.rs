@@ -405,7 +405,7 @@ fn bad_job_lines_are_refused_by_field_with_nothing_written() {
     assert!(error["error"]["field"].is_null(), "{error}");
     let message = error["error"]["message"].as_str().unwrap();
     assert!(
-        message.contains("broken.jsonl:1: not a optics.tradeoff-job line"),
+        message.contains("broken.jsonl:1: not an optics.tradeoff-job line"),
         "{message}"
     );
     let out = job_command(&jobs, "", &results).output().unwrap();

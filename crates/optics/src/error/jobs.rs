@@ -276,10 +276,10 @@ impl fmt::Display for JobError {
                 at,
                 field: Some(field),
                 message,
-            } => write!(f, "{at}: not a {} line: {field}: {message}", kind.schema()),
+            } => write!(f, "{at}: not an {} line: {field}: {message}", kind.schema()),
             JobError::Line {
                 kind, at, message, ..
-            } => write!(f, "{at}: not a {} line: {message}", kind.schema()),
+            } => write!(f, "{at}: not an {} line: {message}", kind.schema()),
             JobError::Schema { kind, at, found } => {
                 write!(f, "{at}: schema is {found:?}, expected {:?}", kind.schema())
             }
