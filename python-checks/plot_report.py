@@ -147,11 +147,14 @@ def delta_e_table(report, out):
 
 
 def techniques(report, out):
-    """The slides' cheap refraction's angle from Snell's law, and the fitted
-    empirical Fresnel form beside the exact law and Schlick."""
+    """The slides' cheap refraction's angle from Snell's law, the fitted
+    empirical Fresnel form beside the exact law and Schlick, and the
+    environment-mapped mirror's error as its surroundings move away."""
     curves = report["technique_curves"]
     fits = curves["fresnel_fits"]
-    fig, axes = plt.subplots(1, 1 + len(fits), figsize=(4 * (1 + len(fits)), 3.2), squeeze=False)
+    sweeps = curves.get("envmap_distance", [])
+    panels = 1 + len(fits) + (1 if sweeps else 0)
+    fig, axes = plt.subplots(1, panels, figsize=(4 * panels, 3.2), squeeze=False)
     ax = axes.flat[0]
     for c in curves["refraction"]:
         ax.plot(c["angle_deg"], c["error_deg"], label=c["label"])
@@ -170,6 +173,15 @@ def techniques(report, out):
         ax.set_xlim(0, 90)
         ax.set_ylim(0, 1.02)
         ax.set_xlabel("angle of incidence (deg)")
+        ax.legend(fontsize=7)
+    if sweeps:
+        ax = axes.flat[-1]
+        for c in sweeps:
+            ax.loglog(c["distance"], c["rel_rmse"], "o-",
+                      label=f"{c['label']}: RMSE ∝ d^{c['fitted_exponent']:.2f}")
+        ax.set_title("environment map against the traced mirror", fontsize=10)
+        ax.set_xlabel("distance of the surroundings (mirror radii)")
+        ax.set_ylabel("relative RMSE over the mirror")
         ax.legend(fontsize=7)
     fig.tight_layout()
     return _save(fig, os.path.join(out, "techniques.png"))

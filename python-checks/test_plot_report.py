@@ -24,7 +24,9 @@ def tiny_report():
                 "refraction": [{"label": "into water, c = 1", "angle_deg": angles, "error_deg": [0.0, 9.0, 7.8]}],
                 "fresnel_fits": [{"label": "glass", "angle_deg": angles, "exact": [0.04, 0.05, 0.9],
                                   "fitted": [0.046, 0.05, 0.85], "schlick": [0.04, 0.045, 0.95],
-                                  "form": [0.046, 0.912, 4.96]}]}}
+                                  "form": [0.046, 0.912, 4.96]}],
+                "envmap_distance": [{"label": "sky", "distance": [6.0, 12.0, 24.0], "rel_rmse": [0.08, 0.04, 0.02],
+                                     "delta_e_mean": [3.0, 1.5, 0.8], "fitted_exponent": -1.0}]}}
 
 
 def test_every_figure_is_drawn(tmp_path, capsys):

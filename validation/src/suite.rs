@@ -213,7 +213,7 @@ impl CheckKind for TechniqueChecks {
     }
 
     fn run(&self, _context: &Context, report: &mut Report) -> Result<(), ReferenceError> {
-        let (checks, curves) = crate::techniques::check_all(&self.0);
+        let (checks, curves) = crate::techniques::check_all(&self.0, &mut report.render_figures);
         report.checks.extend(checks);
         report.technique_curves = curves;
         Ok(())

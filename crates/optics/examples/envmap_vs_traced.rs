@@ -18,12 +18,12 @@
 use std::path::{Path, PathBuf};
 
 use image::ImageEncoder;
-use optics::envmap_vs_traced::{
-    log_log_slope, one_sphere, two_spheres, Comparison, Resolution, Surroundings,
-};
 use serde_json::json;
 use tracer::output::srgb8;
 use tracer::render::Image;
+use validation::techniques::envmap_vs_traced::{
+    log_log_slope, one_sphere, two_spheres, Comparison, Resolution, Surroundings,
+};
 
 const RESOLUTION: Resolution = Resolution {
     image: 256,

@@ -13,8 +13,6 @@ pub mod batch;
 #[cfg(feature = "harness")]
 mod compare;
 mod envmap;
-#[cfg(feature = "harness")]
-pub mod envmap_vs_traced;
 pub mod error;
 #[cfg(test)]
 mod fuzz;
