@@ -179,6 +179,9 @@ def techniques(report, out):
         for c in sweeps:
             ax.loglog(c["distance"], c["rel_rmse"], "o-",
                       label=f"{c['label']}: RMSE ∝ d^{c['fitted_exponent']:.2f}")
+        ticks = sorted({d for c in sweeps for d in c["distance"]})
+        ax.set_xticks(ticks, [f"{d:g}" for d in ticks], minor=False)
+        ax.set_xticks([], minor=True)
         ax.set_title("environment map against the traced mirror", fontsize=10)
         ax.set_xlabel("distance of the surroundings (mirror radii)")
         ax.set_ylabel("relative RMSE over the mirror")
