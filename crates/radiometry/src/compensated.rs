@@ -65,11 +65,24 @@ fn two_prod<T: Real>(a: T, b: T) -> (T, T) {
 #[inline(always)]
 fn scaled_dekker_error<T: Real>(a: T, b: T, p: T) -> T {
     let limit = T::lit(power_of_two(995));
-    let (one, down) = (T::one(), T::lit(power_of_two(-64)));
-    let scale = |x: T| if x.abs() < limit { one } else { down };
-    let (sa, sb) = (scale(a), scale(b));
+    let (one, down, up) = (
+        T::one(),
+        T::lit(power_of_two(-64)),
+        T::lit(power_of_two(64)),
+    );
+    // Each scale with its inverse, so that the error is scaled back by a
+    // multiplication: the same value as dividing (both exact), without the
+    // division, the slowest step there is.
+    let scale = |x: T| {
+        if x.abs() < limit {
+            (one, one)
+        } else {
+            (down, up)
+        }
+    };
+    let ((sa, ua), (sb, ub)) = (scale(a), scale(b));
     let scaled = dekker_error(a * sa, b * sb, p * sa * sb);
-    scaled / (sa * sb)
+    scaled * ua * ub
 }
 
 /// `2^k` for a normal double's exponent, from the bits: a constant where
@@ -215,47 +228,6 @@ fn square_of_product<T: Real>(a: T, b: T, exact: bool) -> [T; 3] {
 // added after, and what is rounded is the small result, once or twice:
 // within about one ulp of the wide precision, whatever cancels.
 
-/// `n_t² − n_i²`.
-#[inline(always)]
-pub(crate) fn index_contrast<T: Real>(n_t: T, n_i: T, exact: bool) -> T {
-    if exact {
-        // The two exact squares' difference rounded once: what Sum2 of the
-        // two would give, bit for bit.
-        return n_t * n_t - n_i * n_i;
-    }
-    let (t2, t2e) = narrow_prod(n_t, n_t, exact);
-    let (i2, i2e) = narrow_prod(n_i, n_i, exact);
-    Sum2::of(t2, exact)
-        .plus(-i2)
-        .plus_error(t2e, exact)
-        .plus_error(-i2e, exact)
-        .value()
-}
-
-/// `n_t² − n_i² + (n_i c)²` `= n_t² − n_i² sin²θ_i = n_t² cos²θ_t`, which
-/// vanishes at the critical angle.
-#[inline(always)]
-pub(crate) fn snell_discriminant<T: Real>(n_t: T, n_i: T, c: T, exact: bool) -> T {
-    if exact {
-        // (n_t² − n_i²) + (n_i c)²: the contrast and the square's high part
-        // cancel at the critical angle, exactly.
-        let (k, ke) = two_sum(n_t * n_t, -(n_i * n_i));
-        let [ic2, _, ic2e] = square_of_product(n_i, c, exact);
-        return (k + ic2) + (ic2e + ke);
-    }
-    let (t2, t2e) = narrow_prod(n_t, n_t, exact);
-    let (i2, i2e) = narrow_prod(n_i, n_i, exact);
-    let [ic2, ic2m, ic2e] = square_of_product(n_i, c, exact);
-    Sum2::of(t2, exact)
-        .plus(-i2)
-        .plus(ic2)
-        .plus_error(ic2m, exact)
-        .plus_error(t2e, exact)
-        .plus_error(-i2e, exact)
-        .plus(ic2e)
-        .value()
-}
-
 /// `n_t² − (n_i s)²` `= n_t² cos²θ_t` with `s = sin θ_i`: Snell's
 /// discriminant from the sine.
 #[inline(always)]
@@ -276,28 +248,150 @@ pub(crate) fn snell_discriminant_from_sine<T: Real>(n_t: T, n_i: T, s: T, exact:
         .value()
 }
 
-/// `(c n_t)² + (c n_i)² − n_i²` `= c² (n_t² + n_i²) − n_i²`, which vanishes
-/// at Brewster's angle.
-#[inline(always)]
-pub(crate) fn brewster_factor<T: Real>(n_t: T, n_i: T, c: T, exact: bool) -> T {
-    let [ct2, ct2m, ct2e] = square_of_product(c, n_t, exact);
-    let [ci2, ci2m, ci2e] = square_of_product(c, n_i, exact);
-    if exact {
-        // The squares' high parts summed exactly as u + ue; u and n_i²
-        // cancel at Brewster's angle, exactly.
-        let (u, ue) = two_sum(ct2, ci2);
-        return (u - n_i * n_i) + (ue + (ct2e + ci2e));
+// A dielectric's index `η` is fixed per material, and one of the two
+// indices of its interface is 1 (crate conventions): from the outside
+// `n_i = 1`, `n_t = η`; from the inside `n_i = η`, `n_t = 1`. So the
+// squares the laws need at every angle, `η²`, `η² − 1` and `η² + 1`, are
+// summed once per material ([`IndexSquares`]), each angle adds its own
+// `c²` terms to them, and the only products taken per angle are `c · c`,
+// `η² · c²` and `(η² + 1) · c²`, where the interface as `(n_i, n_t)` took a
+// dozen. Each result cancels in one place only, between two high parts
+// within a factor of two of each other, which subtract exactly (Sterbenz's
+// lemma); the low parts are added after, so what is rounded is the small
+// result: within a few ulps of the wide precision, whatever cancels.
+
+/// The squares of a dielectric's index `η = n_inside / n_outside` that its
+/// laws take at every angle, each carried unevaluated as if in twice the
+/// precision, computed once per material.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct IndexSquares<T> {
+    /// `η²`: `n_i²` from the inside.
+    eta2: TwoPart<T>,
+    /// `η² − 1`: Snell's contrast `n_t² − n_i²` from the outside, negated
+    /// from the inside.
+    minus_one: TwoPart<T>,
+    /// `η² + 1 = n_t² + n_i²` from either side: Brewster's factor is
+    /// `c² (η² + 1) − n_i²`.
+    plus_one: TwoPart<T>,
+}
+
+impl<T: Real> IndexSquares<T> {
+    /// The squares of `eta`, in the wide precision of a tier whose products
+    /// are `exact` there or not.
+    #[inline(always)]
+    pub(crate) fn of(eta: T, exact: bool) -> Self {
+        let (e2, e2e) = narrow_prod(eta, eta, exact);
+        Self {
+            eta2: TwoPart { high: e2, low: e2e },
+            minus_one: square_plus(eta, -T::one(), exact),
+            plus_one: square_plus(eta, T::one(), exact),
+        }
     }
-    let (i2, i2e) = narrow_prod(n_i, n_i, exact);
-    Sum2::of(ct2, exact)
-        .plus(ci2)
-        .plus(-i2)
-        .plus_error(ct2m, exact)
-        .plus_error(ci2m, exact)
-        .plus(ct2e)
-        .plus(ci2e)
-        .plus_error(-i2e, exact)
-        .value()
+
+    /// `n_t² − n_i²`: `η² − 1` from the outside, `1 − η²` from the inside.
+    #[inline(always)]
+    pub(crate) fn contrast(&self, inside: bool) -> TwoPart<T> {
+        let k = self.minus_one;
+        if inside {
+            TwoPart {
+                high: -k.high,
+                low: -k.low,
+            }
+        } else {
+            k
+        }
+    }
+
+    /// `n_i²`: 1 from the outside, `η²` from the inside.
+    #[inline(always)]
+    fn incident(&self, inside: bool) -> TwoPart<T> {
+        if inside {
+            self.eta2
+        } else {
+            TwoPart {
+                high: T::one(),
+                low: T::zero(),
+            }
+        }
+    }
+}
+
+/// `x² + k` for an exact constant `k` (±1).
+#[inline(always)]
+fn square_plus<T: Real>(x: T, k: T, exact: bool) -> TwoPart<T> {
+    let (x2, x2e) = narrow_prod(x, x, exact);
+    Sum2::of(x2, exact).plus(k).plus_error(x2e, exact).parts()
+}
+
+/// `c²` for `0 ≤ c ≤ 1`, exact as two parts (no range check: `c` is far
+/// below Dekker's limit).
+#[inline(always)]
+fn unit_square<T: Real>(c: T, exact: bool) -> TwoPart<T> {
+    let high = c * c;
+    let low = if exact {
+        T::zero()
+    } else if cfg!(target_feature = "fma") {
+        c.mul_add(c, -high)
+    } else {
+        dekker_error(c, c, high)
+    };
+    TwoPart { high, low }
+}
+
+/// `k · c²` for a material's constant `k` and an angle's `c²`, to about
+/// `ε²` relative: the high parts' product split exactly, the cross terms
+/// added, the product of the low parts (`ε²` smaller) dropped. Low parts
+/// that are zero by construction where the tier's products are `exact`
+/// (`c²`'s) are not added.
+#[inline(always)]
+fn times_square<T: Real>(k: TwoPart<T>, c2: TwoPart<T>, exact: bool) -> TwoPart<T> {
+    let high = k.high * c2.high;
+    // A narrow tier's constants lie below 2^256, in Dekker's range.
+    let error = if exact {
+        dekker_error(k.high, c2.high, high)
+    } else {
+        two_prod(k.high, c2.high).1
+    };
+    let low = if exact {
+        error + k.low * c2.high
+    } else {
+        error + (k.high * c2.low + k.low * c2.high)
+    };
+    TwoPart { high, low }
+}
+
+/// `n_t² − n_i² + n_i² c²` `= n_t² − n_i² sin²θ_i = n_t² cos²θ_t` at
+/// `c = |cos θ_i|`, from the side `inside` or not: Snell's discriminant,
+/// which vanishes at the critical angle.
+#[inline(always)]
+pub(crate) fn snell_discriminant<T: Real>(
+    squares: &IndexSquares<T>,
+    inside: bool,
+    c: T,
+    exact: bool,
+) -> T {
+    let c2 = unit_square(c, exact);
+    let x = if inside {
+        times_square(squares.eta2, c2, exact)
+    } else {
+        c2
+    };
+    let k = squares.contrast(inside);
+    (k.high + x.high) + (x.low + k.low)
+}
+
+/// `c² (n_t² + n_i²) − n_i²` at `c = |cos θ_i|`, from the side `inside` or
+/// not: Brewster's factor, which vanishes at Brewster's angle.
+#[inline(always)]
+pub(crate) fn brewster_factor<T: Real>(
+    squares: &IndexSquares<T>,
+    inside: bool,
+    c: T,
+    exact: bool,
+) -> T {
+    let m = times_square(squares.plus_one, unit_square(c, exact), exact);
+    let n_i2 = squares.incident(inside);
+    (m.high - n_i2.high) + (m.low - n_i2.low)
 }
 
 // A conductor's index `η = x + i·y` is fixed per material, so the parts of
@@ -449,18 +543,20 @@ mod tests {
         // form drops the 2⁻⁶⁰, the compensated one keeps it.
         let eta = 1.0 + 2f64.powi(-30);
         let exact = 2f64.powi(-29) + 2f64.powi(-60);
-        assert_eq!(snell_discriminant(eta, 1.0, 0.0, false), exact);
-        assert_eq!(index_contrast(eta, 1.0, false), exact);
+        let squares = IndexSquares::of(eta, false);
+        assert_eq!(snell_discriminant(&squares, false, 0.0, false), exact);
+        assert_eq!(squares.contrast(false).value(), exact);
+        assert_eq!(squares.contrast(true).value(), -exact);
         assert_ne!(eta * eta - 1.0, exact);
     }
 
-    /// The narrow tier's short sums against the full Sum2 of the same
-    /// widened inputs, where they cancel: Snell's discriminant at cosines
+    /// The narrow tier's short sums against the wide tier's compensated
+    /// ones (Sum2, or the products split exactly) of the same widened
+    /// inputs, where they cancel: Snell's discriminant at cosines
     /// around the critical angle, Brewster's factor around Brewster's
     /// angle, a conductor's two of each, for indices from 1 + 2^-20 to 10^3,
-    /// from both sides. The short forms add the terms that cancel exactly
-    /// and round what is left: within 2 f64 ulps of the result (Sum2's own
-    /// error is below one).
+    /// from both sides. Both add the terms that cancel exactly and round
+    /// what is left: within 2 f64 ulps of each other.
     #[test]
     fn a_narrow_tiers_short_sums_are_within_2_ulps_of_sum2_where_they_cancel() {
         let mut worst = 0.0f64;
@@ -487,9 +583,13 @@ mod tests {
                     for _ in 0..400 {
                         let w = f64::from(c);
                         let s = f64::from((1.0 - c * c).max(0.0).sqrt());
+                        let eta = f64::from(eta);
+                        let inside = n_i != 1.0;
+                        let (narrow, wide) =
+                            (IndexSquares::of(eta, true), IndexSquares::of(eta, false));
                         check(
-                            snell_discriminant(n_t, n_i, w, true),
-                            snell_discriminant(n_t, n_i, w, false),
+                            snell_discriminant(&narrow, inside, w, true),
+                            snell_discriminant(&wide, inside, w, false),
                             "Snell's discriminant",
                         );
                         check(
@@ -498,8 +598,8 @@ mod tests {
                             "Snell's discriminant from the sine",
                         );
                         check(
-                            brewster_factor(n_t, n_i, w, true),
-                            brewster_factor(n_t, n_i, w, false),
+                            brewster_factor(&narrow, inside, w, true),
+                            brewster_factor(&wide, inside, w, false),
                             "Brewster's factor",
                         );
                         // A conductor of small κ from outside.
