@@ -17,6 +17,9 @@ use radiometry::fresnel::{conductor_slice, dielectric_slice};
 use radiometry::Real;
 
 const COSINES: usize = 4096;
+
+/// One pass of a law over the cosines, into the given results.
+type Pass<'a, T> = Box<dyn FnMut(&mut [T]) + 'a>;
 const PASSES: usize = 100;
 
 /// Glass and the course's gold (red channel), as in the bench.
@@ -91,7 +94,7 @@ fn tier<T: Real>(name: &str, rounds: usize) {
     let eta = black_box(T::lit(ETA));
     let (n, kappa) = black_box((T::lit(GOLD.0), T::lit(GOLD.1)));
     let inv_eta2 = T::one() / (eta * eta);
-    let mut pairs: [(&str, [Box<dyn FnMut(&mut [T])>; 2]); 2] = [
+    let mut pairs: [(&str, [Pass<T>; 2]); 2] = [
         (
             "dielectric",
             [
