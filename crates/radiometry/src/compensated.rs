@@ -417,15 +417,15 @@ pub(crate) fn squares_plus<T: Real>(x: T, y: T, k: T, exact: bool) -> TwoPart<T>
 /// of index 1, which vanishes at a near-critical angle when `κ` is small.
 #[inline(always)]
 pub(crate) fn discriminant_from<T: Real>(contrast: TwoPart<T>, c: T, exact: bool) -> T {
+    let c2 = unit_square(c, exact);
     if exact {
         // c² is exact, and cancels the contrast's high part exactly.
-        return (contrast.high + c * c) + contrast.low;
+        return (contrast.high + c2.high) + contrast.low;
     }
-    let (c2, c2e) = narrow_prod(c, c, exact);
     Sum2::of(contrast.high, exact)
-        .plus(c2)
+        .plus(c2.high)
         .plus(contrast.low)
-        .plus_error(c2e, exact)
+        .plus(c2.low)
         .value()
 }
 
@@ -436,20 +436,22 @@ pub(crate) fn discriminant_from<T: Real>(contrast: TwoPart<T>, c: T, exact: bool
 /// the `ε²`-small rest is dropped.
 #[inline(always)]
 pub(crate) fn brewster_from<T: Real>(a: TwoPart<T>, c: T, exact: bool) -> T {
-    let (c2, c2e) = narrow_prod(c, c, exact);
+    let c2 = unit_square(c, exact);
     if exact {
-        // c² is exact; m = c² A_high is split exactly (c² and A of a narrow
-        // tier lie below 2^256, in Dekker's range), and m cancels the 1
+        // c² is exact; m = c² A_high is split exactly, and cancels the 1
         // exactly.
-        let m = c2 * a.high;
-        return (m - T::one()) + (dekker_error(c2, a.high, m) + c2 * a.low);
+        let m = times_square(a, c2, exact);
+        return (m.high - T::one()) + m.low;
     }
-    let (m, me) = two_prod(c2, a.high);
+    // Summed in full, not in the dielectric's short form, which rounds
+    // twice where nothing cancels: a metal's R_p, the square of this
+    // factor's modulus, would carry both roundings.
+    let (m, me) = two_prod(c2.high, a.high);
     Sum2::of(m, exact)
         .plus(-T::one())
         .plus(me)
-        .plus(c2 * a.low)
-        .plus_error(c2e * a.high, exact)
+        .plus(c2.high * a.low)
+        .plus(c2.low * a.high)
         .value()
 }
 
