@@ -65,11 +65,24 @@ fn two_prod<T: Real>(a: T, b: T) -> (T, T) {
 #[inline(always)]
 fn scaled_dekker_error<T: Real>(a: T, b: T, p: T) -> T {
     let limit = T::lit(power_of_two(995));
-    let (one, down) = (T::one(), T::lit(power_of_two(-64)));
-    let scale = |x: T| if x.abs() < limit { one } else { down };
-    let (sa, sb) = (scale(a), scale(b));
+    let (one, down, up) = (
+        T::one(),
+        T::lit(power_of_two(-64)),
+        T::lit(power_of_two(64)),
+    );
+    // Each scale with its inverse, so that the error is scaled back by a
+    // multiplication: the same value as dividing (both exact), without the
+    // division, the slowest step there is.
+    let scale = |x: T| {
+        if x.abs() < limit {
+            (one, one)
+        } else {
+            (down, up)
+        }
+    };
+    let ((sa, ua), (sb, ub)) = (scale(a), scale(b));
     let scaled = dekker_error(a * sa, b * sb, p * sa * sb);
-    scaled / (sa * sb)
+    scaled * ua * ub
 }
 
 /// `2^k` for a normal double's exponent, from the bits: a constant where
@@ -215,47 +228,6 @@ fn square_of_product<T: Real>(a: T, b: T, exact: bool) -> [T; 3] {
 // added after, and what is rounded is the small result, once or twice:
 // within about one ulp of the wide precision, whatever cancels.
 
-/// `n_t² − n_i²`.
-#[inline(always)]
-pub(crate) fn index_contrast<T: Real>(n_t: T, n_i: T, exact: bool) -> T {
-    if exact {
-        // The two exact squares' difference rounded once: what Sum2 of the
-        // two would give, bit for bit.
-        return n_t * n_t - n_i * n_i;
-    }
-    let (t2, t2e) = narrow_prod(n_t, n_t, exact);
-    let (i2, i2e) = narrow_prod(n_i, n_i, exact);
-    Sum2::of(t2, exact)
-        .plus(-i2)
-        .plus_error(t2e, exact)
-        .plus_error(-i2e, exact)
-        .value()
-}
-
-/// `n_t² − n_i² + (n_i c)²` `= n_t² − n_i² sin²θ_i = n_t² cos²θ_t`, which
-/// vanishes at the critical angle.
-#[inline(always)]
-pub(crate) fn snell_discriminant<T: Real>(n_t: T, n_i: T, c: T, exact: bool) -> T {
-    if exact {
-        // (n_t² − n_i²) + (n_i c)²: the contrast and the square's high part
-        // cancel at the critical angle, exactly.
-        let (k, ke) = two_sum(n_t * n_t, -(n_i * n_i));
-        let [ic2, _, ic2e] = square_of_product(n_i, c, exact);
-        return (k + ic2) + (ic2e + ke);
-    }
-    let (t2, t2e) = narrow_prod(n_t, n_t, exact);
-    let (i2, i2e) = narrow_prod(n_i, n_i, exact);
-    let [ic2, ic2m, ic2e] = square_of_product(n_i, c, exact);
-    Sum2::of(t2, exact)
-        .plus(-i2)
-        .plus(ic2)
-        .plus_error(ic2m, exact)
-        .plus_error(t2e, exact)
-        .plus_error(-i2e, exact)
-        .plus(ic2e)
-        .value()
-}
-
 /// `n_t² − (n_i s)²` `= n_t² cos²θ_t` with `s = sin θ_i`: Snell's
 /// discriminant from the sine.
 #[inline(always)]
@@ -276,28 +248,150 @@ pub(crate) fn snell_discriminant_from_sine<T: Real>(n_t: T, n_i: T, s: T, exact:
         .value()
 }
 
-/// `(c n_t)² + (c n_i)² − n_i²` `= c² (n_t² + n_i²) − n_i²`, which vanishes
-/// at Brewster's angle.
-#[inline(always)]
-pub(crate) fn brewster_factor<T: Real>(n_t: T, n_i: T, c: T, exact: bool) -> T {
-    let [ct2, ct2m, ct2e] = square_of_product(c, n_t, exact);
-    let [ci2, ci2m, ci2e] = square_of_product(c, n_i, exact);
-    if exact {
-        // The squares' high parts summed exactly as u + ue; u and n_i²
-        // cancel at Brewster's angle, exactly.
-        let (u, ue) = two_sum(ct2, ci2);
-        return (u - n_i * n_i) + (ue + (ct2e + ci2e));
+// A dielectric's index `η` is fixed per material, and one of the two
+// indices of its interface is 1 (crate conventions): from the outside
+// `n_i = 1`, `n_t = η`; from the inside `n_i = η`, `n_t = 1`. So the
+// squares the laws need at every angle, `η²`, `η² − 1` and `η² + 1`, are
+// summed once per material ([`IndexSquares`]), each angle adds its own
+// `c²` terms to them, and the only products taken per angle are `c · c`,
+// `η² · c²` and `(η² + 1) · c²`, where the interface as `(n_i, n_t)` took a
+// dozen. Each result cancels in one place only, between two high parts
+// within a factor of two of each other, which subtract exactly (Sterbenz's
+// lemma); the low parts are added after, so what is rounded is the small
+// result: within a few ulps of the wide precision, whatever cancels.
+
+/// The squares of a dielectric's index `η = n_inside / n_outside` that its
+/// laws take at every angle, each carried unevaluated as if in twice the
+/// precision, computed once per material.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct IndexSquares<T> {
+    /// `η²`: `n_i²` from the inside.
+    eta2: TwoPart<T>,
+    /// `η² − 1`: Snell's contrast `n_t² − n_i²` from the outside, negated
+    /// from the inside.
+    minus_one: TwoPart<T>,
+    /// `η² + 1 = n_t² + n_i²` from either side: Brewster's factor is
+    /// `c² (η² + 1) − n_i²`.
+    plus_one: TwoPart<T>,
+}
+
+impl<T: Real> IndexSquares<T> {
+    /// The squares of `eta`, in the wide precision of a tier whose products
+    /// are `exact` there or not.
+    #[inline(always)]
+    pub(crate) fn of(eta: T, exact: bool) -> Self {
+        let (e2, e2e) = narrow_prod(eta, eta, exact);
+        Self {
+            eta2: TwoPart { high: e2, low: e2e },
+            minus_one: square_plus(eta, -T::one(), exact),
+            plus_one: square_plus(eta, T::one(), exact),
+        }
     }
-    let (i2, i2e) = narrow_prod(n_i, n_i, exact);
-    Sum2::of(ct2, exact)
-        .plus(ci2)
-        .plus(-i2)
-        .plus_error(ct2m, exact)
-        .plus_error(ci2m, exact)
-        .plus(ct2e)
-        .plus(ci2e)
-        .plus_error(-i2e, exact)
-        .value()
+
+    /// `n_t² − n_i²`: `η² − 1` from the outside, `1 − η²` from the inside.
+    #[inline(always)]
+    pub(crate) fn contrast(&self, inside: bool) -> TwoPart<T> {
+        let k = self.minus_one;
+        if inside {
+            TwoPart {
+                high: -k.high,
+                low: -k.low,
+            }
+        } else {
+            k
+        }
+    }
+
+    /// `n_i²`: 1 from the outside, `η²` from the inside.
+    #[inline(always)]
+    fn incident(&self, inside: bool) -> TwoPart<T> {
+        if inside {
+            self.eta2
+        } else {
+            TwoPart {
+                high: T::one(),
+                low: T::zero(),
+            }
+        }
+    }
+}
+
+/// `x² + k` for an exact constant `k` (±1).
+#[inline(always)]
+fn square_plus<T: Real>(x: T, k: T, exact: bool) -> TwoPart<T> {
+    let (x2, x2e) = narrow_prod(x, x, exact);
+    Sum2::of(x2, exact).plus(k).plus_error(x2e, exact).parts()
+}
+
+/// `c²` for `0 ≤ c ≤ 1`, exact as two parts (no range check: `c` is far
+/// below Dekker's limit).
+#[inline(always)]
+fn unit_square<T: Real>(c: T, exact: bool) -> TwoPart<T> {
+    let high = c * c;
+    let low = if exact {
+        T::zero()
+    } else if cfg!(target_feature = "fma") {
+        c.mul_add(c, -high)
+    } else {
+        dekker_error(c, c, high)
+    };
+    TwoPart { high, low }
+}
+
+/// `k · c²` for a material's constant `k` and an angle's `c²`, to about
+/// `ε²` relative: the high parts' product split exactly, the cross terms
+/// added, the product of the low parts (`ε²` smaller) dropped. Low parts
+/// that are zero by construction where the tier's products are `exact`
+/// (`c²`'s) are not added.
+#[inline(always)]
+fn times_square<T: Real>(k: TwoPart<T>, c2: TwoPart<T>, exact: bool) -> TwoPart<T> {
+    let high = k.high * c2.high;
+    // A narrow tier's constants lie below 2^256, in Dekker's range.
+    let error = if exact {
+        dekker_error(k.high, c2.high, high)
+    } else {
+        two_prod(k.high, c2.high).1
+    };
+    let low = if exact {
+        error + k.low * c2.high
+    } else {
+        error + (k.high * c2.low + k.low * c2.high)
+    };
+    TwoPart { high, low }
+}
+
+/// `n_t² − n_i² + n_i² c²` `= n_t² − n_i² sin²θ_i = n_t² cos²θ_t` at
+/// `c = |cos θ_i|`, from the side `inside` or not: Snell's discriminant,
+/// which vanishes at the critical angle.
+#[inline(always)]
+pub(crate) fn snell_discriminant<T: Real>(
+    squares: &IndexSquares<T>,
+    inside: bool,
+    c: T,
+    exact: bool,
+) -> T {
+    let c2 = unit_square(c, exact);
+    let x = if inside {
+        times_square(squares.eta2, c2, exact)
+    } else {
+        c2
+    };
+    let k = squares.contrast(inside);
+    (k.high + x.high) + (x.low + k.low)
+}
+
+/// `c² (n_t² + n_i²) − n_i²` at `c = |cos θ_i|`, from the side `inside` or
+/// not: Brewster's factor, which vanishes at Brewster's angle.
+#[inline(always)]
+pub(crate) fn brewster_factor<T: Real>(
+    squares: &IndexSquares<T>,
+    inside: bool,
+    c: T,
+    exact: bool,
+) -> T {
+    let m = times_square(squares.plus_one, unit_square(c, exact), exact);
+    let n_i2 = squares.incident(inside);
+    (m.high - n_i2.high) + (m.low - n_i2.low)
 }
 
 // A conductor's index `η = x + i·y` is fixed per material, so the parts of
@@ -323,15 +417,15 @@ pub(crate) fn squares_plus<T: Real>(x: T, y: T, k: T, exact: bool) -> TwoPart<T>
 /// of index 1, which vanishes at a near-critical angle when `κ` is small.
 #[inline(always)]
 pub(crate) fn discriminant_from<T: Real>(contrast: TwoPart<T>, c: T, exact: bool) -> T {
+    let c2 = unit_square(c, exact);
     if exact {
         // c² is exact, and cancels the contrast's high part exactly.
-        return (contrast.high + c * c) + contrast.low;
+        return (contrast.high + c2.high) + contrast.low;
     }
-    let (c2, c2e) = narrow_prod(c, c, exact);
     Sum2::of(contrast.high, exact)
-        .plus(c2)
+        .plus(c2.high)
         .plus(contrast.low)
-        .plus_error(c2e, exact)
+        .plus(c2.low)
         .value()
 }
 
@@ -342,187 +436,24 @@ pub(crate) fn discriminant_from<T: Real>(contrast: TwoPart<T>, c: T, exact: bool
 /// the `ε²`-small rest is dropped.
 #[inline(always)]
 pub(crate) fn brewster_from<T: Real>(a: TwoPart<T>, c: T, exact: bool) -> T {
-    let (c2, c2e) = narrow_prod(c, c, exact);
+    let c2 = unit_square(c, exact);
     if exact {
-        // c² is exact; m = c² A_high is split exactly (c² and A of a narrow
-        // tier lie below 2^256, in Dekker's range), and m cancels the 1
+        // c² is exact; m = c² A_high is split exactly, and cancels the 1
         // exactly.
-        let m = c2 * a.high;
-        return (m - T::one()) + (dekker_error(c2, a.high, m) + c2 * a.low);
+        let m = times_square(a, c2, exact);
+        return (m.high - T::one()) + m.low;
     }
-    let (m, me) = two_prod(c2, a.high);
+    // Summed in full, not in the dielectric's short form, which rounds
+    // twice where nothing cancels: a metal's R_p, the square of this
+    // factor's modulus, would carry both roundings.
+    let (m, me) = two_prod(c2.high, a.high);
     Sum2::of(m, exact)
         .plus(-T::one())
         .plus(me)
-        .plus(c2 * a.low)
-        .plus_error(c2e * a.high, exact)
+        .plus(c2.high * a.low)
+        .plus(c2.low * a.high)
         .value()
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// A xorshift generator of 64-bit words from `state`: reproducible
-    /// random operands.
-    fn xorshift(mut state: u64) -> impl FnMut() -> u64 {
-        move || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            state
-        }
-    }
-
-    #[test]
-    fn dekkers_product_error_is_the_fused_multiply_adds() {
-        // Both are exact, so they agree bit for bit: over 2^±450 (products
-        // far from underflow), and for products of widened f32s (error 0).
-        let mut next = xorshift(0x9e37_79b9_7f4a_7c15);
-        for _ in 0..100_000 {
-            let magnitude = |bits: u64| 2f64.powi((bits % 900) as i32 - 450);
-            let (ra, rb) = (next(), next());
-            let a = (ra >> 11) as f64 / (1u64 << 53) as f64 * magnitude(ra);
-            let b = -((rb >> 11) as f64) / (1u64 << 53) as f64 * magnitude(rb);
-            let p = a * b;
-            assert_eq!(
-                dekker_error(a, b, p).to_bits(),
-                a.mul_add(b, -p).to_bits(),
-                "{a:e} · {b:e}"
-            );
-            let narrow = |x: f64, bits: u64| {
-                (x / magnitude(bits) * 2f64.powi((bits % 120) as i32 - 60)) as f32
-            };
-            let (fa, fb) = (f64::from(narrow(a, ra)), f64::from(narrow(b, rb)));
-            assert_eq!(dekker_error(fa, fb, fa * fb), 0.0, "{fa:e} · {fb:e}");
-        }
-        let big = 2f64.powi(994) * 1.999;
-        assert_eq!(
-            dekker_error(big, 0.75, big * 0.75),
-            big.mul_add(0.75, -big * 0.75)
-        );
-    }
-
-    #[test]
-    fn scaled_dekker_error_is_the_fused_multiply_adds_for_huge_operands() {
-        // Operands from 2^990 to the largest double, against factors whose
-        // product stays finite: the scaled split must give the exact error.
-        let mut next = xorshift(0x2545_f491_4f6c_dd1d);
-        let mut scaled = 0;
-        for _ in 0..100_000 {
-            let (ra, rb) = (next(), next());
-            let a =
-                (1.0 + (ra >> 12) as f64 / (1u64 << 52) as f64) * 2f64.powi(990 + (ra % 34) as i32);
-            let b = -((rb >> 11) as f64) / (1u64 << 53) as f64 * 2f64.powi(-((rb % 900) as i32));
-            let (a, b) = if ra & 1 == 0 { (a, b) } else { (b, a) };
-            let p = a * b;
-            if !p.is_finite() {
-                continue;
-            }
-            scaled += usize::from(a.abs().max(b.abs()) >= 2f64.powi(995));
-            assert_eq!(
-                scaled_dekker_error(a, b, p).to_bits(),
-                a.mul_add(b, -p).to_bits(),
-                "{a:e} · {b:e}"
-            );
-        }
-        assert!(scaled > 50_000, "only {scaled} cases took the scaled split");
-        assert_eq!(
-            scaled_dekker_error(f64::MAX, 0.75, f64::MAX * 0.75),
-            f64::MAX.mul_add(0.75, -f64::MAX * 0.75)
-        );
-    }
-
-    #[test]
-    fn two_sum_and_two_prod_are_error_free() {
-        // 1 + 2⁻⁶⁰ is not representable; the error term must hold the 2⁻⁶⁰.
-        let tiny = 2f64.powi(-60);
-        assert_eq!(two_sum(1.0, tiny), (1.0, tiny));
-        // (1 + 2⁻³⁰)² = 1 + 2⁻²⁹ + 2⁻⁶⁰: the last term is the product's error.
-        let a = 1.0 + 2f64.powi(-30);
-        assert_eq!(two_prod(a, a), (1.0 + 2f64.powi(-29), tiny));
-    }
-
-    #[test]
-    fn discriminant_keeps_digits_that_cancel() {
-        // eta = 1 + 2⁻³⁰, c = 0: eta² − 1 = 2⁻²⁹ + 2⁻⁶⁰ exactly; the naive
-        // form drops the 2⁻⁶⁰, the compensated one keeps it.
-        let eta = 1.0 + 2f64.powi(-30);
-        let exact = 2f64.powi(-29) + 2f64.powi(-60);
-        assert_eq!(snell_discriminant(eta, 1.0, 0.0, false), exact);
-        assert_eq!(index_contrast(eta, 1.0, false), exact);
-        assert_ne!(eta * eta - 1.0, exact);
-    }
-
-    /// The narrow tier's short sums against the full Sum2 of the same
-    /// widened inputs, where they cancel: Snell's discriminant at cosines
-    /// around the critical angle, Brewster's factor around Brewster's
-    /// angle, a conductor's two of each, for indices from 1 + 2^-20 to 10^3,
-    /// from both sides. The short forms add the terms that cancel exactly
-    /// and round what is left: within 2 f64 ulps of the result (Sum2's own
-    /// error is below one).
-    #[test]
-    fn a_narrow_tiers_short_sums_are_within_2_ulps_of_sum2_where_they_cancel() {
-        let mut worst = 0.0f64;
-        let mut check = |short: f64, full: f64, what: &str| {
-            let ulps = (short - full).abs() / f64::ulp_at(full);
-            assert!(
-                ulps <= 2.0,
-                "{what}: {short:e} against {full:e}, {ulps} ulps"
-            );
-            worst = worst.max(ulps);
-        };
-        for &eta in &[1.0 + 2f32.powi(-20), 1.0001, 1.333, 1.5, 2.4, 10.0, 1000.0] {
-            for (n_t, n_i) in [(eta, 1.0), (1.0, eta)] {
-                let (n_t, n_i) = (f64::from(n_t), f64::from(n_i));
-                // The cosines of the critical angle (from inside) and of
-                // Brewster's, and 200 f32 neighbours either side.
-                let critical = (1.0 - (n_t / n_i).powi(2)).max(0.0).sqrt() as f32;
-                let brewster = (n_i / (n_t * n_t + n_i * n_i).sqrt()) as f32;
-                for centre in [critical, brewster] {
-                    let mut c = centre;
-                    for _ in 0..200 {
-                        c = f32::from_bits(c.to_bits().saturating_sub(1));
-                    }
-                    for _ in 0..400 {
-                        let w = f64::from(c);
-                        let s = f64::from((1.0 - c * c).max(0.0).sqrt());
-                        check(
-                            snell_discriminant(n_t, n_i, w, true),
-                            snell_discriminant(n_t, n_i, w, false),
-                            "Snell's discriminant",
-                        );
-                        check(
-                            snell_discriminant_from_sine(n_t, n_i, s, true),
-                            snell_discriminant_from_sine(n_t, n_i, s, false),
-                            "Snell's discriminant from the sine",
-                        );
-                        check(
-                            brewster_factor(n_t, n_i, w, true),
-                            brewster_factor(n_t, n_i, w, false),
-                            "Brewster's factor",
-                        );
-                        // A conductor of small κ from outside.
-                        let (x, y) = (f64::from((n_t / n_i) as f32), f64::from(1e-6f32));
-                        let contrast = squares_plus(x, y, -1.0, true);
-                        let contrast_full = squares_plus(x, y, -1.0, false);
-                        check(
-                            discriminant_from(contrast, w, true),
-                            discriminant_from(contrast_full, w, false),
-                            "a conductor's discriminant",
-                        );
-                        let a = squares_plus(x, y, 1.0, true);
-                        let a_full = squares_plus(x, y, 1.0, false);
-                        check(
-                            brewster_from(a, w, true),
-                            brewster_from(a_full, w, false),
-                            "a conductor's Brewster factor",
-                        );
-                        c = f32::from_bits(c.to_bits() + 1);
-                    }
-                }
-            }
-        }
-        println!("worst {worst:.2} f64 ulps");
-    }
-}
+mod tests;

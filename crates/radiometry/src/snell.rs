@@ -152,8 +152,24 @@ impl<T: Real> Incidence<T> {
             Some(sin_i) => {
                 compensated::snell_discriminant_from_sine(n_t, n_i, sin_i.widen(), exact)
             }
-            None => compensated::snell_discriminant(n_t, n_i, self.abs_cos_i.widen(), exact),
+            None => compensated::snell_discriminant(
+                &self.index_squares(),
+                self.from_inside,
+                self.abs_cos_i.widen(),
+                exact,
+            ),
         }
+    }
+
+    /// The squares of the interface's index, `η²` and `η² ± 1`, in the
+    /// tier's wide precision: what the laws take at every angle. They
+    /// depend only on the material, so a loop over many cosines of one
+    /// material computes them once.
+    #[inline(always)]
+    pub(crate) fn index_squares(&self) -> compensated::IndexSquares<T::Wide> {
+        // One of the two indices is 1 and the other is η.
+        let eta = if self.from_inside { self.n_i } else { self.n_t };
+        compensated::IndexSquares::of(eta.widen(), T::PRODUCTS_EXACT_IN_WIDE)
     }
 
     /// `cos θ_t ≥ 0` on the far side, or `None` under total internal

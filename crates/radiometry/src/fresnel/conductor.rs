@@ -148,8 +148,13 @@ impl<T: Real> Conductor<T> {
         let u_ws2 = u * (c * c) + two * c * us.re + u_abs_d; // Re s ≥ 0: no cancellation
         let b = self.eta2 * c;
         let u_wp2 = u * b.norm_sqr() + two * (b.re * us.re + b.im * us.im) + u_abs_d;
-        let r_s = sqr(self.abs_eta2_m1 / (u_ws2 / u));
-        let r_p = sqr(self.abs_eta2_m1 * abs(brewster) / (u_wp2 / u));
+        // |η² − 1| / |x + s|² = u |η² − 1| / (u |x + s|²): the scale
+        // multiplies the numerator rather than divides the denominator,
+        // rounding as often, with one division per amplitude where there
+        // were two.
+        let u_contrast = u * self.abs_eta2_m1;
+        let r_s = sqr(u_contrast / u_ws2);
+        let r_p = sqr(u_contrast * abs(brewster) / u_wp2);
         // Index-matched (η = 1) reflects nothing; chosen here rather than
         // computed, as 0 / ws2 is NaN at grazing incidence (ws2 = 0).
         let zero = Wide::<T>::zero();

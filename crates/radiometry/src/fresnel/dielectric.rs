@@ -158,8 +158,10 @@ pub fn dielectric_resolved<T: Real>(incidence: &Incidence<T>) -> DielectricFresn
     // per result.
     let exact = T::PRODUCTS_EXACT_IN_WIDE;
     let [c, n_i, n_t] = [incidence.abs_cos_i, incidence.n_i, incidence.n_t].map(T::widen);
-    let contrast = compensated::index_contrast(n_t, n_i, exact); // n_t² − n_i²
-                                                                 // d = s² with s = n_t cos θ_t; Snell's law decides whether light goes on.
+    let squares = incidence.index_squares();
+    let inside = incidence.from_inside;
+    let contrast = squares.contrast(inside).value(); // n_t² − n_i²
+                                                     // d = s² with s = n_t cos θ_t; Snell's law decides whether light goes on.
     let snell = incidence.snell();
     let d = snell.discriminant;
     // The general case is computed whatever the outcome and the special
@@ -183,7 +185,7 @@ pub fn dielectric_resolved<T: Real>(incidence: &Incidence<T>) -> DielectricFresn
     let n_t2 = n_t * n_t;
     let b = n_t2 * c;
     let wp2 = b * b + (b + b) * (n_i * s) + n_i * n_i * d;
-    let brewster = compensated::brewster_factor(n_t, n_i, c, exact);
+    let brewster = compensated::brewster_factor(&squares, inside, c, exact);
 
     let [amp_s, amp_p] = T::wide_quotients(contrast, ws2, contrast * brewster, wp2);
     let [t_s, t_p] = T::wide_quotients(n_i * s, ws2, n_i * n_t2 * s, wp2);

@@ -1,0 +1,147 @@
+//! The exact laws' slice forms against the textbook form of the same law,
+//! timed alternately in one process: textbook, exact, textbook, exact, …
+//! over the same 4096 cosines, so that a loaded machine's drift falls on
+//! both alike. Prints, per tier and law, the best and the first-quartile
+//! time per evaluation of each and their ratio.
+//!
+//! Run: `cargo run --release -p radiometry --example fresnel_alternating [ROUNDS]`
+//! (40 rounds of 100 passes each by default). The criterion bench
+//! (`cargo bench -p radiometry --bench fresnel`) times each law in turn
+//! and writes the table of docs/results.md; this one is for comparing
+//! builds under load, where only ratios taken side by side mean anything.
+
+use std::hint::black_box;
+use std::time::Instant;
+
+use radiometry::fresnel::{conductor_slice, dielectric_slice};
+use radiometry::Real;
+
+const COSINES: usize = 4096;
+
+/// One pass of a law over the cosines, into the given results.
+type Pass<'a, T> = Box<dyn FnMut(&mut [T]) + 'a>;
+const PASSES: usize = 100;
+
+/// Glass and the course's gold (red channel), as in the bench.
+const ETA: f64 = 1.5;
+const GOLD: (f64, f64) = (0.17, 3.1);
+
+/// Cosines spread evenly over `[low, 1]`.
+fn cosines<T: Real>(low: f64) -> Vec<T> {
+    let step = (1.0 - low) / COSINES as f64;
+    (0..COSINES)
+        .map(|k| T::lit(low + step * (k as f64 + 0.5)))
+        .collect()
+}
+
+/// The exact dielectric law as shaders write it, from the outside: one
+/// square root and two divisions (the bench's baseline).
+#[inline(always)]
+fn dielectric_textbook<T: Real>(cos_i: T, eta: T, inv_eta2: T) -> T {
+    let c = cos_i.abs();
+    let sin2_t = (T::one() - c * c) * inv_eta2;
+    let cos_t = (T::one() - sin2_t).max(T::zero()).sqrt();
+    let r_s = (c - eta * cos_t) / (c + eta * cos_t);
+    let r_p = (eta * c - cos_t) / (eta * c + cos_t);
+    (r_s * r_s + r_p * r_p) * T::lit(0.5)
+}
+
+/// The exact conductor law in the `a² + b²` form shaders use (the bench's
+/// baseline).
+#[inline(always)]
+fn conductor_textbook<T: Real>(cos_i: T, n: T, kappa: T) -> T {
+    let c2 = cos_i * cos_i;
+    let s2 = T::one() - c2;
+    let t0 = n * n - kappa * kappa - s2;
+    let a2b2 = (t0 * t0 + T::lit(4.0) * n * n * kappa * kappa).sqrt();
+    let a = ((a2b2 + t0) * T::lit(0.5)).max(T::zero()).sqrt();
+    let t1 = a2b2 + c2;
+    let t2 = T::lit(2.0) * a * cos_i;
+    let r_s = (t1 - t2) / (t1 + t2);
+    let t3 = c2 * a2b2 + s2 * s2;
+    let t4 = t2 * s2;
+    let r_p = r_s * (t3 - t4) / (t3 + t4);
+    (r_s + r_p) * T::lit(0.5)
+}
+
+/// `law` over `cosines` into `out`, inlined: the loop a caller writes.
+#[inline(always)]
+fn over<T: Real>(cosines: &[T], out: &mut [T], law: impl Fn(T) -> T) {
+    for (r, &c) in out.iter_mut().zip(cosines) {
+        *r = law(c);
+    }
+}
+
+/// Nanoseconds per evaluation of `PASSES` passes of `law`.
+fn time<T: Real>(out: &mut [T], law: &mut dyn FnMut(&mut [T])) -> f64 {
+    let start = Instant::now();
+    for _ in 0..PASSES {
+        law(out);
+        black_box(&mut *out);
+    }
+    start.elapsed().as_secs_f64() * 1e9 / (PASSES * COSINES) as f64
+}
+
+/// The best and the first quartile of `times`.
+fn best_and_quartile(mut times: Vec<f64>) -> (f64, f64) {
+    times.sort_by(f64::total_cmp);
+    (times[0], times[times.len() / 4])
+}
+
+fn tier<T: Real>(name: &str, rounds: usize) {
+    let (both, outer) = (cosines::<T>(-1.0), cosines::<T>(0.0));
+    let mut out = vec![T::zero(); COSINES];
+    let eta = black_box(T::lit(ETA));
+    let (n, kappa) = black_box((T::lit(GOLD.0), T::lit(GOLD.1)));
+    let inv_eta2 = T::one() / (eta * eta);
+    let mut pairs: [(&str, [Pass<T>; 2]); 2] = [
+        (
+            "dielectric",
+            [
+                Box::new(|o: &mut [T]| {
+                    over(black_box(&both[..]), o, |c| {
+                        dielectric_textbook(c, eta, inv_eta2)
+                    })
+                }),
+                Box::new(|o: &mut [T]| dielectric_slice(black_box(&both[..]), eta, o)),
+            ],
+        ),
+        (
+            "conductor",
+            [
+                Box::new(|o: &mut [T]| {
+                    over(black_box(&outer[..]), o, |c| {
+                        conductor_textbook(c, n, kappa)
+                    })
+                }),
+                Box::new(|o: &mut [T]| conductor_slice(black_box(&outer[..]), n, kappa, o)),
+            ],
+        ),
+    ];
+    for (law, [textbook, exact]) in &mut pairs {
+        let (mut a, mut b) = (Vec::new(), Vec::new());
+        for _ in 0..rounds {
+            a.push(time(&mut out, textbook.as_mut()));
+            b.push(time(&mut out, exact.as_mut()));
+        }
+        let ((a0, a1), (b0, b1)) = (best_and_quartile(a), best_and_quartile(b));
+        println!(
+            "| {name} | {law} | {a0:.2} ns | {b0:.2} ns | {:.2} | {a1:.2} ns | {b1:.2} ns | {:.2} |",
+            b0 / a0,
+            b1 / a1
+        );
+    }
+}
+
+fn main() {
+    let rounds = std::env::args()
+        .nth(1)
+        .and_then(|a| a.parse().ok())
+        .filter(|&r: &usize| r > 0)
+        .unwrap_or(40);
+    println!("{rounds} rounds of {PASSES} passes over {COSINES} cosines, textbook and exact alternately; the exact laws' slice forms run on {:?}.\n", radiometry::fresnel::Lanes::widest());
+    println!("| tier | law | textbook, best | exact, best | ÷ textbook | textbook, q1 | exact, q1 | ÷ textbook |");
+    println!("|---|---|---|---|---|---|---|---|");
+    tier::<f32>("f32", rounds);
+    tier::<f64>("f64", rounds);
+}
