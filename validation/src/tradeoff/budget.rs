@@ -102,6 +102,10 @@ pub struct Pilot {
     pub samples: bool,
     /// What one render costs.
     pub rays: Rays,
+    /// The most samples per pixel at which the noise still falls as
+    /// `1 / N` (a caustic map that cannot grow with the samples past its
+    /// cap); `u32::MAX` where nothing caps it.
+    pub most_spp: u32,
 }
 
 impl Pilot {
@@ -138,6 +142,7 @@ impl Pilot {
             cross,
             samples,
             rays,
+            most_spp: u32::MAX,
         }
     }
 }
@@ -196,10 +201,12 @@ pub fn predict(pilot: &Pilot, energy: f64, spp: u32) -> Prediction {
     }
 }
 
-/// The fewest samples per pixel, a power of two up to `max_spp`, at which
+/// The fewest samples per pixel, a power of two up to `max_spp` (and the
+/// pilot's `most_spp`), at which
 /// `pilot` is predicted within `tolerance`; a deterministic candidate
 /// within it as it is; `None` where neither is.
 pub fn cheapest(pilot: &Pilot, energy: f64, tolerance: f64, max_spp: u32) -> Option<Prediction> {
+    let max_spp = max_spp.min(pilot.most_spp);
     let ladder =
         std::iter::successors(Some(1u32), |&n| n.checked_mul(2)).take_while(|&n| n <= max_spp);
     let ladder: Vec<u32> = if pilot.samples {
@@ -254,7 +261,7 @@ pub fn choose(pilots: &[Pilot], energy: f64, tolerance: f64, max_spp: u32) -> Op
     pilots
         .iter()
         .enumerate()
-        .map(|(i, p)| (i, predict(p, energy, max_spp)))
+        .map(|(i, p)| (i, predict(p, energy, max_spp.min(p.most_spp))))
         .min_by(|(_, a), (_, b)| a.rel_rmse.total_cmp(&b.rel_rmse))
         .map(|(index, prediction)| Choice::Unreachable { index, prediction })
 }
