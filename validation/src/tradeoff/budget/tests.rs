@@ -163,7 +163,7 @@ fn the_prediction_bounds_the_achieved_error_over_seeds() {
         .collect();
     let bias: Vec<f32> = (0..pixels).map(|i| 0.01 * (i % 3) as f32).collect();
     let a = 0.6_f32;
-    let mut render = |spp: u32, bias: &[f32], state: &mut u64| -> Image {
+    let render = |spp: u32, bias: &[f32], state: &mut u64| -> Image {
         grey(
             &(0..pixels)
                 .map(|i| {
