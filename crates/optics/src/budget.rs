@@ -321,10 +321,12 @@ fn terms(
             terms.extend(schlick.map(|d| ("fresnel", d)));
         }
         Shortcut::Integrator | Shortcut::Scene => {
-            terms.push((
-                "integrator",
-                budget::predict(&pilots[index], energy, 1).bias,
-            ));
+            let name = if chosen.shortcut == Shortcut::Scene {
+                "scene_settings"
+            } else {
+                "integrator"
+            };
+            terms.push((name, budget::predict(&pilots[index], energy, 1).bias));
         }
         Shortcut::None => {}
     }
