@@ -184,6 +184,31 @@ pub enum ErrorKind {
         /// The scene file, as given.
         file: PathBuf,
     },
+    /// `optics render --tolerance` of a metric the budget cannot predict.
+    #[cfg(feature = "harness")]
+    MetricNotPredicted {
+        /// The metric's name, as `--metric` takes it.
+        metric: &'static str,
+    },
+    /// `optics render --tolerance` that no candidate is predicted to reach.
+    #[cfg(feature = "harness")]
+    BudgetUnreachable {
+        /// The metric's name.
+        metric: &'static str,
+        /// The tolerance asked for.
+        tolerance: f64,
+        /// The smallest bound any candidate reaches.
+        best: f64,
+        /// Its settings, in words.
+        settings: String,
+    },
+    /// `optics render --tolerance` whose pilot cannot bound the light the
+    /// truth carries above 0: black, or too noisy at its samples.
+    #[cfg(feature = "harness")]
+    BudgetPilotNoisy {
+        /// The pilot's samples per pixel.
+        pilot_spp: u32,
+    },
     /// A sweep spread over machines: a job or result line refused, a job
     /// not in the plan, results missing or given twice.
     #[cfg(feature = "harness")]
@@ -292,6 +317,12 @@ impl ErrorKind {
             #[cfg(feature = "harness")]
             ErrorKind::TruthIsBlack { .. } => "tradeoff.truth_is_black",
             #[cfg(feature = "harness")]
+            ErrorKind::MetricNotPredicted { .. } => "budget.metric_not_predicted",
+            #[cfg(feature = "harness")]
+            ErrorKind::BudgetUnreachable { .. } => "budget.unreachable",
+            #[cfg(feature = "harness")]
+            ErrorKind::BudgetPilotNoisy { .. } => "budget.pilot_noisy",
+            #[cfg(feature = "harness")]
             ErrorKind::Jobs(error) => error.name(),
         }
     }
@@ -332,6 +363,12 @@ impl ErrorKind {
             ErrorKind::Compare(error) => error.field(),
             #[cfg(feature = "harness")]
             ErrorKind::TruthIsBlack { .. } => Some("SCENE".to_owned()),
+            #[cfg(feature = "harness")]
+            ErrorKind::MetricNotPredicted { .. } => Some("--metric".to_owned()),
+            #[cfg(feature = "harness")]
+            ErrorKind::BudgetUnreachable { .. } => Some("--tolerance".to_owned()),
+            #[cfg(feature = "harness")]
+            ErrorKind::BudgetPilotNoisy { .. } => Some("--pilot-spp".to_owned()),
             #[cfg(feature = "harness")]
             ErrorKind::Jobs(error) => error.field(),
         }

@@ -128,6 +128,23 @@ fn hungarian(kind: &ErrorKind) -> String {
             file.display()
         ),
         #[cfg(feature = "harness")]
+        ErrorKind::MetricNotPredicted { metric } => format!(
+            "--metric {metric}: a keret ezt még nem tudja előre becsülni (csak a rel_rmse-t: a megjelenített kép mértékei levágnak és kvantálnak, így a próba tagjaiból nem következik rájuk korlát); az `optics tradeoff` méri"
+        ),
+        #[cfg(feature = "harness")]
+        ErrorKind::BudgetUnreachable {
+            metric,
+            tolerance,
+            best,
+            settings,
+        } => format!(
+            "--tolerance {tolerance}: a(z) {metric} {tolerance} nem érhető el; a legjobb {metric} ≤ {best:.4}, ezzel: {settings}"
+        ),
+        #[cfg(feature = "harness")]
+        ErrorKind::BudgetPilotNoisy { pilot_spp } => format!(
+            "--pilot-spp {pilot_spp}: a próba nem tudja elválasztani a felületek fényét a zajától (energiája három szórásnyival lejjebb nem nagyobb 0-nál), így relatív hiba nem becsülhető; a jelenet lehet fekete, vagy fénye nőhet a mélységgel (a course_rough π kd albedója 1 fölött: lásd `optics tradeoff --lambert`); próbálj több próbamintát"
+        ),
+        #[cfg(feature = "harness")]
         ErrorKind::Jobs(error) => jobs::jobs_hu(error),
     }
 }

@@ -11,6 +11,8 @@
 
 pub mod batch;
 #[cfg(feature = "harness")]
+pub mod budget;
+#[cfg(feature = "harness")]
 mod compare;
 mod envmap;
 pub mod error;
@@ -24,7 +26,7 @@ mod missing_light;
 mod planar;
 pub mod quiz;
 pub mod record;
-mod render;
+pub(crate) mod render;
 #[cfg(feature = "harness")]
 pub mod tradeoff;
 #[cfg(feature = "harness")]

@@ -24,6 +24,7 @@ use crate::Ui;
   optics render crates/tracer/scenes/gold_spheres.json -o gold.png --integrator course
   optics --json render scene.json -o out.png --integrator path --spp 64 --seed 7 --threads 2
   optics render crates/tracer/scenes/glass_spheres.json -o caustics.png --integrator photon --spp 64
+  optics render crates/tracer/scenes/kaleidoscope_lit.json -o k.png --tolerance 0.05 --metric rel_rmse --verify
 
 Writes the PNG (sRGB, radiance clamped to [0, 1]: see docs/scene-schema.md)
 and, beside it, the linear radiance as a PFM with the same name.")]
@@ -41,6 +42,11 @@ pub struct RenderArgs {
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1024))]
     #[serde(skip_serializing_if = "Option::is_none")]
     pub threads: Option<u32>,
+    /// The accuracy budget: `--tolerance`, `--metric`, `--verify`.
+    #[cfg(feature = "harness")]
+    #[command(flatten)]
+    #[serde(flatten)]
+    pub budget: crate::budget::BudgetArgs,
 }
 
 /// The settings `render` and `inspect` take over the scene's own; as
@@ -131,6 +137,10 @@ impl JobArgs {
 }
 
 pub fn run(args: &RenderArgs, ui: &Ui) -> error::Result<()> {
+    #[cfg(feature = "harness")]
+    if let Some(budget) = args.budget.settle()? {
+        return crate::budget::run(args, budget, ui);
+    }
     let job = args.job.job(&args.scene)?;
     // Refuse an unwritable destination before spending the render on it.
     let destination = Destination::new(&args.output, &[&args.scene]).map_err(ErrorKind::Output)?;

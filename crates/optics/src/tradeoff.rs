@@ -20,7 +20,7 @@ mod report;
 mod setup;
 pub mod sweep;
 mod timing;
-mod truth;
+pub(crate) mod truth;
 mod worker;
 
 pub use worker::{run_job, TradeoffJobArgs};

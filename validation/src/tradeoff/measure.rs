@@ -50,7 +50,7 @@ impl Mask {
     }
 
     /// The kept pixels' indices.
-    fn kept(&self) -> impl Iterator<Item = usize> + '_ {
+    pub(crate) fn kept(&self) -> impl Iterator<Item = usize> + '_ {
         self.0
             .iter()
             .enumerate()

@@ -1,11 +1,13 @@
 //! The speed/accuracy trade as `optics tradeoff` records it: the record's
 //! vocabulary, shared by the command that writes it and by the report that
 //! reads it ([`record`]), the fixed error measures ([`measure`]), the
-//! Pareto front ([`pareto`]), the verdict on a
+//! Pareto front ([`pareto`]), the accuracy budget's prediction
+//! ([`budget`]), the verdict on a
 //! shortcut ([`Verdict`]), and the checks `optics validate` makes of the
 //! committed records (`docs/tradeoffs/*.json`, written by
 //! `docs/tradeoffs/make`): [`checks`].
 
+pub mod budget;
 pub mod checks;
 pub mod measure;
 pub mod pareto;

@@ -92,6 +92,26 @@ impl fmt::Display for ErrorKind {
                 file.display()
             ),
             #[cfg(feature = "harness")]
+            ErrorKind::MetricNotPredicted { metric } => write!(
+                f,
+                "--metric {metric}: the budget cannot predict it yet (it predicts rel_rmse only: the displayed image's measures clamp and quantise, and no bound on them follows from the pilot's terms); measure it with `optics tradeoff`"
+            ),
+            #[cfg(feature = "harness")]
+            ErrorKind::BudgetUnreachable {
+                metric,
+                tolerance,
+                best,
+                settings,
+            } => write!(
+                f,
+                "--tolerance {tolerance}: cannot reach {metric} {tolerance}; the best is {metric} ≤ {best:.4}, with {settings}"
+            ),
+            #[cfg(feature = "harness")]
+            ErrorKind::BudgetPilotNoisy { pilot_spp } => write!(
+                f,
+                "--pilot-spp {pilot_spp}: the pilot cannot tell the light on the surfaces from its noise (its energy, three standard deviations down, is not above 0), so no relative error can be predicted; the scene may be black, or its light may grow with depth (course_rough's albedo π kd above 1: see `optics tradeoff --lambert`); try more pilot samples"
+            ),
+            #[cfg(feature = "harness")]
             ErrorKind::Jobs(error) => write!(f, "{error}"),
         }
     }

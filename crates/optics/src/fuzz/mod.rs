@@ -2,7 +2,8 @@
 //! Rust: batch lines (`batch_lines`), flag values (`flag_values`), the
 //! render settings' choices (`render_flags`), the images `optics
 //! compare` reads (`compare_images`), `optics tradeoff`'s numeric flags
-//! (`tradeoff_flags`), the job and result lines of a sweep spread over
+//! (`tradeoff_flags`), the accuracy budget's flags of `optics render`
+//! (`budget_flags`), the job and result lines of a sweep spread over
 //! machines (`tradeoff_jobs`) and the vectors of `optics envmap`,
 //! `reflection-matrix` and `shadow-matrix` (`technique_flags`).
 //!
@@ -17,6 +18,8 @@
 //! runs longer and prints which error kinds and fields the cases reached.
 
 mod batch_lines;
+#[cfg(feature = "harness")]
+mod budget_flags;
 #[cfg(feature = "harness")]
 mod compare_images;
 mod flag_values;

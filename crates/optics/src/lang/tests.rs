@@ -224,6 +224,18 @@ fn slot(kind: &ErrorKind) -> usize {
             CALCULATOR + render_kinds::SLOTS + harness_kinds::TRUTH_IS_BLACK
         }
         #[cfg(feature = "harness")]
+        ErrorKind::MetricNotPredicted { .. } => {
+            CALCULATOR + render_kinds::SLOTS + harness_kinds::METRIC_NOT_PREDICTED
+        }
+        #[cfg(feature = "harness")]
+        ErrorKind::BudgetUnreachable { .. } => {
+            CALCULATOR + render_kinds::SLOTS + harness_kinds::BUDGET_UNREACHABLE
+        }
+        #[cfg(feature = "harness")]
+        ErrorKind::BudgetPilotNoisy { .. } => {
+            CALCULATOR + render_kinds::SLOTS + harness_kinds::BUDGET_PILOT_NOISY
+        }
+        #[cfg(feature = "harness")]
         ErrorKind::Compare(error) => {
             CALCULATOR
                 + render_kinds::SLOTS

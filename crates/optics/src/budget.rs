@@ -1,0 +1,361 @@
+//! `optics render --tolerance T --metric M`: the accuracy budget. A cheap
+//! pilot pass ([`pilot`]) measures, at the render's own size, what each
+//! candidate setting leaves out of the ground truth and how noisy it is;
+//! the prediction ([`validation::tradeoff::budget`]) bounds each
+//! candidate's error at each sample count, and the cheapest in rays within
+//! `T` is rendered. With `--verify` the render is measured against the
+//! ground truth the trade-off sweep uses (its cache shared).
+//!
+//! Only the relative RMSE of linear radiance is predicted: its bias and
+//! noise add in squares. The displayed-image measures (ΔE2000, ꟻLIP) clamp
+//! and quantise the image, so no bound on them follows from these terms
+//! yet: they are refused by name.
+
+pub mod pilot;
+mod report;
+
+use std::path::{Path, PathBuf};
+
+use serde::Serialize;
+use tracer::job::RenderJob;
+use tracer::output::Destination;
+use tracer::scene::{Settings, MAX_SPP};
+use validation::tradeoff::budget::{self, Choice, Prediction};
+use validation::tradeoff::measure::{self, Mask};
+
+use crate::error::{self, ErrorKind};
+use crate::render::RenderArgs;
+use crate::tradeoff::{sweep, truth};
+use crate::Ui;
+
+/// The most samples per pixel the budget gives a candidate: 2^16.
+pub const MAX_BUDGET_SPP: u32 = 1 << 16;
+
+/// The fixed error measures a budget can name, as the sweep names them.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Metric {
+    /// Relative RMSE of linear radiance over the surface pixels.
+    #[value(name = "rel_rmse")]
+    RelRmse,
+    /// Mean ΔE2000 of the displayed image.
+    #[value(name = "delta_e_mean")]
+    DeltaEMean,
+    /// 99th percentile of ΔE2000 of the displayed image.
+    #[value(name = "delta_e_p99")]
+    DeltaEP99,
+    /// Mean ꟻLIP of the displayed image.
+    #[value(name = "flip_mean")]
+    FlipMean,
+}
+
+impl Metric {
+    /// Its name in the sweep's record (one of [`crate::tradeoff::MEASURES`]).
+    pub fn name(self) -> &'static str {
+        match self {
+            Metric::RelRmse => "rel_rmse",
+            Metric::DeltaEMean => "delta_e_mean",
+            Metric::DeltaEP99 => "delta_e_p99",
+            Metric::FlipMean => "flip_mean",
+        }
+    }
+}
+
+/// The budget's flags beside `render`'s.
+#[derive(clap::Args, Debug, Serialize)]
+pub struct BudgetArgs {
+    /// Choose the cheapest settings whose predicted error (--metric) stays
+    /// under this: a positive, finite number (a relative RMSE of 0.05 is 5 %).
+    /// The budget chooses the integrator, spp, max_depth, the Fresnel law
+    /// and the pixel filter: give none of them.
+    #[arg(
+        long,
+        value_parser = tolerance_flag,
+        requires = "metric",
+        conflicts_with_all = ["integrator", "spp", "max_depth", "fresnel", "pixel_filter"]
+    )]
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub tolerance: Option<f64>,
+    /// The measure the tolerance is of (only rel_rmse can be predicted yet).
+    #[arg(long, value_enum, requires = "tolerance")]
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub metric: Option<Metric>,
+    /// Measure the error reached against the ground truth (rendered at
+    /// --truth-spp, or read from its cache).
+    #[arg(long, requires = "tolerance")]
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub verify: bool,
+    /// Samples per pixel of the pilot pass, in two halves.
+    #[arg(long, default_value_t = 8,
+          value_parser = clap::value_parser!(u32).range(2..=1024))]
+    pub pilot_spp: u32,
+    /// Samples per pixel of the ground truth of --verify (two halves).
+    #[arg(long, default_value_t = 1024,
+          value_parser = clap::value_parser!(u32).range(2..=MAX_SPP as i64))]
+    pub truth_spp: u32,
+    /// Where the ground truth is cached (shared with `optics tradeoff`).
+    #[arg(long, default_value = "validation/out/tradeoff/truth")]
+    pub truth_cache: PathBuf,
+}
+
+/// `--tolerance`: a finite number above 0.
+fn tolerance_flag(text: &str) -> Result<f64, String> {
+    match text.parse::<f64>() {
+        Ok(t) if (t.is_finite() && t > 0.0) || tolerance_unchecked() => Ok(t),
+        Ok(t) => Err(format!("{t} is not a positive, finite tolerance")),
+        Err(e) => Err(e.to_string()),
+    }
+}
+
+#[cfg(test)]
+thread_local! {
+    /// A test-only switch that reverts the check of `--tolerance`, for the
+    /// budget-flags fuzz target to find.
+    pub(crate) static TOLERANCE_UNCHECKED: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+}
+
+#[cfg(test)]
+fn tolerance_unchecked() -> bool {
+    TOLERANCE_UNCHECKED.get()
+}
+
+#[cfg(not(test))]
+fn tolerance_unchecked() -> bool {
+    false
+}
+
+/// A budget settled from its flags: a tolerance of a metric that can be
+/// predicted.
+#[derive(Clone, Copy, Debug)]
+pub struct Budget {
+    /// The bound on the metric, above 0 and finite.
+    pub tolerance: f64,
+    /// The metric.
+    pub metric: Metric,
+}
+
+impl BudgetArgs {
+    /// The budget the flags ask for, `None` without `--tolerance`; a
+    /// metric the budget cannot predict is refused by name.
+    pub fn settle(&self) -> error::Result<Option<Budget>> {
+        let (Some(tolerance), Some(metric)) = (self.tolerance, self.metric) else {
+            return Ok(None);
+        };
+        if metric != Metric::RelRmse {
+            return Err(ErrorKind::MetricNotPredicted {
+                metric: metric.name(),
+            }
+            .into());
+        }
+        Ok(Some(Budget { tolerance, metric }))
+    }
+}
+
+/// What the budget chose, and what it measured: the record's details.
+#[derive(Debug, Serialize)]
+pub struct Outcome {
+    /// The tolerance and its metric.
+    pub tolerance: f64,
+    /// The metric's name.
+    pub metric: &'static str,
+    /// The settings rendered.
+    pub chosen: Settings,
+    /// What they leave out of the truth's settings.
+    pub shortcut: pilot::Shortcut,
+    /// Their prediction.
+    pub predicted: Prediction,
+    /// The prediction of the terms measured alone (name, relative bound).
+    pub terms: Vec<(&'static str, f64)>,
+    /// The scene's own settings at their own samples.
+    pub scene: Prediction,
+    /// Rays the rendered image cast.
+    pub rays: u64,
+    /// Rays the pilot pass cast.
+    pub pilot_rays: u64,
+    /// The pilot's samples per pixel (two halves).
+    pub pilot_spp: u32,
+    /// Every candidate, its settings and its cheapest prediction within
+    /// the tolerance (none where it cannot reach it).
+    pub candidates: Vec<(String, Option<Prediction>)>,
+    /// The measures against the ground truth, with `--verify`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub verified: Option<measure::Errors>,
+}
+
+/// Renders `args`'s scene at the cheapest settings within `budget`.
+pub fn run(args: &RenderArgs, budget: Budget, ui: &Ui) -> error::Result<()> {
+    let flags = &args.budget;
+    let job = args.job.job(&args.scene)?;
+    let destination = Destination::new(&args.output, &[&args.scene]).map_err(ErrorKind::Output)?;
+    let threads = args.threads.map(|t| t as usize);
+    let mask = Mask::from_hits(&job.first_hits());
+    let half = (flags.pilot_spp / 2).max(1);
+    let truth = pilot::truth_settings(&job, half);
+    let candidates = pilot::candidates(&job, &truth);
+    let pass = pilot::run(
+        &job,
+        &args.scene,
+        (&truth, &candidates),
+        (half, &mask),
+        threads,
+    )?;
+    let [a, b] = &pass.reference;
+    let energy = budget::energy([a, b], &mask).ok_or(ErrorKind::BudgetPilotNoisy {
+        pilot_spp: 2 * half,
+    })?;
+    let choice = budget::choose(&pass.pilots, energy, budget.tolerance, MAX_BUDGET_SPP)
+        .expect("the truth's settings are always a candidate");
+    let (index, predicted) = match choice {
+        Choice::Chosen { index, prediction } => (index, prediction),
+        Choice::Unreachable { index, prediction } => {
+            return Err(ErrorKind::BudgetUnreachable {
+                metric: budget.metric.name(),
+                tolerance: budget.tolerance,
+                best: prediction.rel_rmse,
+                settings: describe(&final_settings(
+                    &candidates[index].settings,
+                    &prediction,
+                    half,
+                )),
+            }
+            .into());
+        }
+    };
+    let chosen = final_settings(&candidates[index].settings, &predicted, half);
+    let final_job = RenderJob::with_settings(job.scene().clone(), chosen).map_err(|error| {
+        ErrorKind::Scene {
+            file: args.scene.clone(),
+            error,
+        }
+    })?;
+    let rendered = final_job.render_to(&destination, threads, &|_| {})?;
+    let verified = if flags.verify {
+        Some(verify(
+            &job,
+            flags,
+            &args.scene,
+            &mask,
+            &rendered.image,
+            threads,
+        )?)
+    } else {
+        None
+    };
+    let scene_pilot = &pass.pilots[0];
+    let outcome = Outcome {
+        tolerance: budget.tolerance,
+        metric: budget.metric.name(),
+        chosen,
+        shortcut: candidates[index].shortcut,
+        predicted,
+        terms: terms(&candidates, &pass.pilots, index, energy),
+        scene: budget::predict(scene_pilot, energy, job.settings().spp),
+        rays: rendered.rays.total(),
+        pilot_rays: pass.rays,
+        pilot_spp: 2 * half,
+        candidates: candidates
+            .iter()
+            .zip(&pass.pilots)
+            .map(|(c, p)| {
+                let best = budget::cheapest(p, energy, budget.tolerance, MAX_BUDGET_SPP);
+                (describe(&c.settings), best)
+            })
+            .collect(),
+        verified,
+    };
+    report::show(args, &destination, &outcome, ui)
+}
+
+/// A candidate's settings at the samples its prediction took (the caustic
+/// map's photons scaled alike), rendered with the seed after the pilot's
+/// two.
+fn final_settings(settings: &Settings, prediction: &Prediction, half_spp: u32) -> Settings {
+    let at = match prediction.spp {
+        Some(spp) => pilot::scaled_photons(settings, half_spp, spp),
+        None => *settings,
+    };
+    Settings {
+        seed: settings.seed.wrapping_add(2),
+        ..at
+    }
+}
+
+/// The settings in a few words, as the sweep writes them, and the
+/// caustic map's photons where there is one.
+pub fn describe(settings: &Settings) -> String {
+    let words = sweep::describe(settings);
+    if settings.integrator == tracer::scene::IntegratorKind::Photon {
+        let p = &settings.photon;
+        format!("{words}, {} photons × {} passes", p.photons, p.passes)
+    } else {
+        words
+    }
+}
+
+/// The bias of each shortcut of the chosen candidate measured alone, from
+/// the candidates that take it alone, and its noise.
+fn terms(
+    candidates: &[pilot::Candidate],
+    pilots: &[budget::Pilot],
+    index: usize,
+    energy: f64,
+) -> Vec<(&'static str, f64)> {
+    use pilot::Shortcut;
+    let chosen = &candidates[index];
+    let alone = |shortcut: Shortcut, keep: &dyn Fn(&Settings) -> bool| {
+        candidates
+            .iter()
+            .zip(pilots)
+            .find(|(c, _)| c.shortcut == shortcut && keep(&c.settings))
+            .map(|(_, p)| budget::predict(p, energy, 1).bias)
+    };
+    let s = chosen.settings;
+    let mut terms = Vec::new();
+    let depth = alone(Shortcut::MaxDepth, &|c| c.max_depth == s.max_depth);
+    let schlick = alone(Shortcut::Schlick, &|_| true);
+    match chosen.shortcut {
+        Shortcut::MaxDepth => terms.extend(depth.map(|d| ("max_depth", d))),
+        Shortcut::Schlick => terms.extend(schlick.map(|d| ("fresnel", d))),
+        Shortcut::MaxDepthAndSchlick => {
+            terms.extend(depth.map(|d| ("max_depth", d)));
+            terms.extend(schlick.map(|d| ("fresnel", d)));
+        }
+        Shortcut::Integrator | Shortcut::Scene => {
+            let name = if chosen.shortcut == Shortcut::Scene {
+                "scene_settings"
+            } else {
+                "integrator"
+            };
+            terms.push((name, budget::predict(&pilots[index], energy, 1).bias));
+        }
+        Shortcut::None => {}
+    }
+    terms
+}
+
+/// The measures of `image` against the ground truth of the trade-off
+/// sweep, from its cache where it holds it.
+fn verify(
+    job: &RenderJob,
+    flags: &BudgetArgs,
+    scene: &Path,
+    mask: &Mask,
+    image: &tracer::render::Image,
+    threads: Option<usize>,
+) -> error::Result<measure::Errors> {
+    std::fs::create_dir_all(&flags.truth_cache).map_err(|source| {
+        ErrorKind::Output(tracer::output::OutputError::Io {
+            path: flags.truth_cache.display().to_string(),
+            source,
+        })
+    })?;
+    let request = truth::Request {
+        scene_file: scene,
+        spp: flags.truth_spp,
+        lambert: false,
+        dir: &flags.truth_cache,
+        fresh: false,
+    };
+    let (truth, _) = truth::obtain(job, &request, mask, threads)?;
+    Ok(measure::errors(std::slice::from_ref(image), &truth, mask))
+}

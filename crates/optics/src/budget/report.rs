@@ -1,0 +1,135 @@
+//! What the budget says: what it chose and why, term by term, what the
+//! scene's own settings would have cost, and with `--verify` the error
+//! reached; as text, or as the one `--json` record.
+
+use tracer::output::Destination;
+use validation::tradeoff::budget::Prediction;
+
+use super::{describe, Outcome};
+use crate::error;
+use crate::lang::{say, Lang};
+use crate::record::{Answer, Record};
+use crate::render::RenderArgs;
+use crate::Ui;
+
+/// Shows the budget's record.
+pub fn show(
+    args: &RenderArgs,
+    destination: &Destination,
+    outcome: &Outcome,
+    ui: &Ui,
+) -> error::Result<()> {
+    let lang = ui.lang;
+    let (png, pfm) = (destination.png(), destination.pfm());
+    let mut record = Record::new("render", String::new(), "");
+    record
+        .inputs_from(args)
+        .set_answer(
+            Answer::List(vec![
+                png.display().to_string().into(),
+                pfm.display().to_string().into(),
+            ]),
+            None,
+        )
+        .details_from(outcome);
+    for line in lines(outcome, lang) {
+        record.step(|| line);
+    }
+    record.step(|| {
+        say!(
+            lang,
+            "rendered: {} rays → {}, {}",
+            "kép: {} sugár → {}, {}",
+            outcome.rays,
+            png.display(),
+            pfm.display()
+        )
+    });
+    if let Some(errors) = &outcome.verified {
+        let within = errors.rel_rmse <= outcome.tolerance;
+        record.step(|| {
+            say!(
+                lang,
+                "verified against the ground truth: rel_rmse {:.4} (predicted ≤ {:.4}, tolerance {}): {}; ΔE2000 mean {:.3}, p99 {:.3}, ꟻLIP {:.4}",
+                "ellenőrizve a referencián: rel_rmse {:.4} (becslés ≤ {:.4}, tűrés {}): {}; ΔE2000 átlag {:.3}, p99 {:.3}, ꟻLIP {:.4}",
+                errors.rel_rmse,
+                outcome.predicted.rel_rmse,
+                outcome.tolerance,
+                if within {
+                    lang.pick("within", "belül")
+                } else {
+                    lang.pick("OVER the tolerance", "a tűrés FÖLÖTT")
+                },
+                errors.delta_e_mean,
+                errors.delta_e_p99,
+                errors.flip_mean
+            )
+        });
+    }
+    ui.show_steps(&record)
+}
+
+/// The choice and its reasons, one line each.
+fn lines(outcome: &Outcome, lang: Lang) -> Vec<String> {
+    let p = &outcome.predicted;
+    let mut lines = vec![
+        say!(
+            lang,
+            "pilot: {} candidates, two halves of {} spp each against the truth's settings, {} rays",
+            "próba: {} jelölt, két {} mintás fél mindegyik, a referencia beállításai mellett, {} sugár",
+            outcome.candidates.len(),
+            outcome.pilot_spp / 2,
+            outcome.pilot_rays
+        ),
+        say!(
+            lang,
+            "chosen: {}, predicted {} ≤ {:.4} (tolerance {}), {:.3e} rays",
+            "választás: {}, becsült {} ≤ {:.4} (tűrés {}), {:.3e} sugár",
+            describe(&outcome.chosen),
+            outcome.metric,
+            p.rel_rmse,
+            outcome.tolerance,
+            p.rays
+        ),
+        prediction_line(p, lang),
+    ];
+    for (name, bound) in &outcome.terms {
+        lines.push(say!(
+            lang,
+            "  of which {} alone: bias ≤ {:.4}",
+            "  ebből {} önmagában: torzítás ≤ {:.4}",
+            name,
+            bound
+        ));
+    }
+    let s = &outcome.scene;
+    lines.push(say!(
+        lang,
+        "the scene's own settings: predicted {} ≤ {:.4}, {:.3e} rays",
+        "a jelenet saját beállításai: becsült {} ≤ {:.4}, {:.3e} sugár",
+        outcome.metric,
+        s.rel_rmse,
+        s.rays
+    ));
+    lines
+}
+
+/// The terms of a prediction: bias and noise, added in squares.
+fn prediction_line(p: &Prediction, lang: Lang) -> String {
+    match p.spp {
+        Some(spp) => say!(
+            lang,
+            "  = √(bias² + noise²): bias ≤ {:.4} (what the settings leave out of the truth, from the pilot), Monte Carlo noise ≤ {:.4} at {} spp",
+            "  = √(torzítás² + zaj²): torzítás ≤ {:.4} (amit a beállítás kihagy a referenciából, a próbából), Monte Carlo zaj ≤ {:.4} {} mintánál",
+            p.bias,
+            p.noise,
+            spp
+        ),
+        None => say!(
+            lang,
+            "  = bias ≤ {:.4} (what the settings leave out of the truth, from the pilot); deterministic: no noise",
+            "  = torzítás ≤ {:.4} (amit a beállítás kihagy a referenciából, a próbából); determinisztikus: nincs zaj",
+            p.bias
+        ),
+    }
+}

@@ -1,0 +1,174 @@
+//! Budget flags: `optics render --tolerance T --metric M` command lines
+//! with the budget's flags (`--tolerance`, `--metric`, `--pilot-spp`,
+//! `--verify` with `--truth-spp`) typed as people type them, some spoiled
+//! (zero, negative, NaN, infinite, text, an unknown metric, a setting the
+//! budget chooses given beside it), through the parser and the budget's
+//! settling. The promises: a clean line settles to the tolerance it gives,
+//! finite and above 0, or refuses a metric it cannot predict by naming
+//! `--metric`; a spoiled one is a usage error naming its flag; nothing
+//! panics.
+
+use super::{check_error_field, runner, Coverage};
+use crate::budget::TOLERANCE_UNCHECKED;
+use clap::Parser;
+use proptest::prelude::*;
+use proptest::test_runner::TestCaseError;
+
+/// Each flag, values it takes and values it must refuse.
+const FLAGS: [(&str, &[&str], &[&str]); 4] = [
+    (
+        "--tolerance",
+        &["0.05", "1", "1e-3", "+0.2", "3"],
+        &[
+            "0", "-0", "-0.1", "NaN", "nan", "inf", "-inf", "1e400", "five", "",
+        ],
+    ),
+    (
+        "--metric",
+        &["rel_rmse", "delta_e_mean", "delta_e_p99", "flip_mean"],
+        &["psnr", "RMSE", "rel-rmse", ""],
+    ),
+    (
+        "--pilot-spp",
+        &["2", "8", "1024"],
+        &["1", "0", "1025", "-8", "x"],
+    ),
+    ("--truth-spp", &["2", "256"], &["1", "0", "1e3"]),
+];
+
+/// A setting the budget chooses itself, refused beside `--tolerance`.
+const CHOSEN: [(&str, &str); 3] = [
+    ("--spp", "4"),
+    ("--max-depth", "3"),
+    ("--fresnel", "schlick"),
+];
+
+/// A command line and the flag it spoiled, if any.
+#[derive(Clone, Debug)]
+struct Line {
+    args: Vec<String>,
+    given: Vec<(&'static str, &'static str)>,
+    spoiled: Option<&'static str>,
+}
+
+fn command_line() -> impl Strategy<Value = Line> {
+    let pick = (any::<bool>(), 0..16usize);
+    (
+        prop::collection::vec(pick, FLAGS.len()),
+        prop::option::weighted(0.1, 0..CHOSEN.len()),
+    )
+        .prop_map(|(picks, chosen)| {
+            let mut given: Vec<(&'static str, &'static str)> = Vec::new();
+            let mut spoiled = None;
+            for ((flag, good, bad), (spoil, k)) in FLAGS.iter().zip(picks) {
+                if spoil && spoiled.is_none() {
+                    given.push((flag, bad[k % bad.len()]));
+                    spoiled = Some(*flag);
+                } else {
+                    given.push((flag, good[k % good.len()]));
+                }
+            }
+            let mut args: Vec<String> = [
+                "optics",
+                "render",
+                "scene.json",
+                "-o",
+                "out.png",
+                "--verify",
+            ]
+            .map(str::to_owned)
+            .to_vec();
+            for (flag, value) in &given {
+                // `=` keeps a value that starts with `-` a value.
+                args.push(format!("{flag}={value}"));
+            }
+            if let Some(i) = chosen.filter(|_| spoiled.is_none()) {
+                let (flag, value) = CHOSEN[i];
+                args.push(format!("{flag}={value}"));
+                spoiled = Some(flag);
+            }
+            Line {
+                args,
+                given,
+                spoiled,
+            }
+        })
+}
+
+fn check_line(line: &Line, coverage: &Coverage) -> Result<(), TestCaseError> {
+    match crate::Cli::try_parse_from(&line.args) {
+        Ok(cli) => {
+            prop_assert!(line.spoiled.is_none(), "{:?} accepted", line.args);
+            let crate::Command::Render(args) = &cli.command else {
+                unreachable!("the lines are render lines")
+            };
+            let tolerance = args.budget.tolerance.unwrap_or(f64::NAN);
+            prop_assert!(
+                tolerance.is_finite() && tolerance > 0.0,
+                "{:?}: --tolerance {}",
+                line.args,
+                tolerance
+            );
+            let want: f64 = line.given[0].1.parse().unwrap_or(f64::NAN);
+            prop_assert_eq!(
+                tolerance,
+                want,
+                "{:?}: --tolerance settled wrongly",
+                line.args
+            );
+            match args.budget.settle() {
+                Ok(Some(budget)) => {
+                    coverage.answer();
+                    prop_assert_eq!(budget.metric.name(), "rel_rmse");
+                    prop_assert_eq!(budget.tolerance, want);
+                }
+                Ok(None) => prop_assert!(false, "{:?}: no budget settled", line.args),
+                Err(error) => {
+                    let json = error.to_json(crate::lang::Lang::En);
+                    coverage.error(&json);
+                    prop_assert_eq!(&json["kind"], "budget.metric_not_predicted");
+                    prop_assert_eq!(&json["field"], "--metric");
+                    prop_assert!(line.given[1].1 != "rel_rmse", "{json}");
+                }
+            }
+            Ok(())
+        }
+        Err(usage) => {
+            let error = crate::Error::from(crate::ErrorKind::Usage(usage));
+            let json = error.to_json(crate::lang::Lang::En);
+            coverage.error(&json);
+            prop_assert!(line.spoiled.is_some(), "{:?} refused: {json}", line.args);
+            let flag = line.spoiled.unwrap_or_default();
+            let field = json["field"].as_str().unwrap_or_default();
+            // A conflict names either side of it.
+            let named = field.contains(flag)
+                || (CHOSEN.iter().any(|(f, _)| *f == flag) && field.contains("--tolerance"));
+            prop_assert!(named, "{json} does not name {flag}");
+            check_error_field(&json, &line.args, "render", |f| f.to_owned())
+        }
+    }
+}
+
+fn fuzz(cases: u32, coverage: &Coverage) -> Result<(), String> {
+    runner(cases)
+        .run(&command_line(), |line| check_line(&line, coverage))
+        .map_err(|e| e.to_string())
+}
+
+#[test]
+fn budget_flags_settle_to_their_values_or_refuse_by_flag() {
+    let (cases, coverage) = (super::cases(), Coverage::default());
+    let start = std::time::Instant::now();
+    let outcome = fuzz(cases, &coverage);
+    coverage.print("budget flags", cases, start.elapsed().as_secs_f64());
+    outcome.unwrap();
+}
+
+#[test]
+fn budget_flags_find_a_tolerance_not_checked() {
+    TOLERANCE_UNCHECKED.set(true);
+    let failure = fuzz(256, &Coverage::default());
+    TOLERANCE_UNCHECKED.set(false);
+    let failure = failure.expect_err("the unchecked --tolerance is found");
+    assert!(failure.contains("accepted"), "{failure}");
+}
