@@ -260,7 +260,8 @@ pub fn capture_cube(scene: &Scene, settings: Settings, centre: Vec3, side: u32) 
                     let texel = CubeTexel::from_uv(face, u, v).expect("a texel centre");
                     let direction: DVec3 = texel.direction().get();
                     let ray = Ray::new(centre, direction.as_vec3());
-                    let mut sample = Sampler::for_pixel(settings.seed, (f * n * n + k) as u64).sample(0);
+                    let mut sample =
+                        Sampler::for_pixel(settings.seed, (f * n * n + k) as u64).sample(0);
                     tracer.radiance(&ray, &mut sample, &mut RayCounts::default())
                 })
                 .collect();

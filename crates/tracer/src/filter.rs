@@ -73,10 +73,7 @@ mod tests {
     #[test]
     fn the_centre_filter_draws_no_number() {
         let mut sample = Sampler::for_pixel(1, 2).sample(5);
-        assert_eq!(
-            sample_point(PixelFilter::Center, &mut sample),
-            PIXEL_CENTRE
-        );
+        assert_eq!(sample_point(PixelFilter::Center, &mut sample), PIXEL_CENTRE);
         assert_eq!(sample.slots_drawn(), 0);
     }
 }

@@ -96,7 +96,12 @@ fn power_of_two_prefixes_are_elementary_interval_stratified() {
         y ^ y.wrapping_mul(0xb82f_1e52)
     };
     let points: Vec<[f32; 2]> = (0..16)
-        .map(|k| [unit(unnested(sobol_0(k), 17)), unit(unnested(sobol_1(k), 29))])
+        .map(|k| {
+            [
+                unit(unnested(sobol_0(k), 17)),
+                unit(unnested(sobol_1(k), 29)),
+            ]
+        })
         .collect();
     assert!(!is_02_net(&points), "an unnested scramble breaks the net");
 }
@@ -116,7 +121,12 @@ const SMOOTH_INTEGRAL: f64 = (std::f64::consts::E - 1.0) / 2.0;
 /// the smooth integral, the samples drawn by `draw(pixel, k)`.
 fn estimates(pixels: u64, n: u32, draw: impl Fn(u64, u32) -> ([f32; 2], [f32; 2])) -> (f64, f64) {
     let values: Vec<f64> = (0..pixels)
-        .map(|p| (0..n).map(|k| smooth(draw(p, k).0, draw(p, k).1)).sum::<f64>() / n as f64)
+        .map(|p| {
+            (0..n)
+                .map(|k| smooth(draw(p, k).0, draw(p, k).1))
+                .sum::<f64>()
+                / n as f64
+        })
         .collect();
     let mean = values.iter().sum::<f64>() / pixels as f64;
     let variance = values.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / (pixels - 1) as f64;
@@ -146,7 +156,12 @@ fn the_estimate_of_a_known_integral_is_unbiased_over_seeds() {
 
 /// Variance, over `pixels` pixels, of the `n`-sample mean of `f` at the
 /// points `draw(pixel, k)`.
-fn variance_of_mean(pixels: u64, n: u32, f: impl Fn([f32; 2]) -> f64, draw: impl Fn(u64, u32) -> [f32; 2]) -> f64 {
+fn variance_of_mean(
+    pixels: u64,
+    n: u32,
+    f: impl Fn([f32; 2]) -> f64,
+    draw: impl Fn(u64, u32) -> [f32; 2],
+) -> f64 {
     let values: Vec<f64> = (0..pixels)
         .map(|p| (0..n).map(|k| f(draw(p, k))).sum::<f64>() / n as f64)
         .collect();
@@ -175,19 +190,28 @@ fn variance_falls_faster_than_one_over_n_for_a_smooth_integrand() {
         variance_of_mean(pixels, 16, f, draw) / variance_of_mean(pixels, 256, f, draw)
     };
     let ours = fall(&|p, k| pair(21, p, k, 1));
-    assert!(ours > 64.0, "variance fell {ours} times from 16 to 256 samples");
+    assert!(
+        ours > 64.0,
+        "variance fell {ours} times from 16 to 256 samples"
+    );
     let independent = fall(&|p, k| {
         let mut rng = Pcg32::for_pixel(p, k as u64);
         [rng.next_f32(), rng.next_f32()]
     });
-    assert!(independent < 64.0, "independent samples fell {independent} times");
-    println!("variance fall from 16 to 256 samples: scrambled nets {ours}, independent {independent}");
+    assert!(
+        independent < 64.0,
+        "independent samples fell {independent} times"
+    );
+    println!(
+        "variance fall from 16 to 256 samples: scrambled nets {ours}, independent {independent}"
+    );
 }
 
 /// Sobol's second dimension from its generator columns 1/2, 3/4, 5/8
 /// (`v_j = v_{j-1} ⊕ v_{j-1}/2`): point `k` is the xor of the columns of
-/// `k`'s set bits, so in index order 0, 1/2, 3/4, 1/4, 5/8, 1/8, 3/8, 7/8;
-/// and with the van der Corput dimension every power-of-two prefix is a
+/// `k`'s set bits, so in index order 0, 1/2, 3/4, 1/4, 5/8, 1/8, 3/8, 7/8
+/// (the byte table gives the columns' xor for 10⁴ random 32-bit indices);
+/// with the van der Corput dimension every power-of-two prefix is a
 /// (0, m, 2)-net, up to 2^16 points (Sobol's sequence in its first two
 /// dimensions is a (0,2)-sequence).
 #[test]
@@ -196,8 +220,18 @@ fn sobol_second_dimension_is_the_pascal_generator_and_a_02_sequence() {
     for (k, want) in expected.into_iter().enumerate() {
         assert_eq!(unit(sobol_1(k as u32)), want, "point {k}");
     }
+    let mut rng = Pcg32::new(5, 7);
+    for _ in 0..10_000 {
+        let index = rng.next_u32();
+        let by_column = (0..32)
+            .filter(|j| index >> j & 1 == 1)
+            .fold(0, |x, j| x ^ SOBOL_1_COLUMNS[j]);
+        assert_eq!(sobol_1(index), by_column, "index {index:#x}");
+    }
     for m in 0..=16 {
-        let plain: Vec<[f32; 2]> = (0..1 << m).map(|k| [unit(sobol_0(k)), unit(sobol_1(k))]).collect();
+        let plain: Vec<[f32; 2]> = (0..1 << m)
+            .map(|k| [unit(sobol_0(k)), unit(sobol_1(k))])
+            .collect();
         assert!(is_02_net(&plain), "Sobol's first 2^{m} points");
     }
 }
@@ -206,7 +240,9 @@ fn sobol_second_dimension_is_the_pascal_generator_and_a_02_sequence() {
 /// 2^16 consecutive inputs, no two outputs collide.
 #[test]
 fn the_scramble_is_a_permutation() {
-    let mut outputs: Vec<u32> = (0..1 << 16).map(|x| owen_scramble(x << 7, 0xdead_beef)).collect();
+    let mut outputs: Vec<u32> = (0..1 << 16)
+        .map(|x| owen_scramble(x << 7, 0xdead_beef))
+        .collect();
     outputs.sort_unstable();
     outputs.dedup();
     assert_eq!(outputs.len(), 1 << 16);
