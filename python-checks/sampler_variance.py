@@ -64,13 +64,19 @@ def measure_scene(name, args, workdir):
         print(f"{name} pair {k}: " + ", ".join(
             f"{s} {p['seconds']:.3f} s variance {p['variance']:.4g}" for s, p in pair.items()),
             file=sys.stderr, flush=True)
-    ratio = {
+    return {"name": name, "spp": args.spp, "pairs": pairs, "ratio_after_over_before": ratios(pairs)}
+
+
+def ratios(pairs):
+    """Per pair after / before: the variance, the time, and the efficiency
+    ``1 / (variance x time)`` (so the efficiency ratio is before's
+    ``variance x time`` over after's); each as the median and min-max."""
+    return {
         "variance": spread([p["after"]["variance"] / p["before"]["variance"] for p in pairs]),
         "time": spread([p["after"]["seconds"] / p["before"]["seconds"] for p in pairs]),
         "efficiency": spread([(p["before"]["variance"] * p["before"]["seconds"])
                               / (p["after"]["variance"] * p["after"]["seconds"]) for p in pairs]),
     }
-    return {"name": name, "spp": args.spp, "pairs": pairs, "ratio_after_over_before": ratio}
 
 
 def table(document):
