@@ -95,7 +95,7 @@ fn rms(errors: &[f64]) -> f64 {
 /// cells. The RMS over the edge pixels is, for stratified points, at most
 /// about `√(crossed / 4) / spp ≈ 0.011` (each crossed cell a Bernoulli
 /// variable), and for independent uniform samples `√(c(1 − c) / spp)`, up
-/// to 0.031; measured at this seed 0.006 and 0.024 (printed with
+/// to 0.031; measured at this seed 0.0055 and 0.020 (printed with
 /// `--nocapture`): 0.01 lies between. Pixels
 /// away from the edge are exact: every sample agrees.
 #[test]
