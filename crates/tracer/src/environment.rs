@@ -36,7 +36,7 @@ use techniques::envmap::Direction;
 
 use crate::geometry::Ray;
 use crate::integrator::{Machinery, RayCounts, Tracer};
-use crate::rng::Pcg32;
+use crate::sampler::Sampler;
 use crate::scene::{Scene, Settings};
 
 /// An image of linear radiance, W/(sr·m²) per channel, rows top (`v = 0`)
@@ -242,7 +242,7 @@ impl Environment {
 /// integrator, one ray through each texel's centre of six `side × side`
 /// faces. The caller removes the object the map is for: the slides'
 /// object never sees itself. Texels are traced in parallel, each with its
-/// own random stream (`seed`, face and texel), so the map does not depend
+/// own sample (`seed`, face and texel), so the map does not depend
 /// on the thread count.
 pub fn capture_cube(scene: &Scene, settings: Settings, centre: Vec3, side: u32) -> CubeMap {
     let tracer = Tracer::new(scene, settings, Machinery::everything(scene, &settings));
@@ -260,8 +260,9 @@ pub fn capture_cube(scene: &Scene, settings: Settings, centre: Vec3, side: u32) 
                     let texel = CubeTexel::from_uv(face, u, v).expect("a texel centre");
                     let direction: DVec3 = texel.direction().get();
                     let ray = Ray::new(centre, direction.as_vec3());
-                    let mut rng = Pcg32::for_pixel(settings.seed, (f * n * n + k) as u64);
-                    tracer.radiance(&ray, &mut rng, &mut RayCounts::default())
+                    let mut sample =
+                        Sampler::for_pixel(settings.seed, (f * n * n + k) as u64).sample(0);
+                    tracer.radiance(&ray, &mut sample, &mut RayCounts::default())
                 })
                 .collect();
             Texels {

@@ -37,13 +37,14 @@
 //! | [`bump`] | an object's bump map: the hit's shading normal bent, its geometry untouched |
 //! | [`camera`] | the course's pinhole and the look-at camera unprojected through the inverse view-projection |
 //! | [`environment`] | what rays that leave the scene receive: a procedural sky, a lat-long or cube map looked up through `techniques::envmap`, and the slides' capture of a cube map by tracing |
-//! | [`filter`] | the pixel filter: stratified, jittered rays over the pixel (box) or its centre |
+//! | [`filter`] | the pixel filter: stratified rays over the pixel (box) or its centre |
 //! | [`spawn`] | where secondary rays start: the hit's error bound, or the course's fixed epsilon |
 //! | [`integrator`] | `local`, `whitted`, `path`, `photon` (the path tracer plus a caustic photon map) and the course shader's loop, one file each, and the shared scatter step |
 //! | [`needs`] | what a scene needs, so the renderer runs only that |
 //! | [`chains`] | which delta lights reach a rough surface through mirrors or glass: the light no integrator computes |
 //! | [`render`] | the image, in parallel, identical for any thread count |
-//! | [`rng`] | PCG32 streams, one per pixel and one per photon |
+//! | [`sampler`] | the camera paths' numbers: Owen-scrambled Sobol pairs, each pixel's samples stratified in every pair of dimensions |
+//! | [`rng`] | PCG32 streams, one per photon |
 //! | [`output`] | PNG (sRGB, stated tone mapping) and PFM, the destination checked before the render, the pair written atomically |
 //! | [`interrupt`] | SIGINT and SIGTERM while writing: temporaries removed, a commit finished first |
 //!
@@ -74,5 +75,6 @@ pub mod needs;
 pub mod output;
 pub mod render;
 pub mod rng;
+pub mod sampler;
 pub mod scene;
 pub mod spawn;

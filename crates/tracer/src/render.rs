@@ -1,5 +1,6 @@
-//! Rendering an image: rows in parallel (rayon), each pixel on its own
-//! random stream, so the image is bit-identical for any number of threads.
+//! Rendering an image: rows in parallel (rayon), each pixel with its own
+//! samples (`crate::sampler`), so the image is bit-identical for any number
+//! of threads.
 
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::{Duration, Instant};
@@ -7,10 +8,10 @@ use std::time::{Duration, Instant};
 use glam::{DVec3, Vec3};
 use rayon::prelude::*;
 
-use crate::filter::{sample_point, Strata};
+use crate::filter::sample_point;
 use crate::integrator::{RayCounts, Tracer};
 use crate::job::RenderError;
-use crate::rng::Pcg32;
+use crate::sampler::Sampler;
 
 /// A linear-radiance image, W/(sr·m²) per channel, rows top to bottom.
 #[derive(Clone, Debug, PartialEq)]
@@ -67,7 +68,6 @@ pub(crate) fn render(
     let rows_done = AtomicUsize::new(0);
     let start = Instant::now();
     let (width, height) = (tracer.scene.width, tracer.scene.height);
-    let strata = Strata::for_samples(tracer.machinery.spp);
     // Shown before the first row, which may be long in coming.
     progress(0);
     let rows: Vec<(Vec<Vec3>, RayCounts)> = pool.install(|| {
@@ -76,7 +76,7 @@ pub(crate) fn render(
             .map(|y| {
                 let mut counts = RayCounts::default();
                 let row = (0..width)
-                    .map(|x| pixel(tracer, &strata, x, y, &mut counts))
+                    .map(|x| pixel(tracer, x, y, &mut counts))
                     .collect();
                 progress(rows_done.fetch_add(1, Ordering::Relaxed) + 1);
                 (row, counts)
@@ -117,16 +117,17 @@ pub(crate) fn check_finite(image: &Image) -> Result<(), RenderError> {
 /// One pixel: the mean of its samples, each through the point of the pixel
 /// the filter gives it (`crate::filter`), summed in `f64` so that the mean
 /// of many samples keeps `f32` precision.
-fn pixel(tracer: &Tracer, strata: &Strata, x: u32, y: u32, counts: &mut RayCounts) -> Vec3 {
+fn pixel(tracer: &Tracer, x: u32, y: u32, counts: &mut RayCounts) -> Vec3 {
     let index = y as u64 * tracer.scene.width as u64 + x as u64;
-    let mut rng = Pcg32::for_pixel(tracer.settings.seed, index);
+    let samples = Sampler::for_pixel(tracer.settings.seed, index);
     let filter = tracer.settings.pixel_filter;
     let spp = tracer.machinery.spp.max(1);
     let mut sum = DVec3::ZERO;
     for k in 0..spp {
-        let within = sample_point(filter, strata, k, &mut rng);
+        let mut sample = samples.sample(k);
+        let within = sample_point(filter, &mut sample);
         let ray = tracer.scene.camera.ray_at(x, y, within);
-        sum += tracer.radiance(&ray, &mut rng, counts).as_dvec3();
+        sum += tracer.radiance(&ray, &mut sample, counts).as_dvec3();
     }
     (sum / spp as f64).as_vec3()
 }

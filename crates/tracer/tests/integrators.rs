@@ -15,7 +15,7 @@ use glam::Vec3;
 use serde_json::{json, Value};
 use tracer::geometry::Ray;
 use tracer::integrator::RayCounts;
-use tracer::rng::Pcg32;
+use tracer::sampler::Sampler;
 use tracer::scene::faults::{self, Fault};
 use tracer::scene::{FresnelModel, IntegratorKind, PixelFilter, RayOffset, Scene, Settings};
 
@@ -249,7 +249,7 @@ fn path_mean_within_five_standard_errors_of_whitted(scene: &Scene, fresnel: Fres
 #[test]
 fn image_is_identical_for_any_thread_count() {
     let scene = course_scene("kaleidoscope_lit", 32, 24);
-    // Both filters: the box's jitter comes from the pixel's own stream too.
+    // Both filters: the box's points come from the pixel's own samples too.
     for (integrator, pixel_filter) in [
         (IntegratorKind::Whitted, PixelFilter::Center),
         (IntegratorKind::Whitted, PixelFilter::Box),
@@ -309,7 +309,7 @@ fn fixed_epsilon_shadows_acne_far_from_the_origin_where_the_error_bound_offset_h
                     lit += 1;
                     let l = tracer.radiance(
                         &ray,
-                        &mut Pcg32::for_pixel(0, 0),
+                        &mut Sampler::for_pixel(0, 0).sample(0),
                         &mut RayCounts::default(),
                     );
                     if l == Vec3::ZERO {

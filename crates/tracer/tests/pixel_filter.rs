@@ -86,14 +86,16 @@ fn rms(errors: &[f64]) -> f64 {
     (errors.iter().map(|e| e * e).sum::<f64>() / errors.len() as f64).sqrt()
 }
 
-/// With `spp = n²` strata, each sample inside or outside the sphere, an
-/// edge pixel's error is at most the strata the silhouette crosses over
+/// At `spp = 256` the box filter's points put one sample in each cell of
+/// the pixel's 16 × 16 grid (an elementary interval of its (0,2)-net,
+/// `tracer::sampler`), each sample inside or outside the sphere, so an
+/// edge pixel's error is at most the cells the silhouette crosses over
 /// `spp`: a convex curve crosses at most `2(columns + rows)` cells of a grid,
-/// so `|error| ≤ 2 · 32 / 256 = 0.25` at 16 × 16 whatever the jitter. The
-/// RMS over the edge pixels is, for stratified jitter, at most about
-/// `√(crossed / 4) / spp ≈ 0.011` (each crossed stratum a Bernoulli
+/// so `|error| ≤ 2 · 32 / 256 = 0.25` wherever the points lie in their
+/// cells. The RMS over the edge pixels is, for stratified points, at most
+/// about `√(crossed / 4) / spp ≈ 0.011` (each crossed cell a Bernoulli
 /// variable), and for independent uniform samples `√(c(1 − c) / spp)`, up
-/// to 0.031; measured at this seed 0.006 and 0.024 (printed with
+/// to 0.031; measured at this seed 0.0055 and 0.020 (printed with
 /// `--nocapture`): 0.01 lies between. Pixels
 /// away from the edge are exact: every sample agrees.
 #[test]

@@ -21,7 +21,7 @@
 use glam::Vec3;
 
 use crate::geometry::{Hit, Object, Ray};
-use crate::rng::Pcg32;
+use crate::sampler::Sample;
 use crate::scene::faults::{self, Fault};
 use crate::scene::{IntegratorKind, Scene, Settings};
 
@@ -191,14 +191,15 @@ impl Tracer<'_> {
 
     /// The radiance arriving along a primary ray, by the chosen integrator
     /// (`photon` looks up the maps of [`Tracer::with_caustics`]; a tracer
-    /// without them traces the path tracer's paths alone).
-    pub fn radiance(&self, ray: &Ray, rng: &mut Pcg32, counts: &mut RayCounts) -> Vec3 {
+    /// without them traces the path tracer's paths alone), its random
+    /// numbers drawn from `sample` (the deterministic integrators draw none).
+    pub fn radiance(&self, ray: &Ray, sample: &mut Sample, counts: &mut RayCounts) -> Vec3 {
         counts.primary += 1;
         match self.settings.integrator {
             IntegratorKind::Local => self.local(ray, counts),
             IntegratorKind::Whitted => self.whitted(ray, 0, Vec3::ONE, counts),
-            IntegratorKind::Path => self.path(ray, rng, counts, None),
-            IntegratorKind::Photon => self.photon(ray, rng, counts),
+            IntegratorKind::Path => self.path(ray, sample, counts, None),
+            IntegratorKind::Photon => self.photon(ray, sample, counts),
             IntegratorKind::Course => self.course(ray, counts),
         }
     }

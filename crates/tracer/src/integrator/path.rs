@@ -3,6 +3,12 @@
 //! single lobe, chosen with the Fresnel probability; Russian roulette below
 //! `throughput_cutoff`. With a caustic map's pass (the `photon`
 //! integrator), each rough vertex adds the map's radiance to its direct light.
+//!
+//! Each vertex that goes on draws two slots of its [`Sample`], in the same
+//! order whatever the surface, so that the samples of a pixel meet the same
+//! slot at the same depth: the scattering pair (a rough surface's
+//! direction, or a smooth one's lobe from its first number) and the Russian
+//! roulette number.
 
 use glam::Vec3;
 
@@ -10,7 +16,7 @@ use super::photon::Pass;
 use super::scatter::{Bounce, Lobe, Surface};
 use super::{cosine_sample, RayCounts, Tracer};
 use crate::geometry::{Hit, Ray};
-use crate::rng::Pcg32;
+use crate::sampler::Sample;
 use crate::scene::Material;
 use crate::spawn;
 
@@ -18,7 +24,7 @@ impl Tracer<'_> {
     pub(super) fn path(
         &self,
         primary: &Ray,
-        rng: &mut Pcg32,
+        sample: &mut Sample,
         counts: &mut RayCounts,
         caustics: Option<&Pass>,
     ) -> Vec3 {
@@ -46,7 +52,8 @@ impl Tracer<'_> {
                     }
                     // Cosine-weighted hemisphere sampling: pdf = cos θ / π,
                     // so the weight f_r cos θ / pdf is π f_r.
-                    let wi = cosine_sample(n, rng.next_f32(), rng.next_f32());
+                    let [u1, u2] = sample.next_2d();
+                    let wi = cosine_sample(n, u1, u2);
                     // About a bump map's bent normal the hemisphere may dip
                     // below the surface: that light is lost, as a bump map
                     // loses it (without one, `wi · n > 0` always).
@@ -65,12 +72,16 @@ impl Tracer<'_> {
                     if depth >= self.settings.max_depth {
                         return sum;
                     }
-                    let lobe = self.one_lobe(&hit, n, wo, material, rng, &mut beta);
+                    let u = sample.next_1d();
+                    let lobe = self.one_lobe(&hit, n, wo, material, u, &mut beta);
                     (lobe.ray, lobe.bounce)
                 }
             };
             depth += 1;
             counts.bounce(next.1, depth);
+            // Drawn whether or not the roulette is played, so that the next
+            // vertex's slots are the same for every sample.
+            let roulette = sample.next_1d();
             let peak = beta.max_element();
             if peak <= 0.0 {
                 return sum;
@@ -79,7 +90,7 @@ impl Tracer<'_> {
                 // Russian roulette: survive with probability peak / cutoff and
                 // carry 1 / probability, so the estimate stays unbiased.
                 let survive = peak / self.settings.throughput_cutoff;
-                if rng.next_f32() >= survive {
+                if roulette >= survive {
                     return sum;
                 }
                 beta /= survive;
@@ -90,17 +101,18 @@ impl Tracer<'_> {
 
     /// One lobe of a smooth surface, its weight folded into `beta`. With a
     /// refracted lobe, the branch is chosen with probability R, so that the
-    /// Fresnel weight cancels. With the mirror lobe alone (a conductor, or
-    /// total internal reflection) it is certain and carries its weight
-    /// itself (under total internal reflection 1 for the exact law and
-    /// Schlick; the course's formula gives less).
+    /// Fresnel weight cancels (`u`, uniform in `[0, 1)`, picks it). With the
+    /// mirror lobe alone (a conductor, or total internal reflection) it is
+    /// certain and carries its weight itself (under total internal
+    /// reflection 1 for the exact law and Schlick; the course's formula
+    /// gives less).
     fn one_lobe(
         &self,
         hit: &Hit,
         n: Vec3,
         wo: Vec3,
         material: &Material,
-        rng: &mut Pcg32,
+        u: f32,
         beta: &mut Vec3,
     ) -> Lobe {
         let lobes = self.lobes(hit, n, wo, material);
@@ -109,7 +121,7 @@ impl Tracer<'_> {
                 *beta *= lobes.reflection.weight;
                 lobes.reflection
             }
-            Some((refracted, reflectance)) if rng.next_f32() >= reflectance => {
+            Some((refracted, reflectance)) if u >= reflectance => {
                 *beta *= refracted.weight / (1.0 - reflectance);
                 refracted
             }

@@ -32,6 +32,7 @@ use super::scatter::Surface;
 use super::{RayCounts, Tracer};
 use crate::geometry::{Hit, Ray};
 use crate::rng::Pcg32;
+use crate::sampler::Sample;
 use crate::scene::faults::Fault;
 use crate::scene::Material;
 
@@ -156,17 +157,22 @@ impl Pass {
 impl Tracer<'_> {
     /// The `photon` integrator: a camera path that looks up one pass's
     /// caustic map, drawn uniformly, at its rough vertices.
-    pub(super) fn photon(&self, primary: &Ray, rng: &mut Pcg32, counts: &mut RayCounts) -> Vec3 {
+    pub(super) fn photon(
+        &self,
+        primary: &Ray,
+        sample: &mut Sample,
+        counts: &mut RayCounts,
+    ) -> Vec3 {
         let pass = self.caustics.as_ref().and_then(|c| {
             let n = c.passes.len();
             let k = if n > 1 {
-                ((rng.next_f32() * n as f32) as usize).min(n - 1)
+                ((sample.next_1d() * n as f32) as usize).min(n - 1)
             } else {
                 0
             };
             c.passes.get(k)
         });
-        self.path(primary, rng, counts, pass)
+        self.path(primary, sample, counts, pass)
     }
 
     /// Follows one photon through mirrors and glass, one lobe at a time

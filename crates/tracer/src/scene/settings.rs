@@ -103,13 +103,13 @@ impl fmt::Display for FresnelModel {
 #[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
 #[serde(rename_all = "snake_case")]
 pub enum PixelFilter {
-    /// A box over the pixel: each sample's ray through a point jittered
-    /// within its own stratum of the pixel (`crate::camera::Strata`), the
+    /// A box over the pixel: each sample's ray through a point uniform over
+    /// the pixel, the pixel's samples stratified (`crate::filter`), the
     /// pixel the samples' unweighted mean. Mitsuba's `box` filter of
     /// radius ½ pixel. The `path` integrator's default.
     #[cfg_attr(
         feature = "clap",
-        value(help = "Jittered, stratified rays over the pixel, averaged (path's default)")
+        value(help = "Stratified rays over the pixel, averaged (path's default)")
     )]
     Box,
     /// Every ray through the pixel's centre, as the course's fragment

@@ -11,7 +11,7 @@ use tracer::geometry::Ray;
 use tracer::integrator::{Machinery, RayCounts, Tracer};
 use tracer::job::RenderJob;
 use tracer::render::Image;
-use tracer::rng::Pcg32;
+use tracer::sampler::Sampler;
 use tracer::scene::{self, IntegratorKind, Scene, Settings};
 
 /// The integrators built from the laws: all but the course's shader.
@@ -68,8 +68,8 @@ pub fn tracer(scene: &Scene, settings: Settings) -> Tracer<'_> {
     Tracer::new(scene, settings, Machinery::everything(scene, &settings))
 }
 
-/// The radiance along one `ray`, from the first pixel's random stream.
+/// The radiance along one `ray`, from the first pixel's first sample.
 pub fn radiance_along(scene: &Scene, settings: &Settings, ray: &Ray) -> Vec3 {
-    let mut rng = Pcg32::for_pixel(settings.seed, 0);
-    tracer(scene, *settings).radiance(ray, &mut rng, &mut RayCounts::default())
+    let mut sample = Sampler::for_pixel(settings.seed, 0).sample(0);
+    tracer(scene, *settings).radiance(ray, &mut sample, &mut RayCounts::default())
 }

@@ -1,0 +1,195 @@
+//! The camera paths' sample numbers: a scrambled Sobol (0,2)-sequence per
+//! pair of dimensions, so that a pixel's samples are stratified in every
+//! pair they draw, not only in the pixel position.
+//!
+//! A pixel's sample `k` draws its numbers in order, one *dimension slot*
+//! at a time ([`Sample::next_2d`], [`Sample::next_1d`]): the pixel position,
+//! then at each vertex of its path the scattering pair and the Russian
+//! roulette number. Slot `d` of sample `k` is point `k'` of the first two
+//! dimensions of Sobol's sequence (a (0,2)-sequence in base 2: every
+//! power-of-two block of `2^m` points aligned on a multiple of `2^m` puts
+//! one point in each elementary interval of area `2^-m`), where:
+//!
+//! - each coordinate is Owen-scrambled: a *nested uniform scramble*, which
+//!   flips each bit of the fraction by a random function of the bits
+//!   above it, so every point is uniform over the unit square and every
+//!   elementary interval of a net goes to another one whole (A. B. Owen,
+//!   "Randomly permuted (t,m,s)-nets and (t,s)-sequences", 1995);
+//! - the index is shuffled, `k' = scramble(k)`, by a nested uniform
+//!   scramble of its own, which keeps the first `2^m` samples an aligned
+//!   block of `2^m` Sobol points (still a net) but a different block in
+//!   each slot, so that no two slots are correlated through the index;
+//! - the scrambles are hash-based (B. Burley, "Practical Hash-based Owen
+//!   Scrambling", JCGT 9(4), 2020): reversing the bits turns "depends on
+//!   the bits above" into "depends on the bits below", which the carries
+//!   of an addition and of a multiplication provide, each seeded by a hash
+//!   of `(seed, pixel, slot)`.
+//!
+//! So the image depends on the seed alone, never on the threads; each
+//! number is uniform, so every estimate stays unbiased; and over a pixel's
+//! samples, a smooth integrand's error falls faster than `1/√N`. The photon
+//! map's photons keep their plain PCG32 streams (`crate::rng`): each photon
+//! is one sample of its own.
+
+use crate::rng::splitmix64;
+
+/// Keeps the samplers' keys apart from the PCG streams' ("SAMPLER" in ASCII).
+const SAMPLER_SALT: u64 = 0x0053_414D_504C_4552;
+
+/// The samples of one pixel of one render.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Sampler {
+    key: u64,
+}
+
+/// One sample of a pixel: its numbers, drawn one dimension slot at a time.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Sample {
+    key: u64,
+    index: u32,
+    slot: u32,
+}
+
+impl Sampler {
+    /// The samples of pixel `pixel` (or any other index of a camera ray,
+    /// such as a cube map's texel) of a render with seed `seed`.
+    pub fn for_pixel(seed: u64, pixel: u64) -> Self {
+        Sampler {
+            key: splitmix64(seed ^ splitmix64(pixel ^ SAMPLER_SALT)),
+        }
+    }
+
+    /// Sample `index` (0-based) of this pixel, before its first number.
+    pub fn sample(&self, index: u32) -> Sample {
+        Sample {
+            key: self.key,
+            index,
+            slot: 0,
+        }
+    }
+}
+
+impl Sample {
+    /// The next slot's pair, each number uniform in `[0, 1)`; over the
+    /// pixel's samples `0..2^m` the pairs of one slot are a (0, m, 2)-net.
+    pub fn next_2d(&mut self) -> [f32; 2] {
+        let seeds = self.next_seeds();
+        let i = shuffled(self.index, seeds[0]);
+        [
+            unit(owen_scramble(sobol_0(i), seeds[1])),
+            unit(owen_scramble(sobol_1(i), seeds[2])),
+        ]
+    }
+
+    /// The next slot's number, uniform in `[0, 1)`: the first coordinate of
+    /// the slot's pair, so a pixel's first `2^m` samples of one slot put one
+    /// number in each interval of length `2^-m`.
+    pub fn next_1d(&mut self) -> f32 {
+        let seeds = self.next_seeds();
+        unit(owen_scramble(
+            sobol_0(shuffled(self.index, seeds[0])),
+            seeds[1],
+        ))
+    }
+
+    /// How many slots this sample has drawn.
+    pub fn slots_drawn(&self) -> u32 {
+        self.slot
+    }
+
+    /// The three 32-bit seeds of the next slot (the index's shuffle and the
+    /// two coordinates' scrambles), and the slot counted.
+    fn next_seeds(&mut self) -> [u32; 3] {
+        let h = splitmix64(self.key ^ self.slot as u64);
+        self.slot += 1;
+        let g = splitmix64(h);
+        [h as u32, (h >> 32) as u32, g as u32]
+    }
+}
+
+/// The sample index seen by one slot: a nested uniform scramble of `index`
+/// (bits above a power-of-two prefix's are flipped alike, so the prefix
+/// stays an aligned block of Sobol points).
+fn shuffled(index: u32, seed: u32) -> u32 {
+    owen_scramble(index, seed)
+}
+
+/// Dimension 0 of Sobol's sequence, the base-2 van der Corput sequence:
+/// the index's bits mirrored about the binary point, as a 32-bit fraction.
+fn sobol_0(index: u32) -> u32 {
+    index.reverse_bits()
+}
+
+/// Dimension 1 of Sobol's sequence: its generator matrix is Pascal's
+/// triangle mod 2, column `j` `v_j = v_{j-1} ^ (v_{j-1} >> 1)` from
+/// `v_0 = 1/2` (I. M. Sobol', 1967; primitive polynomial `x + 1`); the
+/// point is the xor of the columns of the index's set bits, taken a byte
+/// of the index at a time from [`SOBOL_1_BY_BYTE`].
+fn sobol_1(index: u32) -> u32 {
+    let [b0, b1, b2, b3] = index.to_le_bytes();
+    SOBOL_1_BY_BYTE[0][b0 as usize]
+        ^ SOBOL_1_BY_BYTE[1][b1 as usize]
+        ^ SOBOL_1_BY_BYTE[2][b2 as usize]
+        ^ SOBOL_1_BY_BYTE[3][b3 as usize]
+}
+
+/// The generator's columns `v_0 … v_31`.
+const SOBOL_1_COLUMNS: [u32; 32] = {
+    let mut v = [0; 32];
+    v[0] = 1 << 31;
+    let mut j = 1;
+    while j < 32 {
+        v[j] = v[j - 1] ^ (v[j - 1] >> 1);
+        j += 1;
+    }
+    v
+};
+
+/// Entry `[k][b]`: the xor of the columns `8k + i` for the set bits `i`
+/// of the byte `b` (16 KiB, in cache across a render).
+const SOBOL_1_BY_BYTE: [[u32; 256]; 4] = {
+    let mut table = [[0; 256]; 4];
+    let mut k = 0;
+    while k < 4 {
+        let mut b = 0;
+        while b < 256 {
+            let mut i = 0;
+            while i < 8 {
+                if b >> i & 1 == 1 {
+                    table[k][b] ^= SOBOL_1_COLUMNS[8 * k + i];
+                }
+                i += 1;
+            }
+            b += 1;
+        }
+        k += 1;
+    }
+    table
+};
+
+/// A nested uniform scramble of the 32-bit fraction `x`: bit `b` (from
+/// the top) flipped by a function of `seed` and the bits above it only.
+/// Mirrored, those are the bits *below*, and an operation whose output bit
+/// `b` is input bit `b` xor a function of the lower bits is a bijection
+/// of that kind; composing several keeps the kind. The steps: adding the
+/// seed (its carries), multiplying by an odd number drawn from the seed,
+/// and three `x ^= x · c` with even constants `c` (bit `b` of `x · c`
+/// depends on bits below `b` only), which spread each bit's influence to
+/// the bits above it. The constants are arbitrary even numbers.
+fn owen_scramble(x: u32, seed: u32) -> u32 {
+    let mut y = x.reverse_bits();
+    y = y.wrapping_add(seed);
+    y ^= y.wrapping_mul(0x6c50_b47c);
+    y = y.wrapping_mul(seed.rotate_right(16) | 1);
+    y ^= y.wrapping_mul(0xb82f_1e52);
+    y ^= y.wrapping_mul(0xc7af_e638);
+    y.reverse_bits()
+}
+
+/// The top 24 bits of a 32-bit fraction, exact in `f32`, in `[0, 1)`.
+fn unit(x: u32) -> f32 {
+    (x >> 8) as f32 * (1.0 / 16_777_216.0)
+}
+
+#[cfg(test)]
+mod tests;
