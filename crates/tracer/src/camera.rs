@@ -173,20 +173,32 @@ mod tests {
     /// axis (so that no column is zero and every sum rounds).
     #[test]
     fn look_at_rays_have_the_bits_of_the_full_unprojection() {
+        let view = |eye: DVec3, target: DVec3, fov_y: f64, near: f64, far: f64| LookAtView {
+            eye,
+            target,
+            up: DVec3::Y,
+            fov_y,
+            near,
+            far,
+        };
         let views = [
-            (DVec3::new(0.0, 1.6, 6.0), DVec3::new(0.0, 0.8, 0.0), 0.7, 0.1, 100.0),
-            (DVec3::new(-3.3, 2.1, -7.7), DVec3::new(0.4, -0.2, 1.3), 1.1, 0.37, 55.0),
+            view(
+                DVec3::new(0.0, 1.6, 6.0),
+                DVec3::new(0.0, 0.8, 0.0),
+                0.7,
+                0.1,
+                100.0,
+            ),
+            view(
+                DVec3::new(-3.3, 2.1, -7.7),
+                DVec3::new(0.4, -0.2, 1.3),
+                1.1,
+                0.37,
+                55.0,
+            ),
         ];
         let mut compared = 0;
-        for (eye, target, fov_y, near, far) in views {
-            let view = LookAtView {
-                eye,
-                target,
-                up: DVec3::Y,
-                fov_y,
-                near,
-                far,
-            };
+        for view in views {
             let camera = Camera::look_at(view, 37, 23);
             let Camera::LookAt {
                 inverse_view_projection: m,
