@@ -186,6 +186,20 @@ CONDUCTORS = [("gold R", 0.17, 3.1), ("gold G", 0.35, 2.7), ("gold B", 1.5, 1.9)
               ("index matched via conductor", 1.0, 0.0)]
 TINY_KAPPA = {"f64": ("tiny absorption kappa=1e-12", 1.5, 1e-12),
               "f32": ("tiny absorption kappa=1e-7", 1.5, 1e-7)}
+# Where the f64 laws' roundings add up the most: no sum cancels there, but R_p is the square of a
+# ratio of a product and a sum of several rounded terms, so about ten roundings of order one,
+# doubled. Found by evaluating the laws at 2e4 to 1.5e5 random doubles against these formulas;
+# the errors measured there are in docs/results.md (fresnel-50-digits).
+WORST_F64 = {
+    "dielectric": [("worst R_p found cos=0.76528 eta=1.70205", 0.7652819693198041, 1.7020537855601314)],
+    "conductor": [("worst R_p found cos=0.79158 n=0.70202 kappa=6.6467",
+                   0.7915797852215061, 0.7020224126588795, 6.646724002409787),
+                  ("worst R_p found cos=0.85144 n=0.37104 kappa=3.9683",
+                   0.8514409935018296, 0.371036603129028, 3.9682635808941678),
+                  ("worst R_s found cos=0.67544 n=0.18349 kappa=4.0605",
+                   0.6754425507263279, 0.18348744872677603, 4.060512106629868),
+                  ("worst R found cos=0.90842 n=0.58720 kappa=7.9773",
+                   0.9084236338954503, 0.5871952415847482, 7.977317883276619)]}
 CONDUCTOR_EXTREMES = {  # (name, n, kappa) on the conductor cos grid (1, 1e-300 / 1e-38 and 0 included)
     "f64": [("n=1e3 kappa=0", 1e3, 0.0), ("n=1e3 kappa=1", 1e3, 1.0),
             ("n=1+1e-12 kappa=0", 1 + 1e-12, 0.0), ("n=1+1e-12 kappa=1e-12", 1 + 1e-12, 1e-12),
@@ -321,7 +335,8 @@ def dielectric_inputs(tier):
                  f32_step(x, k), glass) for k in range(-4, 5)]
         out += [(f"glass outside brewster f32 {k:+d}ulp" if k else "glass outside brewster f32 nearest",
                  f32_step(b, k), glass) for k in range(-2, 3)]
-    return out + critical_dielectric_inputs(tier)
+    worst = WORST_F64["dielectric"] if tier == "f64" else []
+    return out + critical_dielectric_inputs(tier) + worst
 
 
 def conductor_inputs(tier):
@@ -335,7 +350,7 @@ def conductor_inputs(tier):
         n = rnd(n)
         offs = CRIT_RAD_NEAR_ONE if "1e-12" in name else CRIT_RAD
         out += [(lab, c, n, 0.0) for lab, c in _critical_cases(name, mp.sqrt(1 - mpf(n) ** 2), 1, tier, offs)]
-    return out
+    return out + (WORST_F64["conductor"] if tier == "f64" else [])
 
 
 # The angle laws (snell.rs), on the index along the path eta_path = n_t / n_i -------

@@ -3,8 +3,9 @@
 //! `python3 python-checks/fresnel_mpmath.py`), in both precision tiers.
 //!
 //! The comparison itself is the validation harness's check
-//! (`validation::mpmath`, bound and reasons stated there: 8 ulps in both
-//! tiers, just above the worst error measured); this test runs it on the
+//! (`validation::mpmath`, bounds and reasons stated there: 8 ulps of the
+//! tier, 12 for the dielectric in `f64` and 14 for the conductor, each just
+//! above the worst error found); this test runs it on the
 //! radiometry crate's laws and, with `--nocapture`, prints the table of worst
 //! errors. Beside it, the textbook evaluation of the same formulas is
 //! measured on the same table, to show what the reformulation buys: it loses
@@ -22,7 +23,7 @@ fn reference() -> FresnelMpmath {
 }
 
 #[test]
-fn fresnel_matches_50_digit_reference_within_8_ulps() {
+fn fresnel_matches_50_digit_reference_within_its_bounds() {
     let reference = reference();
     let (laws, laws64) = (Laws::radiometry(), Laws64::radiometry());
     let checks = [

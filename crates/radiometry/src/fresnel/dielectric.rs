@@ -23,8 +23,10 @@
 //! precision. `T` is computed directly rather than as `1 − R`, so it keeps
 //! its relative accuracy where it is small (near the critical angle and at
 //! grazing incidence). The workspace test `fresnel_reference` measures the
-//! result against 50-digit values: a few ulps in `f64` and `f32` across the
-//! grid, extremes included.
+//! result against 50-digit values, extremes included: within one ulp or so
+//! in `f32`, rounded once from `f64`; in `f64` a few ulps, but `R_p`, the
+//! square of a ratio of about six roundings that nothing cancels, reaches
+//! 10.9 ulps (at `cos θ_i = 0.76528…`, `η = 1.70205…`; bound 12).
 //!
 //! The sign of the amplitudes is not exposed: only powers are returned.
 

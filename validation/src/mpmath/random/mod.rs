@@ -12,7 +12,10 @@
 //! - **reals**: uniform over the real numbers of each argument's range,
 //!   where a renderer's inputs mostly are;
 //! - **floats**: uniform over the tier's numbers in the range, as Herbie
-//!   samples: most cosines and angles are below 1e-3, a few subnormal.
+//!   samples: most cosines and angles are below 1e-3, a few subnormal;
+//! - **near**: uniform over the reals of a small region where a law's
+//!   roundings add up most, for the laws that have such a set (the f64
+//!   dielectric's `R_p`, 2·10⁴ cases, 6 of them past [`BOUND_ULPS`]).
 //!
 //! Measured per law, quantity, tier and sampling: the worst number of
 //! floating-point values between the law's answer and the correctly rounded
@@ -20,7 +23,8 @@
 //! worst and average ([`bits::bits`]).
 //!
 //! Tolerances: every case within [`BOUND_ULPS`] of the correctly rounded
-//! value (the grid's bound: a handful of roundings; the conductor within
+//! value (the grid's bound: a handful of roundings; the dielectric in `f64`
+//! within [`DIELECTRIC_F64_BOUND_ULPS`], the conductor within
 //! [`CONDUCTOR_BOUND_ULPS`], `transmitted_angle` within
 //! [`transmitted_angle_bound_ulps`] of its condition number), with
 //! the same decision on total internal reflection and on the existence of a
@@ -35,7 +39,10 @@ pub mod regions;
 
 pub use reference::{CaseSet, FresnelRandom, Law, Sampling, Tier, FILE, SCHEMA};
 
-use super::{transmitted_angle_bound_ulps, Laws64, BOUND_ULPS, CONDUCTOR_BOUND_ULPS};
+use super::{
+    dielectric_bound_ulps, transmitted_angle_bound_ulps, Laws64, BOUND_ULPS, CONDUCTOR_BOUND_ULPS,
+    DIELECTRIC_F64_BOUND_ULPS,
+};
 use crate::check::Check;
 use crate::laws::{Laws, Tier as Precision};
 
@@ -142,7 +149,7 @@ pub fn check_random(
                 &format!("mpmath {}, 50 digits, correctly rounded to the tier", reference.mpmath_version),
                 &format!(
                     "every case within {BOUND_ULPS} floating-point numbers of the correctly rounded value \
-                     (conductor: {CONDUCTOR_BOUND_ULPS}; transmitted_angle: {BOUND_ULPS} + (8/π)·cond_θ), the same decision on total internal \
+                     (dielectric in f64: {DIELECTRIC_F64_BOUND_ULPS}; conductor: {CONDUCTOR_BOUND_ULPS}; transmitted_angle: {BOUND_ULPS} + (8/π)·cond_θ), the same decision on total internal \
                      reflection and on a critical angle's existence; per set an average of at most \
                      {AVERAGE_BITS} bits of error (Herbie's log2(1 + numbers between))"
                 ),
@@ -162,6 +169,12 @@ pub fn check_random(
                         )),
                     }
                 }
+            }
+            let near = sets
+                .iter()
+                .filter(|s| s.law == law && s.sampling == Sampling::Near);
+            for set in near {
+                check_set(&mut check, laws, laws64, set);
             }
             check
         })
@@ -210,6 +223,7 @@ fn check_set(check: &mut Check, laws: &Laws, laws64: &Laws64, set: &CaseSet) {
             let bound = match set.law {
                 Law::TransmittedAngle => transmitted_angle_bound_ulps(set.column("cond_theta")[i]),
                 Law::Conductor => CONDUCTOR_BOUND_ULPS,
+                Law::Dielectric => dielectric_bound_ulps(set.tier.name()),
                 _ => BOUND_ULPS,
             };
             if !(ulps as f64 <= bound) {

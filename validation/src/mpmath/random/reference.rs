@@ -83,6 +83,10 @@ pub enum Sampling {
     /// Uniform over the tier's floating-point numbers in the range (their
     /// bit patterns), as Herbie samples.
     Floats,
+    /// Uniform over the real numbers of a small targeted region of the
+    /// range, where a law's roundings add up most: a set that a law need
+    /// not have.
+    Near,
 }
 
 impl Sampling {
@@ -91,6 +95,7 @@ impl Sampling {
         match self {
             Sampling::Reals => "reals",
             Sampling::Floats => "floats",
+            Sampling::Near => "near",
         }
     }
 }
