@@ -139,8 +139,8 @@ fn record(check: &mut Check, what: &str, e: &Errors, at: &str) {
 }
 
 /// The band the cheap refraction's relative RMSE at the rim must fall in:
-/// visibly wrong there, the horizon and the beads pulled towards the
-/// centre (0.85 measured), and nothing like the laws' answer; the render is
+/// visibly wrong there, the outer beads smeared into dark patches against
+/// the rim (0.85 measured), yet not unrelated to the truth; the render is
 /// deterministic, so the band only has to hold the scene's next small
 /// change.
 pub const CHEAP_RIM_RMSE: (f64, f64) = (0.6, 1.1);
