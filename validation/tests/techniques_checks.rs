@@ -5,13 +5,16 @@
 
 use techniques::bump::HeightField;
 use techniques::dispersion::SELLMEIER_N_BK7;
+use techniques::empirical_fresnel::{compare, AngleGrid, WATER};
+use techniques::refraction::Constant;
 use tracer::geometry::Object;
 use tracer::render::Image;
-use tracer::scene::Scene;
+use tracer::scene::{GlassShortcut, Scene};
 use validation::techniques::dispersion::three_etas;
 use validation::techniques::envmap_vs_traced::{self, Comparison, Resolution, Surroundings};
 use validation::techniques::{
-    bump_scene, check_all, check_bump_render, check_dispersion_render, check_distance,
+    bump_scene, check_all, check_bump_render, check_cheap_refraction_render,
+    check_dispersion_render, check_distance, check_empirical_fresnel_render,
     check_planar_reflection, check_planar_shadow, check_self_reflection, check_sellmeier,
     mirror_scene, render_with_hits, shadow_scene,
 };
@@ -23,8 +26,8 @@ fn every_technique_check_passes() {
     assert_eq!(curves.refraction.len(), 4);
     assert_eq!(curves.fresnel_fits.len(), 3);
     assert_eq!(curves.envmap_distance.len(), 2);
-    assert_eq!(checks.len(), 12);
-    assert_eq!(figures.len(), 6);
+    assert_eq!(checks.len(), 14);
+    assert_eq!(figures.len(), 8);
     for check in &checks {
         assert!(check.passed(), "{}: {:?}", check.id, check.failures);
     }
@@ -142,4 +145,33 @@ fn a_shadow_matrix_from_the_wrong_light_fails_the_planar_shadow_check() {
     };
     let check = check_planar_shadow(&shadow_scene(80, 60), moved, &mut Vec::new());
     assert!(!check.passed(), "{:?}", check.metrics);
+}
+
+#[test]
+fn a_cheap_refraction_left_out_fails_its_render_check() {
+    let mut figures = Vec::new();
+    let check = check_cheap_refraction_render(GlassShortcut::None, &mut figures);
+    assert!(!check.passed());
+    assert!(check.failures[0].contains("at the rim"), "{check:?}");
+}
+
+#[test]
+fn the_slides_c_of_one_fails_the_cheap_refraction_render_check() {
+    let mut figures = Vec::new();
+    let slides = GlassShortcut::CheapRefraction(Constant::Fixed(1.0));
+    let check = check_cheap_refraction_render(slides, &mut figures);
+    assert!(!check.passed());
+    assert!(check.failures[0].contains("at the centre"), "{check:?}");
+}
+
+#[test]
+fn a_form_fitted_to_water_fails_the_glass_empirical_fresnel_render_check() {
+    let mut figures = Vec::new();
+    let water = compare(WATER, &AngleGrid::TENTH_OF_A_DEGREE)
+        .unwrap()
+        .fit
+        .form;
+    let check = check_empirical_fresnel_render(water, &mut figures);
+    assert!(!check.passed());
+    assert!(check.failures[0].contains("outside"), "{check:?}");
 }

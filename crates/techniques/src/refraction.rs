@@ -34,6 +34,17 @@ pub enum Constant {
     FirstOrder,
 }
 
+impl Constant {
+    /// The value of `c` along a path whose index (`n_t / n_i`, the one the
+    /// law resolved) is `eta_path`.
+    pub fn value(self, eta_path: f64) -> f64 {
+        match self {
+            Constant::Fixed(c) => c,
+            Constant::FirstOrder => eta_path - 1.0,
+        }
+    }
+}
+
 /// The slides' constant for water, `c ≈ 1`.
 pub const SLIDES_WATER: Constant = Constant::Fixed(1.0);
 
@@ -100,11 +111,7 @@ impl Comparison {
 pub fn compare(wi: DVec3, n: DVec3, eta: f64, constant: Constant) -> Option<Comparison> {
     let incidence = incidence(wi, n, eta)?;
     let facing = if incidence.from_inside { -n } else { n };
-    let c = match constant {
-        Constant::Fixed(c) => c,
-        Constant::FirstOrder => incidence.eta_path() - 1.0,
-    };
-    let cheap = refract_001_approx(-wi, facing, c);
+    let cheap = refract_001_approx(-wi, facing, constant.value(incidence.eta_path()));
     Some(match incidence.cos_transmitted() {
         None => Comparison::TotalInternalReflection { cheap },
         Some(cos_t) => {

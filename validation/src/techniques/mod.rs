@@ -15,6 +15,7 @@ mod envmap;
 pub mod envmap_vs_traced;
 pub mod figure;
 mod glass;
+pub mod glass_shortcuts;
 pub mod parallax;
 pub mod planar_reflection;
 pub mod planar_shadow;
@@ -33,6 +34,10 @@ pub use envmap::{check_envmap, sphere_round_trip, ENVMAP_ROUND_TRIP};
 pub use glass::{
     check_dispersion_render, check_prism, check_sellmeier, DATA_SHEET_ABS, FLAT_SPECTRUM_RELATIVE,
     N_BK7_DATA_SHEET, PRISM_ABS,
+};
+pub use glass_shortcuts::{
+    check_cheap_refraction_render, check_empirical_fresnel_render, fitted_form, glass_scene,
+    CHEAP_REFRACTION,
 };
 pub use parallax::{check_distance, check_self_reflection, DistanceCurve};
 pub use planar_reflection::{check_planar_reflection, floor_matrix, mirror_scene};
@@ -116,6 +121,8 @@ pub fn check_all(
         check_bump_render(&bump_scene(), bump_render::render, figures),
         check_planar_reflection(&mirror_scene(w, h), floor_matrix(), figures),
         check_planar_shadow(&shadow_scene(w, h), planar::shadow_matrix, figures),
+        check_cheap_refraction_render(CHEAP_REFRACTION, figures),
+        check_empirical_fresnel_render(fitted_form(&glass_scene()), figures),
     ];
     (checks, curves)
 }

@@ -31,6 +31,7 @@ pub mod local;
 pub mod path;
 pub mod photon;
 pub mod scatter;
+mod shortcut;
 pub mod whitted;
 
 pub use scatter::Bounce;

@@ -125,7 +125,7 @@ impl Tracer<'_> {
                 bounce: Bounce::Refraction,
                 ray: Ray::new(
                     spawn::origin(hit, -outward, self.settings.ray_offset),
-                    t.direction,
+                    self.refracted_direction(wo, n, &interface.incidence, t.direction),
                 ),
                 weight: Vec3::splat(self.across_interface(interface.transmittance, t.eta_path)),
                 power: Vec3::splat(interface.transmittance),
@@ -181,6 +181,9 @@ impl Tracer<'_> {
         let Some(incidence) = incidence else {
             return Interface::undefined();
         };
+        if let Some(r) = self.shortcut_reflectance(&incidence) {
+            return Interface::new(incidence, incidence.cos_transmitted(), r, 1.0 - r);
+        }
         match self.settings.fresnel {
             FresnelModel::Exact => {
                 let f = fresnel::dielectric_resolved(&incidence);

@@ -39,7 +39,8 @@ pub use error::{ErrorKind, SceneError};
 pub use model::{Light, Material, Scene};
 pub use schema::SceneFile;
 pub use settings::{
-    FresnelModel, IntegratorKind, PhotonSettings, PixelFilter, RayOffset, RenderSpec, Settings,
+    FresnelModel, GlassShortcut, IntegratorKind, PhotonSettings, PixelFilter, RayOffset,
+    RenderSpec, Settings,
 };
 pub use settings::{MAX_DEPTH, MAX_PHOTONS, MAX_PHOTON_PASSES, MAX_SPP};
 

@@ -98,6 +98,32 @@ impl fmt::Display for FresnelModel {
     }
 }
 
+/// A slide's rasteriser-side shortcut in place of a law at glass, for
+/// measuring it against the traced truth (none by default). Set only by a
+/// caller that measures it (the harness's technique checks), never read
+/// from a scene file or a flag, so no input reaches it.
+///
+/// Either applies only where Snell's law transmits: total internal
+/// reflection stays the law's decision, made once by
+/// [`radiometry::specular::incidence`].
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub enum GlassShortcut {
+    /// The laws alone.
+    #[default]
+    None,
+    /// `001`'s cheap refraction, `t = normalize(−c n + i)`
+    /// ([`radiometry::course::refract_001_approx`]), in place of Snell's
+    /// direction, from either side, with `c` from the index along the path
+    /// the law resolved ([`techniques::refraction::Constant::value`]).
+    CheapRefraction(techniques::refraction::Constant),
+    /// `001`'s empirical Fresnel form, clamped
+    /// ([`techniques::empirical_fresnel::reflectance`]), in place of the
+    /// chosen law's reflectance where light arrives from outside the glass
+    /// (the one surface a rasteriser shades; inside, the chosen law): the
+    /// form fitted to the scene's glass by its caller.
+    EmpiricalFresnel(radiometry::course::EmpiricalFresnel<f64>),
+}
+
 /// Where in a pixel its primary rays pass: the pixel filter.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize, Serialize)]
 #[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
@@ -239,6 +265,10 @@ pub struct Settings {
     pub pixel_filter: PixelFilter,
     /// The caustic photon map (`photon` only).
     pub photon: PhotonSettings,
+    /// A slide's shortcut at glass, measured against the laws; never
+    /// written out, as no input sets it.
+    #[serde(skip)]
+    pub glass_shortcut: GlassShortcut,
 }
 
 impl Default for Settings {
@@ -253,6 +283,7 @@ impl Default for Settings {
             ray_offset: RayOffset::Robust,
             pixel_filter: PixelFilter::default_for(IntegratorKind::Whitted),
             photon: PhotonSettings::default(),
+            glass_shortcut: GlassShortcut::None,
         }
     }
 }
