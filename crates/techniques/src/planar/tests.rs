@@ -77,7 +77,7 @@ proptest! {
         prop_assume!(plane.normal().dot(towards).abs() > 1e-3 * towards.length());
         let p = match project_shadow(light, &plane, v) {
             Shadow::Cast(p) | Shadow::BeyondPlane(p) | Shadow::BehindLight(p) => p,
-            Shadow::Parallel => return Err(TestCaseError::fail("parallel")),
+            Shadow::Parallel | Shadow::LightOnPlane => return Err(TestCaseError::fail(format!("{:?}", project_shadow(light, &plane, v)))),
         };
         let scale = 1.0 + p.abs().max_element() + light.abs().max_element();
         prop_assert!(plane.distance(p).abs() <= TOLERANCE * scale, "{p} off the plane");
@@ -125,7 +125,7 @@ proptest! {
                 prop_assume!(p.length() < 1e2 && plane.distance(light).abs() > 1e-3);
                 prop_assert!(hit.is_none(), "a ray forward met the plane");
             }
-            Shadow::Parallel => {}
+            Shadow::Parallel | Shadow::LightOnPlane => {}
         }
     }
 }
@@ -277,4 +277,40 @@ fn course_001_gl_scale_mirror_turns_front_faces_into_back_faces() {
     // back face.
     let [a2, b2, c2, eye2] = [a, b, c, eye].map(|p| transform_point(&gl_scale, p));
     assert!(winding(a2, b2, c2, eye2) < 0.0);
+}
+
+#[test]
+fn a_light_on_the_plane_makes_the_shadow_matrix_send_every_vertex_to_the_light() {
+    // The light on a tilted plane through (1, 2, 3): n · l + d = 0 up to
+    // the rounding of d = −n · p.
+    let plane = Plane::through(DVec3::new(1.0, 2.0, 3.0), DVec3::new(1.0, 1.0, 1.0)).unwrap();
+    let light = DVec3::new(0.0, 0.0, 6.0);
+    assert!(light_on_plane(light, &plane));
+    let m = shadow_matrix(light, &plane);
+    for v in [DVec3::new(1.0, 0.0, 0.0), DVec3::new(-2.0, 5.0, 1.0)] {
+        assert_eq!(project_shadow(light, &plane, v), Shadow::LightOnPlane);
+        // Rank 1: M v is a multiple of (l, 1), the light itself.
+        assert!(close(transform_point(&m, v), light), "{v}");
+    }
+    // A micrometre above the plane the matrix projects again.
+    let above = light + 1e-6 * plane.normal();
+    assert!(!light_on_plane(above, &plane));
+    assert!(matches!(
+        project_shadow(above, &plane, DVec3::new(1.0, 0.0, 0.0)),
+        Shadow::Cast(_) | Shadow::BeyondPlane(_) | Shadow::BehindLight(_)
+    ));
+}
+
+#[test]
+fn the_reflection_factors_are_the_slides_f_s_and_f_inverse() {
+    // The floor y = 1: F moves it down by 1, S mirrors, F⁻¹ moves it back.
+    let floor = Plane::through(DVec3::new(0.0, 1.0, 0.0), DVec3::Y).unwrap();
+    let r = reflection(&floor);
+    let down = DMat4::from_translation(DVec3::new(0.0, -1.0, 0.0));
+    assert!(r.to_floor.abs_diff_eq(down, TOLERANCE), "{:?}", r.to_floor);
+    assert!((r.from_floor * r.to_floor).abs_diff_eq(DMat4::IDENTITY, TOLERANCE));
+    assert!(r
+        .matrix
+        .abs_diff_eq(r.from_floor * r.mirror * r.to_floor, 0.0));
+    assert_eq!(r.mirror.determinant(), -1.0);
 }
