@@ -74,9 +74,10 @@ fn narrate_plane(record: &mut Record, lang: Lang, plane: &Plane) {
     });
 }
 
-/// `x`, or 0 where it is within [`ROUNDING`] of `size` (and −0 as 0).
+/// `x`, or 0 where it is within [`ROUNDING`] of `size` (and −0 as 0). An
+/// infinite `x` stays, for the overflow checks after it to find.
 fn clean(x: f64, size: f64) -> f64 {
-    if x.abs() <= ROUNDING * size {
+    if x.is_finite() && x.abs() <= ROUNDING * size {
         0.0
     } else {
         x
