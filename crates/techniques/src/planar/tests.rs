@@ -281,10 +281,12 @@ fn course_001_gl_scale_mirror_turns_front_faces_into_back_faces() {
 
 #[test]
 fn a_light_on_the_plane_makes_the_shadow_matrix_send_every_vertex_to_the_light() {
-    // The light on a tilted plane through (1, 2, 3): n · l + d = 0 up to
-    // the rounding of d = −n · p.
-    let plane = Plane::through(DVec3::new(1.0, 2.0, 3.0), DVec3::new(1.0, 1.0, 1.0)).unwrap();
-    let light = DVec3::new(0.0, 0.0, 6.0);
+    // The light on the plane x + 2y + 3z = 14 (1 + 4 + 9 = 14): computed
+    // with the unit normal, n · l + d is 4.4e-16, not 0, the rounding of
+    // d = −n · p and n · l.
+    let plane = Plane::through(DVec3::new(1.0, 2.0, 3.0), DVec3::new(1.0, 2.0, 3.0)).unwrap();
+    let light = DVec3::new(14.0, 0.0, 0.0);
+    assert_ne!(plane.distance(light), 0.0);
     assert!(light_on_plane(light, &plane));
     let m = shadow_matrix(light, &plane);
     for v in [DVec3::new(1.0, 0.0, 0.0), DVec3::new(-2.0, 5.0, 1.0)] {
