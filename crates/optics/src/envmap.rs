@@ -113,7 +113,7 @@ fn cube(record: &mut Record, lang: Lang, given: DVec3, r: Direction) -> (String,
         say!(
             lang,
             "cube: the largest |component| is r_{} = {} (ties: z over y over x): the {} face",
-            "kocka: a legnagyobb abszolút értékű komponens r_{} = {} (egyenlőségnél z, majd y, majd x): a(z) {} lap",
+            "kocka: a legnagyobb abszolút értékű komponens r_{} = {} (egyenlőségnél z, majd y, majd x): a {} lap",
             axis[f.axis],
             number(major),
             face.name()

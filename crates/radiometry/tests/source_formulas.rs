@@ -855,3 +855,20 @@ fn course_000_diffuse_factor_is_a_reflectance_not_an_absorptance() {
     assert!(reflected[1] > reflected[0] && reflected[1] > reflected[2]);
     assert!(absorbed[1] < absorbed[0] && absorbed[1] < absorbed[2]);
 }
+
+/// Erratum (`001`, line 462): "Alacsony szög esetén nagy a tükröződés"
+/// (at a low angle the reflection is strong, the water hides what is
+/// under it). The slides measure angles from the normal (line 376); there
+/// water (n = 1.33) reflects about its `F0` of 2 % and lets the rest
+/// through. The reflection is strong at a high angle, near grazing.
+#[test]
+fn course_001_water_reflects_little_at_a_low_angle_from_the_normal() {
+    let eta = 1.33;
+    let at = |degrees: f64| dielectric(degrees.to_radians().cos(), eta);
+    let (low, high) = (at(10.0), at(80.0));
+    // 1e-4: the Fresnel curve's rise from 0° to 10° (about 1e-5), with room.
+    assert!((low - f0(eta, 0.0)).abs() <= 1e-4, "10°: {low}");
+    assert!(low < 0.03, "10°: {low}");
+    // Above a third at 80°: more than fifteen times the 10° value.
+    assert!(high > 15.0 * low && high > 0.33, "80°: {high}");
+}

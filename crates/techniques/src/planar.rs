@@ -62,17 +62,53 @@ impl Plane {
     }
 }
 
-/// The slides' reflection matrix of `plane`: `M = F⁻¹ S(1, −1, 1) F`, where
-/// `F = R(n, (0, 1, 0)) T(−p)` moves the plane onto `y = 0`. Drawing a
+/// The slides' reflection matrix with its factors, as the slide builds it:
+/// `M = F⁻¹ S(1, −1, 1) F`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Reflection {
+    /// `F = R(n, (0, 1, 0)) T(−p)`: takes the plane onto `y = 0`, its
+    /// normal onto `+y`.
+    pub to_floor: DMat4,
+    /// `S(1, −1, 1)`: the mirror in `y = 0`.
+    pub mirror: DMat4,
+    /// `F⁻¹`: back from `y = 0` to the plane.
+    pub from_floor: DMat4,
+    /// `M = F⁻¹ S F`.
+    pub matrix: DMat4,
+}
+
+/// The slides' reflection matrix of `plane` and its factors. Drawing a
 /// scene's objects through `M` draws their mirror image in the plane; the
 /// lights' positions and directions go through it too.
-pub fn reflection_matrix(plane: &Plane) -> DMat4 {
+pub fn reflection(plane: &Plane) -> Reflection {
     // R(n, (0, 1, 0)): the shortest rotation taking n onto y (a half turn
     // when n = −y).
     let rotation = DQuat::from_rotation_arc(plane.normal, DVec3::Y);
-    let to_y = DMat4::from_quat(rotation) * DMat4::from_translation(-plane.point());
+    let to_floor = DMat4::from_quat(rotation) * DMat4::from_translation(-plane.point());
     let mirror = DMat4::from_scale(DVec3::new(1.0, -1.0, 1.0));
-    to_y.inverse() * mirror * to_y
+    let from_floor = to_floor.inverse();
+    Reflection {
+        to_floor,
+        mirror,
+        from_floor,
+        matrix: from_floor * mirror * to_floor,
+    }
+}
+
+/// The slides' reflection matrix of `plane`: `M = F⁻¹ S(1, −1, 1) F`, where
+/// `F = R(n, (0, 1, 0)) T(−p)` moves the plane onto `y = 0` ([`reflection`]
+/// hands back the factors too).
+pub fn reflection_matrix(plane: &Plane) -> DMat4 {
+    reflection(plane).matrix
+}
+
+/// Whether a point light at `light` lies on `plane`, `n · l + d = 0`, to
+/// the rounding of computing `n · l + d` (64 ε of its terms' sizes). There
+/// the shadow matrix is `−(l, 1)(n, d)ᵀ`, of rank 1: it sends every vertex
+/// off the plane to the light itself and casts no shadow.
+pub fn light_on_plane(light: DVec3, plane: &Plane) -> bool {
+    let size = (plane.normal * light).abs().element_sum() + plane.d.abs();
+    plane.distance(light).abs() <= 64.0 * f64::EPSILON * size
 }
 
 /// The slides' shadow matrix of a point light at `light` onto `plane`:
@@ -127,18 +163,25 @@ pub enum Shadow {
     /// The line from the light through the vertex is parallel to the plane
     /// (or the vertex is the light): it never meets it.
     Parallel,
+    /// The light lies on the plane ([`light_on_plane`]): the matrix is
+    /// singular and every line from the light meets the plane at the light.
+    LightOnPlane,
 }
 
 /// Where the shadow of `vertex` from a point light at `light` falls on
 /// `plane`, by the shadow matrix, with the outcome decided from the ray
 /// parameter `t` of `light + t (vertex − light)` at the plane: `t > 1`
-/// casts, `0 < t ≤ 1` is beyond the plane, `t ≤ 0` behind the light.
+/// casts, `0 < t ≤ 1` is beyond the plane, `t ≤ 0` behind the light; a
+/// light on the plane is [`Shadow::LightOnPlane`] whatever the vertex.
 ///
 /// Assumes `light` and `vertex` finite, and small enough that the matrix
 /// product stays in `f64`: a NaN, or a product that overflowed, reads as
 /// [`Shadow::Parallel`]. Check them where they enter, as `optics
 /// shadow-matrix` does.
 pub fn project_shadow(light: DVec3, plane: &Plane, vertex: DVec3) -> Shadow {
+    if light_on_plane(light, plane) {
+        return Shadow::LightOnPlane;
+    }
     let towards = vertex - light;
     let along = plane.normal.dot(towards);
     let h = shadow_matrix(light, plane) * vertex.extend(1.0);

@@ -4,8 +4,9 @@
 //! through the parser and the command. The promises: a clean line is not
 //! refused by the parser; an error names a flag given; a record holds no
 //! NaN (no `null`), texels lie in `[0, 1]`, a shadow is `parallel` only
-//! where the line from the light runs along the plane; an overflow is
-//! claimed only of finite inputs.
+//! where the line from the light runs along the plane and `degenerate`
+//! only where the light lies on it; an overflow is claimed only of finite
+//! inputs.
 
 use super::{check_error_field, number_text, runner, Coverage};
 use crate::lang::Lang;
@@ -17,7 +18,10 @@ use serde_json::Value;
 /// Each command's flags, as the record's inputs name them.
 const COMMANDS: [(&str, &[&str]); 3] = [
     ("envmap", &["dir", "map"]),
-    ("reflection-matrix", &["plane_point", "plane_normal"]),
+    (
+        "reflection-matrix",
+        &["plane_point", "plane_normal", "point", "direction"],
+    ),
     (
         "shadow-matrix",
         &["light", "plane_point", "plane_normal", "vertex"],
@@ -73,7 +77,7 @@ fn command_line() -> impl Strategy<Value = Line> {
                 args.extend(json.then(|| "--json".to_owned()));
                 args.push(command.to_owned());
                 for (field, text, given) in values {
-                    let optional = field == "map" || field == "vertex";
+                    let optional = ["map", "vertex", "point", "direction"].contains(&field);
                     if given || !optional {
                         args.extend([format!("--{}", field.replace('_', "-")), text]);
                     }
@@ -149,14 +153,27 @@ fn check_record(record: &Value) -> Result<(), TestCaseError> {
             }
         }
     }
+    let vector = |name: &str| {
+        let v: Vec<f64> = record["inputs"][name]
+            .as_array()
+            .map(|a| a.iter().filter_map(Value::as_f64).collect())
+            .unwrap_or_default();
+        glam::DVec3::from_slice(&v)
+    };
+    if record["details"]["matrix"] == "degenerate" {
+        let (light, point) = (vector("light"), vector("plane_point"));
+        let n = radiometry::domain::direction("n", vector("plane_normal"))
+            .map_err(|e| TestCaseError::fail(e.to_string()))?
+            .unit;
+        // On the plane to the rounding of the inputs' sizes.
+        let height = n.dot(light - point).abs();
+        let scale = light.abs().max_element() + point.abs().max_element();
+        prop_assert!(
+            height <= 1e-12 * scale,
+            "degenerate, but n · (l − p) = {height}: {record}"
+        );
+    }
     if record["details"]["outcome"] == "parallel" {
-        let vector = |name: &str| {
-            let v: Vec<f64> = record["inputs"][name]
-                .as_array()
-                .map(|a| a.iter().filter_map(Value::as_f64).collect())
-                .unwrap_or_default();
-            glam::DVec3::from_slice(&v)
-        };
         let (light, vertex) = (vector("light"), vector("vertex"));
         let n = radiometry::domain::direction("n", vector("plane_normal"))
             .map_err(|e| TestCaseError::fail(e.to_string()))?

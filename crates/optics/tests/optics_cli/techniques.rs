@@ -54,17 +54,25 @@ fn the_techniques_explain_in_hungarian() {
             vec!["envmap", "--dir", "-3.2,5.1,-8.4"],
             &[
                 "kocka",
-                "-Z lap",
+                "): a -Z lap",
                 "szélességi–hosszúsági",
                 "gömbtérkép",
                 "0.690476",
             ],
         ),
-        (mirror, &["Sík tükrözési mátrixa", "ellenőrzés: det M = -1"]),
+        (
+            mirror,
+            &[
+                "Sík tükrözési mátrixa",
+                "az y = 0 síkra tükröz: S = [(1, 0, 0, 0), (0, -1, 0, 0)",
+                "ellenőrzés: det M = -1",
+            ],
+        ),
         (
             shadow,
             &[
                 "Pontfényforrás árnyékmátrixa",
+                "a sík az y = 0: a diák különleges esete",
                 "a csúcs a fény és a sík között van",
             ],
         ),
@@ -149,11 +157,139 @@ fn shadow_matrix_names_each_outcome_of_a_vertex() {
         "--plane-normal",
         "0,1,0",
     ]);
-    assert!(record.get("details").is_none(), "{record}");
+    assert!(record["details"].get("outcome").is_none(), "{record}");
     assert_eq!(
         record["answer"][3],
         serde_json::json!([0.0, -1.0, 0.0, 4.0])
     );
+}
+
+/// The rows of a record's matrix, as numbers.
+fn matrix(value: &Value) -> Vec<Vec<f64>> {
+    let rows = value.as_array().expect("a matrix by rows");
+    rows.iter()
+        .map(|row| row.as_array().unwrap().iter().map(number).collect())
+        .collect()
+}
+
+#[test]
+fn reflection_matrix_shows_its_factors_and_mirrors_a_light() {
+    // The plane x + y = 1: M swaps x and y about it, (x, y) → (1 − y, 1 − x).
+    let record = json(&[
+        "reflection-matrix",
+        "--plane-point",
+        "0,1,0",
+        "--plane-normal",
+        "1,1,0",
+        "--point",
+        "2,3,4",
+        "--direction",
+        "0,-2,0",
+    ]);
+    assert_record_fields(&record);
+    let m = matrix(&record["answer"]);
+    // The exact zeros come out as zeros, not as the −3.3e-16 of the
+    // products' rounding; the rest within 4 ε of the exact entries.
+    assert_eq!(m[0][0], 0.0, "{record}");
+    assert_eq!(m[1][1], 0.0, "{record}");
+    let want = [
+        [0.0, -1.0, 0.0, 1.0],
+        [-1.0, 0.0, 0.0, 1.0],
+        [0.0, 0.0, 1.0, 0.0],
+        [0.0, 0.0, 0.0, 1.0],
+    ];
+    for (got, want) in m.iter().flatten().zip(want.iter().flatten()) {
+        assert!((got - want).abs() <= 4.0 * f64::EPSILON, "{record}");
+    }
+    // M = F⁻¹ S F with the factors shown: F takes the plane's point
+    // (0, 1, 0) onto y = 0 (its second row dotted with (0, 1, 0, 1)).
+    let f = matrix(&record["details"]["to_floor"]);
+    assert!((f[1][1] + f[1][3]).abs() <= 4.0 * f64::EPSILON, "{record}");
+    let steps = record["steps"].to_string();
+    for phrase in ["F = [", "S = [(1, 0, 0, 0), (0, -1, 0, 0)", "F⁻¹ = ["] {
+        assert!(steps.contains(phrase), "no {phrase:?} in {steps}");
+    }
+    assert!(!steps.contains("e-1"), "rounding noise printed: {steps}");
+    // A light at (2, 3, 4) goes to (−2, −1, 4); a light shining down, (0, −1, 0),
+    // shines along (1, 0, 0) in the mirror.
+    let point: Vec<f64> = record["details"]["point_image"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(number)
+        .collect();
+    let direction: Vec<f64> = record["details"]["direction_image"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(number)
+        .collect();
+    for (got, want) in point.iter().zip([-2.0, -1.0, 4.0]) {
+        assert!((got - want).abs() <= 16.0 * f64::EPSILON, "{record}");
+    }
+    for (got, want) in direction.iter().zip([1.0, 0.0, 0.0]) {
+        assert!((got - want).abs() <= 4.0 * f64::EPSILON, "{record}");
+    }
+}
+
+#[test]
+fn shadow_matrix_with_the_light_on_the_plane_is_degenerate() {
+    // The light on the floor: M = −(l, 1)(n, d)ᵀ sends the vertex to the light.
+    let record = json(&[
+        "shadow-matrix",
+        "--light",
+        "1,0,2",
+        "--plane-point",
+        "0,0,0",
+        "--plane-normal",
+        "0,1,0",
+        "--vertex",
+        "1,2,0",
+    ]);
+    assert_record_fields(&record);
+    assert_eq!(record["details"]["matrix"], "degenerate", "{record}");
+    assert_eq!(record["details"]["outcome"], "degenerate", "{record}");
+    assert!(record["details"].get("point").is_none(), "{record}");
+    // Off the plane it is not.
+    let above = json(&[
+        "shadow-matrix",
+        "--light",
+        "1,1e-6,2",
+        "--plane-point",
+        "0,0,0",
+        "--plane-normal",
+        "0,1,0",
+    ]);
+    assert!(above["details"].get("matrix").is_none(), "{above}");
+}
+
+#[test]
+fn shadow_matrix_on_y_0_is_the_slides_special_case() {
+    let floor = |normal: &'static str| {
+        json(&[
+            "shadow-matrix",
+            "--light",
+            "1,4,2",
+            "--plane-point",
+            "3,0,-1",
+            "--plane-normal",
+            normal,
+        ])
+    };
+    let record = floor("0,5,0");
+    assert_eq!(
+        matrix(&record["details"]["slides_y0"]),
+        vec![
+            vec![4.0, -1.0, 0.0, 0.0],
+            vec![0.0, 0.0, 0.0, 0.0],
+            vec![0.0, -2.0, 4.0, 0.0],
+            vec![0.0, -1.0, 0.0, 4.0],
+        ]
+    );
+    assert_eq!(record["details"]["slides_y0"], record["answer"], "{record}");
+    // A plane other than y = 0 has no special case.
+    let tilted = floor("0,1,1");
+    assert!(tilted.get("details").is_none(), "{tilted}");
 }
 
 /// Bad input: a message naming the flag, a non-zero exit, no panic, and

@@ -77,7 +77,7 @@ proptest! {
         prop_assume!(plane.normal().dot(towards).abs() > 1e-3 * towards.length());
         let p = match project_shadow(light, &plane, v) {
             Shadow::Cast(p) | Shadow::BeyondPlane(p) | Shadow::BehindLight(p) => p,
-            Shadow::Parallel => return Err(TestCaseError::fail("parallel")),
+            Shadow::Parallel | Shadow::LightOnPlane => return Err(TestCaseError::fail(format!("{:?}", project_shadow(light, &plane, v)))),
         };
         let scale = 1.0 + p.abs().max_element() + light.abs().max_element();
         prop_assert!(plane.distance(p).abs() <= TOLERANCE * scale, "{p} off the plane");
@@ -125,7 +125,7 @@ proptest! {
                 prop_assume!(p.length() < 1e2 && plane.distance(light).abs() > 1e-3);
                 prop_assert!(hit.is_none(), "a ray forward met the plane");
             }
-            Shadow::Parallel => {}
+            Shadow::Parallel | Shadow::LightOnPlane => {}
         }
     }
 }
@@ -179,4 +179,140 @@ fn the_half_turn_handles_a_normal_opposite_to_y() {
     let plane = Plane::through(DVec3::new(0.0, 1.0, 0.0), -DVec3::Y).unwrap();
     let image = transform_point(&reflection_matrix(&plane), DVec3::new(3.0, 4.0, 5.0));
     assert!(close(image, DVec3::new(3.0, -2.0, 5.0)), "{image}");
+}
+
+/// `(b − a) × (c − a) · (eye − a)`: positive where `eye` sees the triangle
+/// `a b c` counter-clockwise (OpenGL's default front face).
+fn winding(a: DVec3, b: DVec3, c: DVec3, eye: DVec3) -> f64 {
+    (b - a).cross(c - a).dot(eye - a)
+}
+
+proptest! {
+    #[test]
+    fn the_reflection_matrix_mirrors_light_positions(
+        plane in plane(), light in vector(), v in vector(),
+    ) {
+        // A point light drawn through M (the slides' `setLightSourcePositions`
+        // after `glScalef`) lights the mirrored vertex from the mirrored
+        // side: the same distance, the direction the law of reflection
+        // gives, so the cosine with the mirrored normal is unchanged.
+        let m = reflection_matrix(&plane);
+        let (light_image, v_image) = (transform_point(&m, light), transform_point(&m, v));
+        let n = plane.normal();
+        let to_light = light - v;
+        let mirrored = to_light - 2.0 * n.dot(to_light) * n;
+        prop_assert!(close(light_image - v_image, mirrored), "{light_image} {v_image} against {mirrored}");
+    }
+
+    #[test]
+    fn the_reflection_matrix_swaps_the_planes_sides(plane in plane(), v in vector()) {
+        // What lies below the floor comes out above it, as far: the reason
+        // the mirrored drawing needs a clip plane.
+        let image = transform_point(&reflection_matrix(&plane), v);
+        let scale = 1.0 + v.abs().max_element() + plane.d().abs();
+        prop_assert!(
+            (plane.distance(image) + plane.distance(v)).abs() <= TOLERANCE * scale,
+            "{v} at {} went to {image} at {}", plane.distance(v), plane.distance(image)
+        );
+    }
+
+    #[test]
+    fn the_reflection_matrix_reverses_the_winding_of_every_triangle(
+        plane in plane(), a in vector(), b in vector(), c in vector(), eye in vector(),
+    ) {
+        // det M = −1: a triangle counter-clockwise from the eye is clockwise
+        // in the mirror seen from the mirrored eye; with back faces culled,
+        // the mirrored object's front faces are the ones dropped.
+        let before = winding(a, b, c, eye);
+        prop_assume!(before.abs() > 1e-3);
+        let m = reflection_matrix(&plane);
+        let [a2, b2, c2, eye2] = [a, b, c, eye].map(|p| transform_point(&m, p));
+        let after = winding(a2, b2, c2, eye2);
+        prop_assert!((after + before).abs() <= TOLERANCE * 1e3 * (1.0 + before.abs()), "{before} became {after}");
+    }
+}
+
+/// Erratum (`001`, lines 576–586 and 647): the matrices are typeset row by
+/// row for column vectors, `M (x, y, z, 1)`, and `glMultMatrixf` reads its
+/// 16 floats column by column (OpenGL 2.1 §2.11.2). A `shadowMat` filled
+/// as the slide reads is applied as `Mᵀ`, which puts no vertex on the
+/// ground; filled column by column (transposed), it does.
+#[test]
+fn course_001_gl_mult_matrix_needs_the_shadow_matrix_stored_column_major() {
+    let light = DVec3::new(1.0, 4.0, 2.0);
+    let vertex = DVec3::new(0.5, 1.0, 0.3);
+    let floor = Plane::through(DVec3::ZERO, DVec3::Y).unwrap();
+    for m in [shadow_matrix_y0(light), shadow_matrix(light, &floor)] {
+        // What `glMultMatrixf` applies, given the 16 floats in each order.
+        let typed_row_by_row = DMat4::from_cols_array(&m.transpose().to_cols_array());
+        let stored_column_major = DMat4::from_cols_array(&m.to_cols_array());
+        let right = transform_point(&stored_column_major, vertex);
+        let wrong = transform_point(&typed_row_by_row, vertex);
+        // 1e-9 m: the tolerance of the properties above.
+        assert!(floor.distance(right).abs() <= TOLERANCE, "{right}");
+        assert!(floor.distance(wrong).abs() > 0.1, "{wrong} is on the floor");
+    }
+}
+
+/// Erratum (`001`, line 343 against lines 363–366): `glScalef(1, −1, 1)`
+/// is the reflection matrix of the floor `y = 0`, and it turns every
+/// triangle's winding (the property above), so with back faces culled the
+/// listing culls the mirrored object's front faces; the slides' own cure,
+/// culling front faces (`glFrontFace(GL_CW)` or `glCullFace(GL_FRONT)`)
+/// while it draws, is not in the listing.
+#[test]
+fn course_001_gl_scale_mirror_turns_front_faces_into_back_faces() {
+    let floor = Plane::through(DVec3::ZERO, DVec3::Y).unwrap();
+    let gl_scale = DMat4::from_scale(DVec3::new(1.0, -1.0, 1.0));
+    assert!(reflection_matrix(&floor).abs_diff_eq(gl_scale, TOLERANCE));
+    // A triangle of the object, counter-clockwise (front) as the eye sees it.
+    let eye = DVec3::new(0.0, 3.0, 5.0);
+    let [a, b, c] = [
+        DVec3::new(-1.0, 1.0, 0.0),
+        DVec3::new(1.0, 1.0, 0.0),
+        DVec3::new(0.0, 2.0, 0.0),
+    ];
+    assert!(winding(a, b, c, eye) > 0.0);
+    // Its mirror image seen from the mirrored eye: clockwise, culled as a
+    // back face.
+    let [a2, b2, c2, eye2] = [a, b, c, eye].map(|p| transform_point(&gl_scale, p));
+    assert!(winding(a2, b2, c2, eye2) < 0.0);
+}
+
+#[test]
+fn a_light_on_the_plane_makes_the_shadow_matrix_send_every_vertex_to_the_light() {
+    // The light on the plane x + 2y + 3z = 14 (1 + 4 + 9 = 14): computed
+    // with the unit normal, n · l + d is 4.4e-16, not 0, the rounding of
+    // d = −n · p and n · l.
+    let plane = Plane::through(DVec3::new(1.0, 2.0, 3.0), DVec3::new(1.0, 2.0, 3.0)).unwrap();
+    let light = DVec3::new(14.0, 0.0, 0.0);
+    assert_ne!(plane.distance(light), 0.0);
+    assert!(light_on_plane(light, &plane));
+    let m = shadow_matrix(light, &plane);
+    for v in [DVec3::new(1.0, 0.0, 0.0), DVec3::new(-2.0, 5.0, 1.0)] {
+        assert_eq!(project_shadow(light, &plane, v), Shadow::LightOnPlane);
+        // Rank 1: M v is a multiple of (l, 1), the light itself.
+        assert!(close(transform_point(&m, v), light), "{v}");
+    }
+    // A micrometre above the plane the matrix projects again.
+    let above = light + 1e-6 * plane.normal();
+    assert!(!light_on_plane(above, &plane));
+    assert!(matches!(
+        project_shadow(above, &plane, DVec3::new(1.0, 0.0, 0.0)),
+        Shadow::Cast(_) | Shadow::BeyondPlane(_) | Shadow::BehindLight(_)
+    ));
+}
+
+#[test]
+fn the_reflection_factors_are_the_slides_f_s_and_f_inverse() {
+    // The floor y = 1: F moves it down by 1, S mirrors, F⁻¹ moves it back.
+    let floor = Plane::through(DVec3::new(0.0, 1.0, 0.0), DVec3::Y).unwrap();
+    let r = reflection(&floor);
+    let down = DMat4::from_translation(DVec3::new(0.0, -1.0, 0.0));
+    assert!(r.to_floor.abs_diff_eq(down, TOLERANCE), "{:?}", r.to_floor);
+    assert!((r.from_floor * r.to_floor).abs_diff_eq(DMat4::IDENTITY, TOLERANCE));
+    assert!(r
+        .matrix
+        .abs_diff_eq(r.from_floor * r.mirror * r.to_floor, 0.0));
+    assert_eq!(r.mirror.determinant(), -1.0);
 }

@@ -127,3 +127,45 @@ fn course_001_cg_normal_transform_needs_the_inverse_transpose() {
     let turned = reflect(cg).angle_between(reflect(right)).to_degrees();
     assert!((turned - 2.0 * off).abs() < 1e-9, "{turned}°");
 }
+
+/// Erratum (lines 153–174): the sphere map's basis has rows `h`, `u`, `f`
+/// ("we look at the picture along `f`"), the eye vector `e` runs from the
+/// eye to the vertex (lines 40–42, 159–163), and the normal lies half way
+/// between `r` and the eye's direction `(0, 0, 1)` (line 174). That last
+/// one points towards the viewer, so `f` must too (then `h`, `u`, `f` is
+/// right-handed): with `f` along the view, as "along `f`" reads and as `e`
+/// runs, the sphere's centre, which reflects the view straight back, maps
+/// to the rim, and no normal comes back.
+#[test]
+fn course_001_sphere_map_basis_needs_f_towards_the_viewer() {
+    // A camera looking along world +x, up +y: right is view × up.
+    let view = DVec3::X;
+    let up = DVec3::Y;
+    let right = view.cross(up);
+    let basis = |f: DVec3| DMat3::from_cols(right, up, f).transpose();
+    let (towards, along) = (basis(-view), basis(view));
+    assert!((towards.determinant() - 1.0).abs() <= 4.0 * EPS);
+    assert!((along.determinant() + 1.0).abs() <= 4.0 * EPS);
+    // Normals of the sphere's visible half, the centre first.
+    let normals = [
+        -view,
+        (-view + 0.5 * up).normalize(),
+        (-view - 0.3 * right + 0.2 * up).normalize(),
+    ];
+    for n in normals {
+        // The slides' reflection in the map's space, r = e' − 2 (n'·e') n'.
+        let r = radiometry::course::reflect_001(towards * view, towards * n);
+        let SphereTexel::Disc(texel) = SphereTexel::from_direction(direction(r)) else {
+            panic!("{n}: no texel with f towards the viewer");
+        };
+        // 1e-13: a few roundings of the normalisation and the reflection.
+        assert!((texel.normal() - towards * n).length() <= 1e-13, "{n}");
+        let r = radiometry::course::reflect_001(along * view, along * n);
+        match SphereTexel::from_direction(direction(r)) {
+            SphereTexel::Rim => assert_eq!(n, -view),
+            SphereTexel::Disc(texel) => {
+                assert!((texel.normal() - along * n).length() > 0.5, "{n}");
+            }
+        }
+    }
+}

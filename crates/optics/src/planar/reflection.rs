@@ -1,0 +1,142 @@
+//! `optics reflection-matrix`: the slides' `M = F⁻¹ S(1, −1, 1) F` of a
+//! plane, each factor in numbers, and `M` applied to a point or a
+//! direction.
+
+use super::{
+    clean, cleaned, cleaned_product, finite_matrix, finite_point, inline, matrix_answer,
+    narrate_plane, vector4, PlaneArgs,
+};
+use crate::error::Result;
+use crate::input::{Vec3Arg, Via};
+use crate::lang::{say, Lang};
+use crate::record::{number, vector, Record, Steps};
+use techniques::planar::reflection;
+
+/// The matrix that mirrors a scene in a plane.
+#[derive(clap::Args, Clone, Debug)]
+#[command(
+    allow_negative_numbers = true,
+    after_help = "The slides' M = F⁻¹ S(1, −1, 1) F, F = R(n → y) T(−p): column vectors, M (x, y, z, 1).
+With --point, M (p, 1): the point's mirror image (a light's position goes so too); with
+--direction, M (w, 0): a direction (a directional light's) mirrored, untranslated.
+
+Example:
+  optics reflection-matrix --plane-point 0,1,0 --plane-normal 0,1,0 --point 2,3,4   (the floor y = 1)"
+)]
+pub struct ReflectionMatrixArgs {
+    #[command(flatten)]
+    pub plane: PlaneArgs,
+    /// A point (a light's position) to mirror.
+    #[arg(long, allow_hyphen_values = true)]
+    pub point: Option<Vec3Arg>,
+    /// A direction (a directional light's) to mirror; any length but zero.
+    #[arg(long, allow_hyphen_values = true)]
+    pub direction: Option<Vec3Arg>,
+}
+
+impl ReflectionMatrixArgs {
+    pub fn solve(&self, via: Via, lang: Lang, steps: Steps) -> Result<Record> {
+        let plane = self.plane.plane(via)?;
+        let point = finite_point(via, "point", self.point)?;
+        let direction = self
+            .direction
+            .map(|w| via.direction("direction", w))
+            .transpose()?;
+        let title = say!(
+            lang,
+            "Reflection matrix of a plane",
+            "Sík tükrözési mátrixa"
+        );
+        let mut record = Record::new("reflection_matrix", title, "").with_steps(steps);
+        self.plane.inputs(&mut record);
+        if let Some(p) = self.point {
+            record.input("point", p.0);
+        }
+        if let Some(w) = self.direction {
+            record.input("direction", w.0);
+        }
+        narrate_plane(&mut record, lang, &plane);
+        let factors = reflection(&plane);
+        let m = finite_matrix(factors.matrix, via, &["plane_point"])?;
+        let [to_floor, mirror, from_floor] =
+            [factors.to_floor, factors.mirror, factors.from_floor].map(cleaned);
+        record.step(|| {
+            say!(
+                lang,
+                "F = R(n → (0, 1, 0)) T(−p) moves the plane onto y = 0: F = {}",
+                "F = R(n → (0, 1, 0)) T(−p) az y = 0 síkba viszi a síkot: F = {}",
+                inline(&to_floor)
+            )
+        });
+        record.step(|| {
+            say!(
+                lang,
+                "S(1, −1, 1) mirrors y = 0: S = {}",
+                "S(1, −1, 1) az y = 0 síkra tükröz: S = {}",
+                inline(&mirror)
+            )
+        });
+        record.step(|| {
+            say!(
+                lang,
+                "F⁻¹ moves y = 0 back onto the plane: F⁻¹ = {}; M = F⁻¹ S F",
+                "F⁻¹ visszaviszi az y = 0 síkot a síkra: F⁻¹ = {}; M = F⁻¹ S F",
+                inline(&from_floor)
+            )
+        });
+        record.step(|| {
+            say!(
+                lang,
+                "check: det M = {} (a mirror turns handedness)",
+                "ellenőrzés: det M = {} (a tükrözés megfordítja a sodrásirányt)",
+                number(m.determinant())
+            )
+        });
+        if let Some(p) = point {
+            let image = cleaned_product(&m, p.extend(1.0));
+            record.step(|| {
+                say!(
+                    lang,
+                    "M (p, 1) = {}: p's mirror image (a point light goes so); n · x + d goes from {} to {}",
+                    "M (p, 1) = {}: p tükörképe (így kerül át a pontfényforrás is); n · x + d értéke {} helyett {}",
+                    vector4(image),
+                    number(plane.distance(p)),
+                    number(clean(
+                        plane.distance(image.truncate()),
+                        image.abs().max_element() + plane.d().abs()
+                    ))
+                )
+            });
+            record.detail("point_image", image.truncate().to_array());
+            if !image.is_finite() {
+                return Err(overflow(via, "M p", &["plane_point", "point"]));
+            }
+        }
+        if let Some(w) = direction {
+            let image = cleaned_product(&m, w.unit.extend(0.0));
+            record.step(|| {
+                say!(
+                    lang,
+                    "M (w, 0) = {}, w = {} normalised: w − 2 (n · w) n, the law of reflection, untranslated",
+                    "M (w, 0) = {}, w = {} normalizálva: w − 2 (n · w) n, a visszaverődés törvénye, eltolás nélkül",
+                    vector4(image),
+                    vector(w.unit.to_array())
+                )
+            });
+            record.detail("direction_image", image.truncate().to_array());
+        }
+        matrix_answer(&mut record, &m);
+        record
+            .detail("normal", plane.normal().to_array())
+            .detail("d", plane.d())
+            .detail("to_floor", super::matrix_detail(&to_floor))
+            .detail("from_floor", super::matrix_detail(&from_floor));
+        Ok(record)
+    }
+}
+
+/// The overflow of a product of finite inputs.
+fn overflow(via: Via, quantity: &'static str, inputs: &[&str]) -> crate::error::Error {
+    let inputs = inputs.iter().map(|field| via.name(field)).collect();
+    crate::error::ErrorKind::Overflow { quantity, inputs }.into()
+}
