@@ -25,7 +25,7 @@ use validation::tradeoff::measure::{self, Mask};
 
 use crate::error::{self, ErrorKind};
 use crate::render::RenderArgs;
-use crate::tradeoff::{sweep, truth};
+use crate::tradeoff::{setup, sweep, truth};
 use crate::Ui;
 
 /// The most samples per pixel the budget gives a candidate: 2^16.
@@ -85,6 +85,13 @@ pub struct BudgetArgs {
     #[arg(long, requires = "tolerance")]
     #[serde(skip_serializing_if = "std::ops::Not::not")]
     pub verify: bool,
+    /// Measure and render the scene with its course_rough materials made
+    /// Lambert of albedo kd, the stand-in `optics tradeoff --lambert` uses
+    /// (the course's kd is in 1/sr: its albedo π kd exceeds 1 and no
+    /// truth converges); --verify then uses the matching truth.
+    #[arg(long, requires = "tolerance")]
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub lambert: bool,
     /// Samples per pixel of the pilot pass, in two halves.
     #[arg(long, default_value_t = 8,
           value_parser = clap::value_parser!(u32).range(2..=1024))]
@@ -96,6 +103,18 @@ pub struct BudgetArgs {
     /// Where the ground truth is cached (shared with `optics tradeoff`).
     #[arg(long, default_value = "validation/out/tradeoff/truth")]
     pub truth_cache: PathBuf,
+}
+
+/// A tolerance as people write it: the shorter of its plain and its
+/// scientific form, each the shortest that reads back the same (`0.05`,
+/// `1e-7`, not `0.0000001`).
+pub fn written(tolerance: f64) -> String {
+    let (plain, scientific) = (format!("{tolerance}"), format!("{tolerance:e}"));
+    if scientific.len() < plain.len() {
+        scientific
+    } else {
+        plain
+    }
 }
 
 /// `--tolerance`: a finite number above 0.
@@ -158,6 +177,9 @@ pub struct Outcome {
     pub tolerance: f64,
     /// The metric's name.
     pub metric: &'static str,
+    /// Whether course_rough was rendered and measured as Lambert
+    /// (`--lambert`).
+    pub lambert: bool,
     /// The settings rendered.
     pub chosen: Settings,
     /// What they leave out of the truth's settings.
@@ -185,7 +207,9 @@ pub struct Outcome {
 /// Renders `args`'s scene at the cheapest settings within `budget`.
 pub fn run(args: &RenderArgs, budget: Budget, ui: &Ui) -> error::Result<()> {
     let flags = &args.budget;
-    let job = args.job.job(&args.scene)?;
+    let job = args
+        .job
+        .job_of(&args.scene, |scene| setup::measured(scene, flags.lambert))?;
     let destination = Destination::new(&args.output, &[&args.scene]).map_err(ErrorKind::Output)?;
     let threads = args.threads.map(|t| t as usize);
     let mask = Mask::from_hits(&job.first_hits());
@@ -207,7 +231,11 @@ pub fn run(args: &RenderArgs, budget: Budget, ui: &Ui) -> error::Result<()> {
         .expect("the truth's settings are always a candidate");
     let (index, predicted) = match choice {
         Choice::Chosen { index, prediction } => (index, prediction),
-        Choice::Unreachable { index, prediction } => {
+        Choice::Unreachable {
+            index,
+            prediction,
+            need,
+        } => {
             return Err(ErrorKind::BudgetUnreachable {
                 metric: budget.metric.name(),
                 tolerance: budget.tolerance,
@@ -217,6 +245,8 @@ pub fn run(args: &RenderArgs, budget: Budget, ui: &Ui) -> error::Result<()> {
                     &prediction,
                     half,
                 )),
+                top_spp: prediction.spp,
+                need,
             }
             .into());
         }
@@ -245,6 +275,7 @@ pub fn run(args: &RenderArgs, budget: Budget, ui: &Ui) -> error::Result<()> {
     let outcome = Outcome {
         tolerance: budget.tolerance,
         metric: budget.metric.name(),
+        lambert: flags.lambert,
         chosen,
         shortcut: candidates[index].shortcut,
         predicted,
@@ -352,7 +383,7 @@ fn verify(
     let request = truth::Request {
         scene_file: scene,
         spp: flags.truth_spp,
-        lambert: false,
+        lambert: flags.lambert,
         dir: &flags.truth_cache,
         fresh: false,
     };

@@ -199,8 +199,14 @@ pub enum ErrorKind {
         tolerance: f64,
         /// The smallest bound any candidate reaches.
         best: f64,
-        /// Its settings, in words.
+        /// Its settings, in words, at the most samples the budget renders
+        /// it at.
         settings: String,
+        /// Those samples per pixel (a power of two), `None` for a
+        /// deterministic candidate.
+        top_spp: Option<u32>,
+        /// What it would need to reach the tolerance.
+        need: validation::tradeoff::budget::Need,
     },
     /// `optics render --tolerance` whose pilot cannot bound the light the
     /// truth carries above 0: black, or too noisy at its samples.

@@ -137,12 +137,27 @@ fn hungarian(kind: &ErrorKind) -> String {
             tolerance,
             best,
             settings,
-        } => format!(
-            "--tolerance {tolerance}: a(z) {metric} {tolerance} nem érhető el; a legjobb {metric} ≤ {best:.4}, ezzel: {settings}"
-        ),
+            top_spp,
+            need,
+        } => {
+            let tolerance = crate::budget::written(*tolerance);
+            let need = match (need, top_spp) {
+                (validation::tradeoff::budget::Need::Samples { spp }, Some(top)) => format!(
+                    "2^{} = {spp} minta kellene pixelenként (kettőhatvány, ahogy a költségvetés renderel), több, mint a legtöbb, amennyivel renderel, {top}",
+                    spp.trailing_zeros()
+                ),
+                (validation::tradeoff::budget::Need::Capped { spp }, _) => format!(
+                    "több minta sem éri el: a zaja {spp} minta fölött már nem csökken, ott a kausztikus térkép fotonjai a legtöbbek"
+                ),
+                _ => "semennyi minta nem éri el: már a torzítás maga fölötte van".to_owned(),
+            };
+            format!(
+                "--tolerance {tolerance}: a(z) {metric} {tolerance} nem érhető el; a legjobb {metric} ≤ {best:.4}, ezzel: {settings}; {need}"
+            )
+        }
         #[cfg(feature = "harness")]
         ErrorKind::BudgetPilotNoisy { pilot_spp } => format!(
-            "--pilot-spp {pilot_spp}: a próba nem tudja elválasztani a felületek fényét a zajától (energiája három szórásnyival lejjebb nem nagyobb 0-nál), így relatív hiba nem becsülhető; a jelenet lehet fekete, vagy fénye nőhet a mélységgel (a course_rough π kd albedója 1 fölött: lásd `optics tradeoff --lambert`); próbálj több próbamintát"
+            "--pilot-spp {pilot_spp}: a próba nem tudja elválasztani a felületek fényét a zajától (energiája három szórásnyival lejjebb nem nagyobb 0-nál), így relatív hiba nem becsülhető; a jelenet lehet fekete, vagy fénye nőhet a mélységgel (a course_rough π kd albedója 1 fölött: a --lambert az `optics tradeoff --lambert` helyettesítőjével mér); próbálj több próbamintát"
         ),
         #[cfg(feature = "harness")]
         ErrorKind::Jobs(error) => jobs::jobs_hu(error),

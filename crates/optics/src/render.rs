@@ -109,6 +109,16 @@ pub struct JobArgs {
 impl JobArgs {
     /// The scene at `path` with these flags settled over its settings.
     pub(crate) fn job(&self, path: &Path) -> error::Result<RenderJob> {
+        self.job_of(path, |scene| scene)
+    }
+
+    /// The job of `path`'s scene made `scene` by `make` before the
+    /// overrides are settled over it.
+    pub(crate) fn job_of(
+        &self,
+        path: &Path,
+        make: impl FnOnce(tracer::scene::Scene) -> tracer::scene::Scene,
+    ) -> error::Result<RenderJob> {
         let overrides = Overrides {
             render: RenderSpec {
                 integrator: self.integrator,
@@ -126,13 +136,15 @@ impl JobArgs {
             height: self.height,
             allow_expensive: self.allow_expensive,
         };
-        RenderJob::load(path, &overrides).map_err(|error| {
+        let scene_error = |error| -> error::Error {
             ErrorKind::Scene {
                 file: path.to_owned(),
                 error,
             }
             .into()
-        })
+        };
+        let scene = tracer::scene::load(path).map_err(scene_error)?;
+        RenderJob::new(make(scene), &overrides).map_err(scene_error)
     }
 }
 

@@ -17,7 +17,7 @@
 pub(crate) mod distribute;
 pub mod jobs;
 mod report;
-mod setup;
+pub(crate) mod setup;
 pub mod sweep;
 mod timing;
 pub(crate) mod truth;

@@ -183,10 +183,7 @@ pub struct Prediction {
 pub fn predict(pilot: &Pilot, energy: f64, spp: u32) -> Prediction {
     let bias_squared = pilot.bias.upper();
     let (spp, noise_squared) = if pilot.samples {
-        let n = f64::from(spp);
-        let noise = pilot.noise.sum + 2.0 * K * (2.0 * pilot.noise.squares).sqrt();
-        let cross = 2.0 * K * (pilot.cross / n).sqrt();
-        (Some(spp), noise / n + cross)
+        (Some(spp), noise_squared(pilot, f64::from(spp)))
     } else {
         (None, 0.0)
     };
@@ -201,20 +198,80 @@ pub fn predict(pilot: &Pilot, energy: f64, spp: u32) -> Prediction {
     }
 }
 
+/// The squared noise bound of a sampling `pilot` at `n` samples per
+/// pixel, with the bias–noise cross term.
+fn noise_squared(pilot: &Pilot, n: f64) -> f64 {
+    let noise = pilot.noise.sum + 2.0 * K * (2.0 * pilot.noise.squares).sqrt();
+    let cross = 2.0 * K * (pilot.cross / n).sqrt();
+    noise / n + cross
+}
+
+/// The samples per pixel the budget renders `pilot` at, up to `max_spp`
+/// (and the pilot's `most_spp`): the powers of two, `[1]` for a
+/// deterministic candidate.
+fn ladder(pilot: &Pilot, max_spp: u32) -> Vec<u32> {
+    let max_spp = max_spp.min(pilot.most_spp);
+    if !pilot.samples {
+        return vec![1];
+    }
+    std::iter::successors(Some(1u32), |&n| n.checked_mul(2))
+        .take_while(|&n| n <= max_spp)
+        .collect()
+}
+
+/// The most samples per pixel the budget would render `pilot` at: the
+/// largest power of two within `max_spp` and the pilot's `most_spp`.
+pub fn top_spp(pilot: &Pilot, max_spp: u32) -> u32 {
+    ladder(pilot, max_spp).last().copied().unwrap_or(1)
+}
+
+/// What would bring a candidate within a tolerance it misses at the
+/// samples the budget allows.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(tag = "need", rename_all = "snake_case")]
+pub enum Need {
+    /// More samples: the fewest per pixel, a power of two as the budget
+    /// renders them, at which its prediction is within the tolerance.
+    Samples {
+        /// That power of two.
+        spp: u64,
+    },
+    /// No samples: its bias alone is predicted above the tolerance (or it
+    /// is deterministic).
+    Never,
+    /// None it can take: its noise stops falling past these samples per
+    /// pixel (a caustic map at its most photons).
+    Capped {
+        /// The pilot's `most_spp`.
+        spp: u32,
+    },
+}
+
+/// The fewest samples per pixel, a power of two with no cap, at which
+/// `pilot` is predicted within `tolerance`; or why none is.
+pub fn need(pilot: &Pilot, energy: f64, tolerance: f64) -> Need {
+    let bias_squared = pilot.bias.upper() / energy;
+    let room = tolerance * tolerance - bias_squared;
+    if !pilot.samples || room <= 0.0 {
+        return Need::Never;
+    }
+    if pilot.most_spp < u32::MAX {
+        return Need::Capped {
+            spp: pilot.most_spp,
+        };
+    }
+    (0..64)
+        .map(|k| 1u64 << k)
+        .find(|&n| noise_squared(pilot, n as f64) / energy <= room)
+        .map_or(Need::Never, |spp| Need::Samples { spp })
+}
+
 /// The fewest samples per pixel, a power of two up to `max_spp` (and the
 /// pilot's `most_spp`), at which
 /// `pilot` is predicted within `tolerance`; a deterministic candidate
 /// within it as it is; `None` where neither is.
 pub fn cheapest(pilot: &Pilot, energy: f64, tolerance: f64, max_spp: u32) -> Option<Prediction> {
-    let max_spp = max_spp.min(pilot.most_spp);
-    let ladder =
-        std::iter::successors(Some(1u32), |&n| n.checked_mul(2)).take_while(|&n| n <= max_spp);
-    let ladder: Vec<u32> = if pilot.samples {
-        ladder.collect()
-    } else {
-        vec![1]
-    };
-    ladder
+    ladder(pilot, max_spp)
         .into_iter()
         .map(|n| predict(pilot, energy, n))
         .find(|p| p.rel_rmse <= tolerance)
@@ -233,12 +290,15 @@ pub enum Choice {
         prediction: Prediction,
     },
     /// No candidate is predicted within the tolerance: the one with the
-    /// smallest prediction, at the most samples allowed.
+    /// smallest prediction, at the most samples the budget would render
+    /// it at (a power of two).
     Unreachable {
         /// Its index among the candidates.
         index: usize,
         /// Its prediction.
         prediction: Prediction,
+        /// What it would need to reach the tolerance.
+        need: Need,
     },
 }
 
@@ -261,9 +321,13 @@ pub fn choose(pilots: &[Pilot], energy: f64, tolerance: f64, max_spp: u32) -> Op
     pilots
         .iter()
         .enumerate()
-        .map(|(i, p)| (i, predict(p, energy, max_spp.min(p.most_spp))))
+        .map(|(i, p)| (i, predict(p, energy, top_spp(p, max_spp))))
         .min_by(|(_, a), (_, b)| a.rel_rmse.total_cmp(&b.rel_rmse))
-        .map(|(index, prediction)| Choice::Unreachable { index, prediction })
+        .map(|(index, prediction)| Choice::Unreachable {
+            index,
+            prediction,
+            need: need(&pilots[index], energy, tolerance),
+        })
 }
 
 #[cfg(test)]

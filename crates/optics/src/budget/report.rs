@@ -54,7 +54,7 @@ pub fn show(
                 "ellenőrizve a referencián: rel_rmse {:.4} (becslés ≤ {:.4}, tűrés {}): {}; ΔE2000 átlag {:.3}, p99 {:.3}, ꟻLIP {:.4}",
                 errors.rel_rmse,
                 outcome.predicted.rel_rmse,
-                outcome.tolerance,
+                super::written(outcome.tolerance),
                 if within {
                     lang.pick("within", "belül")
                 } else {
@@ -72,7 +72,15 @@ pub fn show(
 /// The choice and its reasons, one line each.
 fn lines(outcome: &Outcome, lang: Lang) -> Vec<String> {
     let p = &outcome.predicted;
-    let mut lines = vec![
+    let mut lines = Vec::new();
+    if outcome.lambert {
+        lines.push(say!(
+            lang,
+            "--lambert: course_rough rendered and measured as Lambert of albedo kd",
+            "--lambert: a course_rough Lambert-anyagként, kd albedóval renderelve és mérve"
+        ));
+    }
+    lines.extend([
         say!(
             lang,
             "pilot: {} candidates, two halves of {} spp each against the truth's settings, {} rays",
@@ -88,11 +96,11 @@ fn lines(outcome: &Outcome, lang: Lang) -> Vec<String> {
             describe(&outcome.chosen),
             outcome.metric,
             p.rel_rmse,
-            outcome.tolerance,
+            super::written(outcome.tolerance),
             p.rays
         ),
         prediction_line(p, lang),
-    ];
+    ]);
     for (name, bound) in &outcome.terms {
         lines.push(say!(
             lang,

@@ -5,6 +5,9 @@
 use std::fmt;
 
 #[cfg(feature = "harness")]
+use validation::tradeoff::budget::Need;
+
+#[cfg(feature = "harness")]
 use super::harness;
 use super::{usage_text, ErrorKind};
 
@@ -102,14 +105,34 @@ impl fmt::Display for ErrorKind {
                 tolerance,
                 best,
                 settings,
-            } => write!(
-                f,
-                "--tolerance {tolerance}: cannot reach {metric} {tolerance}; the best is {metric} ≤ {best:.4}, with {settings}"
-            ),
+                top_spp,
+                need,
+            } => {
+                let tolerance = crate::budget::written(*tolerance);
+                write!(
+                    f,
+                    "--tolerance {tolerance}: cannot reach {metric} {tolerance}; the best is {metric} ≤ {best:.4}, with {settings}"
+                )?;
+                match (need, top_spp) {
+                    (Need::Samples { spp }, Some(top)) => write!(
+                        f,
+                        "; it would need 2^{} = {spp} spp (a power of two, as the budget renders), past the most it renders, {top} spp",
+                        spp.trailing_zeros()
+                    ),
+                    (Need::Capped { spp }, _) => write!(
+                        f,
+                        "; more samples cannot reach it: its noise stops falling past {spp} spp, where its caustic map has its most photons"
+                    ),
+                    _ => write!(
+                        f,
+                        "; no number of samples reaches it: the bias alone is above it"
+                    ),
+                }
+            }
             #[cfg(feature = "harness")]
             ErrorKind::BudgetPilotNoisy { pilot_spp } => write!(
                 f,
-                "--pilot-spp {pilot_spp}: the pilot cannot tell the light on the surfaces from its noise (its energy, three standard deviations down, is not above 0), so no relative error can be predicted; the scene may be black, or its light may grow with depth (course_rough's albedo π kd above 1: see `optics tradeoff --lambert`); try more pilot samples"
+                "--pilot-spp {pilot_spp}: the pilot cannot tell the light on the surfaces from its noise (its energy, three standard deviations down, is not above 0), so no relative error can be predicted; the scene may be black, or its light may grow with depth (course_rough's albedo π kd above 1: give --lambert to measure it with the stand-in `optics tradeoff --lambert` uses); try more pilot samples"
             ),
             #[cfg(feature = "harness")]
             ErrorKind::Jobs(error) => write!(f, "{error}"),

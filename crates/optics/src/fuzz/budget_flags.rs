@@ -1,11 +1,12 @@
 //! Budget flags: `optics render --tolerance T --metric M` command lines
 //! with the budget's flags (`--tolerance`, `--metric`, `--pilot-spp`,
-//! `--verify` with `--truth-spp`) typed as people type them, some spoiled
+//! `--verify` with `--truth-spp`, `--lambert`) typed as people type them, some spoiled
 //! (zero, negative, NaN, infinite, text, an unknown metric, a setting the
-//! budget chooses given beside it), through the parser and the budget's
+//! budget chooses given beside it, a value given to the switch
+//! `--lambert`), through the parser and the budget's
 //! settling. The promises: a clean line settles to the tolerance it gives,
 //! finite and above 0, or refuses a metric it cannot predict by naming
-//! `--metric`; a spoiled one is a usage error naming its flag; nothing
+//! `--metric`, `--lambert` set exactly where given; a spoiled one is a usage error naming its flag; nothing
 //! panics.
 
 use super::{check_error_field, runner, Coverage};
@@ -43,11 +44,21 @@ const CHOSEN: [(&str, &str); 3] = [
     ("--fresnel", "schlick"),
 ];
 
+/// How `--lambert` is given: left out, as the switch it is, or with a
+/// value a switch refuses.
+const LAMBERT: [Option<&str>; 4] = [
+    None,
+    Some("--lambert"),
+    Some("--lambert=yes"),
+    Some("--lambert="),
+];
+
 /// A command line and the flag it spoiled, if any.
 #[derive(Clone, Debug)]
 struct Line {
     args: Vec<String>,
     given: Vec<(&'static str, &'static str)>,
+    lambert: bool,
     spoiled: Option<&'static str>,
 }
 
@@ -56,8 +67,9 @@ fn command_line() -> impl Strategy<Value = Line> {
     (
         prop::collection::vec(pick, FLAGS.len()),
         prop::option::weighted(0.1, 0..CHOSEN.len()),
+        0..LAMBERT.len(),
     )
-        .prop_map(|(picks, chosen)| {
+        .prop_map(|(picks, chosen, lambert)| {
             let mut given: Vec<(&'static str, &'static str)> = Vec::new();
             let mut spoiled = None;
             for ((flag, good, bad), (spoil, k)) in FLAGS.iter().zip(picks) {
@@ -82,6 +94,13 @@ fn command_line() -> impl Strategy<Value = Line> {
                 // `=` keeps a value that starts with `-` a value.
                 args.push(format!("{flag}={value}"));
             }
+            let lambert = LAMBERT[lambert];
+            if let Some(flag) = lambert {
+                args.push(flag.to_owned());
+                if flag != "--lambert" && spoiled.is_none() {
+                    spoiled = Some("--lambert");
+                }
+            }
             if let Some(i) = chosen.filter(|_| spoiled.is_none()) {
                 let (flag, value) = CHOSEN[i];
                 args.push(format!("{flag}={value}"));
@@ -90,6 +109,7 @@ fn command_line() -> impl Strategy<Value = Line> {
             Line {
                 args,
                 given,
+                lambert: lambert.is_some(),
                 spoiled,
             }
         })
@@ -102,6 +122,12 @@ fn check_line(line: &Line, coverage: &Coverage) -> Result<(), TestCaseError> {
             let crate::Command::Render(args) = &cli.command else {
                 unreachable!("the lines are render lines")
             };
+            prop_assert_eq!(
+                args.budget.lambert,
+                line.lambert,
+                "{:?}: --lambert settled wrongly",
+                line.args
+            );
             let tolerance = args.budget.tolerance.unwrap_or(f64::NAN);
             prop_assert!(
                 tolerance.is_finite() && tolerance > 0.0,

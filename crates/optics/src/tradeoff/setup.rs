@@ -10,6 +10,16 @@ use super::measure::Mask;
 use super::{jobs, sweep, truth, TradeoffArgs};
 use crate::error::{self, ErrorKind};
 
+/// The scene as the sweep and the budget measure it: with `--lambert`,
+/// its course_rough materials made the suite's Lambert stand-in.
+pub(crate) fn measured(scene: tracer::scene::Scene, lambert: bool) -> tracer::scene::Scene {
+    if lambert {
+        scene.course_rough_as_lambert()
+    } else {
+        scene
+    }
+}
+
 /// What every mode knows before it renders: the scene, settled at its
 /// size, the surface pixels, the sweep's points and the plan's key.
 pub(crate) struct Setup {
@@ -42,12 +52,10 @@ impl Setup {
             file: args.scene.clone(),
             error,
         };
-        let scene = tracer::scene::load(&args.scene).map_err(scene_error)?;
-        let scene = if args.lambert {
-            scene.course_rough_as_lambert()
-        } else {
-            scene
-        };
+        let scene = measured(
+            tracer::scene::load(&args.scene).map_err(scene_error)?,
+            args.lambert,
+        );
         let gain = scene.diffuse_gain().map(|(g, name)| (g, name.to_owned()));
         let job = RenderJob::new(scene, &overrides).map_err(scene_error)?;
         let stem = args

@@ -139,11 +139,48 @@ fn the_choice_is_the_fewest_rays_within_the_tolerance_or_the_best() {
         pick(floor * 0.99),
         Choice::Chosen { index: 1, .. }
     ));
-    let Choice::Unreachable { index, prediction } = pick(1e-6) else {
+    let Choice::Unreachable {
+        index,
+        prediction,
+        need,
+    } = pick(1e-6)
+    else {
         panic!("1e-6 is past both floors");
     };
     assert_eq!(index, 1);
     assert_eq!(prediction.spp, Some(1 << 10));
+    assert_eq!(need, super::need(&pilots[1], e, 1e-6));
+    assert_eq!(super::need(&pilots[0], e, 1e-6), Need::Never);
+}
+
+/// Past the samples the budget allows, what a tolerance would need is
+/// the first power of two whose prediction is within it (the one below
+/// is not), and an unreachable answer is predicted at a power of two the
+/// budget would render, not at a cap between two (a caustic map's
+/// `most_spp` of 1000 → 512).
+#[test]
+fn the_samples_needed_are_the_first_power_of_two_within_the_tolerance() {
+    let mask = Mask::all(10);
+    let truth = grey(&[0.5; 10]);
+    let (a, b) = (grey(&[0.52; 10]), grey(&[0.48; 10]));
+    let mut pilot = Pilot::measure([&a, &b], [&truth; 2], &mask, 4, true, NO_RAYS);
+    let e = energy([&truth, &truth], &mask).unwrap();
+    let tolerance = predict(&pilot, e, 1 << 12).rel_rmse * 0.999;
+    let Need::Samples { spp } = need(&pilot, e, tolerance) else {
+        panic!("an unbiased candidate reaches any tolerance");
+    };
+    assert!(spp.is_power_of_two(), "{spp}");
+    assert_eq!(spp, 1 << 13);
+    assert!(predict(&pilot, e, spp as u32).rel_rmse <= tolerance);
+    assert!(predict(&pilot, e, (spp / 2) as u32).rel_rmse > tolerance);
+    pilot.most_spp = 1000;
+    let Some(Choice::Unreachable { prediction, .. }) = choose(&[pilot], e, tolerance, 1 << 16)
+    else {
+        panic!("1000 spp is short of 2^13");
+    };
+    assert_eq!(prediction.spp, Some(512));
+    assert_eq!(top_spp(&pilot, 1 << 16), 512);
+    assert_eq!(need(&pilot, e, tolerance), Need::Capped { spp: 1000 });
 }
 
 /// Renders of known bias b and uniform per-sample noise (half-width a)

@@ -206,14 +206,17 @@ pub fn examples() -> Vec<(ErrorKind, Vec<String>)> {
         (
             ErrorKind::BudgetUnreachable {
                 metric: "rel_rmse",
-                tolerance: 0.001,
+                tolerance: 1e-7,
                 best: 0.0123,
                 settings: "path, 65536 spp, max_depth 64, fresnel exact".into(),
+                top_spp: Some(65536),
+                need: validation::tradeoff::budget::Need::Samples { spp: 1 << 20 },
             },
             named(&[
-                "--tolerance 0.001",
+                "--tolerance 1e-7",
                 "rel_rmse",
                 "path, 65536 spp, max_depth 64, fresnel exact",
+                "1048576",
             ]),
         ),
         (
@@ -222,6 +225,7 @@ pub fn examples() -> Vec<(ErrorKind, Vec<String>)> {
                 "--pilot-spp 8",
                 "course_rough",
                 "`optics tradeoff --lambert`",
+                "--lambert",
             ]),
         ),
     ];
