@@ -210,6 +210,13 @@ pub fn run(args: &RenderArgs, budget: Budget, ui: &Ui) -> error::Result<()> {
     let job = args
         .job
         .job_of(&args.scene, |scene| setup::measured(scene, flags.lambert))?;
+    if let Some((gain, material)) = job.scene().diffuse_gain() {
+        return Err(ErrorKind::BudgetEnergyGain {
+            material: material.to_owned(),
+            gain,
+        }
+        .into());
+    }
     let destination = Destination::new(&args.output, &[&args.scene]).map_err(ErrorKind::Output)?;
     let threads = args.threads.map(|t| t as usize);
     let mask = Mask::from_hits(&job.first_hits());

@@ -215,6 +215,17 @@ pub enum ErrorKind {
         /// The pilot's samples per pixel.
         pilot_spp: u32,
     },
+    /// `optics render --tolerance` of a scene whose rough material reflects
+    /// more light than it receives (the course's `π kd` above 1), without
+    /// `--lambert`: its light grows with depth, no truth converges and no
+    /// bound holds.
+    #[cfg(feature = "harness")]
+    BudgetEnergyGain {
+        /// The material's name in the scene file.
+        material: String,
+        /// What it reflects for what it receives (its largest channel).
+        gain: f32,
+    },
     /// A sweep spread over machines: a job or result line refused, a job
     /// not in the plan, results missing or given twice.
     #[cfg(feature = "harness")]
@@ -329,6 +340,8 @@ impl ErrorKind {
             #[cfg(feature = "harness")]
             ErrorKind::BudgetPilotNoisy { .. } => "budget.pilot_noisy",
             #[cfg(feature = "harness")]
+            ErrorKind::BudgetEnergyGain { .. } => "budget.energy_gain",
+            #[cfg(feature = "harness")]
             ErrorKind::Jobs(error) => error.name(),
         }
     }
@@ -375,6 +388,8 @@ impl ErrorKind {
             ErrorKind::BudgetUnreachable { .. } => Some("--tolerance".to_owned()),
             #[cfg(feature = "harness")]
             ErrorKind::BudgetPilotNoisy { .. } => Some("--pilot-spp".to_owned()),
+            #[cfg(feature = "harness")]
+            ErrorKind::BudgetEnergyGain { .. } => Some("--lambert".to_owned()),
             #[cfg(feature = "harness")]
             ErrorKind::Jobs(error) => error.field(),
         }

@@ -160,6 +160,10 @@ fn hungarian(kind: &ErrorKind) -> String {
             "--pilot-spp {pilot_spp}: a próba nem tudja elválasztani a felületek fényét a zajától (energiája három szórásnyival lejjebb nem nagyobb 0-nál), így relatív hiba nem becsülhető; a jelenet lehet fekete, vagy fénye nőhet a mélységgel (a course_rough π kd albedója 1 fölött: a --lambert az `optics tradeoff --lambert` helyettesítőjével mér); próbálj több próbamintát"
         ),
         #[cfg(feature = "harness")]
+        ErrorKind::BudgetEnergyGain { material, gain } => format!(
+            "--lambert: a(z) \"{material}\" anyag {gain:.2}-szer annyi fényt ver vissza, mint amennyit kap (a course_rough π kd albedója), így fénye minden visszaverődéssel nő, nincs konvergáló referencia és a hiba nem korlátozható; a --lambert az `optics tradeoff --lambert` helyettesítőjével számol"
+        ),
+        #[cfg(feature = "harness")]
         ErrorKind::Jobs(error) => jobs::jobs_hu(error),
     }
 }

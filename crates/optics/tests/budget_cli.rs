@@ -359,3 +359,32 @@ fn bad_budgets_are_refused_by_name_with_nothing_written() {
         .and_then(|n| n.parse::<u32>().ok());
     assert!(best.is_some_and(u32::is_power_of_two), "{text}");
 }
+
+/// A rough material that reflects more than it receives (the course's
+/// `π kd` above 1) makes the light grow with depth: no truth converges and
+/// no bound holds, so the budget refuses the scene and names `--lambert`
+/// before it renders anything (without the refusal, `shadow` at 32 × 24
+/// predicted ≤ 0.091 and reached 0.194).
+#[test]
+fn a_material_that_gains_energy_is_refused_without_lambert() {
+    let dir = tempfile::tempdir().unwrap();
+    let output = budget(
+        "shadow",
+        dir.path(),
+        "gain.png",
+        &["--tolerance", "0.1", "--metric", "rel_rmse"],
+    );
+    assert_eq!(output.status.code(), Some(1));
+    let json: Value = serde_json::from_slice(&output.stdout).expect("a JSON error");
+    assert_eq!(json["error"]["kind"], "budget.energy_gain", "{json}");
+    assert_eq!(json["error"]["field"], "--lambert", "{json}");
+    let text = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        text.contains("material \"green\" reflects 2.51 times"),
+        "{text}"
+    );
+    assert!(
+        !dir.path().join("gain.png").exists(),
+        "an image was written"
+    );
+}

@@ -135,6 +135,11 @@ impl fmt::Display for ErrorKind {
                 "--pilot-spp {pilot_spp}: the pilot cannot tell the light on the surfaces from its noise (its energy, three standard deviations down, is not above 0), so no relative error can be predicted; the scene may be black, or its light may grow with depth (course_rough's albedo π kd above 1: give --lambert to measure it with the stand-in `optics tradeoff --lambert` uses); try more pilot samples"
             ),
             #[cfg(feature = "harness")]
+            ErrorKind::BudgetEnergyGain { material, gain } => write!(
+                f,
+                "--lambert: material \"{material}\" reflects {gain:.2} times the light it receives (course_rough's albedo π kd), so its light grows with every bounce, no ground truth converges and no error can be bounded; give --lambert to budget the scene with the stand-in `optics tradeoff --lambert` uses"
+            ),
+            #[cfg(feature = "harness")]
             ErrorKind::Jobs(error) => write!(f, "{error}"),
         }
     }

@@ -236,6 +236,10 @@ fn slot(kind: &ErrorKind) -> usize {
             CALCULATOR + render_kinds::SLOTS + harness_kinds::BUDGET_PILOT_NOISY
         }
         #[cfg(feature = "harness")]
+        ErrorKind::BudgetEnergyGain { .. } => {
+            CALCULATOR + render_kinds::SLOTS + harness_kinds::BUDGET_ENERGY_GAIN
+        }
+        #[cfg(feature = "harness")]
         ErrorKind::Compare(error) => {
             CALCULATOR
                 + render_kinds::SLOTS

@@ -55,8 +55,12 @@ pub const BUDGET_UNREACHABLE: usize = 15;
 /// The slot of a pilot too noisy to bound the truth's energy.
 pub const BUDGET_PILOT_NOISY: usize = 16;
 
+/// The slot of a scene whose rough material gains energy, budgeted
+/// without `--lambert`.
+pub const BUDGET_ENERGY_GAIN: usize = 17;
+
 /// How many harness slots there are.
-pub const SLOTS: usize = 17;
+pub const SLOTS: usize = 18;
 
 /// An exit status of 3, as a failed tool reports it.
 fn exit_status() -> std::process::ExitStatus {
@@ -217,6 +221,19 @@ pub fn examples() -> Vec<(ErrorKind, Vec<String>)> {
                 "rel_rmse",
                 "path, 65536 spp, max_depth 64, fresnel exact",
                 "1048576",
+            ]),
+        ),
+        (
+            ErrorKind::BudgetEnergyGain {
+                material: "green".to_owned(),
+                gain: 2.51,
+            },
+            named(&[
+                "`optics tradeoff --lambert`",
+                "--lambert",
+                "course_rough",
+                "\"green\"",
+                "2.51",
             ]),
         ),
         (
