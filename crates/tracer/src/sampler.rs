@@ -175,7 +175,8 @@ const SOBOL_1_BY_BYTE: [[u32; 256]; 4] = {
 /// seed (its carries), multiplying by an odd number drawn from the seed,
 /// and three `x ^= x · c` with even constants `c` (bit `b` of `x · c`
 /// depends on bits below `b` only), which spread each bit's influence to
-/// the bits above it. The constants are arbitrary even numbers.
+/// the bits above it. The even constants are those of the paper's
+/// hash (any even numbers keep the kind; these mix well).
 fn owen_scramble(x: u32, seed: u32) -> u32 {
     let mut y = x.reverse_bits();
     y = y.wrapping_add(seed);
