@@ -159,7 +159,7 @@ pub const SEEING_FLOOR: f64 = 10.0;
 
 /// Two mirrors side by side under the sky at [`PAIR_DISTANCE`], each
 /// under its own captured map, against a lone mirror under the same sky:
-/// the shortcut's failure, shown. `pair` is [`two_spheres`] in the suite.
+/// the shortcut's failure, shown. `pair` is [`two_spheres`](super::envmap_vs_traced::two_spheres) in the suite.
 pub fn check_self_reflection(
     pair: fn(Surroundings, f64, Resolution) -> Comparison,
     figures: &mut Vec<RenderFigure>,
