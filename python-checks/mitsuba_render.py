@@ -94,7 +94,14 @@ process on one Mitsuba thread; the image does not depend on the thread count
 (each image block draws from a stream of its own). Mitsuba's ``max_depth``
 counts the segments of a path (1: emitters seen directly, 2: direct light);
 the suite's counts bounces after the primary hit and adds the direct light at
-the last vertex, so the suite's ``max_depth`` D is Mitsuba's D + 2.
+the last vertex, so the suite's ``max_depth`` D is Mitsuba's D + 2. For the
+delta lights exactly; not for light that leaves the last vertex by a sampled
+direction and escapes (the background, through a mirror or glass, or off a
+rough surface), which Mitsuba at D + 2 counts and the suite at D does not:
+Mitsuba lets light escape after D + 1 scatterings, the suite after D
+(``test_bench_vs_mitsuba.py``, a mirror under the sky). That last
+scattering's light is negligible at 16 bounces, except where Mitsuba's
+offsets free light at every bounce (inside a dielectric sphere, below).
 
 Mitsuba's path integrator starts its secondary rays ``RayEpsilon (1 + max
 |p_i|)`` off the surface (see ``spawn``); the suite's tracer much closer. Where
@@ -163,8 +170,8 @@ WORKERS = 2
 PATH_FAR_CLIP = 1.0e7
 # Bounces of the path tracer after the primary hit (the suite's count). The
 # two sides truncate differently only at the last vertex (the background is
-# reached there by Mitsuba's light sampling, not by the suite's), which 16
-# bounces make negligible.
+# reached from there by Mitsuba's sampling, not by the suite's: the module
+# doc), which 16 bounces make negligible.
 PATH_MAX_DEPTH = 16
 # Measured against a closed form (see the module doc, ``test_plane_stand_in.py``).
 PLANE_RADIUS = 1.0e6

@@ -140,6 +140,7 @@ def test_the_documents_get_the_table_and_summary_between_their_markers(tmp_path)
                 "efficiency_ratio": ratio if comparable else None, "load_average": {"median": 1.0}}
     scenes = [entry("a", "scalar_rgb", 2.0, 3.0), entry("b", "scalar_rgb", 8.0, 3.0),
               entry("c", "scalar_rgb", 1.0, 1.0, comparable=False)]
+    scenes[1]["images"] = "agree under Mitsuba's offsets"
     document = {"command": "python-checks/bench_vs_mitsuba.py --docs", "date": "2026-12-03T10:00:00Z",
                 "machine": {"cpu": "Test CPU", "platform": "x", "cores": 2, "load_average_at_end": [1.5, 1, 1]},
                 "scenes": scenes, "not_run": {"llvm_ad_rgb": "no libLLVM"},
@@ -153,6 +154,7 @@ def test_the_documents_get_the_table_and_summary_between_their_markers(tmp_path)
     assert ("Measured by `python-checks/bench_vs_mitsuba.py --docs` on Test CPU, 2 threads (load average 1.50), "
             "2026-12-03") in text
     assert "| `a` | scalar_rgb |" in text and "| geometric mean (2 scenes) | scalar_rgb |" in text
+    assert "| agree | 1.0 |" in text and "| agree under Mitsuba's offsets | 1.0 |" in text
     summary = readme.read_text()
     assert summary.startswith("# Readme\n\n<!-- results: bench-vs-mitsuba-summary -->\n")
     # The geometric mean of 2 and 8 is 4; the worst scene is a, the best b.
