@@ -64,11 +64,16 @@ impl RenderChecks {
                 let Some(images) = &decoded.path else {
                     return None;
                 };
+                // Under Mitsuba's rule every bounce can free light its
+                // offsets move (inside a dielectric sphere), so the escapes
+                // are counted as Mitsuba's `path` counts them: after
+                // `mitsuba_max_depth - 1` scatterings, one more than the
+                // suite's `max_depth` allows.
                 let under_mitsuba_offsets = || {
                     path_statistics_with(
                         self.render,
                         &images.scene,
-                        p.max_depth,
+                        p.mitsuba_max_depth - 1,
                         samples,
                         PixelFilter::Box,
                         Some(RayOffset::Scaled(MITSUBA_RAY_EPSILON)),

@@ -23,7 +23,10 @@
 //!   Mitsuba. Inside a dielectric sphere, Mitsuba's offset moves each
 //!   reflected chord inwards, shortening its distance from the centre, so
 //!   chords trapped by total internal reflection (exactly trapped: a
-//!   sphere keeps a chord's angle) escape after a dozen bounces.
+//!   sphere keeps a chord's angle) escape after a dozen bounces, and each
+//!   further bounce frees more: that render therefore lets light escape
+//!   after as many scatterings as Mitsuba's `path` does, one more than the
+//!   suite's `max_depth` (`python-checks/test_bench_vs_mitsuba.py`).
 //!
 //! The renderer is a parameter ([`Renderer`]), so a deliberately broken render
 //! can be shown to be caught. Radiance is in W/(sr·m²) per channel.

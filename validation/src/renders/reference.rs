@@ -194,8 +194,8 @@ pub fn decode(file: &Path, index: usize, s: &SceneRenders) -> Result<Decoded, Re
     })
 }
 
-/// The sizes that decide what [`decode`] allocates, checked first: the
-/// field at fault and what is wrong with it.
+/// The sizes that decide what [`decode`] allocates, and the path's depths,
+/// checked first: the field at fault and what is wrong with it.
 fn check_sizes(s: &SceneRenders) -> Result<(), (&'static str, String)> {
     // The reference images are small (64 × 48, the path's 320 × 240);
     // anything beyond the tracer's own cap is a malformed file, refused
@@ -237,6 +237,19 @@ fn check_sizes(s: &SceneRenders) -> Result<(), (&'static str, String)> {
             return Err((
                 "path.samples",
                 format!("a variance needs at least 2 samples, got {}", p.samples),
+            ));
+        }
+        // The translation of the depth, which the comparison under
+        // Mitsuba's offset rule counts escapes by (`checks.rs`).
+        if p.max_depth.checked_add(2) != Some(p.mitsuba_max_depth) {
+            return Err((
+                "path.mitsuba_max_depth",
+                format!(
+                    "Mitsuba counts the suite's {} bounces as {} path segments, not {}",
+                    p.max_depth,
+                    u64::from(p.max_depth) + 2,
+                    p.mitsuba_max_depth
+                ),
             ));
         }
     }
