@@ -524,6 +524,7 @@ def main(argv):
                      "threads": args.threads, "alpha": args.alpha, "rough": args.rough,
                      "mitsuba_sampler": args.sampler, "tracer_ray_offset": args.ray_offset,
                      "max_depth": mr.PATH_MAX_DEPTH, "mitsuba_max_depth": mr.PATH_MAX_DEPTH + 2,
+                     "max_depth_under_mitsuba_offsets": ESCAPE_MAX_DEPTH,
                      "pixel_filter": "box"},
         "not_run": not_run,
         "scenes": entries,
