@@ -78,3 +78,4 @@ pub mod rng;
 pub mod sampler;
 pub mod scene;
 pub mod spawn;
+pub mod tier;

@@ -43,6 +43,7 @@ pub use settings::{
     RenderSpec, Settings,
 };
 pub use settings::{MAX_DEPTH, MAX_PHOTONS, MAX_PHOTON_PASSES, MAX_SPP};
+pub use crate::tier::Precision;
 
 /// The only schema version this crate reads.
 pub const SCHEMA_VERSION: u32 = 1;
