@@ -123,6 +123,7 @@ impl<V: Vector> Sphere<V> {
     /// Ray/Sphere Intersection", *Ray Tracing Gems* ch. 7), and the smaller
     /// root avoids cancelling `−b ± √Δ` by taking `q = −(b + sign(b)√Δ)`,
     /// `t = c/q` and `t = q` (Press et al., *Numerical Recipes* §5.6).
+    #[inline]
     pub fn roots(&self, ray: &Ray<V>) -> Roots<V::Scalar> {
         let f = ray.origin - self.center;
         let b = f.dot(ray.direction);
@@ -157,6 +158,7 @@ impl<V: Vector> Sphere<V> {
     }
 
     /// The nearest hit in `(t_min, ray.t_max)`.
+    #[inline]
     pub fn intersect(
         &self,
         ray: &Ray<V>,
