@@ -10,9 +10,7 @@ use tracer::job::{Overrides, RenderJob};
 use tracer::needs::{Needs, WARN_RAYS};
 use tracer::output::Destination;
 use tracer::render::Rendered;
-use tracer::scene::{
-    FresnelModel, IntegratorKind, PixelFilter, Precision, RenderSpec, Settings,
-};
+use tracer::scene::{FresnelModel, IntegratorKind, PixelFilter, Precision, RenderSpec, Settings};
 use tracer::scene::{MAX_DEPTH, MAX_IMAGE_SIDE, MAX_PHOTONS, MAX_PHOTON_PASSES, MAX_SPP};
 
 use crate::error::{self, ErrorKind};

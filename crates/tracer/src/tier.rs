@@ -29,7 +29,10 @@ pub enum Precision {
     /// Single precision, `glam::Vec3`: the course's shaders' and every
     /// integrator's.
     #[serde(rename = "f32")]
-    #[cfg_attr(feature = "clap", value(name = "f32", help = "Single precision (every integrator)"))]
+    #[cfg_attr(
+        feature = "clap",
+        value(name = "f32", help = "Single precision (every integrator)")
+    )]
     #[default]
     F32,
     /// Double precision, `glam::DVec3`: `local` and `whitted` only.

@@ -67,7 +67,10 @@ fn a_scene_moved_far_from_the_origin_keeps_its_image_in_f64_and_loses_it_in_f32(
     // The f32 image at the origin is the f64 one there, to f32's own error.
     let home_f32 = render(small_scene_at(0.0, "f32"));
     let (mean0, max0) = home_f32.difference(&home);
-    assert!(max0 < 1e-5, "f32 at the origin: mean {mean0:e}, max {max0:e}");
+    assert!(
+        max0 < 1e-5,
+        "f32 at the origin: mean {mean0:e}, max {max0:e}"
+    );
 
     let (mean, max) = render(small_scene_at(1e5, "f32")).difference(&home);
     assert!(

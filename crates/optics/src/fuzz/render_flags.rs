@@ -61,50 +61,50 @@ fn command_line() -> impl Strategy<Value = Line> {
     (
         any::<bool>(),
         choice(&INTEGRATORS),
-        choice(&FILTERS),
-        choice(&FRESNELS),
-        choice(&PRECISIONS),
+        (choice(&FILTERS), choice(&FRESNELS), choice(&PRECISIONS)),
         prop::option::weighted(0.3, (0..4usize, prop::sample::select(NOT_CHOICES.to_vec()))),
         any::<bool>(),
     )
-        .prop_map(|(inspect, integrator, filter, fresnel, precision, spoil, reversed)| {
-            let mut flags: Vec<(&'static str, &'static str)> = Vec::new();
-            flags.extend(integrator.map(|v| ("--integrator", v)));
-            flags.extend(filter.map(|v| ("--pixel-filter", v)));
-            flags.extend(fresnel.map(|v| ("--fresnel", v)));
-            flags.extend(precision.map(|v| ("--precision", v)));
-            // A spoiled value replaces one flag's, or arrives as a new flag.
-            let mut spoiled = None;
-            if let Some((which, text)) = spoil {
-                let flag = CHOICE_FLAGS[which];
-                flags.retain(|(f, _)| *f != flag);
-                // "path" is a value of --integrator: not a spoiling there.
-                if !(flag == "--integrator" && text == "path") {
-                    flags.push((flag, text));
-                    spoiled = Some(flag);
+        .prop_map(
+            |(inspect, integrator, (filter, fresnel, tier), spoil, reversed)| {
+                let mut flags: Vec<(&'static str, &'static str)> = Vec::new();
+                flags.extend(integrator.map(|v| ("--integrator", v)));
+                flags.extend(filter.map(|v| ("--pixel-filter", v)));
+                flags.extend(fresnel.map(|v| ("--fresnel", v)));
+                flags.extend(tier.map(|v| ("--precision", v)));
+                // A spoiled value replaces one flag's, or arrives as a new flag.
+                let mut spoiled = None;
+                if let Some((which, text)) = spoil {
+                    let flag = CHOICE_FLAGS[which];
+                    flags.retain(|(f, _)| *f != flag);
+                    // "path" is a value of --integrator: not a spoiling there.
+                    if !(flag == "--integrator" && text == "path") {
+                        flags.push((flag, text));
+                        spoiled = Some(flag);
+                    }
                 }
-            }
-            if reversed {
-                flags.reverse();
-            }
-            let mut args = vec!["optics".to_owned()];
-            args.push(if inspect { "inspect" } else { "render" }.to_owned());
-            args.push(scene().display().to_string());
-            if !inspect {
-                args.extend(["-o".to_owned(), "never-written.png".to_owned()]);
-            }
-            for (flag, value) in &flags {
-                args.extend([flag.to_string(), value.to_string()]);
-            }
-            let given = |name: &str| flags.iter().find(|(f, _)| *f == name).map(|(_, v)| *v);
-            Line {
-                integrator: given("--integrator").filter(|v| INTEGRATORS.contains(v)),
-                filter: given("--pixel-filter").filter(|v| FILTERS.contains(v)),
-                precision: given("--precision").filter(|v| PRECISIONS.contains(v)),
-                spoiled,
-                args,
-            }
-        })
+                if reversed {
+                    flags.reverse();
+                }
+                let mut args = vec!["optics".to_owned()];
+                args.push(if inspect { "inspect" } else { "render" }.to_owned());
+                args.push(scene().display().to_string());
+                if !inspect {
+                    args.extend(["-o".to_owned(), "never-written.png".to_owned()]);
+                }
+                for (flag, value) in &flags {
+                    args.extend([flag.to_string(), value.to_string()]);
+                }
+                let given = |name: &str| flags.iter().find(|(f, _)| *f == name).map(|(_, v)| *v);
+                Line {
+                    integrator: given("--integrator").filter(|v| INTEGRATORS.contains(v)),
+                    filter: given("--pixel-filter").filter(|v| FILTERS.contains(v)),
+                    precision: given("--precision").filter(|v| PRECISIONS.contains(v)),
+                    spoiled,
+                    args,
+                }
+            },
+        )
 }
 
 /// The filter a line must settle to: the one it names, else its

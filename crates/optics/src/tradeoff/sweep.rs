@@ -389,7 +389,10 @@ mod tests {
                 ..RenderSpec::default()
             },
         );
-        let path = plan(&RenderJob::with_settings(scene, settings.unwrap()).unwrap(), 16);
+        let path = plan(
+            &RenderJob::with_settings(scene, settings.unwrap()).unwrap(),
+            16,
+        );
         assert!(path.points.iter().all(|p| p.axis != Axis::Precision));
         assert!(path.skipped.iter().any(|s| s.axis == "f32 against f64"));
 
@@ -404,8 +407,11 @@ mod tests {
         let ladder = plan(&at_f64, 16);
         for integrator in [IntegratorKind::Path, IntegratorKind::Course] {
             assert!(
-                ladder.points.iter().any(|p| p.settings.integrator == integrator
-                    && p.settings.precision == Precision::F32),
+                ladder
+                    .points
+                    .iter()
+                    .any(|p| p.settings.integrator == integrator
+                        && p.settings.precision == Precision::F32),
                 "{integrator} missing from the ladder at f64"
             );
         }

@@ -152,7 +152,6 @@ impl<'a, V: Vector> Tracer<'a, V> {
             caustics: None,
         }
     }
-
 }
 
 impl Tracer<'_> {
@@ -209,7 +208,6 @@ impl<V: Vector> Tracer<'_, V> {
         }
         best
     }
-
 }
 
 impl Tracer<'_> {

@@ -5,10 +5,10 @@
 //! reflectance the shortcut stands in for is replaced, by the technique's
 //! own function (`techniques`), never a copy of it.
 
+use crate::tier::Tier;
 use radiometry::course::refract_001_approx;
 use radiometry::snell::Incidence;
 use radiometry::Real;
-use crate::tier::Tier;
 use techniques::empirical_fresnel;
 
 use super::Tracer;

@@ -35,6 +35,7 @@ pub mod settings;
 mod shape;
 pub mod validate;
 
+pub use crate::tier::Precision;
 pub use error::{ErrorKind, SceneError};
 pub use model::{Light, Material, Scene};
 pub use schema::SceneFile;
@@ -43,7 +44,6 @@ pub use settings::{
     RenderSpec, Settings,
 };
 pub use settings::{MAX_DEPTH, MAX_PHOTONS, MAX_PHOTON_PASSES, MAX_SPP};
-pub use crate::tier::Precision;
 
 /// The only schema version this crate reads.
 pub const SCHEMA_VERSION: u32 = 1;
