@@ -233,20 +233,26 @@ impl_vector!(
 mod tests {
     use super::*;
 
-    /// `γ(n)` is `n ε / (1 − n ε)` at each tier's unit roundoff, `2⁻²⁴`
-    /// and `2⁻⁵³` (tolerance: none; the `f32` value is the one the
-    /// tracer used before it had tiers).
+    /// `γ(n) = n u / (1 − n u)` with each tier's unit roundoff, `u = 2⁻²⁴`
+    /// for `f32` and `2⁻⁵³` for `f64` (Higham §3.1), within one ulp of the
+    /// tier (the formula evaluated in the tier against it in `f64`, for
+    /// `f32`, and against `n u` plus its square, the next term, for `f64`).
     #[test]
     fn gamma_is_the_bound_of_n_roundings_at_each_tier() {
-        let f32_before = |n: u32| {
-            let ne = n as f32 * f32::EPSILON * 0.5;
-            ne / (1.0 - ne)
-        };
-        for n in [1, 6, 8] {
-            assert_eq!(<f32 as Tier>::gamma(n), f32_before(n));
-            let u = 2f64.powi(-53) * n as f64;
-            assert_eq!(<f64 as Tier>::gamma(n), u / (1.0 - u));
+        for n in [1_u32, 6, 8, 100] {
+            let u = 2f64.powi(-24) * f64::from(n);
+            let exact = u / (1.0 - u);
+            let single = f64::from(<f32 as Tier>::gamma(n));
+            assert!(
+                (single - exact).abs() <= f32::ulp_at(exact),
+                "f32 γ({n}) = {single:e}"
+            );
+            let u = 2f64.powi(-53) * f64::from(n);
+            let double = <f64 as Tier>::gamma(n);
+            assert!(
+                (double - (u + u * u)).abs() <= f64::ulp_at(u),
+                "f64 γ({n}) = {double:e}"
+            );
         }
-        assert!(<f64 as Tier>::gamma(6) < 1e-15);
     }
 }
