@@ -8,7 +8,7 @@
 //! called at the same tier. The scene is validated once, in `f32`
 //! ([`crate::scene::Scene`]); a tracer at another tier widens its objects,
 //! materials and lights once, exactly, when it is built
-//! ([`crate::integrator::World`]), so both tiers read the same numbers and
+//! ([`crate::scene::model::World`]), so both tiers read the same numbers and
 //! differ only in the arithmetic. The image stays `f32` radiance (the
 //! film): each pixel's mean is rounded once at the end.
 
