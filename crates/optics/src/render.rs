@@ -10,7 +10,7 @@ use tracer::job::{Overrides, RenderJob};
 use tracer::needs::{Needs, WARN_RAYS};
 use tracer::output::Destination;
 use tracer::render::Rendered;
-use tracer::scene::{FresnelModel, IntegratorKind, PixelFilter, RenderSpec, Settings};
+use tracer::scene::{FresnelModel, IntegratorKind, PixelFilter, Precision, RenderSpec, Settings};
 use tracer::scene::{MAX_DEPTH, MAX_IMAGE_SIDE, MAX_PHOTONS, MAX_PHOTON_PASSES, MAX_SPP};
 
 use crate::error::{self, ErrorKind};
@@ -78,6 +78,11 @@ pub struct JobArgs {
     #[arg(long)]
     #[serde(skip_serializing_if = "Option::is_none")]
     pub seed: Option<u64>,
+    /// The precision tier the tracer computes in (default: the scene's,
+    /// else f32); f64 for local and whitted only.
+    #[arg(long, value_enum)]
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub precision: Option<Precision>,
     /// Photons per pass of the photon integrator's caustic map.
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=MAX_PHOTONS as i64))]
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -130,6 +135,7 @@ impl JobArgs {
                 photons: self.photons.map(f64::from),
                 photon_passes: self.photon_passes.map(f64::from),
                 photon_radius: self.photon_radius,
+                precision: self.precision,
                 ..RenderSpec::default()
             },
             width: self.width,

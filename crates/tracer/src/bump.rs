@@ -10,34 +10,30 @@
 //! the technique's known limits (`001`: "az objektumok körvonalai körül
 //! azonban a hatás eltűnik", "az egyenetlenségek nem vetnek árnyékot").
 
-use glam::Vec3;
 use techniques::bump::{self, HeightField, SurfacePoint};
 
 use crate::geometry::{Hit, Object};
+use crate::tier::{Tier, Vector};
 
-/// The shading normal of `hit` on `object` under `field`, in the tracer's
-/// `f32`, outward like `hit.normal`. The bend is computed in `f64` about
+/// The shading normal of `hit` on `object` under `field`, at the tracer's
+/// tier, outward like `hit.normal`. The bend is computed in `f64` about
 /// `hit.normal` itself, so a flat field hands `hit.normal` back to the bit.
 /// The tube has no bump maps (the schema has none for it); its hits keep
 /// their normal, as do points where the bend is undefined (the sphere's
 /// poles).
-pub fn shading_normal(object: &Object, field: &HeightField, hit: &Hit) -> Vec3 {
-    let point = hit.point.as_dvec3();
+pub fn shading_normal<V: Vector>(object: &Object<V>, field: &HeightField, hit: &Hit<V>) -> V {
+    let point = hit.point.to_f64();
     let at: Option<SurfacePoint> = match object {
-        Object::Sphere(s) => bump::on_sphere(s.center.as_dvec3(), f64::from(s.radius), point),
-        Object::Plane(p) => Some(bump::on_plane(
-            p.point.as_dvec3(),
-            p.normal.as_dvec3(),
-            point,
-        )),
+        Object::Sphere(s) => bump::on_sphere(s.center.to_f64(), s.radius.to_f64(), point),
+        Object::Plane(p) => Some(bump::on_plane(p.point.to_f64(), p.normal.to_f64(), point)),
         Object::Tube(_) => None,
     };
     let Some(at) = at else {
         return hit.normal;
     };
     let at = SurfacePoint {
-        normal: hit.normal.as_dvec3(),
+        normal: hit.normal.to_f64(),
         ..at
     };
-    bump::shading_normal(field, &at).as_vec3()
+    V::of_f64(bump::shading_normal(field, &at))
 }

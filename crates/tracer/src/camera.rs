@@ -10,6 +10,7 @@
 use glam::{DMat4, DVec3, DVec4, Vec3};
 
 use crate::geometry::Ray;
+use crate::tier::Vector;
 
 /// How primary rays are made.
 // One camera per scene: the size difference between the variants costs nothing.
@@ -117,10 +118,15 @@ impl Camera {
     }
 
     /// The primary ray through the point `within` pixel `(x, y)`, each
-    /// coordinate in `[0, 1]` from the pixel's top-left corner. The
-    /// construction is carried in `f64` and rounded once to the tracer's
-    /// `f32`.
+    /// coordinate in `[0, 1]` from the pixel's top-left corner, in `f32`:
+    /// [`Camera::ray_in`].
     pub fn ray_at(&self, x: u32, y: u32, within: (f64, f64)) -> Ray {
+        self.ray_in(x, y, within)
+    }
+
+    /// [`Camera::ray_at`] at tier `V`: the construction is carried in
+    /// `f64` and rounded once to the tier.
+    pub fn ray_in<V: Vector>(&self, x: u32, y: u32, within: (f64, f64)) -> Ray<V> {
         match *self {
             Camera::CoursePinhole {
                 aspect,
@@ -130,7 +136,7 @@ impl Camera {
                 let (nx, ny) = Self::ndc(width, height, x, y, within);
                 let eye = COURSE_EYE.as_dvec3();
                 let on_plane = DVec3::new(nx * aspect, ny, 0.0);
-                Ray::new(eye.as_vec3(), (on_plane - eye).normalize().as_vec3())
+                Ray::new(V::of_f64(eye), V::of_f64((on_plane - eye).normalize()))
             }
             Camera::LookAt {
                 inverse_view_projection,
@@ -140,7 +146,7 @@ impl Camera {
             } => {
                 let (nx, ny) = Self::ndc(width, height, x, y, within);
                 let (near, far) = unproject_near_far(&inverse_view_projection, nx, ny);
-                Ray::new(near.as_vec3(), (far - near).normalize().as_vec3())
+                Ray::new(V::of_f64(near), V::of_f64((far - near).normalize()))
             }
         }
     }

@@ -12,13 +12,15 @@
 
 use std::path::Path;
 
+use glam::DVec3;
+
 use crate::integrator::{Machinery, Tracer};
 use crate::needs::{self, Needs};
 use crate::output::{Destination, OutputError};
 use crate::render::{self, Rendered};
 use crate::scene::validate::image_size;
 use crate::scene::{
-    self, ErrorKind, IntegratorKind, Material, RenderSpec, Scene, SceneError, Settings,
+    self, ErrorKind, IntegratorKind, Material, Precision, RenderSpec, Scene, SceneError, Settings,
 };
 
 /// Settings given beside a scene (a command line's flags, a test's case),
@@ -165,13 +167,23 @@ impl RenderJob {
         threads: Option<usize>,
         progress: &(dyn Fn(usize) + Sync),
     ) -> Result<Rendered, RenderError> {
-        let tracer = Tracer::new(&self.scene, self.settings, machinery.clone());
-        let (tracer, photon_time) = caustics(tracer, threads)?;
-        let mut rendered = render::render(&tracer, threads, progress)?;
-        if let Some(caustics) = &tracer.caustics {
-            rendered.rays.add(&caustics.rays);
-            rendered.elapsed += photon_time;
-        }
+        let rendered = match self.settings.precision {
+            Precision::F32 => {
+                let tracer = Tracer::new(&self.scene, self.settings, machinery.clone());
+                let (tracer, photon_time) = caustics(tracer, threads)?;
+                let mut rendered = render::render(&tracer, threads, progress)?;
+                if let Some(caustics) = &tracer.caustics {
+                    rendered.rays.add(&caustics.rays);
+                    rendered.elapsed += photon_time;
+                }
+                rendered
+            }
+            // Settled for local and whitted only, which build no maps.
+            Precision::F64 => {
+                let tracer = Tracer::<DVec3>::new(&self.scene, self.settings, machinery.clone());
+                render::render(&tracer, threads, progress)?
+            }
+        };
         render::check_finite(&rendered.image)?;
         Ok(rendered)
     }
@@ -222,8 +234,17 @@ fn caustics(
     Ok((tracer, start.elapsed()))
 }
 
-/// Refuses combinations an integrator cannot render.
+/// Refuses combinations an integrator cannot render: glass under the
+/// course's shader, and a tier the integrator does not compute in (which
+/// [`Settings::settle`] refuses too, for settings varied after it).
 fn renderable(scene: &Scene, settings: &Settings) -> Result<(), SceneError> {
+    if !settings.precision.serves(settings.integrator) {
+        let kind = ErrorKind::PrecisionNotServed {
+            precision: settings.precision,
+            integrator: settings.integrator,
+        };
+        return Err(SceneError::new("render.precision", kind));
+    }
     if settings.integrator == IntegratorKind::Course {
         if let Some((name, _)) = scene
             .material_names

@@ -39,6 +39,7 @@
 //! | [`environment`] | what rays that leave the scene receive: a procedural sky, a lat-long or cube map looked up through `techniques::envmap`, and the slides' capture of a cube map by tracing |
 //! | [`filter`] | the pixel filter: stratified rays over the pixel (box) or its centre |
 //! | [`spawn`] | where secondary rays start: the hit's error bound, or the course's fixed epsilon |
+//! | [`tier`] | the precision tier, `f32` or `f64`: the scalar and vector the geometry and the deterministic integrators are written over |
 //! | [`integrator`] | `local`, `whitted`, `path`, `photon` (the path tracer plus a caustic photon map) and the course shader's loop, one file each, and the shared scatter step |
 //! | [`needs`] | what a scene needs, so the renderer runs only that |
 //! | [`chains`] | which delta lights reach a rough surface through mirrors or glass: the light no integrator computes |
@@ -50,13 +51,20 @@
 //!
 //! # Precision
 //!
-//! The tracer computes in `f32`, the precision of the course's shaders and
-//! of production renderers, so that the course's precision problems are
-//! reproduced and their fixes shown where they matter: the sphere
-//! intersection is the stable form ([`geometry::Sphere::roots`]), hit points
-//! are re-projected onto their surface and carry an error bound, and
+//! The tracer computes in `f32` by default, the precision of the course's
+//! shaders and of production renderers, so that the course's precision
+//! problems are reproduced and their fixes shown where they matter: the
+//! sphere intersection is the stable form ([`geometry::Sphere::roots`]), hit
+//! points are re-projected onto their surface and carry an error bound, and
 //! secondary rays are offset by that bound ([`spawn`]). Cameras are built in
 //! `f64` and rounded once; pixel means are summed in `f64`.
+//!
+//! `local` and `whitted` also compute in `f64` (`render.precision`,
+//! [`tier::Precision`]): the geometry, the camera ray, the direct light and
+//! the specular lobes are written once over [`tier::Vector`] and call the
+//! laws at the same tier; the scene, validated in `f32`, is widened once
+//! per render, and the image is `f32` either way. `path`, `photon` and
+//! `course` stay `f32`.
 
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
@@ -78,3 +86,4 @@ pub mod rng;
 pub mod sampler;
 pub mod scene;
 pub mod spawn;
+pub mod tier;

@@ -9,9 +9,10 @@ use glam::{DVec3, Vec3};
 use rayon::prelude::*;
 
 use crate::filter::sample_point;
-use crate::integrator::{RayCounts, Tracer};
+use crate::integrator::{Primary, RayCounts, Tracer};
 use crate::job::RenderError;
 use crate::sampler::Sampler;
+use crate::tier::Vector;
 
 /// A linear-radiance image, W/(sr·m²) per channel, rows top to bottom.
 #[derive(Clone, Debug, PartialEq)]
@@ -54,11 +55,12 @@ pub struct Rendered {
     pub elapsed: Duration,
 }
 
-/// Renders with `tracer` on `threads` threads (`None`: all cores).
-/// `progress` is called with 0 as the render starts, then with the number
-/// of rows finished so far, from any thread. [`RenderJob`](crate::job::RenderJob) is the way in.
-pub(crate) fn render(
-    tracer: &Tracer,
+/// Renders with `tracer`, at its tier, on `threads` threads (`None`: all
+/// cores). `progress` is called with 0 as the render starts, then with the
+/// number of rows finished so far, from any thread.
+/// [`RenderJob`](crate::job::RenderJob) is the way in.
+pub(crate) fn render<V: Vector>(
+    tracer: &impl Primary<V>,
     threads: Option<usize>,
     progress: &(dyn Fn(usize) + Sync),
 ) -> Result<Rendered, rayon::ThreadPoolBuildError> {
@@ -67,7 +69,8 @@ pub(crate) fn render(
         .build()?;
     let rows_done = AtomicUsize::new(0);
     let start = Instant::now();
-    let (width, height) = (tracer.scene.width, tracer.scene.height);
+    let scene = tracer.tracer().scene;
+    let (width, height) = (scene.width, scene.height);
     // Shown before the first row, which may be long in coming.
     progress(0);
     let rows: Vec<(Vec<Vec3>, RayCounts)> = pool.install(|| {
@@ -116,18 +119,24 @@ pub(crate) fn check_finite(image: &Image) -> Result<(), RenderError> {
 
 /// One pixel: the mean of its samples, each through the point of the pixel
 /// the filter gives it (`crate::filter`), summed in `f64` so that the mean
-/// of many samples keeps `f32` precision.
-fn pixel(tracer: &Tracer, x: u32, y: u32, counts: &mut RayCounts) -> Vec3 {
-    let index = y as u64 * tracer.scene.width as u64 + x as u64;
-    let samples = Sampler::for_pixel(tracer.settings.seed, index);
-    let filter = tracer.settings.pixel_filter;
-    let spp = tracer.machinery.spp.max(1);
+/// of many samples keeps `f32` precision, and rounded once to the film's
+/// `f32`.
+fn pixel<V: Vector>(tracer: &impl Primary<V>, x: u32, y: u32, counts: &mut RayCounts) -> Vec3 {
+    let Tracer {
+        scene,
+        settings,
+        machinery,
+        ..
+    } = tracer.tracer();
+    let index = y as u64 * scene.width as u64 + x as u64;
+    let samples = Sampler::for_pixel(settings.seed, index);
+    let spp = machinery.spp.max(1);
     let mut sum = DVec3::ZERO;
     for k in 0..spp {
         let mut sample = samples.sample(k);
-        let within = sample_point(filter, &mut sample);
-        let ray = tracer.scene.camera.ray_at(x, y, within);
-        sum += tracer.radiance(&ray, &mut sample, counts).as_dvec3();
+        let within = sample_point(settings.pixel_filter, &mut sample);
+        let ray = scene.camera.ray_in(x, y, within);
+        sum += tracer.primary(&ray, &mut sample, counts).to_f64();
     }
     (sum / spp as f64).as_vec3()
 }

@@ -9,24 +9,28 @@
 //! 7.8 mm, and the moved point rounds back onto the surface. Here the offset
 //! is twice the hit's error bound ([`Hit::error`]), which scales with the
 //! coordinates of the surface; twice, because the bound is per component and
-//! the point may lie up to `√3` bounds off the surface.
+//! the point may lie up to `√3` bounds off the surface. At the `f64` tier
+//! the same bound is some 5·10⁸ times smaller ([`crate::tier`]).
 
-use glam::Vec3;
+use num_traits::Float;
+use radiometry::Real;
 
 use crate::geometry::Hit;
 use crate::scene::RayOffset;
+use crate::tier::Vector;
 
 /// The smallest offset used, m: keeps a hit at the origin (error bound 0)
 /// from restarting on its own surface.
-const MIN_OFFSET: f32 = 1e-30;
+const MIN_OFFSET: f64 = 1e-30;
 
 /// The origin of a ray leaving `hit` on the side of `side` (a unit normal
 /// pointing where the new ray goes).
-pub fn origin(hit: &Hit, side: Vec3, offset: RayOffset) -> Vec3 {
+pub fn origin<V: Vector>(hit: &Hit<V>, side: V, offset: RayOffset) -> V {
+    let lit = V::Scalar::lit;
     let distance = match offset {
-        RayOffset::Robust => (2.0 * hit.error).max(MIN_OFFSET),
-        RayOffset::Fixed(eps) => eps as f32,
-        RayOffset::Scaled(eps) => eps as f32 * (1.0 + hit.point.abs().max_element()),
+        RayOffset::Robust => (lit(2.0) * hit.error).max(lit(MIN_OFFSET)),
+        RayOffset::Fixed(eps) => lit(eps),
+        RayOffset::Scaled(eps) => lit(eps) * (V::Scalar::lit(1.0) + hit.point.abs().max_element()),
     };
     hit.point + side * distance
 }

@@ -28,7 +28,7 @@ use proptest::test_runner::{Config, RngAlgorithm, TestCaseError, TestError, Test
 use serde_json::Value;
 use tracer::job::{Overrides, RenderError, RenderJob};
 use tracer::scene::faults::{self, Fault};
-use tracer::scene::{self, IntegratorKind, PixelFilter, RenderSpec};
+use tracer::scene::{self, IntegratorKind, PixelFilter, Precision, RenderSpec};
 
 const SCENES: [&str; 11] = scene::COURSE_SCENES;
 
@@ -192,6 +192,7 @@ fn edit() -> impl Strategy<Value = Edit> {
         Just("scaled".to_owned()),
         Just("zoom".to_owned()),
         Just("pixel_filter".to_owned()),
+        Just("precision".to_owned()),
         "[a-z_]{1,10}"
     ];
     prop_oneof![
@@ -421,13 +422,17 @@ fn check(bytes: &[u8], coverage: &Mutex<Coverage>) -> Result<(), String> {
     coverage.bumped += usize::from(scene.bumps.iter().any(Option::is_some));
     accepted_is_the_schema(bytes)?;
     // Each integrator under its default pixel filter, and Whitted under the
-    // box filter too (its jittered rays meet what the centre's do not).
-    for (integrator, pixel_filter) in [
-        (IntegratorKind::Local, None),
-        (IntegratorKind::Whitted, None),
-        (IntegratorKind::Whitted, Some(PixelFilter::Box)),
-        (IntegratorKind::Path, None),
-        (IntegratorKind::Photon, None),
+    // box filter too (its jittered rays meet what the centre's do not);
+    // local and Whitted at the f64 tier too.
+    let f64_tier = Some(Precision::F64);
+    for (integrator, pixel_filter, precision) in [
+        (IntegratorKind::Local, None, None),
+        (IntegratorKind::Local, None, f64_tier),
+        (IntegratorKind::Whitted, None, None),
+        (IntegratorKind::Whitted, None, f64_tier),
+        (IntegratorKind::Whitted, Some(PixelFilter::Box), None),
+        (IntegratorKind::Path, None, Some(Precision::F32)),
+        (IntegratorKind::Photon, None, Some(Precision::F32)),
     ] {
         let overrides = Overrides {
             render: RenderSpec {
@@ -438,6 +443,7 @@ fn check(bytes: &[u8], coverage: &Mutex<Coverage>) -> Result<(), String> {
                 // A small map: the file's own counts are validated, not spent.
                 photons: Some(64.0),
                 photon_passes: Some(2.0),
+                precision,
                 ..RenderSpec::default()
             },
             width: Some(4),

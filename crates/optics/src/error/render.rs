@@ -33,6 +33,7 @@ pub fn scene_name(kind: &Scene) -> &'static str {
         Scene::TooExpensive { .. } => "scene.too_expensive",
         Scene::DielectricWithoutInside => "scene.dielectric_without_inside",
         Scene::CourseHasNoRefraction => "scene.course_has_no_refraction",
+        Scene::PrecisionNotServed { .. } => "scene.precision_not_served",
         Scene::Bump(FieldError::NotFinite { .. }) => "scene.bump.not_finite",
         Scene::Bump(FieldError::PeriodTooShort { .. }) => "scene.bump.period_too_short",
         Scene::Bump(FieldError::TooSteep { .. }) => "scene.bump.too_steep",

@@ -89,6 +89,13 @@ pub(super) fn scene_kind_hu(kind: &Scene) -> String {
                                          dielektrikumokat a --integrator whitted vagy path \
                                          kapcsolóval kell renderelni"
             .to_owned(),
+        Scene::PrecisionNotServed {
+            precision,
+            integrator,
+        } => format!(
+            "a(z) {integrator} integrátor nem számol {precision} pontossággal: az f64 \
+             pontosság a local és a whitted integrátoré; a path, a photon és a course f32"
+        ),
         Scene::Bump(FieldError::NotFinite { value, .. }) => {
             format!("véges számnak kell lennie, kapott érték: {value}")
         }

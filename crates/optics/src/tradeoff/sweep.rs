@@ -6,7 +6,9 @@ use serde::Serialize;
 use tracer::chains;
 use tracer::job::RenderJob;
 use tracer::needs::ReflectionDepth;
-use tracer::scene::{FresnelModel, IntegratorKind, PixelFilter, RayOffset, RenderSpec, Settings};
+use tracer::scene::{
+    FresnelModel, IntegratorKind, PixelFilter, Precision, RayOffset, RenderSpec, Settings,
+};
 
 /// Mitsuba 3's `RayEpsilon` in `float32`, 1500 · 2⁻²⁴: its relative offset.
 const MITSUBA_EPSILON: f64 = 1500.0 / 16_777_216.0;
@@ -34,6 +36,8 @@ pub enum Axis {
     RayOffset,
     /// The throughput below which a path is cut or rouletted.
     ThroughputCutoff,
+    /// The precision tier the tracer computes in.
+    Precision,
 }
 
 /// One setting of the sweep.
@@ -111,9 +115,12 @@ pub fn plan(job: &RenderJob, spp: u32) -> Plan {
             Some(n) => format!("integrator {integrator}, {n} spp"),
             None => format!("integrator {integrator}"),
         };
+        // A rung the scene's tier does not serve is taken in f32.
+        let precision = (!base.precision.serves(integrator)).then_some(Precision::F32);
         let spec = RenderSpec {
             integrator: Some(integrator),
             spp,
+            precision,
             ..RenderSpec::default()
         };
         add(Axis::Integrator, label, spec);
@@ -224,12 +231,21 @@ pub fn plan(job: &RenderJob, spp: u32) -> Plan {
         });
     }
 
-    skipped.push(Skipped {
-        axis: "f32 against f64",
-        why:
-            "the tracer computes in f32 only; the law crate's f64 tier is not yet a tracer setting",
-        why_hu: "a követő csak f32-ben számol; a törvények f64-es szintje még nem beállítása a követőnek",
-    });
+    if Precision::F64.serves(base.integrator) {
+        for precision in [Precision::F32, Precision::F64] {
+            let spec = RenderSpec {
+                precision: Some(precision),
+                ..RenderSpec::default()
+            };
+            add(Axis::Precision, format!("precision {precision}"), spec);
+        }
+    } else {
+        skipped.push(Skipped {
+            axis: "f32 against f64",
+            why: "the scene's integrator computes in f32 only: the f64 tier is local's and whitted's (their rows on the ladder are f32)",
+            why_hu: "a jelenet integrátora csak f32-ben számol: az f64-es szint a local és a whitted integrátoré (a létrán f32-ben szerepelnek)",
+        });
+    }
     skipped.push(Skipped {
         axis: "RGB against spectrum",
         why: "the tracer has no spectral mode; `optics validate` measures what three channels cost each metal's colour (metals.*)",
@@ -262,6 +278,7 @@ pub fn truth_settings(job: &RenderJob, spp: u32) -> Settings {
             IntegratorKind::Path
         }),
         spp: Some(f64::from(spp)),
+        precision: Some(Precision::F32),
         max_depth: Some(f64::from(base.max_depth.max(64))),
         fresnel: Some(FresnelModel::Exact),
         ray_offset: Some(RayOffset::Robust),
@@ -346,6 +363,63 @@ mod tests {
                 );
             }
         }
+    }
+
+    /// A whitted scene sweeps its tier: one row at f64 beside its own f32,
+    /// and no reason left for not sweeping it; a path scene keeps the
+    /// reason, and a scene at f64 keeps every rung of the ladder.
+    #[test]
+    fn the_tier_is_swept_where_the_integrator_computes_in_f64() {
+        let whitted = plan(&job("gold_spheres"), 16);
+        let tiers: Vec<&Point> = whitted
+            .points
+            .iter()
+            .filter(|p| p.axis == Axis::Precision)
+            .collect();
+        assert_eq!(tiers.len(), 1, "{:?}", whitted.points);
+        assert_eq!(tiers[0].settings.precision, Precision::F64);
+        assert_eq!(tiers[0].label, "precision f64");
+        assert!(whitted.skipped.iter().all(|s| s.axis != "f32 against f64"));
+
+        let scene = job("inside_water").scene().clone();
+        let settings = scene.settings.settle(
+            "test",
+            &RenderSpec {
+                integrator: Some(IntegratorKind::Path),
+                ..RenderSpec::default()
+            },
+        );
+        let path = plan(
+            &RenderJob::with_settings(scene, settings.unwrap()).unwrap(),
+            16,
+        );
+        assert!(path.points.iter().all(|p| p.axis != Axis::Precision));
+        assert!(path.skipped.iter().any(|s| s.axis == "f32 against f64"));
+
+        let at_f64 = RenderJob::with_settings(
+            job("gold_spheres").scene().clone(),
+            Settings {
+                precision: Precision::F64,
+                ..*job("gold_spheres").settings()
+            },
+        )
+        .unwrap();
+        let ladder = plan(&at_f64, 16);
+        for integrator in [IntegratorKind::Path, IntegratorKind::Course] {
+            assert!(
+                ladder
+                    .points
+                    .iter()
+                    .any(|p| p.settings.integrator == integrator
+                        && p.settings.precision == Precision::F32),
+                "{integrator} missing from the ladder at f64"
+            );
+        }
+        assert_eq!(
+            truth_settings(&at_f64, 64).precision,
+            Precision::F32,
+            "the truth is the path tracer's, in f32"
+        );
     }
 
     #[test]

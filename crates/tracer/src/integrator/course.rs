@@ -51,7 +51,7 @@ impl Tracer<'_> {
                 Material::Conductor { n: eta, kappa, .. } => {
                     let f0 = fresnel::f0_rgb(eta, kappa);
                     let cos = (-ray.direction).dot(n);
-                    weight *= rgb(|c| course::fresnel_000_glsl(f0[c], cos));
+                    weight *= rgb::<Vec3>(|c| course::fresnel_000_glsl(f0[c], cos));
                     counts.bounce(super::Bounce::Reflection, bounce + 1);
                     ray = Ray::new(
                         hit.point + n * EPSILON,
@@ -114,7 +114,7 @@ impl Tracer<'_> {
                 // Blinn-Phong BRDF times E⊥ cos θ.
                 let f = material.brdf(n, to_light, wo);
                 *sum += weight
-                    * rgb(|c| {
+                    * rgb::<Vec3>(|c| {
                         radiance::reflected_radiance(
                             f[c],
                             radiance::directional_irradiance(energy[c], n, to_light),

@@ -1,19 +1,19 @@
 //! Light at a rough surface: the delta lights' reflected radiance with its
 //! shadow rays, the course's ambient term, and the BRDFs behind both.
 
-use glam::Vec3;
 use radiometry::brdf::{BlinnPhong, Brdf, Lambert};
-use radiometry::radiance;
+use radiometry::{radiance, Real};
 
 use super::{rgb, RayCounts, Tracer};
 use crate::geometry::{Hit, Ray};
 use crate::scene::{Light, Material};
 use crate::spawn;
+use crate::tier::Vector;
 
-impl Material {
+impl<V: Vector> Material<V> {
     /// The BRDF of a rough material per channel, 1/sr (zero for the others,
     /// which scatter only into discrete directions or not at all).
-    pub fn brdf(&self, n: Vec3, wi: Vec3, wo: Vec3) -> Vec3 {
+    pub fn brdf(&self, n: V, wi: V, wo: V) -> V {
         match *self {
             Material::CourseRough {
                 diffuse,
@@ -29,7 +29,7 @@ impl Material {
                 .eval(n, wi, wo)
             }),
             Material::Lambert { albedo } => rgb(|c| Lambert { albedo: albedo[c] }.eval(n, wi, wo)),
-            _ => Vec3::ZERO,
+            _ => V::ZERO,
         }
     }
 
@@ -37,17 +37,17 @@ impl Material {
     /// `ka · L_ambient` for the course's model; for a Lambert surface under a
     /// uniform ambient radiance, the reflected radiance is `albedo ·
     /// L_ambient` (its directional albedo, see `radiometry::brdf::Lambert`).
-    pub fn ambient(&self, l_ambient: Vec3) -> Vec3 {
+    pub fn ambient(&self, l_ambient: V) -> V {
         match *self {
             Material::CourseRough { ambient, .. } => ambient * l_ambient,
             Material::Lambert { albedo } => albedo * l_ambient,
-            _ => Vec3::ZERO,
+            _ => V::ZERO,
         }
     }
 }
 
-impl Tracer<'_> {
-    fn occluded(&self, ray: &Ray, counts: &mut RayCounts) -> bool {
+impl<V: Vector> Tracer<'_, V> {
+    fn occluded(&self, ray: &Ray<V>, counts: &mut RayCounts) -> bool {
         counts.shadow += 1;
         self.intersect_surface(ray).is_some()
     }
@@ -60,16 +60,17 @@ impl Tracer<'_> {
     /// off the geometric surface.
     pub(crate) fn direct(
         &self,
-        hit: &Hit,
-        n: Vec3,
-        wo: Vec3,
-        material: &Material,
+        hit: &Hit<V>,
+        n: V,
+        wo: V,
+        material: &Material<V>,
         counts: &mut RayCounts,
-    ) -> Vec3 {
+    ) -> V {
+        let zero = V::Scalar::lit(0.0);
         let side = hit.facing_normal(-wo);
-        let mut sum = Vec3::ZERO;
+        let mut sum = V::ZERO;
         for (light, _) in self
-            .scene
+            .world
             .lights
             .iter()
             .zip(&self.machinery.lights)
@@ -78,14 +79,14 @@ impl Tracer<'_> {
             let Some((wi, irradiance, stop_at)) = arrival(light, hit, n) else {
                 continue;
             };
-            if !(wi.dot(side) > 0.0) {
+            if !(wi.dot(side) > zero) {
                 continue;
             }
-            if irradiance.max_element() <= 0.0 {
+            if irradiance.max_element() <= zero {
                 continue;
             }
             let f = material.brdf(n, wi, wo);
-            if f.max_element() <= 0.0 {
+            if f.max_element() <= zero {
                 continue;
             }
             if self.machinery.shadow_rays {
@@ -110,7 +111,8 @@ impl Tracer<'_> {
 /// The direction to `light` from `hit` (normal `n`), the irradiance it
 /// delivers there, and where a shadow ray must stop (a point light's
 /// position); `None` where a point light sits on the point.
-fn arrival(light: &Light, hit: &Hit, n: Vec3) -> Option<(Vec3, Vec3, Option<Vec3>)> {
+#[allow(clippy::type_complexity)]
+fn arrival<V: Vector>(light: &Light<V>, hit: &Hit<V>, n: V) -> Option<(V, V, Option<V>)> {
     Some(match *light {
         Light::Directional {
             towards,
@@ -124,12 +126,12 @@ fn arrival(light: &Light, hit: &Hit, n: Vec3) -> Option<(Vec3, Vec3, Option<Vec3
             position,
             intensity,
         } => {
-            let sample = radiance::point_irradiance(1.0, position, hit.point, n)?;
+            let sample = radiance::point_irradiance(V::Scalar::lit(1.0), position, hit.point, n)?;
             (
                 sample.to_light,
                 rgb(|c| {
                     radiance::point_irradiance(intensity[c], position, hit.point, n)
-                        .map_or(0.0, |s| s.irradiance)
+                        .map_or(V::Scalar::lit(0.0), |s| s.irradiance)
                 }),
                 Some(position),
             )

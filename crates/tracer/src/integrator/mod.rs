@@ -16,14 +16,20 @@
 //! [`scatter::Lobes`], where each specular decision is made once. The
 //! course's loop keeps its own rules, intersection included, in [`course`].
 //!
-//! Radiance is in W/(sr·m²) per channel; the tracer computes in `f32`.
+//! Radiance is in W/(sr·m²) per channel. The tracer computes at its
+//! precision tier ([`crate::tier`], `Settings::precision`): `local`,
+//! `whitted` and the steps they share in `f32` or `f64`; `path`, `photon`
+//! and `course` in `f32` only.
 
-use glam::Vec3;
+use glam::{DVec3, Vec3};
+use radiometry::Real;
 
 use crate::geometry::{Hit, Object, Ray};
 use crate::sampler::Sample;
 use crate::scene::faults::{self, Fault};
+use crate::scene::model::World;
 use crate::scene::{IntegratorKind, Scene, Settings};
+use crate::tier::Vector;
 
 pub mod course;
 pub mod direct;
@@ -108,10 +114,13 @@ impl Machinery {
     }
 }
 
-/// One render's tracer: the scene, the settings and the machinery.
-pub struct Tracer<'a> {
+/// One render's tracer: the scene, the settings and the machinery, at
+/// precision tier `V` (`Vec3`: `f32`; `DVec3`: `f64`).
+pub struct Tracer<'a, V: Vector = Vec3> {
     /// The scene.
     pub scene: &'a Scene,
+    /// The scene's objects, materials and lights at the tier, widened once.
+    pub world: World<V>,
     /// Settled settings.
     pub settings: Settings,
     /// What runs.
@@ -124,23 +133,28 @@ pub struct Tracer<'a> {
 }
 
 /// A colour from a function of its channel index.
-pub(crate) fn rgb(f: impl Fn(usize) -> f32) -> Vec3 {
-    Vec3::new(f(0), f(1), f(2))
+pub(crate) fn rgb<V: Vector>(f: impl Fn(usize) -> V::Scalar) -> V {
+    V::new(f(0), f(1), f(2))
 }
 
-impl<'a> Tracer<'a> {
+impl<'a, V: Vector> Tracer<'a, V> {
     /// The tracer of `scene` under `settings`, running `machinery`, with
-    /// the fault planted on this thread, if any (`scene::faults`).
+    /// the fault planted on this thread, if any (`scene::faults`), at tier
+    /// `V`. A render takes its tier from `settings.precision`
+    /// ([`crate::job::RenderJob`]).
     pub fn new(scene: &'a Scene, settings: Settings, machinery: Machinery) -> Self {
         Tracer {
             scene,
+            world: World::of(scene),
             settings,
             machinery,
             fault: faults::current(),
             caustics: None,
         }
     }
+}
 
+impl Tracer<'_> {
     /// This tracer with its caustic maps built, where its integrator has them.
     pub fn with_caustics(mut self) -> Self {
         if self.settings.integrator == IntegratorKind::Photon {
@@ -150,34 +164,39 @@ impl<'a> Tracer<'a> {
     }
 }
 
-impl Tracer<'_> {
+impl<V: Vector> Tracer<'_, V> {
     /// The nearest hit along `ray`, robustly: the stable sphere roots,
     /// planes and the tube seen from both sides; its shading normal bent by
     /// the object's bump map, if it has one ([`crate::bump`]).
-    pub fn intersect(&self, ray: &Ray) -> Option<Hit> {
+    pub fn intersect(&self, ray: &Ray<V>) -> Option<Hit<V>> {
         let mut hit = self.intersect_surface(ray)?;
         let object = hit.object as usize;
         if let Some(Some(field)) = self.scene.bumps.get(object) {
-            hit.shading = crate::bump::shading_normal(&self.scene.objects[object], field, &hit);
+            hit.shading = crate::bump::shading_normal(&self.world.objects[object], field, &hit);
         }
         Some(hit)
     }
 
     /// The nearest hit along `ray` on the smooth surfaces, its shading
     /// normal the geometric one: all that a shadow ray asks.
-    pub(crate) fn intersect_surface(&self, ray: &Ray) -> Option<Hit> {
+    pub(crate) fn intersect_surface(&self, ray: &Ray<V>) -> Option<Hit<V>> {
+        let zero = V::Scalar::lit(0.0);
         self.nearest(ray, |object, bounded| match object {
-            Object::Sphere(s) => s.intersect(bounded, 0.0, s.roots(bounded)),
-            Object::Plane(p) => p.intersect(bounded, 0.0),
-            Object::Tube(t) => t.intersect(bounded, 0.0),
+            Object::Sphere(s) => s.intersect(bounded, zero, s.roots(bounded)),
+            Object::Plane(p) => p.intersect(bounded, zero),
+            Object::Tube(t) => t.intersect(bounded, zero),
         })
     }
 
     /// The nearest of the hits `hit_of` finds along `ray`, each object
     /// searched only up to the nearest hit so far.
-    fn nearest(&self, ray: &Ray, hit_of: impl Fn(&Object, &Ray) -> Option<Hit>) -> Option<Hit> {
-        let mut best: Option<Hit> = None;
-        for (i, object) in self.scene.objects.iter().enumerate() {
+    fn nearest(
+        &self,
+        ray: &Ray<V>,
+        hit_of: impl Fn(&Object<V>, &Ray<V>) -> Option<Hit<V>>,
+    ) -> Option<Hit<V>> {
+        let mut best: Option<Hit<V>> = None;
+        for (i, object) in self.world.objects.iter().enumerate() {
             let bounded = Ray {
                 t_max: best.map_or(ray.t_max, |h| h.t),
                 ..*ray
@@ -189,7 +208,9 @@ impl Tracer<'_> {
         }
         best
     }
+}
 
+impl Tracer<'_> {
     /// The radiance arriving along a primary ray, by the chosen integrator
     /// (`photon` looks up the maps of [`Tracer::with_caustics`]; a tracer
     /// without them traces the path tracer's paths alone), its random
@@ -202,6 +223,40 @@ impl Tracer<'_> {
             IntegratorKind::Path => self.path(ray, sample, counts, None),
             IntegratorKind::Photon => self.photon(ray, sample, counts),
             IntegratorKind::Course => self.course(ray, counts),
+        }
+    }
+}
+
+/// The radiance along a primary ray at a tracer's tier: what
+/// [`crate::render`] asks of a tracer of either tier.
+pub(crate) trait Primary<V: Vector>: Sync {
+    /// The tracer's scene, settings and machinery.
+    fn tracer(&self) -> &Tracer<'_, V>;
+    /// The radiance arriving along `ray` (see [`Tracer::radiance`]).
+    fn primary(&self, ray: &Ray<V>, sample: &mut Sample, counts: &mut RayCounts) -> V;
+}
+
+impl Primary<Vec3> for Tracer<'_> {
+    fn tracer(&self) -> &Tracer<'_> {
+        self
+    }
+    fn primary(&self, ray: &Ray, sample: &mut Sample, counts: &mut RayCounts) -> Vec3 {
+        self.radiance(ray, sample, counts)
+    }
+}
+
+impl Primary<DVec3> for Tracer<'_, DVec3> {
+    fn tracer(&self) -> &Tracer<'_, DVec3> {
+        self
+    }
+    /// `local` and `whitted`, the integrators of the `f64` tier; a job
+    /// settles no other there (`Settings::settle`).
+    fn primary(&self, ray: &Ray<DVec3>, _: &mut Sample, counts: &mut RayCounts) -> DVec3 {
+        counts.primary += 1;
+        match self.settings.integrator {
+            IntegratorKind::Local => self.local(ray, counts),
+            IntegratorKind::Whitted => self.whitted(ray, 0, DVec3::ONE, counts),
+            other => unreachable!("{other} is settled at f32 only"),
         }
     }
 }

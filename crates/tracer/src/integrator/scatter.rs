@@ -10,13 +10,14 @@
 
 use glam::Vec3;
 use radiometry::snell::Incidence;
-use radiometry::{course, fresnel, radiance, specular};
+use radiometry::{course, fresnel, radiance, specular, Real};
 
 use super::Tracer;
 use crate::geometry::{Hit, Ray};
 use crate::scene::faults::Fault;
 use crate::scene::{FresnelModel, Material};
 use crate::spawn;
+use crate::tier::Vector;
 
 /// What kind of secondary ray leaves a surface.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -31,21 +32,24 @@ pub enum Bounce {
 
 /// What a surface does with the light that reaches it.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Surface {
+pub enum Surface<V: Vector = Vec3> {
     /// Unlit: it shows this radiance, whatever lights it.
-    Shows(Vec3),
+    Shows(V),
     /// Rough: shaded from the lights and the ambient term by its BRDF.
     Rough,
     /// Smooth: light leaves only along its [`Lobes`].
     Smooth,
 }
 
-impl Material {
+impl<V: Vector> Material<V> {
     /// What this material does with light at `hit`.
-    pub fn surface(&self, hit: &Hit) -> Surface {
+    pub fn surface(&self, hit: &Hit<V>) -> Surface<V> {
         match *self {
             Material::Flat { radiance } => Surface::Shows(radiance),
-            Material::NormalColour => Surface::Shows(hit.shading * 0.5 + 0.5),
+            Material::NormalColour => {
+                let half = V::Scalar::lit(0.5);
+                Surface::Shows(hit.shading * half + V::splat(half))
+            }
             Material::CourseRough { .. } | Material::Lambert { .. } => Surface::Rough,
             Material::Conductor { .. } | Material::Dielectric { .. } => Surface::Smooth,
         }
@@ -54,37 +58,37 @@ impl Material {
 
 /// One way light leaves a smooth surface.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Lobe {
+pub struct Lobe<V: Vector = Vec3> {
     /// Its kind.
     pub bounce: Bounce,
     /// The secondary ray, started off the surface on the side it travels into.
-    pub ray: Ray,
+    pub ray: Ray<V>,
     /// Radiance arriving along the ray times this is the radiance it
     /// carries back along the incident ray, per channel.
-    pub weight: Vec3,
+    pub weight: V,
     /// The fraction of the power arriving along the incident ray that
     /// leaves along this one, per channel: `R`, or through a dielectric
     /// `T` without the radiance's `1/η²` (the beam's solid angle changes,
     /// its power does not; Veach's thesis §5.2). A photon carries this.
-    pub power: Vec3,
+    pub power: V,
 }
 
 /// The lobes of a smooth surface.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Lobes {
+pub struct Lobes<V: Vector = Vec3> {
     /// The mirror lobe, weighted by the Fresnel reflectance.
-    pub reflection: Lobe,
+    pub reflection: Lobe<V>,
     /// Through a dielectric, the refracted lobe (weighted by the
     /// transmittance and the radiance's `1/η²`) and the reflectance `R`
     /// that splits the light between the two; `None` at a conductor and
     /// under total internal reflection.
-    pub refraction: Option<(Lobe, f32)>,
+    pub refraction: Option<(Lobe<V>, V::Scalar)>,
 }
 
-impl Tracer<'_> {
+impl<V: Vector> Tracer<'_, V> {
     /// The lobes of the smooth material at `hit`, seen along `wo` (towards
     /// the viewer) with `n` the hit's shading normal.
-    pub(crate) fn lobes(&self, hit: &Hit, n: Vec3, wo: Vec3, material: &Material) -> Lobes {
+    pub(crate) fn lobes(&self, hit: &Hit<V>, n: V, wo: V, material: &Material<V>) -> Lobes<V> {
         match *material {
             Material::Dielectric { eta } => self.dielectric_lobes(hit, n, wo, eta),
             Material::Conductor {
@@ -92,7 +96,11 @@ impl Tracer<'_> {
                 kappa,
                 ref exact,
             } => {
-                let facing = if n.dot(wo) < 0.0 { -n } else { n };
+                let facing = if n.dot(wo) < V::Scalar::lit(0.0) {
+                    -n
+                } else {
+                    n
+                };
                 let weight = self.conductor_fresnel(facing.dot(wo), eta, kappa, exact);
                 let ray = Ray::new(
                     spawn::origin(hit, facing, self.settings.ray_offset),
@@ -107,7 +115,7 @@ impl Tracer<'_> {
         }
     }
 
-    fn dielectric_lobes(&self, hit: &Hit, n: Vec3, wo: Vec3, eta: f32) -> Lobes {
+    fn dielectric_lobes(&self, hit: &Hit<V>, n: V, wo: V, eta: V::Scalar) -> Lobes<V> {
         let interface = self.dielectric(specular::incidence(wo, n, eta), eta);
         let outward = if interface.incidence.from_inside {
             -n
@@ -127,13 +135,13 @@ impl Tracer<'_> {
                     spawn::origin(hit, -outward, self.settings.ray_offset),
                     self.refracted_direction(wo, n, &interface.incidence, t.direction),
                 ),
-                weight: Vec3::splat(self.across_interface(interface.transmittance, t.eta_path)),
-                power: Vec3::splat(interface.transmittance),
+                weight: V::splat(self.across_interface(interface.transmittance, t.eta_path)),
+                power: V::splat(interface.transmittance),
             };
             (lobe, reflectance)
         });
         Lobes {
-            reflection: mirror(reflected, Vec3::splat(reflectance)),
+            reflection: mirror(reflected, V::splat(reflectance)),
             refraction,
         }
     }
@@ -141,7 +149,7 @@ impl Tracer<'_> {
     /// The radiance carried across the interface per unit arriving,
     /// `T/η²` (`radiance::across_interface`); `T` alone with that law
     /// planted out (`Fault::RadianceNotScaledAcrossInterfaces`).
-    fn across_interface(&self, transmitted: f32, eta_path: f32) -> f32 {
+    fn across_interface(&self, transmitted: V::Scalar, eta_path: V::Scalar) -> V::Scalar {
         if self.fault == Some(Fault::RadianceNotScaledAcrossInterfaces) {
             return transmitted;
         }
@@ -151,12 +159,12 @@ impl Tracer<'_> {
     /// Conductor reflectance per channel at `cos_i`, by the chosen law.
     fn conductor_fresnel(
         &self,
-        cos_i: f32,
-        n: [f32; 3],
-        kappa: [f32; 3],
-        exact: &[fresnel::Conductor<f32>; 3],
-    ) -> Vec3 {
-        Vec3::from_array(match self.settings.fresnel {
+        cos_i: V::Scalar,
+        n: [V::Scalar; 3],
+        kappa: [V::Scalar; 3],
+        exact: &[fresnel::Conductor<V::Scalar>; 3],
+    ) -> V {
+        let [r, g, b] = match self.settings.fresnel {
             // Written out rather than mapped: the three channels inline side
             // by side, where the compiler evaluates them together.
             FresnelModel::Exact => [
@@ -169,7 +177,8 @@ impl Tracer<'_> {
                 let f0 = fresnel::f0_rgb(n, kappa);
                 core::array::from_fn(|c| course::fresnel_000_glsl(f0[c], cos_i))
             }
-        })
+        };
+        V::new(r, g, b)
     }
 
     /// A dielectric interface met at `incidence` (resolved once, from the
@@ -177,12 +186,17 @@ impl Tracer<'_> {
     /// law: `cos θ_t` the law decided, and its reflectance and
     /// transmittance, for the scene's `eta`. `None` in is input that
     /// describes no interface (a NaN direction).
-    fn dielectric(&self, incidence: Option<Incidence<f32>>, eta: f32) -> Interface {
+    fn dielectric(
+        &self,
+        incidence: Option<Incidence<V::Scalar>>,
+        eta: V::Scalar,
+    ) -> Interface<V::Scalar> {
         let Some(incidence) = incidence else {
             return Interface::undefined();
         };
+        let one = V::Scalar::lit(1.0);
         if let Some(r) = self.shortcut_reflectance(&incidence) {
-            return Interface::new(incidence, incidence.cos_transmitted(), r, 1.0 - r);
+            return Interface::new(incidence, incidence.cos_transmitted(), r, one - r);
         }
         match self.settings.fresnel {
             FresnelModel::Exact => {
@@ -195,32 +209,28 @@ impl Tracer<'_> {
             }
             // The course has no glass; its formula with the incident cosine.
             FresnelModel::Course => {
-                let r = course::fresnel_000_glsl(fresnel::f0(eta, 0.0), incidence.abs_cos_i);
-                Interface::new(incidence, incidence.cos_transmitted(), r, 1.0 - r)
+                let f0 = fresnel::f0(eta, V::Scalar::lit(0.0));
+                let r = course::fresnel_000_glsl(f0, incidence.abs_cos_i);
+                Interface::new(incidence, incidence.cos_transmitted(), r, one - r)
             }
         }
     }
 }
 
 /// A dielectric interface as a Fresnel law resolved it.
-struct Interface {
+struct Interface<T: Real> {
     /// The side, the indices and `|cos θ_i|`.
-    incidence: Incidence<f32>,
+    incidence: Incidence<T>,
     /// `cos θ_t`, or `None` under total internal reflection.
-    cos_t: Option<f32>,
+    cos_t: Option<T>,
     /// The fraction reflected.
-    reflectance: f32,
+    reflectance: T,
     /// The fraction transmitted.
-    transmittance: f32,
+    transmittance: T,
 }
 
-impl Interface {
-    fn new(
-        incidence: Incidence<f32>,
-        cos_t: Option<f32>,
-        reflectance: f32,
-        transmittance: f32,
-    ) -> Self {
+impl<T: Real> Interface<T> {
+    fn new(incidence: Incidence<T>, cos_t: Option<T>, reflectance: T, transmittance: T) -> Self {
         Interface {
             incidence,
             cos_t,
@@ -233,17 +243,17 @@ impl Interface {
     /// refracted lobe, as the laws return.
     fn undefined() -> Self {
         let incidence = Incidence {
-            abs_cos_i: f32::NAN,
-            n_i: f32::NAN,
-            n_t: f32::NAN,
+            abs_cos_i: T::nan(),
+            n_i: T::nan(),
+            n_t: T::nan(),
             from_inside: false,
             sin_i: None,
         };
-        Interface::new(incidence, None, f32::NAN, f32::NAN)
+        Interface::new(incidence, None, T::nan(), T::nan())
     }
 }
 
-fn mirror(ray: Ray, weight: Vec3) -> Lobe {
+fn mirror<V: Vector>(ray: Ray<V>, weight: V) -> Lobe<V> {
     Lobe {
         bounce: Bounce::Reflection,
         ray,

@@ -133,6 +133,14 @@ pub enum ErrorKind {
     DielectricWithoutInside,
     /// A dielectric under the course's shader, which has no refraction.
     CourseHasNoRefraction,
+    /// A precision tier the integrator does not compute in (`f64` beyond
+    /// `local` and `whitted`).
+    PrecisionNotServed {
+        /// The tier asked for.
+        precision: crate::tier::Precision,
+        /// The integrator settled beside it.
+        integrator: super::IntegratorKind,
+    },
     /// A bump map's parameter outside its domain (`techniques::bump`'s
     /// own kinds; the error names the parameter's field).
     Bump(FieldError),
@@ -384,6 +392,14 @@ impl fmt::Display for ErrorKind {
             ErrorKind::CourseHasNoRefraction => f.write_str(
                 "the course's shader has no refraction; render dielectrics with \
                  --integrator whitted or path",
+            ),
+            ErrorKind::PrecisionNotServed {
+                precision,
+                integrator,
+            } => write!(
+                f,
+                "the {integrator} integrator does not compute in {precision}: \
+                 precision f64 is for local and whitted; path, photon and course are f32"
             ),
             ErrorKind::Bump(error) => write!(f, "{error}"),
             ErrorKind::BumpOnSmoothSurface => f.write_str(

@@ -96,6 +96,7 @@ pub const FIELDS: &[&str] = &[
     "render.photons",
     "render.photon_passes",
     "render.photon_radius",
+    "render.precision",
 ];
 
 /// Whether `path` matches `pattern`: `[]` an index `[digits]`, `*` one or

@@ -35,6 +35,7 @@ pub mod settings;
 mod shape;
 pub mod validate;
 
+pub use crate::tier::Precision;
 pub use error::{ErrorKind, SceneError};
 pub use model::{Light, Material, Scene};
 pub use schema::SceneFile;

@@ -1,4 +1,5 @@
-//! The validated scene, in the tracer's `f32`: what the integrators read.
+//! The validated scene, in the tracer's `f32`, and its objects, materials
+//! and lights at a tracer's precision tier: what the integrators read.
 
 use std::sync::Arc;
 
@@ -10,6 +11,7 @@ use super::Settings;
 use crate::camera::Camera;
 use crate::environment::Environment;
 use crate::geometry::Object;
+use crate::tier::{Tier, Vector};
 
 /// A validated scene in the tracer's `f32`.
 #[derive(Clone, Debug)]
@@ -43,49 +45,86 @@ pub struct Scene {
     pub settings: Settings,
 }
 
-/// A material in the tracer's `f32`.
+/// A material, in the validated scene's `f32` or at a tracer's tier.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Material {
+pub enum Material<V: Vector = Vec3> {
     /// See [`MaterialSpec::Flat`](super::schema::MaterialSpec::Flat).
     Flat {
         /// Radiance, W/(sr·m²).
-        radiance: Vec3,
+        radiance: V,
     },
     /// See [`MaterialSpec::NormalColour`](super::schema::MaterialSpec::NormalColour).
     NormalColour,
     /// See [`MaterialSpec::CourseRough`](super::schema::MaterialSpec::CourseRough).
     CourseRough {
         /// `ka`.
-        ambient: Vec3,
+        ambient: V,
         /// `kd`, 1/sr.
-        diffuse: Vec3,
+        diffuse: V,
         /// `ks`, 1/sr.
-        specular: Vec3,
+        specular: V,
         /// Exponent.
-        shininess: f32,
+        shininess: V::Scalar,
     },
     /// See [`MaterialSpec::Lambert`](super::schema::MaterialSpec::Lambert).
     Lambert {
         /// Albedo.
-        albedo: Vec3,
+        albedo: V,
     },
     /// See [`MaterialSpec::Conductor`](super::schema::MaterialSpec::Conductor).
     Conductor {
         /// Real index per channel.
-        n: [f32; 3],
+        n: [V::Scalar; 3],
         /// Extinction per channel.
-        kappa: [f32; 3],
+        kappa: [V::Scalar; 3],
         /// The exact law per channel, its angle-free parts computed once.
-        exact: [radiometry::fresnel::Conductor<f32>; 3],
+        exact: [radiometry::fresnel::Conductor<V::Scalar>; 3],
     },
     /// See [`MaterialSpec::Dielectric`](super::schema::MaterialSpec::Dielectric).
     Dielectric {
         /// `n_inside / n_outside`.
-        eta: f32,
+        eta: V::Scalar,
     },
 }
 
 impl Material {
+    /// This material at tier `V`: its numbers widened exactly, a
+    /// conductor's law built again at the tier from them.
+    pub fn at_tier<V: Vector>(&self) -> Material<V> {
+        let widen = V::Scalar::of_f32;
+        match *self {
+            Material::Flat { radiance } => Material::Flat {
+                radiance: V::of_f32(radiance),
+            },
+            Material::NormalColour => Material::NormalColour,
+            Material::CourseRough {
+                ambient,
+                diffuse,
+                specular,
+                shininess,
+            } => Material::CourseRough {
+                ambient: V::of_f32(ambient),
+                diffuse: V::of_f32(diffuse),
+                specular: V::of_f32(specular),
+                shininess: widen(shininess),
+            },
+            Material::Lambert { albedo } => Material::Lambert {
+                albedo: V::of_f32(albedo),
+            },
+            Material::Conductor { n, kappa, .. } => {
+                let (n, kappa) = (n.map(widen), kappa.map(widen));
+                let exact = core::array::from_fn(|c| {
+                    radiometry::fresnel::Conductor::new(n[c], kappa[c])
+                        .expect("the law took these indices in f32, whose range is narrower")
+                });
+                Material::Conductor { n, kappa, exact }
+            }
+            Material::Dielectric { eta } => Material::Dielectric { eta: widen(eta) },
+        }
+    }
+}
+
+impl<V: Vector> Material<V> {
     /// Whether light is shaded here from the lights (a rough surface).
     pub fn is_rough(&self) -> bool {
         matches!(
@@ -103,33 +142,85 @@ impl Material {
     }
 }
 
-/// A light in the tracer's `f32`.
+/// A light, in the validated scene's `f32` or at a tracer's tier.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Light {
+pub enum Light<V: Vector = Vec3> {
     /// See [`LightSpec::Directional`](super::schema::LightSpec::Directional).
     Directional {
         /// Unit direction towards the light.
-        towards: Vec3,
+        towards: V,
         /// W/m² per channel, on a surface facing the light.
-        irradiance: Vec3,
+        irradiance: V,
     },
     /// See [`LightSpec::Point`](super::schema::LightSpec::Point).
     Point {
         /// Position, m.
-        position: Vec3,
+        position: V,
         /// W/sr per channel.
-        intensity: Vec3,
+        intensity: V,
     },
+}
+
+impl Light {
+    /// This light at tier `V`, its numbers widened exactly.
+    pub fn at_tier<V: Vector>(&self) -> Light<V> {
+        match *self {
+            Light::Directional {
+                towards,
+                irradiance,
+            } => Light::Directional {
+                towards: V::of_f32(towards),
+                irradiance: V::of_f32(irradiance),
+            },
+            Light::Point {
+                position,
+                intensity,
+            } => Light::Point {
+                position: V::of_f32(position),
+                intensity: V::of_f32(intensity),
+            },
+        }
+    }
+}
+
+/// What a tracer at tier `V` reads of a [`Scene`]: its objects, materials
+/// and lights, and the constant radiances, widened once when the tracer is
+/// built (exact, and the same numbers at both tiers: the scene's own for
+/// `f32`).
+#[derive(Clone, Debug)]
+pub struct World<V: Vector = Vec3> {
+    /// [`Scene::objects`] at the tier.
+    pub objects: Vec<Object<V>>,
+    /// [`Scene::materials`] at the tier.
+    pub materials: Vec<Material<V>>,
+    /// [`Scene::lights`] at the tier.
+    pub lights: Vec<Light<V>>,
+    /// [`Scene::ambient`] at the tier.
+    pub ambient: V,
+}
+
+impl<V: Vector> World<V> {
+    /// `scene`'s objects, materials and lights at tier `V`.
+    pub fn of(scene: &Scene) -> Self {
+        World {
+            objects: scene.objects.iter().map(Object::at_tier).collect(),
+            materials: scene.materials.iter().map(Material::at_tier).collect(),
+            lights: scene.lights.iter().map(Light::at_tier).collect(),
+            ambient: V::of_f32(scene.ambient),
+        }
+    }
 }
 
 impl Scene {
     /// The radiance a ray travelling in `direction` receives when it meets
-    /// nothing: the environment's there, else the constant background.
-    pub fn escaped(&self, direction: Vec3) -> Vec3 {
-        match &self.environment {
-            Some(environment) => environment.radiance(direction),
+    /// nothing: the environment's there, else the constant background. A
+    /// map's texels are `f32`: a tracer at another tier looks them up
+    /// along its direction rounded to `f32`.
+    pub fn escaped<V: Vector>(&self, direction: V) -> V {
+        V::of_f32(match &self.environment {
+            Some(environment) => environment.radiance(direction.to_f32()),
             None => self.background,
-        }
+        })
     }
 
     /// The same scene rendered at another size (the camera keeps its view).

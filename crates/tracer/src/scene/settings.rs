@@ -9,7 +9,8 @@ use radiometry::domain;
 use serde::{Deserialize, Serialize};
 
 use super::validate::{count, positive};
-use super::SceneError;
+use super::{ErrorKind, SceneError};
+use crate::tier::Precision;
 
 /// The most samples per pixel accepted: 2^20. Beyond this the `f32` image
 /// cannot resolve the difference a further sample makes.
@@ -215,6 +216,8 @@ pub struct RenderSpec {
     pub photon_passes: Option<f64>,
     /// The first pass's gather radius (`photon`), m, positive.
     pub photon_radius: Option<f64>,
+    /// The precision tier (`f64` for `local` and `whitted` only).
+    pub precision: Option<Precision>,
 }
 
 /// The caustic photon map's settings (the `photon` integrator).
@@ -265,6 +268,9 @@ pub struct Settings {
     pub pixel_filter: PixelFilter,
     /// The caustic photon map (`photon` only).
     pub photon: PhotonSettings,
+    /// The precision tier the tracer computes in; settled only where it
+    /// serves the integrator ([`Precision::serves`]).
+    pub precision: Precision,
     /// A slide's shortcut at glass, measured against the laws; never
     /// written out, as no input sets it.
     #[serde(skip)]
@@ -283,6 +289,7 @@ impl Default for Settings {
             ray_offset: RayOffset::Robust,
             pixel_filter: PixelFilter::default_for(IntegratorKind::Whitted),
             photon: PhotonSettings::default(),
+            precision: Precision::F32,
             glass_shortcut: GlassShortcut::None,
         }
     }
@@ -336,6 +343,23 @@ impl Settings {
             settled.ray_offset = offset;
         }
         settled.photon = settled.photon.settle(path, spec)?;
+        if let Some(precision) = spec.precision {
+            settled.precision = precision;
+        }
+        if !settled.precision.serves(settled.integrator) {
+            // Named by the precision where it was given here, else by the
+            // integrator that no longer takes the precision settled before.
+            let name = if spec.precision.is_some() {
+                "precision"
+            } else {
+                "integrator"
+            };
+            let kind = ErrorKind::PrecisionNotServed {
+                precision: settled.precision,
+                integrator: settled.integrator,
+            };
+            return Err(SceneError::new(field(name), kind));
+        }
         Ok(settled)
     }
 }

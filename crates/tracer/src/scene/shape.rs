@@ -11,7 +11,7 @@ use super::error::JsonType;
 use super::{ErrorKind, SceneError};
 
 /// The scene's settings that are one of several names.
-const CHOICES: [&str; 3] = ["integrator", "fresnel", "pixel_filter"];
+const CHOICES: [&str; 4] = ["integrator", "fresnel", "pixel_filter", "precision"];
 
 /// Refuses a struct written other than as an object, and a choice written
 /// other than as its name.

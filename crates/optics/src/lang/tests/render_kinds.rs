@@ -40,6 +40,7 @@ pub fn scene_slot(kind: &Scene) -> usize {
         Scene::BumpOnSmoothSurface => 26,
         Scene::EnvironmentImage { .. } => 36,
         Scene::BackgroundWithEnvironment => 37,
+        Scene::PrecisionNotServed { .. } => 38,
     }
 }
 
@@ -63,7 +64,7 @@ pub const THREADS: usize = 34;
 pub const NOT_FINITE: usize = 35;
 
 /// How many render slots there are.
-pub const SLOTS: usize = 38;
+pub const SLOTS: usize = 39;
 
 /// A thread pool that cannot start: its spawner fails.
 pub fn thread_pool_error() -> rayon::ThreadPoolBuildError {
@@ -216,6 +217,14 @@ pub fn examples() -> Vec<(ErrorKind, Vec<String>)> {
             "materials.glass",
             Scene::CourseHasNoRefraction,
             &["--integrator", "whitted", "path"],
+        ),
+        scene(
+            "overrides.precision",
+            Scene::PrecisionNotServed {
+                precision: tracer::scene::Precision::F64,
+                integrator: tracer::scene::IntegratorKind::Path,
+            },
+            &["path", "f64", "local", "whitted", "photon", "course", "f32"],
         ),
         scene(
             "objects[0].bump.du",
