@@ -68,6 +68,9 @@ pub struct Truth {
     pub noise: f64,
     /// `Σ t²` over the surface pixel-channels.
     energy: f64,
+    /// `Σ t` over the surface pixel-channels: the light the measures of
+    /// what a render leaves out are shares of.
+    light: f64,
 }
 
 impl Truth {
@@ -116,10 +119,12 @@ impl Truth {
     /// `image` with a known mean variance per surface pixel-channel.
     pub fn new(image: Image, noise: f64, mask: &Mask) -> Self {
         let energy = mask.kept().map(|i| squared(image.pixels[i])).sum();
+        let light = mask.kept().map(|i| summed(image.pixels[i])).sum();
         Truth {
             image,
             noise,
             energy,
+            light,
         }
     }
 
@@ -134,6 +139,14 @@ impl Truth {
     pub fn noise_relative(&self, mask: &Mask) -> f64 {
         self.noise * 3.0 * mask.count() as f64 / self.energy.max(f64::MIN_POSITIVE)
     }
+
+    /// The standard deviation of `Σ t` from the truth's own noise,
+    /// relative to `Σ t`: `√(Σ σ²) / Σ t`, its pixels' noises taken as
+    /// independent. The floor under every share of the light measured
+    /// against it ([`Errors::light`]).
+    pub fn light_noise_relative(&self, mask: &Mask) -> f64 {
+        (self.noise * 3.0 * mask.count() as f64).sqrt() / self.light.max(f64::MIN_POSITIVE)
+    }
 }
 
 /// The measures of one setting.
@@ -147,6 +160,10 @@ pub struct Errors {
     pub delta_e_p99: f64,
     /// Mean LDR ꟻLIP of the displayed image over the surface pixels.
     pub flip_mean: f64,
+    /// The light the render carries as a share of the truth's, `Σ x / Σ t`
+    /// over the surface pixel-channels of linear radiance (the mean over
+    /// its renders): `1 − light` is what it leaves out.
+    pub light: f64,
     /// The Monte Carlo split, for settings rendered with several seeds.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub split: Option<Split>,
@@ -186,6 +203,12 @@ pub fn errors(images: &[Image], truth: &Truth, mask: &Mask) -> Errors {
         .sum::<f64>()
         / n;
     let floor = truth.noise * channels;
+    let light = images
+        .iter()
+        .map(|image| mask.kept().map(|i| summed(image.pixels[i])).sum::<f64>())
+        .sum::<f64>()
+        / n
+        / truth.light.max(f64::MIN_POSITIVE);
     let split = (images.len() >= 2).then(|| {
         let variance = mask
             .kept()
@@ -228,6 +251,7 @@ pub fn errors(images: &[Image], truth: &Truth, mask: &Mask) -> Errors {
         delta_e_mean,
         delta_e_p99,
         flip_mean,
+        light,
         split,
     }
 }
@@ -257,6 +281,11 @@ fn displayed(image: &Image, mask: &Mask) -> Vec<radiometry::colour::Lab> {
 
 fn squared(v: Vec3) -> f64 {
     v.as_dvec3().length_squared()
+}
+
+/// The sum of the three channels, in `f64`.
+fn summed(v: Vec3) -> f64 {
+    v.as_dvec3().element_sum()
 }
 
 #[cfg(test)]

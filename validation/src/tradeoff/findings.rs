@@ -1,0 +1,419 @@
+//! What a scene's sweep says of each shortcut, read from its record once:
+//! which are worth their time and which are seen, the light each
+//! integrator leaves out, what the last bounces buy, what Schlick's law
+//! costs (over the whole image and at grazing angles), whether the local
+//! model can be told from Whitted's, and what three channels cost the
+//! scene's metals. The command writes these into the record and words
+//! them; nothing here measures, it only reads the measured rows.
+
+use serde::{Deserialize, Serialize};
+
+use super::record::{Point, Record};
+use super::{Verdict, JUST_NOTICEABLE};
+
+/// A pixel is grazing where its centre first meets a mirror or glass at
+/// a cosine below this (78.5° from the normal): where Schlick's law is
+/// furthest from the exact one.
+pub const GRAZING_COS: f64 = 0.2;
+
+/// The findings of one sweep.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Findings {
+    /// The scene's own settings against the truth.
+    pub own: Accuracy,
+    /// Not seen and at most [`super::WORTH_IT`] of the time, fastest first.
+    pub worth_it: Vec<Shortcut>,
+    /// Faster but seen, fastest first: trades, not savings.
+    pub seen: Vec<Shortcut>,
+    /// Dearer by more than a tenth and not seen: time that buys nothing.
+    pub no_gain: Vec<Shortcut>,
+    /// On the relative RMSE front, nearer the truth than the scene's own
+    /// settings and seen against their render, cheapest first: the
+    /// accuracy there is to buy.
+    pub upgrades: Vec<Upgrade>,
+    /// The light the scene's settings and each integrator leave out.
+    pub light_left_out: Option<LightLeftOut>,
+    /// What each bounce adds, where the bounce limit is swept.
+    pub bounces: Option<Bounces>,
+    /// What Schlick's law costs, where the Fresnel law is swept.
+    pub schlick: Option<Schlick>,
+    /// The local model against Whitted's, where both were rendered and
+    /// one of them is the scene's own.
+    pub local_against_whitted: Option<LocalAgainstWhitted>,
+    /// The scene's metals in three channels against their spectra.
+    pub metals: Vec<MetalRgb>,
+}
+
+/// A shortcut read against the scene's own settings.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Shortcut {
+    /// The point's label.
+    pub label: String,
+    /// Its median time over the scene's own.
+    pub time_ratio: f64,
+    /// ΔE2000 p99 of its render against the scene's own.
+    pub delta_e_p99: f64,
+}
+
+/// How far a render is from the truth.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Accuracy {
+    /// Relative RMSE.
+    pub rel_rmse: f64,
+    /// ΔE2000 p99.
+    pub delta_e_p99: f64,
+}
+
+/// A setting nearer the truth than the scene's own.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Upgrade {
+    /// The point's label.
+    pub label: String,
+    /// Its median time over the scene's own.
+    pub time_ratio: f64,
+    /// Its relative RMSE from the truth.
+    pub rel_rmse: f64,
+    /// Its ΔE2000 p99 from the truth.
+    pub delta_e_p99: f64,
+}
+
+/// `1 − Σx/Σt` of each integrator's render.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct LightLeftOut {
+    /// The bounce limit they share, the scene's own.
+    pub max_depth: u32,
+    /// The standard deviation of the truth's `Σ t`, relative: a share
+    /// left out below it is the truth's noise.
+    pub truth_noise: f64,
+    /// The scene's own settings first, then the integrators in the order
+    /// swept.
+    pub integrators: Vec<LeftOut>,
+}
+
+/// One render's share of the light left out.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct LeftOut {
+    /// The point's label.
+    pub label: String,
+    /// Its integrator.
+    pub integrator: String,
+    /// `1 − Σx/Σt`: below 0 where it renders more light than the truth.
+    pub left_out: f64,
+}
+
+/// The bounce limit, step by step: the scene's own depth and the swept
+/// ones, in order.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Bounces {
+    /// The scene's own bounce limit.
+    pub own: u32,
+    /// The light each depth carries, a share of the truth's, shallowest
+    /// first.
+    pub light: Vec<(u32, f64)>,
+    /// Each step from one swept depth to the next.
+    pub steps: Vec<BounceStep>,
+    /// The least depth from which every deeper one is within ΔE p99
+    /// [`JUST_NOTICEABLE`] of the scene's own render.
+    pub enough: Option<u32>,
+}
+
+/// What going from `from` bounces to `to` adds.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct BounceStep {
+    /// The lower limit.
+    pub from: u32,
+    /// The higher limit.
+    pub to: u32,
+    /// The light added, as a share of the truth's.
+    pub light_added: f64,
+    /// Relative RMSE from the truth at `from`.
+    pub rel_rmse_from: f64,
+    /// Relative RMSE from the truth at `to`.
+    pub rel_rmse_to: f64,
+    /// ΔE2000 p99 between the two renders, where one is the scene's own
+    /// (the other's measure against it); `None` otherwise.
+    pub delta_e_p99: Option<f64>,
+}
+
+/// Schlick's law against the exact one.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Schlick {
+    /// The Schlick point, read against the scene's own (exact) render.
+    pub shortcut: Shortcut,
+    /// Its verdict.
+    pub verdict: Verdict,
+    /// Relative RMSE from the truth with the exact law and with Schlick's.
+    pub rel_rmse: [f64; 2],
+    /// Over the grazing pixels, where the scene has any.
+    pub grazing: Option<GrazingCost>,
+}
+
+/// Schlick's error over the grazing pixels, against the exact law's render.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct GrazingCost {
+    /// How many pixels graze.
+    pub pixels: usize,
+    /// ΔE2000 mean over them.
+    pub delta_e_mean: f64,
+    /// ΔE2000 p99 over them.
+    pub delta_e_p99: f64,
+    /// Relative RMSE over them.
+    pub rel_rmse: f64,
+}
+
+/// The local model's render against Whitted's.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct LocalAgainstWhitted {
+    /// ΔE2000 p99 between them.
+    pub delta_e_p99: f64,
+    /// Whether that is within [`JUST_NOTICEABLE`].
+    pub indistinguishable: bool,
+}
+
+/// A metal of the scene in three channels against its spectrum, by the
+/// harness's code ([`crate::metals::three_channel_delta_e`]).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct MetalRgb {
+    /// The scene's material.
+    pub material: String,
+    /// What was found.
+    #[serde(flatten)]
+    pub outcome: RgbOutcome,
+}
+
+/// Whether a metal's three-channel colour could be held to a spectrum.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "outcome", rename_all = "snake_case")]
+pub enum RgbOutcome {
+    /// Its ΔE2000 against the spectrum of the measured metal of its name
+    /// at each of the reference's angles of incidence.
+    Measured {
+        /// The angles, degrees.
+        angles_deg: Vec<f64>,
+        /// ΔE2000 at each.
+        delta_e: Vec<f64>,
+    },
+    /// The harness's reference (`validation/reference/metals.json`)
+    /// could not be read.
+    NoReference {
+        /// What reading it said.
+        detail: String,
+    },
+    /// The reference has no measured spectrum of this name over the CIE
+    /// grid (360–780 nm).
+    NoSpectrum,
+}
+
+impl RgbOutcome {
+    /// The largest ΔE over the angles and its angle, when measured.
+    pub fn worst(&self) -> Option<(f64, f64)> {
+        match self {
+            RgbOutcome::Measured {
+                angles_deg,
+                delta_e,
+            } => angles_deg
+                .iter()
+                .zip(delta_e)
+                .map(|(&a, &e)| (e, a))
+                .max_by(|x, y| x.0.total_cmp(&y.0)),
+            RgbOutcome::NoReference { .. } | RgbOutcome::NoSpectrum => None,
+        }
+    }
+}
+
+impl Findings {
+    /// What `record`'s rows say; the scene's own settings are its first
+    /// point.
+    pub fn of(record: &Record) -> Self {
+        let points = &record.points;
+        let Some((base, rest)) = points.split_first() else {
+            return Findings::empty(record);
+        };
+        let ratio = |p: &Point| p.seconds_median / base.seconds_median.max(f64::MIN_POSITIVE);
+        let shortcut = |p: &Point| Shortcut {
+            label: p.label.clone(),
+            time_ratio: ratio(p),
+            delta_e_p99: p.against_scene.delta_e_p99,
+        };
+        let with = |verdict: Verdict| {
+            let mut list: Vec<Shortcut> = rest
+                .iter()
+                .filter(|p| p.verdict == Some(verdict))
+                .map(shortcut)
+                .collect();
+            list.sort_by(|a, b| a.time_ratio.total_cmp(&b.time_ratio));
+            list
+        };
+        let mut no_gain = with(Verdict::Unseen);
+        no_gain.retain(|s| s.time_ratio > 1.0 / super::WORTH_IT);
+        let mut upgrades: Vec<Upgrade> = rest
+            .iter()
+            .filter(|p| {
+                p.pareto.iter().any(|m| m == "rel_rmse")
+                    && p.errors.rel_rmse < base.errors.rel_rmse
+                    && p.against_scene.delta_e_p99 > JUST_NOTICEABLE
+            })
+            .map(|p| Upgrade {
+                label: p.label.clone(),
+                time_ratio: ratio(p),
+                rel_rmse: p.errors.rel_rmse,
+                delta_e_p99: p.errors.delta_e_p99,
+            })
+            .collect();
+        upgrades.sort_by(|a, b| a.time_ratio.total_cmp(&b.time_ratio));
+        Findings {
+            own: Accuracy {
+                rel_rmse: base.errors.rel_rmse,
+                delta_e_p99: base.errors.delta_e_p99,
+            },
+            worth_it: with(Verdict::WorthIt),
+            seen: with(Verdict::Trade),
+            no_gain,
+            upgrades,
+            light_left_out: light_left_out(record, base, rest),
+            bounces: bounces(base, rest),
+            schlick: schlick(base, rest, ratio),
+            local_against_whitted: local_against_whitted(base, rest),
+            metals: record.rgb_against_spectrum.clone(),
+        }
+    }
+
+    fn empty(record: &Record) -> Self {
+        Findings {
+            own: Accuracy {
+                rel_rmse: f64::NAN,
+                delta_e_p99: f64::NAN,
+            },
+            worth_it: Vec::new(),
+            seen: Vec::new(),
+            no_gain: Vec::new(),
+            upgrades: Vec::new(),
+            light_left_out: None,
+            bounces: None,
+            schlick: None,
+            local_against_whitted: None,
+            metals: record.rgb_against_spectrum.clone(),
+        }
+    }
+}
+
+/// The scene's own settings and each point of the integrator axis, where
+/// the record measured the light (and the truth's noise on it).
+fn light_left_out(record: &Record, base: &Point, rest: &[Point]) -> Option<LightLeftOut> {
+    let truth_noise = record.truth.light_noise_relative?;
+    let integrators = std::iter::once(base)
+        .chain(rest.iter().filter(|p| p.axis == "integrator"))
+        .map(|p| {
+            Some(LeftOut {
+                label: p.label.clone(),
+                integrator: p.settings.integrator.clone(),
+                left_out: 1.0 - p.errors.light?,
+            })
+        })
+        .collect::<Option<Vec<_>>>()?;
+    Some(LightLeftOut {
+        max_depth: base.settings.max_depth,
+        truth_noise,
+        integrators,
+    })
+}
+
+/// The depth axis with the scene's own point at its depth, in order of
+/// depth, each step read from its two ends.
+fn bounces(base: &Point, rest: &[Point]) -> Option<Bounces> {
+    let mut depths: Vec<&Point> = std::iter::once(base)
+        .chain(rest.iter().filter(|p| p.axis == "max_depth"))
+        .collect();
+    if depths.len() < 2 {
+        return None;
+    }
+    depths.sort_by_key(|p| p.settings.max_depth);
+    let own = base.settings.max_depth;
+    let between = |a: &Point, b: &Point| {
+        if a.settings.max_depth == own {
+            Some(b.against_scene.delta_e_p99)
+        } else if b.settings.max_depth == own {
+            Some(a.against_scene.delta_e_p99)
+        } else {
+            None
+        }
+    };
+    let steps = depths
+        .windows(2)
+        .map(|pair| {
+            let (a, b) = (pair[0], pair[1]);
+            Some(BounceStep {
+                from: a.settings.max_depth,
+                to: b.settings.max_depth,
+                light_added: b.errors.light? - a.errors.light?,
+                rel_rmse_from: a.errors.rel_rmse,
+                rel_rmse_to: b.errors.rel_rmse,
+                delta_e_p99: between(a, b),
+            })
+        })
+        .collect::<Option<Vec<_>>>()?;
+    let light = depths
+        .iter()
+        .map(|p| Some((p.settings.max_depth, p.errors.light?)))
+        .collect::<Option<Vec<_>>>()?;
+    // The deepest run of depths all within sight of the scene's own.
+    let enough = depths
+        .iter()
+        .rev()
+        .take_while(|p| p.against_scene.delta_e_p99 <= JUST_NOTICEABLE)
+        .last()
+        .map(|p| p.settings.max_depth);
+    Some(Bounces {
+        own,
+        light,
+        steps,
+        enough,
+    })
+}
+
+/// The `fresnel schlick` point against a scene whose own law is exact.
+fn schlick(base: &Point, rest: &[Point], ratio: impl Fn(&Point) -> f64) -> Option<Schlick> {
+    if base.settings.fresnel != "exact" {
+        return None;
+    }
+    let p = rest
+        .iter()
+        .find(|p| p.axis == "fresnel" && p.settings.fresnel == "schlick")?;
+    Some(Schlick {
+        shortcut: Shortcut {
+            label: p.label.clone(),
+            time_ratio: ratio(p),
+            delta_e_p99: p.against_scene.delta_e_p99,
+        },
+        verdict: p.verdict?,
+        rel_rmse: [base.errors.rel_rmse, p.errors.rel_rmse],
+        grazing: p.grazing.map(|g| GrazingCost {
+            pixels: g.pixels,
+            delta_e_mean: g.against_scene.delta_e_mean,
+            delta_e_p99: g.against_scene.delta_e_p99,
+            rel_rmse: g.against_scene.rel_rmse,
+        }),
+    })
+}
+
+/// Local against Whitted, where one is the scene's own and the other a
+/// point of the integrator axis (its measure against the scene's own is
+/// then the one between them).
+fn local_against_whitted(base: &Point, rest: &[Point]) -> Option<LocalAgainstWhitted> {
+    let other = match base.settings.integrator.as_str() {
+        "whitted" => "local",
+        "local" => "whitted",
+        _ => return None,
+    };
+    let p = rest
+        .iter()
+        .find(|p| p.axis == "integrator" && p.settings.integrator == other)?;
+    let delta_e_p99 = p.against_scene.delta_e_p99;
+    Some(LocalAgainstWhitted {
+        delta_e_p99,
+        indistinguishable: delta_e_p99 <= JUST_NOTICEABLE,
+    })
+}
+
+#[cfg(test)]
+mod tests;
