@@ -16,6 +16,15 @@ use super::{Verdict, JUST_NOTICEABLE};
 /// furthest from the exact one.
 pub const GRAZING_COS: f64 = 0.2;
 
+/// A setting is nearer the truth than the scene's own where its relative
+/// RMSE is at most this share of theirs (and its render is seen against
+/// theirs): a tenth nearer, as a shortcut must be a tenth faster.
+pub const NEARER: f64 = 0.9;
+
+/// A share of the light left out is within the noise where it is at most
+/// this many standard deviations (the truth's and the render's own).
+pub const NOISE_SIGMAS: f64 = 2.0;
+
 /// The findings of one sweep.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Findings {
@@ -28,8 +37,8 @@ pub struct Findings {
     /// Dearer by more than a tenth and not seen: time that buys nothing.
     pub no_gain: Vec<Shortcut>,
     /// On the relative RMSE front, nearer the truth than the scene's own
-    /// settings and seen against their render, cheapest first: the
-    /// accuracy there is to buy.
+    /// settings by [`NEARER`] and seen against their render, cheapest
+    /// first: the accuracy there is to buy.
     pub upgrades: Vec<Upgrade>,
     /// The light the scene's settings and each integrator leave out.
     pub light_left_out: Option<LightLeftOut>,
@@ -99,6 +108,11 @@ pub struct LeftOut {
     pub integrator: String,
     /// `1 − Σx/Σt`: below 0 where it renders more light than the truth.
     pub left_out: f64,
+    /// Its standard deviation: the truth's noise and the render's own,
+    /// in quadrature.
+    pub noise: f64,
+    /// Whether `|left_out|` is within [`NOISE_SIGMAS`] of `noise`.
+    pub within_noise: bool,
 }
 
 /// The bounce limit, step by step: the scene's own depth and the swept
@@ -250,7 +264,7 @@ impl Findings {
             .iter()
             .filter(|p| {
                 p.pareto.iter().any(|m| m == "rel_rmse")
-                    && p.errors.rel_rmse < base.errors.rel_rmse
+                    && p.errors.rel_rmse <= NEARER * base.errors.rel_rmse
                     && p.against_scene.delta_e_p99 > JUST_NOTICEABLE
             })
             .map(|p| Upgrade {
@@ -304,10 +318,15 @@ fn light_left_out(record: &Record, base: &Point, rest: &[Point]) -> Option<Light
     let integrators = std::iter::once(base)
         .chain(rest.iter().filter(|p| p.axis == "integrator"))
         .map(|p| {
+            let left_out = 1.0 - p.errors.light?;
+            let own = p.errors.light_noise.unwrap_or(0.0);
+            let noise = truth_noise.hypot(own);
             Some(LeftOut {
                 label: p.label.clone(),
                 integrator: p.settings.integrator.clone(),
-                left_out: 1.0 - p.errors.light?,
+                left_out,
+                noise,
+                within_noise: left_out.abs() <= NOISE_SIGMAS * noise,
             })
         })
         .collect::<Option<Vec<_>>>()?;

@@ -164,6 +164,10 @@ pub struct Errors {
     /// over the surface pixel-channels of linear radiance (the mean over
     /// its renders): `1 − light` is what it leaves out.
     pub light: f64,
+    /// The standard error of `light` from the renders' own noise, where
+    /// there are several (their sample deviation over `√n`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub light_noise: Option<f64>,
     /// The Monte Carlo split, for settings rendered with several seeds.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub split: Option<Split>,
@@ -203,12 +207,18 @@ pub fn errors(images: &[Image], truth: &Truth, mask: &Mask) -> Errors {
         .sum::<f64>()
         / n;
     let floor = truth.noise * channels;
-    let light = images
+    let shares: Vec<f64> = images
         .iter()
-        .map(|image| mask.kept().map(|i| summed(image.pixels[i])).sum::<f64>())
-        .sum::<f64>()
-        / n
-        / truth.light.max(f64::MIN_POSITIVE);
+        .map(|image| {
+            mask.kept().map(|i| summed(image.pixels[i])).sum::<f64>()
+                / truth.light.max(f64::MIN_POSITIVE)
+        })
+        .collect();
+    let light = shares.iter().sum::<f64>() / n;
+    let light_noise = (images.len() >= 2).then(|| {
+        let spread = shares.iter().map(|s| (s - light).powi(2)).sum::<f64>() / (n - 1.0);
+        (spread / n).sqrt()
+    });
     let split = (images.len() >= 2).then(|| {
         let variance = mask
             .kept()
@@ -252,6 +262,7 @@ pub fn errors(images: &[Image], truth: &Truth, mask: &Mask) -> Errors {
         delta_e_p99,
         flip_mean,
         light,
+        light_noise,
         split,
     }
 }
@@ -424,6 +435,29 @@ mod tests {
         let noiseless = Truth::new(truth.image.clone(), 0.0, &mask);
         let e = errors(&[grey(&[0.6, 0.6])], &noiseless, &mask);
         assert!((e.rel_rmse - 0.2).abs() < 1e-6, "{}", e.rel_rmse);
+    }
+
+    /// The light a render carries is `Σ x / Σ t` over the kept channels,
+    /// the mean over its renders, with their standard error: renders at
+    /// 0.5 and 0.7 of a truth of 1 carry 0.6 ± 0.1 (to 1e-6: `f32` pixels).
+    #[test]
+    fn the_light_carried_is_the_share_of_the_truths_sum() {
+        let mask = Mask::from_hits(&[Some(0), Some(0), None]);
+        let truth = Truth::new(grey(&[1.0, 1.0, 9.0]), 0.0, &mask);
+        let one = errors(&[grey(&[0.25, 0.75, 0.0])], &truth, &mask);
+        assert!((one.light - 0.5).abs() < 1e-6, "{}", one.light);
+        assert_eq!(one.light_noise, None);
+        let two = errors(
+            &[grey(&[0.5, 0.5, 0.0]), grey(&[0.7, 0.7, 0.0])],
+            &truth,
+            &mask,
+        );
+        assert!((two.light - 0.6).abs() < 1e-6, "{}", two.light);
+        assert!(
+            (two.light_noise.unwrap() - 0.1).abs() < 1e-6,
+            "{:?}",
+            two.light_noise
+        );
     }
 
     /// sRGB (255, 0, 0) against black: colour-science 0.4 gives ΔE2000

@@ -128,6 +128,10 @@ pub struct Errors {
     /// (absent from records written before it was measured).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub light: Option<f64>,
+    /// The standard error of `light` from the setting's own renders,
+    /// where it was rendered with several seeds.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub light_noise: Option<f64>,
 }
 
 impl Errors {

@@ -150,9 +150,15 @@ fn upgrades(f: &Findings, lang: Lang) -> Option<String> {
     ))
 }
 
-/// A share as a percentage, two decimals.
+/// A share as a percentage: two decimals, or two significant digits
+/// below 1 %.
 fn percent(share: f64) -> String {
-    format!("{:.2} %", 100.0 * share)
+    let p = 100.0 * share;
+    if p == 0.0 || p.abs() >= 1.0 || !p.is_finite() {
+        return format!("{p:.2} %");
+    }
+    let decimals = (1 - p.abs().log10().floor() as i32).clamp(2, 8) as usize;
+    format!("{p:.decimals$} %")
 }
 
 fn light(l: &LightLeftOut, lang: Lang) -> String {
@@ -172,11 +178,8 @@ fn light(l: &LightLeftOut, lang: Lang) -> String {
                         .to_owned(),
                 );
             }
-            if i.left_out.abs() <= 2.0 * l.truth_noise {
-                notes.push(
-                    lang.pick("within the truth's noise", "a referencia zaján belül")
-                        .to_owned(),
-                );
+            if i.within_noise {
+                notes.push(lang.pick("within the noise", "a zajon belül").to_owned());
             } else if i.left_out < 0.0 {
                 notes.push(
                     lang.pick(
@@ -196,8 +199,8 @@ fn light(l: &LightLeftOut, lang: Lang) -> String {
         .collect();
     say!(
         lang,
-        "Light left out at the scene's max_depth {}, 1 − Σx/Σt over the surface pixels (the truth's own noise ±{}): {}.",
-        "A kimaradó fény a jelenet saját max_depth {} korlátjával, 1 − Σx/Σt a felületi pixeleken (a referencia saját zaja ±{}): {}.",
+        "Light left out at the scene's max_depth {}, 1 − Σx/Σt over the surface pixels (the truth's own noise ±{}; within the noise: within two standard deviations of the truth's and the render's own): {}.",
+        "A kimaradó fény a jelenet saját max_depth {} korlátjával, 1 − Σx/Σt a felületi pixeleken (a referencia saját zaja ±{}; a zajon belül: a referencia és a kép saját zajának két szórásán belül): {}.",
         l.max_depth,
         percent(l.truth_noise),
         items.join(", ")

@@ -24,6 +24,7 @@ fn point(
         delta_e_p99,
         flip_mean: 0.1,
         light: Some(light),
+        light_noise: None,
     };
     let (integrator, max_depth, fresnel) = settings;
     Point {
@@ -75,20 +76,24 @@ fn own(rel_rmse: f64, light: f64) -> Point {
 
 /// `1 − Σx/Σt` of each integrator, the scene's own first, and the
 /// truth's noise on it carried as recorded; a render brighter than the
-/// truth leaves out a negative share.
+/// truth leaves out a negative share. Its noise is the truth's and its
+/// own in quadrature (2e-4 and 1.5e-4 make 2.5e-4), and a share within
+/// two of them (5e-4) is the noise's: 4.99e-4 is, 5.01e-4 is not.
 #[test]
 fn the_light_left_out_is_one_minus_the_share_rendered() {
+    let mut path = point(
+        "integrator",
+        ("path", 11, "exact"),
+        20.0,
+        0.05,
+        0.96875,
+        5.0,
+    );
+    path.errors.light_noise = Some(1.5e-4);
     let findings = Findings::of(&record(vec![
         own(0.3, 0.75),
         point("integrator", ("local", 11, "exact"), 0.5, 0.9, 0.125, 40.0),
-        point(
-            "integrator",
-            ("path", 11, "exact"),
-            20.0,
-            0.05,
-            0.96875,
-            5.0,
-        ),
+        path.clone(),
         point("integrator", ("course", 11, "exact"), 1.2, 2.0, 1.5, 50.0),
         point("max_depth", ("whitted", 2, "exact"), 0.4, 0.9, 0.5, 9.0),
     ]));
@@ -110,6 +115,16 @@ fn the_light_left_out_is_one_minus_the_share_rendered() {
     for ((integrator, left), (w_integrator, w_left)) in got.iter().zip(want) {
         assert_eq!(*integrator, w_integrator);
         assert!((left - w_left).abs() < EXACT, "{integrator}: {left}");
+    }
+    let noise: Vec<f64> = light.integrators.iter().map(|l| l.noise).collect();
+    assert!((noise[0] - 2e-4).abs() < EXACT, "{noise:?}");
+    assert!((noise[2] - 2.5e-4).abs() < EXACT, "{noise:?}");
+    assert!(!light.integrators[2].within_noise);
+    for (share, within) in [(1.0 - 4.99e-4, true), (1.0 - 5.01e-4, false)] {
+        path.errors.light = Some(share);
+        let findings = Findings::of(&record(vec![own(0.3, 0.75), path.clone()]));
+        let left = &findings.light_left_out.unwrap().integrators[1];
+        assert_eq!(left.within_noise, within, "{left:?}");
     }
 }
 
@@ -167,6 +182,7 @@ fn schlicks_cost_is_read_against_the_exact_laws_render() {
             delta_e_p99: 7.25,
             flip_mean: 0.2,
             light: Some(0.9),
+            light_noise: None,
         },
     });
     let points = vec![
@@ -218,9 +234,9 @@ fn local_is_indistinguishable_from_whitted_within_the_just_noticeable_difference
 /// Shortcuts sort by the verdicts' rule, fastest first: unseen and at
 /// most 0.9× the time is worth it, faster and seen is a trade, unseen
 /// and past 1/0.9× the time buys nothing; the accuracy to buy is what
-/// lies on the relative RMSE front below the scene's own and is seen
-/// against it, cheapest first (a point nearer by an unseen margin is no
-/// upgrade).
+/// lies on the relative RMSE front, at most 0.9× the scene's own, and is
+/// seen against it, cheapest first (0.2701 against 0.3 is not a tenth
+/// nearer; an unseen change is no upgrade).
 #[test]
 fn shortcuts_are_sorted_by_the_verdicts_rule_fastest_first() {
     let mut path = point("integrator", ("path", 11, "exact"), 20.0, 0.05, 0.99, 30.0);
@@ -236,18 +252,14 @@ fn shortcuts_are_sorted_by_the_verdicts_rule_fastest_first() {
     photon.pareto = vec!["rel_rmse".to_owned()];
     let mut fast_but_worse = point("max_depth", ("whitted", 0, "exact"), 0.1, 0.9, 0.1, 50.0);
     fast_but_worse.pareto = vec!["rel_rmse".to_owned()];
-    let mut unseen_nearer = point(
-        "ray_offset",
-        ("whitted", 11, "exact"),
-        1.0,
-        0.2999,
-        0.8,
-        0.4,
-    );
+    let mut unseen_nearer = point("ray_offset", ("whitted", 11, "exact"), 1.0, 0.2, 0.8, 0.4);
     unseen_nearer.pareto = vec!["rel_rmse".to_owned()];
+    let mut barely_nearer = point("fresnel", ("whitted", 11, "course"), 1.0, 0.2701, 0.8, 3.0);
+    barely_nearer.pareto = vec!["rel_rmse".to_owned()];
     let findings = Findings::of(&record(vec![
         own(0.3, 0.8),
         unseen_nearer,
+        barely_nearer,
         photon,
         point("max_depth", ("whitted", 8, "exact"), 0.85, 0.3, 0.8, 0.5),
         point("max_depth", ("whitted", 6, "exact"), 0.5, 0.3, 0.8, 0.9),
