@@ -439,16 +439,17 @@ mod tests {
 
     /// The light a render carries is `Σ x / Σ t` over the kept channels,
     /// the mean over its renders, with their standard error: renders at
-    /// 0.5 and 0.7 of a truth of 1 carry 0.6 ± 0.1 (to 1e-6: `f32` pixels).
+    /// 0.5 and 0.7 of a truth of 2 carry 0.6 ± 0.1 (to 1e-6: `f32`
+    /// pixels). The truth's Σt (12) is not its Σt² (24).
     #[test]
     fn the_light_carried_is_the_share_of_the_truths_sum() {
         let mask = Mask::from_hits(&[Some(0), Some(0), None]);
-        let truth = Truth::new(grey(&[1.0, 1.0, 9.0]), 0.0, &mask);
-        let one = errors(&[grey(&[0.25, 0.75, 0.0])], &truth, &mask);
+        let truth = Truth::new(grey(&[2.0, 2.0, 9.0]), 0.0, &mask);
+        let one = errors(&[grey(&[0.5, 1.5, 0.0])], &truth, &mask);
         assert!((one.light - 0.5).abs() < 1e-6, "{}", one.light);
         assert_eq!(one.light_noise, None);
         let two = errors(
-            &[grey(&[0.5, 0.5, 0.0]), grey(&[0.7, 0.7, 0.0])],
+            &[grey(&[1.0, 1.0, 0.0]), grey(&[1.4, 1.4, 0.0])],
             &truth,
             &mask,
         );
