@@ -30,11 +30,16 @@ pub const NOISE_SIGMAS: f64 = 2.0;
 pub struct Findings {
     /// The scene's own settings against the truth.
     pub own: Accuracy,
-    /// Not seen and at most [`super::WORTH_IT`] of the time, fastest first.
+    /// The points that do the scene's own work (as many rays, the same
+    /// image): their times measure only the machine.
+    pub timing_noise: Option<TimingNoise>,
+    /// Not seen, at most [`super::WORTH_IT`] of the time and faster than
+    /// the timing noise, fastest first.
     pub worth_it: Vec<Shortcut>,
     /// Faster but seen, fastest first: trades, not savings.
     pub seen: Vec<Shortcut>,
-    /// Dearer by more than a tenth and not seen: time that buys nothing.
+    /// Dearer by more than a tenth and than the timing noise, and not
+    /// seen: time that buys nothing.
     pub no_gain: Vec<Shortcut>,
     /// On the relative RMSE front, nearer the truth than the scene's own
     /// settings by [`NEARER`] and seen against their render, cheapest
@@ -51,6 +56,16 @@ pub struct Findings {
     pub local_against_whitted: Option<LocalAgainstWhitted>,
     /// The scene's metals in three channels against their spectra.
     pub metals: Vec<MetalRgb>,
+}
+
+/// What renders of the scene's own work took against its time: a saving
+/// or a cost inside this band is the run's timing noise, not the setting's.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct TimingNoise {
+    /// The points that do the scene's own work.
+    pub labels: Vec<String>,
+    /// The least and the most of their time ratios.
+    pub ratios: [f64; 2],
 }
 
 /// A shortcut read against the scene's own settings.
@@ -249,17 +264,28 @@ impl Findings {
             time_ratio: ratio(p),
             delta_e_p99: p.against_scene.delta_e_p99,
         };
+        let same: Vec<&Point> = rest.iter().filter(|p| same_work(base, p)).collect();
+        let timing_noise = (!same.is_empty()).then(|| TimingNoise {
+            labels: same.iter().map(|p| p.label.clone()).collect(),
+            ratios: [
+                same.iter().map(|p| ratio(p)).fold(f64::INFINITY, f64::min),
+                same.iter().map(|p| ratio(p)).fold(0.0, f64::max),
+            ],
+        });
+        let [least, most] = timing_noise.as_ref().map_or([1.0, 1.0], |t| t.ratios);
         let with = |verdict: Verdict| {
             let mut list: Vec<Shortcut> = rest
                 .iter()
-                .filter(|p| p.verdict == Some(verdict))
+                .filter(|p| p.verdict == Some(verdict) && !same_work(base, p))
                 .map(shortcut)
                 .collect();
             list.sort_by(|a, b| a.time_ratio.total_cmp(&b.time_ratio));
             list
         };
+        let mut worth_it = with(Verdict::WorthIt);
+        worth_it.retain(|s| s.time_ratio < least);
         let mut no_gain = with(Verdict::Unseen);
-        no_gain.retain(|s| s.time_ratio > 1.0 / super::WORTH_IT);
+        no_gain.retain(|s| s.time_ratio > most.max(1.0 / super::WORTH_IT));
         let mut upgrades: Vec<Upgrade> = rest
             .iter()
             .filter(|p| {
@@ -280,7 +306,8 @@ impl Findings {
                 rel_rmse: base.errors.rel_rmse,
                 delta_e_p99: base.errors.delta_e_p99,
             },
-            worth_it: with(Verdict::WorthIt),
+            timing_noise,
+            worth_it,
             seen: with(Verdict::Trade),
             no_gain,
             upgrades,
@@ -298,6 +325,7 @@ impl Findings {
                 rel_rmse: f64::NAN,
                 delta_e_p99: f64::NAN,
             },
+            timing_noise: None,
             worth_it: Vec::new(),
             seen: Vec::new(),
             no_gain: Vec::new(),
@@ -309,6 +337,12 @@ impl Findings {
             metals: record.rgb_against_spectrum.clone(),
         }
     }
+}
+
+/// Whether `p` does `base`'s work: as many rays, and a render that is
+/// theirs to the bit (no error against it at all).
+fn same_work(base: &Point, p: &Point) -> bool {
+    p.rays == base.rays && p.against_scene.rel_rmse == 0.0 && p.against_scene.delta_e_p99 == 0.0
 }
 
 /// The scene's own settings and each point of the integrator axis, where

@@ -4,7 +4,8 @@
 //! decisions (what is worth it, what is seen) are the findings'.
 
 use validation::tradeoff::findings::{
-    Bounces, Findings, LightLeftOut, MetalRgb, RgbOutcome, Schlick, Shortcut, GRAZING_COS,
+    Bounces, Findings, LightLeftOut, MetalRgb, RgbOutcome, Schlick, Shortcut, TimingNoise,
+    GRAZING_COS,
 };
 use validation::tradeoff::{Verdict, JUST_NOTICEABLE, WORTH_IT};
 
@@ -14,7 +15,8 @@ use crate::lang::{say, Lang};
 /// what each integrator and bounce misses, Schlick, local against
 /// Whitted, the metals' colour.
 pub fn sentences(f: &Findings, lang: Lang) -> Vec<String> {
-    let mut out = vec![shortcuts(f, lang)];
+    let mut out: Vec<String> = f.timing_noise.iter().map(|t| timing(t, lang)).collect();
+    out.push(shortcuts(f, lang));
     out.extend(seen(f, lang));
     out.extend(no_gain(f, lang));
     out.extend(upgrades(f, lang));
@@ -45,6 +47,21 @@ pub fn sentences(f: &Findings, lang: Lang) -> Vec<String> {
     out
 }
 
+/// The band of the run's timing noise, from renders of the scene's own
+/// work.
+fn timing(t: &TimingNoise, lang: Lang) -> String {
+    let example = t.labels.first().map_or("", String::as_str);
+    say!(
+        lang,
+        "Renders of the scene's own work (as many rays, the same image: {} settings, such as `{}`) took {:.2}× to {:.2}× its time: this run's timing noise, so no time ratio inside that band is counted a saving or a cost.",
+        "A jelenet saját munkáját végző képek (ugyanannyi sugár, ugyanaz a kép: {} beállítás, például `{}`) az idő {:.2}–{:.2}-szeresét vették: ez a futás időmérési zaja, így e sávon belüli időarány sem megtakarításnak, sem költségnek nem számít.",
+        t.labels.len(),
+        example,
+        t.ratios[0],
+        t.ratios[1]
+    )
+}
+
 /// `label` (r× the time, ΔE p99 d).
 fn item(s: &Shortcut, lang: Lang) -> String {
     say!(
@@ -61,8 +78,8 @@ fn shortcuts(f: &Findings, lang: Lang) -> String {
     if f.worth_it.is_empty() {
         return say!(
             lang,
-            "No shortcut here is both unseen (ΔE p99 ≤ {} against the scene's own render) and at most {}× its time.",
-            "Itt egyetlen rövidítés sem láthatatlan (ΔE p99 ≤ {} a jelenet saját képéhez képest) és egyben legfeljebb {}-szeres idejű.",
+            "No shortcut here is both unseen (ΔE p99 ≤ {} against the scene's own render) and at most {}× its time, below the timing noise.",
+            "Itt egyetlen rövidítés sem láthatatlan (ΔE p99 ≤ {} a jelenet saját képéhez képest) és egyben legfeljebb {}-szeres idejű, az időmérési zaj alatt.",
             JUST_NOTICEABLE,
             WORTH_IT
         );

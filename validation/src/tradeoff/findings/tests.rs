@@ -36,7 +36,7 @@ fn point(
             fresnel: fresnel.to_owned(),
         },
         seconds_median: seconds,
-        rays: 1e4,
+        rays: 1e4 * seconds,
         errors: errors(rel_rmse, 10.0 * rel_rmse, light),
         against_scene: errors(0.0, seen, 1.0),
         efficiency: None,
@@ -295,4 +295,45 @@ fn a_metals_worst_colour_error_is_its_largest_over_the_angles() {
     };
     assert_eq!(measured.worst(), Some((7.5, 85.0)));
     assert_eq!(RgbOutcome::NoSpectrum.worst(), None);
+}
+
+/// Renders of the scene's own work (as many rays, the same image) time
+/// only the machine: their least and most time ratios (0.6 and 1.3, to
+/// 1e-12) bound the run's timing noise, a shortcut inside it is not worth
+/// it (0.7) nor a dearer setting inside it no gain (1.2), and they are no
+/// shortcuts themselves.
+#[test]
+fn renders_of_the_scenes_own_work_are_the_timing_noise() {
+    let mut same_fast = point("max_depth", ("whitted", 64, "exact"), 0.6, 0.3, 0.8, 0.0);
+    same_fast.rays = 1e4;
+    let mut same_slow = point(
+        "throughput_cutoff",
+        ("whitted", 11, "exact"),
+        1.3,
+        0.3,
+        0.8,
+        0.0,
+    );
+    same_slow.rays = 1e4;
+    let findings = Findings::of(&record(vec![
+        own(0.3, 0.8),
+        same_fast,
+        same_slow,
+        point("fresnel", ("whitted", 11, "schlick"), 0.5, 0.3, 0.8, 0.5),
+        point("max_depth", ("whitted", 8, "exact"), 0.7, 0.3, 0.8, 0.5),
+        point("max_depth", ("whitted", 32, "exact"), 1.2, 0.3, 0.8, 0.0),
+        point("max_depth", ("whitted", 63, "exact"), 1.4, 0.3, 0.8, 0.0),
+    ]));
+    let noise = findings.timing_noise.unwrap();
+    assert_eq!(
+        noise.labels,
+        [
+            "max_depth whitted 64 exact",
+            "throughput_cutoff whitted 11 exact"
+        ]
+    );
+    assert!((noise.ratios[0] - 0.6).abs() < EXACT && (noise.ratios[1] - 1.3).abs() < EXACT);
+    let labels = |list: &[Shortcut]| list.iter().map(|s| s.label.clone()).collect::<Vec<_>>();
+    assert_eq!(labels(&findings.worth_it), ["fresnel whitted 11 schlick"]);
+    assert_eq!(labels(&findings.no_gain), ["max_depth whitted 63 exact"]);
 }
