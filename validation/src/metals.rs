@@ -262,10 +262,10 @@ pub fn shortcut_colours(laws: &MetalLaws, reference: &MetalsReference) -> Vec<Me
             };
             push("spectral (exact)", exact.clone());
             if metal.name == "gold" {
-                let rgb: [f64; 3] = core::array::from_fn(|ch| {
-                    (laws.conductor)(cos_i, COURSE_GOLD_N[ch], COURSE_GOLD_KAPPA[ch])
-                });
-                push("course RGB n, κ (seed 000)", laws.rgb_colour(rgb));
+                push(
+                    "course RGB n, κ (seed 000)",
+                    three_channel(laws, cos_i, COURSE_GOLD_N, COURSE_GOLD_KAPPA),
+                );
             }
             for (name, nm) in WAVELENGTH_CHOICES {
                 let rgb = nm.map(|w| {
@@ -287,6 +287,42 @@ pub fn shortcut_colours(laws: &MetalLaws, reference: &MetalsReference) -> Vec<Me
         }
     }
     rows
+}
+
+/// The colour of a conductor given as `n, κ` per channel at `cos_i`, as a
+/// three-wavelength renderer shows it: the exact law per channel, the
+/// three reflectances taken as linear sRGB.
+pub fn three_channel(laws: &MetalLaws, cos_i: f64, n: [f64; 3], kappa: [f64; 3]) -> ColourValues {
+    laws.rgb_colour(core::array::from_fn(|ch| {
+        (laws.conductor)(cos_i, n[ch], kappa[ch])
+    }))
+}
+
+/// CIEDE2000 of a conductor given as `n, κ` per channel (a scene's metal)
+/// against the exact spectral colour of `metal`, at each of the
+/// reference's angles: `(angle_deg, ΔE)`, as [`shortcut_colours`] measures
+/// the course's gold. `None` where the metal's table does not cover the
+/// CIE grid.
+pub fn three_channel_delta_e(
+    laws: &MetalLaws,
+    metal: &Metal,
+    n: [f64; 3],
+    kappa: [f64; 3],
+) -> Option<Vec<(f64, f64)>> {
+    let index = metal.index_on_grid()?;
+    Some(
+        metal
+            .angles
+            .iter()
+            .map(|angle| {
+                let exact =
+                    colorimetry::colour_of(&laws.colour, &laws.spectrum(&index, angle.cos_i));
+                let rgb = three_channel(laws, angle.cos_i, n, kappa);
+                let delta_e = (laws.colour.delta_e_2000)(lab(exact.lab), lab(rgb.lab));
+                (angle.angle_deg, delta_e)
+            })
+            .collect(),
+    )
 }
 
 /// The worst CIEDE2000 of each method over the angles, per metal: the

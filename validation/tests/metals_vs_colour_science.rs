@@ -74,3 +74,28 @@ fn a_broken_conductor_law_is_caught_in_colour() {
         check.failures
     );
 }
+
+/// A scene's metal is held to its spectrum by the same steps as the
+/// course's gold in the shortcut table: the course's gold `n, κ` through
+/// [`metals::three_channel_delta_e`] gives that table's ΔE at every angle,
+/// to the last bit (the same code, not a copy of it).
+#[test]
+fn a_scenes_three_channel_metal_is_measured_as_the_course_gold() {
+    let laws = MetalLaws::radiometry();
+    let reference = reference();
+    let gold = reference.metals.iter().find(|m| m.name == "gold").unwrap();
+    let measured = metals::three_channel_delta_e(
+        &laws,
+        gold,
+        metals::COURSE_GOLD_N,
+        metals::COURSE_GOLD_KAPPA,
+    )
+    .unwrap();
+    let table: Vec<(f64, f64)> = metals::shortcut_colours(&laws, &reference)
+        .into_iter()
+        .filter(|r| r.metal == "gold" && r.method == "course RGB n, κ (seed 000)")
+        .map(|r| (r.angle_deg, r.delta_e_2000))
+        .collect();
+    assert_eq!(measured.len(), 5, "five angles");
+    assert_eq!(measured, table);
+}

@@ -112,7 +112,11 @@ fn sample() -> (Report, Vec<String>) {
             optimised: true,
         })
         .collect();
-    report.tradeoffs = vec![serde_json::from_str(TRADEOFF).expect("the sample record")];
+    // The findings as the command writes them: those of its rows.
+    let mut record: validation::tradeoff::record::Record =
+        serde_json::from_str(TRADEOFF).expect("the sample record");
+    record.findings = Some(validation::tradeoff::findings::Findings::of(&record));
+    report.tradeoffs = vec![record];
     report.checks.push(validation::tradeoff::checks::check(
         Path::new("docs/tradeoffs/gold_spheres-lambert.json"),
         &Ok(report.tradeoffs[0].clone()),
@@ -132,11 +136,13 @@ const TRADEOFF: &str = r#"{"schema": "optics.tradeoff", "version": 1,
   "truth": {"spp": 64, "noise_relative": 3.56e-5},
   "points": [
     {"axis": "scene", "label": "scene: whitted, max_depth 63, fresnel exact",
+     "settings": {"integrator": "whitted", "max_depth": 63, "fresnel": "exact"},
      "seconds_median": 0.000250786, "rays": 5304.0,
      "errors": {"rel_rmse": 0.1796523927533933, "delta_e_mean": 2.06, "delta_e_p99": 28.047669109095697, "flip_mean": 0.0678083591684686},
      "against_scene": {"rel_rmse": 0.0, "delta_e_mean": 0.0, "delta_e_p99": 0.0, "flip_mean": 0.0},
      "pareto": ["delta_e_mean", "delta_e_p99", "flip_mean"]},
     {"axis": "fresnel", "label": "fresnel schlick",
+     "settings": {"integrator": "whitted", "max_depth": 63, "fresnel": "schlick"},
      "seconds_median": 0.000238, "rays": 5304.0,
      "errors": {"rel_rmse": 0.1791, "delta_e_mean": 2.26, "delta_e_p99": 28.05, "flip_mean": 0.072},
      "against_scene": {"rel_rmse": 0.01, "delta_e_mean": 0.1, "delta_e_p99": 1.21, "flip_mean": 0.01},

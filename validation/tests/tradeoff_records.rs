@@ -6,28 +6,39 @@ use std::path::Path;
 
 use validation::reference::ReferenceError;
 use validation::tradeoff::checks::{check, read, DIR};
+use validation::tradeoff::findings::Findings;
 use validation::tradeoff::record::Record;
 
-/// Two settings whose fronts and verdict are the ones their numbers give.
+/// Two settings whose fronts and verdict are the ones their numbers give
+/// (their findings are added from them: [`with_findings`]).
 const RECORD: &str = r#"{"schema": "optics.tradeoff", "version": 1,
   "scene": "crates/tracer/scenes/gold_spheres.json", "lambert": true, "width": 80, "height": 60,
   "machine": "a machine", "date": "2026-12-04", "load": "", "command": "optics tradeoff",
   "truth": {"spp": 64, "noise_relative": 3.56e-5},
   "points": [
-    {"axis": "scene", "label": "scene", "seconds_median": 0.00025, "rays": 5304.0,
+    {"axis": "scene", "label": "scene", "settings": {"integrator": "whitted", "max_depth": 63, "fresnel": "exact"}, "seconds_median": 0.00025, "rays": 5304.0,
      "errors": {"rel_rmse": 0.18, "delta_e_mean": 2.06, "delta_e_p99": 28.04, "flip_mean": 0.068},
      "against_scene": {"rel_rmse": 0.0, "delta_e_mean": 0.0, "delta_e_p99": 0.0, "flip_mean": 0.0},
      "pareto": ["delta_e_mean", "delta_e_p99", "flip_mean"]},
-    {"axis": "fresnel", "label": "fresnel schlick", "seconds_median": 0.0002, "rays": 5304.0,
+    {"axis": "fresnel", "label": "fresnel schlick", "settings": {"integrator": "whitted", "max_depth": 63, "fresnel": "schlick"}, "seconds_median": 0.0002, "rays": 5304.0,
      "errors": {"rel_rmse": 0.17, "delta_e_mean": 2.26, "delta_e_p99": 28.05, "flip_mean": 0.072},
      "against_scene": {"rel_rmse": 0.01, "delta_e_mean": 0.1, "delta_e_p99": 0.5, "flip_mean": 0.01},
      "pareto": ["rel_rmse", "delta_e_mean", "delta_e_p99", "flip_mean"], "verdict": "worth_it"}
   ]}"#;
 
+/// `value` with the findings its rows give, as the command writes them
+/// (none where its rows do not parse).
+fn with_findings(mut value: serde_json::Value) -> serde_json::Value {
+    if let Ok(record) = serde_json::from_value::<Record>(value.clone()) {
+        value["findings"] = serde_json::to_value(Findings::of(&record)).unwrap();
+    }
+    value
+}
+
 fn record(edit: impl FnOnce(&mut serde_json::Value)) -> Result<Record, ReferenceError> {
     let mut value: serde_json::Value = serde_json::from_str(RECORD).unwrap();
     edit(&mut value);
-    let text = value.to_string();
+    let text = with_findings(value).to_string();
     validation::reference::parse(Path::new("x.json"), &text, "optics.tradeoff")
 }
 
@@ -76,6 +87,24 @@ fn a_flip_beyond_one_or_a_negative_error_fails() {
             .any(|f| f.contains("rel_rmse against the scene is -0.1")),
         "{f:?}"
     );
+}
+
+/// Findings that are not those the rows give fail, and so does a record
+/// without any (written before they were recorded).
+#[test]
+fn findings_the_rows_contradict_fail() {
+    let mut value = with_findings(serde_json::from_str(RECORD).unwrap());
+    value["findings"]["worth_it"] = serde_json::json!([]);
+    let parsed =
+        validation::reference::parse(Path::new("x.json"), &value.to_string(), "optics.tradeoff");
+    let f = check(Path::new("docs/tradeoffs/x.json"), &parsed).failures;
+    assert_eq!(f.len(), 1, "{f:?}");
+    assert!(f[0].contains("not those its rows give"), "{f:?}");
+    let bare: serde_json::Value = serde_json::from_str(RECORD).unwrap();
+    let parsed =
+        validation::reference::parse(Path::new("x.json"), &bare.to_string(), "optics.tradeoff");
+    let f = check(Path::new("docs/tradeoffs/x.json"), &parsed).failures;
+    assert!(f.len() == 1 && f[0].contains("no findings"), "{f:?}");
 }
 
 #[test]
@@ -158,7 +187,7 @@ fn mutations() -> Vec<serde_json::Value> {
 #[test]
 fn fuzz_a_mutated_record_never_passes_with_a_forbidden_number() {
     use proptest::prelude::*;
-    let base: serde_json::Value = serde_json::from_str(RECORD).unwrap();
+    let base = with_findings(serde_json::from_str(RECORD).unwrap());
     let mut paths = Vec::new();
     leaves(&base, String::new(), &mut paths);
     let edits = proptest::collection::vec((0..paths.len(), 0..mutations().len() + 1), 1..=2);

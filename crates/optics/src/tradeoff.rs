@@ -16,6 +16,8 @@
 
 pub(crate) mod distribute;
 pub mod jobs;
+mod metals;
+mod prose;
 mod report;
 pub(crate) mod setup;
 pub mod sweep;
@@ -39,6 +41,7 @@ use measure::Errors;
 use setup::Files;
 pub(crate) use setup::Setup;
 pub(crate) use timing::{render, renders_wanted, Timed, MAX_RENDERS};
+use validation::tradeoff::findings::{Findings, MetalRgb};
 
 #[derive(clap::Args, Debug, Serialize)]
 #[command(after_help = "Examples:
@@ -160,6 +163,22 @@ pub struct Measured {
     /// What the point is against the scene's own settings (none for them).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub verdict: Option<Verdict>,
+    /// The measures over the grazing pixels alone (the scene's own
+    /// settings and the Fresnel law's points, where any pixel grazes).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub grazing: Option<Grazing>,
+}
+
+/// A point's measures over the grazing pixels
+/// ([`validation::tradeoff::findings::GRAZING_COS`]).
+#[derive(Clone, Debug, Serialize)]
+pub struct Grazing {
+    /// How many pixels graze.
+    pub pixels: usize,
+    /// The measures against the truth over them.
+    pub errors: Errors,
+    /// The measures against the scene's own render over them.
+    pub against_scene: Errors,
 }
 
 /// `--min-seconds`: a finite number of seconds, 0 to 60.
@@ -244,6 +263,13 @@ pub struct Sweep {
     pub points: Vec<Measured>,
     /// What was not swept, and why.
     pub skipped: Vec<sweep::Skipped>,
+    /// The colour error of three channels against a spectrum for each of
+    /// the scene's metals, by the harness's measure.
+    pub rgb_against_spectrum: Vec<MetalRgb>,
+    /// What the numbers say of each shortcut, read from the record
+    /// ([`Findings::of`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub findings: Option<Findings>,
     /// Where the renders were run as jobs (`--plan`, `--collect`): absent
     /// for a sweep rendered in one run.
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -287,8 +313,19 @@ pub fn run(args: &TradeoffArgs, ui: &Ui) -> error::Result<()> {
         }
         .into());
     }
-    let sweep = measure_points(setup, args, (&truth, truth_record), timed, provenance);
+    let mut sweep = measure_points(setup, args, (&truth, truth_record), timed, provenance);
+    sweep.findings = Some(findings(&sweep)?);
     report::write_and_show(&sweep, args, ui)
+}
+
+/// What `sweep`'s record says, read as `optics validate` reads it: the
+/// record written, read back ([`validation::tradeoff::record::Record`]),
+/// so the findings are those of the numbers the JSON carries.
+fn findings(sweep: &Sweep) -> error::Result<Findings> {
+    let value = serde_json::to_value(sweep).map_err(ErrorKind::Encode)?;
+    let record: validation::tradeoff::record::Record =
+        serde_json::from_value(value).map_err(ErrorKind::Encode)?;
+    Ok(Findings::of(&record))
 }
 
 /// Every point measured against the truth and against the scene's own
@@ -306,17 +343,37 @@ fn measure_points(
         stem,
         files,
         mask,
+        grazing,
         plan,
         ..
     } = setup;
+    let mut truth_record = truth_record;
+    truth_record.light_noise_relative = Some(truth.light_noise_relative(&mask));
     let mut points = Vec::with_capacity(plan.points.len());
     let mut scene_render: Option<measure::Truth> = None;
+    // The truth's noise per pixel-channel is its mean over the surface,
+    // taken for the grazing pixels too.
+    let grazing_truth = (grazing.count() > 0)
+        .then(|| measure::Truth::new(truth.image.clone(), truth.noise, &grazing));
+    let mut scene_grazing: Option<measure::Truth> = None;
     for (point, timed) in plan.points.into_iter().zip(timed) {
         let errors = measure::errors(&timed.images, truth, &mask);
         // The first point is the scene's own settings.
         let reference =
             scene_render.get_or_insert_with(|| measure::Truth::from_renders(&timed.images, &mask));
         let against_scene = measure::errors(&timed.images, reference, &mask);
+        let grazing = match (&grazing_truth, point.axis) {
+            (Some(truth), sweep::Axis::Scene | sweep::Axis::Fresnel) => {
+                let own = scene_grazing
+                    .get_or_insert_with(|| measure::Truth::from_renders(&timed.images, &grazing));
+                Some(Grazing {
+                    pixels: grazing.count(),
+                    errors: measure::errors(&timed.images, truth, &grazing),
+                    against_scene: measure::errors(&timed.images, own, &grazing),
+                })
+            }
+            _ => None,
+        };
         let seconds_median = median(&timed.seconds);
         let efficiency = errors
             .split
@@ -332,6 +389,7 @@ fn measure_points(
             efficiency,
             pareto: Vec::new(),
             verdict: None,
+            grazing,
         });
     }
     mark_fronts(&mut points);
@@ -355,6 +413,8 @@ fn measure_points(
         truth: truth_record,
         points,
         skipped: plan.skipped,
+        rgb_against_spectrum: metals::rgb_against_spectrum(job.scene()),
+        findings: None,
         collected: provenance.collected,
     }
 }

@@ -112,6 +112,24 @@ fn the_sweep_of_a_scene_is_versioned_and_its_fronts_are_its_own_numbers() {
     let record: Value = serde_json::from_slice(&out.stdout).unwrap();
     assert_eq!(record["law"], "tradeoff");
     assert_eq!(record["details"]["sweep"]["points"], sweep["points"]);
+    // ... and its findings, read from those points: the scene's own
+    // whitted against local, and the light each integrator leaves out,
+    // one minus the light its point carries (to 1e-12: a subtraction).
+    let findings = &record["details"]["sweep"]["findings"];
+    assert_eq!(*findings, sweep["findings"]);
+    assert!(findings["local_against_whitted"].is_object(), "{findings}");
+    let left_out = findings["light_left_out"]["integrators"]
+        .as_array()
+        .unwrap();
+    assert_eq!(left_out[0]["integrator"], "whitted");
+    let carried = points[0]["errors"]["light"].as_f64().unwrap();
+    let left = left_out[0]["left_out"].as_f64().unwrap();
+    assert!((1.0 - carried - left).abs() < 1e-12, "{carried} {left}");
+    assert_eq!(
+        sweep["rgb_against_spectrum"],
+        serde_json::json!([]),
+        "no metal"
+    );
 }
 
 #[test]
@@ -293,4 +311,55 @@ fn the_text_says_what_was_not_swept_and_why_in_both_languages() {
             "{lang}: the multiplying material is named: {text}"
         );
     }
+}
+
+/// A scene with a metal carries the harness's colour error of it: the
+/// gold of `gold_spheres` (the course's `n, κ`, as the tracer holds them
+/// in `f32`) against gold's measured spectrum, the same numbers
+/// `validation::metals::three_channel_delta_e` gives (to 1e-12: JSON
+/// keeps every bit); and its findings read the bounce limit into the
+/// scene's own 63 and Schlick's law against the exact one.
+#[test]
+fn a_metal_scene_carries_its_metals_rgb_error_and_its_depth_and_schlick_findings() {
+    use validation::metals::{self, MetalLaws, MetalsReference};
+    let dir = tempfile::tempdir().unwrap();
+    let out = sweep("gold_spheres", dir.path(), &["--lambert", "--repeats", "1"]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let sweep = read(&dir.path().join("gold_spheres-lambert.json"));
+    let rgb = &sweep["rgb_against_spectrum"][0];
+    assert_eq!(rgb["material"], "gold");
+    assert_eq!(rgb["outcome"], "measured");
+    let reference = MetalsReference::load(&validation::reference::committed_dir()).unwrap();
+    let gold = reference.metals.iter().find(|m| m.name == "gold").unwrap();
+    let f32s = |v: [f64; 3]| v.map(|x| f64::from(x as f32));
+    let want = metals::three_channel_delta_e(
+        &MetalLaws::radiometry(),
+        gold,
+        f32s(metals::COURSE_GOLD_N),
+        f32s(metals::COURSE_GOLD_KAPPA),
+    )
+    .unwrap();
+    let got = rgb["delta_e"].as_array().unwrap();
+    assert_eq!(got.len(), want.len());
+    for (g, (_, w)) in got.iter().zip(&want) {
+        assert!((g.as_f64().unwrap() - w).abs() < 1e-12, "{g} {w}");
+    }
+    let findings = &sweep["findings"];
+    assert_eq!(findings["bounces"]["own"], 63);
+    assert!(
+        findings["bounces"]["steps"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .any(|s| s["to"] == 63),
+        "{findings}"
+    );
+    assert!(
+        findings["schlick"]["shortcut"]["label"] == "fresnel schlick",
+        "{findings}"
+    );
 }

@@ -1,11 +1,12 @@
 //! `optics validate`'s checks of the committed trade-off records: each is
 //! the current version, its every measure is a value the measure can take,
-//! its truth converged, and the fronts and verdicts it carries are the ones
-//! its own numbers give. The records' numbers themselves are the
+//! its truth converged, and the fronts, verdicts and findings it carries
+//! are the ones its own numbers give. The records' numbers themselves are the
 //! renderer's measured trade, shown in the report beside these checks.
 
 use std::path::{Path, PathBuf};
 
+use super::findings::Findings;
 use super::record::{Point, Record};
 use super::{pareto, Verdict, MEASURES, SCHEMA, SCHEMA_VERSION};
 use crate::check::Check;
@@ -65,8 +66,8 @@ pub fn check(file: &Path, record: &Result<Record, ReferenceError>) -> Check {
         &format!("{}, written by `{REGENERATE}`", file.display()),
         &format!(
             "schema {SCHEMA} version {SCHEMA_VERSION}; every measure finite, ≥ 0 and ꟻLIP ≤ 1; \
-             the truth's relative noise ≤ {UNCONVERGED}; the fronts and verdicts recorded are those \
-             the recorded times and errors give"
+             the truth's relative noise ≤ {UNCONVERGED}; the fronts, verdicts and findings recorded \
+             are those the recorded times and errors give"
         ),
     );
     let record = match record {
@@ -104,6 +105,15 @@ pub fn check(file: &Path, record: &Result<Record, ReferenceError>) -> Check {
     }
     fronts(&mut check, &record.points);
     verdicts(&mut check, base, &record.points[1..]);
+    match &record.findings {
+        Some(recorded) if *recorded == Findings::of(record) => {}
+        Some(_) => {
+            check.fail("the findings recorded are not those its rows give: regenerate".to_owned())
+        }
+        None => check.fail(format!(
+            "no findings: written before they were recorded; regenerate with `{REGENERATE}`"
+        )),
+    }
     check.measure(
         "the scene's own settings: relative RMSE from all the light",
         base.errors.rel_rmse,

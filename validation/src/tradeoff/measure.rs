@@ -68,6 +68,9 @@ pub struct Truth {
     pub noise: f64,
     /// `Σ t²` over the surface pixel-channels.
     energy: f64,
+    /// `Σ t` over the surface pixel-channels: the light the measures of
+    /// what a render leaves out are shares of.
+    light: f64,
 }
 
 impl Truth {
@@ -116,10 +119,12 @@ impl Truth {
     /// `image` with a known mean variance per surface pixel-channel.
     pub fn new(image: Image, noise: f64, mask: &Mask) -> Self {
         let energy = mask.kept().map(|i| squared(image.pixels[i])).sum();
+        let light = mask.kept().map(|i| summed(image.pixels[i])).sum();
         Truth {
             image,
             noise,
             energy,
+            light,
         }
     }
 
@@ -134,6 +139,14 @@ impl Truth {
     pub fn noise_relative(&self, mask: &Mask) -> f64 {
         self.noise * 3.0 * mask.count() as f64 / self.energy.max(f64::MIN_POSITIVE)
     }
+
+    /// The standard deviation of `Σ t` from the truth's own noise,
+    /// relative to `Σ t`: `√(Σ σ²) / Σ t`, its pixels' noises taken as
+    /// independent. The floor under every share of the light measured
+    /// against it ([`Errors::light`]).
+    pub fn light_noise_relative(&self, mask: &Mask) -> f64 {
+        (self.noise * 3.0 * mask.count() as f64).sqrt() / self.light.max(f64::MIN_POSITIVE)
+    }
 }
 
 /// The measures of one setting.
@@ -147,6 +160,14 @@ pub struct Errors {
     pub delta_e_p99: f64,
     /// Mean LDR ꟻLIP of the displayed image over the surface pixels.
     pub flip_mean: f64,
+    /// The light the render carries as a share of the truth's, `Σ x / Σ t`
+    /// over the surface pixel-channels of linear radiance (the mean over
+    /// its renders): `1 − light` is what it leaves out.
+    pub light: f64,
+    /// The standard error of `light` from the renders' own noise, where
+    /// there are several (their sample deviation over `√n`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub light_noise: Option<f64>,
     /// The Monte Carlo split, for settings rendered with several seeds.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub split: Option<Split>,
@@ -186,6 +207,18 @@ pub fn errors(images: &[Image], truth: &Truth, mask: &Mask) -> Errors {
         .sum::<f64>()
         / n;
     let floor = truth.noise * channels;
+    let shares: Vec<f64> = images
+        .iter()
+        .map(|image| {
+            mask.kept().map(|i| summed(image.pixels[i])).sum::<f64>()
+                / truth.light.max(f64::MIN_POSITIVE)
+        })
+        .collect();
+    let light = shares.iter().sum::<f64>() / n;
+    let light_noise = (images.len() >= 2).then(|| {
+        let spread = shares.iter().map(|s| (s - light).powi(2)).sum::<f64>() / (n - 1.0);
+        (spread / n).sqrt()
+    });
     let split = (images.len() >= 2).then(|| {
         let variance = mask
             .kept()
@@ -228,6 +261,8 @@ pub fn errors(images: &[Image], truth: &Truth, mask: &Mask) -> Errors {
         delta_e_mean,
         delta_e_p99,
         flip_mean,
+        light,
+        light_noise,
         split,
     }
 }
@@ -257,6 +292,11 @@ fn displayed(image: &Image, mask: &Mask) -> Vec<radiometry::colour::Lab> {
 
 fn squared(v: Vec3) -> f64 {
     v.as_dvec3().length_squared()
+}
+
+/// The sum of the three channels, in `f64`.
+fn summed(v: Vec3) -> f64 {
+    v.as_dvec3().element_sum()
 }
 
 #[cfg(test)]
@@ -395,6 +435,30 @@ mod tests {
         let noiseless = Truth::new(truth.image.clone(), 0.0, &mask);
         let e = errors(&[grey(&[0.6, 0.6])], &noiseless, &mask);
         assert!((e.rel_rmse - 0.2).abs() < 1e-6, "{}", e.rel_rmse);
+    }
+
+    /// The light a render carries is `Σ x / Σ t` over the kept channels,
+    /// the mean over its renders, with their standard error: renders at
+    /// 0.5 and 0.7 of a truth of 2 carry 0.6 ± 0.1 (to 1e-6: `f32`
+    /// pixels). The truth's Σt (12) is not its Σt² (24).
+    #[test]
+    fn the_light_carried_is_the_share_of_the_truths_sum() {
+        let mask = Mask::from_hits(&[Some(0), Some(0), None]);
+        let truth = Truth::new(grey(&[2.0, 2.0, 9.0]), 0.0, &mask);
+        let one = errors(&[grey(&[0.5, 1.5, 0.0])], &truth, &mask);
+        assert!((one.light - 0.5).abs() < 1e-6, "{}", one.light);
+        assert_eq!(one.light_noise, None);
+        let two = errors(
+            &[grey(&[1.0, 1.0, 0.0]), grey(&[1.4, 1.4, 0.0])],
+            &truth,
+            &mask,
+        );
+        assert!((two.light - 0.6).abs() < 1e-6, "{}", two.light);
+        assert!(
+            (two.light_noise.unwrap() - 0.1).abs() < 1e-6,
+            "{:?}",
+            two.light_noise
+        );
     }
 
     /// sRGB (255, 0, 0) against black: colour-science 0.4 gives ΔE2000

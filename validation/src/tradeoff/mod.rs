@@ -3,12 +3,14 @@
 //! reads it ([`record`]), the fixed error measures ([`measure`]), the
 //! Pareto front ([`pareto`]), the accuracy budget's prediction
 //! ([`budget`]), the verdict on a
-//! shortcut ([`Verdict`]), and the checks `optics validate` makes of the
+//! shortcut ([`Verdict`]) and what a scene's sweep says of each
+//! ([`findings`]), and the checks `optics validate` makes of the
 //! committed records (`docs/tradeoffs/*.json`, written by
 //! `docs/tradeoffs/make`): [`checks`].
 
 pub mod budget;
 pub mod checks;
+pub mod findings;
 pub mod measure;
 pub mod pareto;
 pub mod record;

@@ -4,6 +4,7 @@
 
 use serde::{Deserialize, Serialize};
 
+use super::findings::{Findings, MetalRgb};
 use super::Verdict;
 
 /// One scene's sweep.
@@ -35,6 +36,14 @@ pub struct Record {
     pub truth: Truth,
     /// Every setting measured, the scene's own first.
     pub points: Vec<Point>,
+    /// The colour error of three channels against a spectrum for each of
+    /// the scene's metals, by the harness's code (`metals.*`).
+    #[serde(default)]
+    pub rgb_against_spectrum: Vec<MetalRgb>,
+    /// What the numbers say of each shortcut ([`Findings::of`]), as the
+    /// command wrote it.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub findings: Option<Findings>,
 }
 
 /// The ground truth a record measures against.
@@ -44,6 +53,10 @@ pub struct Truth {
     pub spp: u32,
     /// Its own noise relative to the image (from its two halves).
     pub noise_relative: f64,
+    /// The standard deviation of its light `Σ t` over the surface
+    /// pixel-channels, relative: the floor under each share of the light.
+    #[serde(default)]
+    pub light_noise_relative: Option<f64>,
 }
 
 /// One setting, measured.
@@ -53,6 +66,8 @@ pub struct Point {
     pub axis: String,
     /// The setting in words.
     pub label: String,
+    /// The settings rendered (the fields the findings read).
+    pub settings: Settings,
     /// The median render time, s.
     pub seconds_median: f64,
     /// Rays cast by one render.
@@ -69,6 +84,33 @@ pub struct Point {
     /// The verdict against the scene's own settings (none for them).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub verdict: Option<Verdict>,
+    /// The measures over the grazing pixels alone, for the points of the
+    /// Fresnel law.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub grazing: Option<Grazing>,
+}
+
+/// A point's settings, as far as the findings read them.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub struct Settings {
+    /// The integrator (`whitted`, `path`, ...).
+    pub integrator: String,
+    /// The bounce limit.
+    pub max_depth: u32,
+    /// The Fresnel law (`exact`, `schlick`, `course`).
+    pub fresnel: String,
+}
+
+/// The measures over the pixels whose centre first meets a mirror or
+/// glass at a cosine below [`super::findings::GRAZING_COS`].
+#[derive(Clone, Copy, Debug, Serialize, Deserialize)]
+pub struct Grazing {
+    /// How many pixels.
+    pub pixels: usize,
+    /// The measures against the truth over them.
+    pub errors: Errors,
+    /// The measures against the scene's own render over them.
+    pub against_scene: Errors,
 }
 
 /// The fixed measures ([`super::MEASURES`]).
@@ -82,6 +124,14 @@ pub struct Errors {
     pub delta_e_p99: f64,
     /// Mean LDR ꟻLIP over the surface pixels.
     pub flip_mean: f64,
+    /// The light carried as a share of the reference's, `Σ x / Σ t`
+    /// (absent from records written before it was measured).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub light: Option<f64>,
+    /// The standard error of `light` from the setting's own renders,
+    /// where it was rendered with several seeds.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub light_noise: Option<f64>,
 }
 
 impl Errors {

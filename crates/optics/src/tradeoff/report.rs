@@ -9,7 +9,7 @@ use validation::checkout::Checkout;
 use validation::pipeline::PipelineError;
 use validation::python::{run_tool, Task, ToolError};
 
-use super::{Measured, Sweep, TradeoffArgs, Verdict, UNCONVERGED};
+use super::{prose, Measured, Sweep, TradeoffArgs, Verdict, UNCONVERGED};
 use crate::error::{self, ErrorKind};
 use crate::lang::{say, Lang};
 use crate::record::{Answer, Record};
@@ -156,6 +156,11 @@ pub fn markdown(sweep: &Sweep, stem: &str) -> String {
             front_marks(p),
         );
     }
+    if let Some(findings) = &sweep.findings {
+        out += "\n**What the numbers say.** ";
+        out += &prose::sentences(findings, Lang::En).join(" ");
+        out += "\n";
+    }
     out += "\nAgainst the scene's own settings (time ratio; ΔE2000 p99 against their render):\n\n";
     for line in verdicts(sweep) {
         out += &format!("- {line}\n");
@@ -246,6 +251,13 @@ pub fn write_and_show(sweep: &Sweep, args: &TradeoffArgs, ui: &Ui) -> error::Res
         .set_answer(Answer::List(written), None);
     for line in table(sweep, lang) {
         record.step(|| line);
+    }
+    for sentence in sweep
+        .findings
+        .iter()
+        .flat_map(|f| prose::sentences(f, lang))
+    {
+        record.step(|| sentence);
     }
     record.step(|| {
         say!(

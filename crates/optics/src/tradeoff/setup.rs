@@ -4,7 +4,9 @@
 
 use std::path::{Path, PathBuf};
 
+use tracer::integrator::Tracer;
 use tracer::job::{Overrides, RenderJob};
+use validation::tradeoff::findings::GRAZING_COS;
 
 use super::measure::Mask;
 use super::{jobs, sweep, truth, TradeoffArgs};
@@ -33,6 +35,9 @@ pub(crate) struct Setup {
     pub files: Files,
     /// The surface pixels.
     pub mask: Mask,
+    /// The grazing pixels: those whose centre first meets a mirror or
+    /// glass at a cosine below [`GRAZING_COS`].
+    pub grazing: Mask,
     /// The sweep's points.
     pub plan: sweep::Plan,
     /// What the plan is made of.
@@ -82,6 +87,7 @@ impl Setup {
         Ok(Setup {
             files: Files::new(&args.out, &stem),
             mask: Mask::from_hits(&job.first_hits()),
+            grazing: grazing(&job),
             plan: sweep::plan(&job, args.spp),
             gain,
             stem,
@@ -104,6 +110,25 @@ impl Setup {
             fresh: args.fresh,
         }
     }
+}
+
+/// The pixels whose centre's ray first meets a mirror or glass at a
+/// cosine below [`GRAZING_COS`] to its shading normal: where Schlick's
+/// law is read apart. One intersection a pixel, as the surface mask.
+fn grazing(job: &RenderJob) -> Mask {
+    let scene = job.scene();
+    let tracer = Tracer::new(scene, *job.settings(), job.machinery().clone());
+    let hits: Vec<Option<u32>> = (0..scene.height)
+        .flat_map(|y| (0..scene.width).map(move |x| (x, y)))
+        .map(|(x, y)| {
+            let ray = scene.camera.ray(x, y);
+            let hit = tracer.intersect(&ray)?;
+            let specular = scene.materials[hit.material as usize].is_specular();
+            let cos = f64::from(hit.shading.dot(ray.direction).abs());
+            (specular && cos < GRAZING_COS).then_some(hit.object)
+        })
+        .collect();
+    Mask::from_hits(&hits)
 }
 
 /// Where a sweep writes.

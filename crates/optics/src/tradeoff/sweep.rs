@@ -136,7 +136,7 @@ pub fn plan(job: &RenderJob, spp: u32) -> Plan {
     let recursive = matches!(needs.reflection_depth, ReflectionDepth::UpToMaxDepth(_))
         || base.integrator.samples();
     if recursive {
-        for depth in [0, 1, 2, 3, 4, 6, 8, 11, 16, 32, 64] {
+        for depth in [0, 1, 2, 3, 4, 6, 8, 10, 11, 16, 32, 64] {
             let spec = RenderSpec {
                 max_depth: Some(f64::from(depth)),
                 ..RenderSpec::default()
@@ -248,8 +248,8 @@ pub fn plan(job: &RenderJob, spp: u32) -> Plan {
     }
     skipped.push(Skipped {
         axis: "RGB against spectrum",
-        why: "the tracer has no spectral mode; `optics validate` measures what three channels cost each metal's colour (metals.*)",
-            why_hu: "a követőnek nincs spektrális módja; az `optics validate` méri, mennyibe kerül fémenként a három csatorna (metals.*)",
+        why: "in the image: the tracer has no spectral mode; what three channels cost the colour of the scene's metals, by the harness's measure (metals.*), is stated apart",
+            why_hu: "a képen: a követőnek nincs spektrális módja; hogy mennyibe kerül a három csatorna a jelenet fémeinek színében, azt a mérőcsomag mércéje (metals.*) külön mondja",
     });
     Plan { points, skipped }
 }

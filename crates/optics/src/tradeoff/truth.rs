@@ -29,6 +29,10 @@ pub struct TruthRecord {
     pub noise_relative: f64,
     /// Its variance per surface pixel-channel (mean).
     pub noise: f64,
+    /// The standard deviation of its light `Σ t` over the surface
+    /// pixel-channels, relative (set by the sweep from the image).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub light_noise_relative: Option<f64>,
     /// Whether it was read from the cache rather than rendered now.
     #[serde(default)]
     pub cached: bool,
@@ -117,6 +121,7 @@ impl Cache {
             seconds,
             noise_relative: truth.noise_relative(mask),
             noise: truth.noise,
+            light_noise_relative: None,
             cached: false,
             key: self.key,
             file: self.image_path.display().to_string(),
