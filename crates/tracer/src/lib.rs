@@ -41,6 +41,7 @@
 //! | [`spawn`] | where secondary rays start: the hit's error bound, or the course's fixed epsilon |
 //! | [`integrator`] | `local`, `whitted`, `path`, `photon` (the path tracer plus a caustic photon map) and the course shader's loop, one file each, and the shared scatter step |
 //! | [`needs`] | what a scene needs, so the renderer runs only that |
+//! | [`trap`] | the rays a mirror tube holds until their depth runs out, whose paths end early |
 //! | [`chains`] | which delta lights reach a rough surface through mirrors or glass: the light no integrator computes |
 //! | [`render`] | the image, in parallel, identical for any thread count |
 //! | [`sampler`] | the camera paths' numbers: Owen-scrambled Sobol pairs, each pixel's samples stratified in every pair of dimensions |
@@ -78,3 +79,4 @@ pub mod rng;
 pub mod sampler;
 pub mod scene;
 pub mod spawn;
+pub mod trap;

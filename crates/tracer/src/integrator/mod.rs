@@ -24,6 +24,7 @@ use crate::geometry::{Hit, Object, Ray};
 use crate::sampler::Sample;
 use crate::scene::faults::{self, Fault};
 use crate::scene::{IntegratorKind, Scene, Settings};
+use crate::trap::Trap;
 
 pub mod course;
 pub mod direct;
@@ -95,6 +96,9 @@ pub struct Machinery {
     pub lights: Vec<bool>,
     /// Samples per pixel actually taken (1 when every path is deterministic).
     pub spp: u32,
+    /// The mirror tube whose held rays end a camera path (`path` and
+    /// `photon`; see [`crate::trap`]): the rest of such a path adds nothing.
+    pub trap: Option<Trap>,
 }
 
 impl Machinery {
@@ -104,6 +108,7 @@ impl Machinery {
             shadow_rays: true,
             lights: vec![true; scene.lights.len()],
             spp: settings.spp,
+            trap: None,
         }
     }
 }

@@ -77,6 +77,16 @@ impl Tracer<'_> {
                     (lobe.ray, lobe.bounce)
                 }
             };
+            // A ray the mirror tube holds meets nothing else again: the
+            // rest of the path adds nothing to `sum` (`crate::trap`).
+            if self
+                .machinery
+                .trap
+                .as_ref()
+                .is_some_and(|t| t.holds(&next.0))
+            {
+                return sum;
+            }
             depth += 1;
             counts.bounce(next.1, depth);
             // Drawn whether or not the roulette is played, so that the next
