@@ -16,7 +16,7 @@ use super::photon::Pass;
 use super::scatter::{Bounce, Lobe, Surface};
 use super::{cosine_sample, RayCounts, Tracer};
 use crate::geometry::{Hit, Ray};
-use crate::sampler::Sample;
+use crate::sampler::{Sample, Slot1d};
 use crate::scene::Material;
 use crate::spawn;
 
@@ -72,7 +72,7 @@ impl Tracer<'_> {
                     if depth >= self.settings.max_depth {
                         return sum;
                     }
-                    let u = sample.next_1d();
+                    let u = sample.take_1d();
                     let lobe = self.one_lobe(&hit, n, wo, material, u, &mut beta);
                     (lobe.ray, lobe.bounce)
                 }
@@ -89,9 +89,10 @@ impl Tracer<'_> {
             }
             depth += 1;
             counts.bounce(next.1, depth);
-            // Drawn whether or not the roulette is played, so that the next
-            // vertex's slots are the same for every sample.
-            let roulette = sample.next_1d();
+            // Taken whether or not the roulette is played, so that the next
+            // vertex's slots are the same for every sample; its number is
+            // worked out only where it is played.
+            let roulette = sample.take_1d();
             let peak = beta.max_element();
             if peak <= 0.0 {
                 return sum;
@@ -100,7 +101,7 @@ impl Tracer<'_> {
                 // Russian roulette: survive with probability peak / cutoff and
                 // carry 1 / probability, so the estimate stays unbiased.
                 let survive = peak / self.settings.throughput_cutoff;
-                if roulette >= survive {
+                if roulette.value() >= survive {
                     return sum;
                 }
                 beta /= survive;
@@ -111,18 +112,18 @@ impl Tracer<'_> {
 
     /// One lobe of a smooth surface, its weight folded into `beta`. With a
     /// refracted lobe, the branch is chosen with probability R, so that the
-    /// Fresnel weight cancels (`u`, uniform in `[0, 1)`, picks it). With the
+    /// Fresnel weight cancels (`u`'s number, uniform in `[0, 1)`, picks it). With the
     /// mirror lobe alone (a conductor, or total internal reflection) it is
     /// certain and carries its weight itself (under total internal
     /// reflection 1 for the exact law and Schlick; the course's formula
-    /// gives less).
+    /// gives less), and `u`'s number is not worked out.
     fn one_lobe(
         &self,
         hit: &Hit,
         n: Vec3,
         wo: Vec3,
         material: &Material,
-        u: f32,
+        u: Slot1d,
         beta: &mut Vec3,
     ) -> Lobe {
         let lobes = self.lobes(hit, n, wo, material);
@@ -131,7 +132,7 @@ impl Tracer<'_> {
                 *beta *= lobes.reflection.weight;
                 lobes.reflection
             }
-            Some((refracted, reflectance)) if u >= reflectance => {
+            Some((refracted, reflectance)) if u.value() >= reflectance => {
                 *beta *= refracted.weight / (1.0 - reflectance);
                 refracted
             }
