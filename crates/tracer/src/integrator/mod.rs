@@ -30,6 +30,7 @@ pub mod course;
 pub mod direct;
 pub mod local;
 pub mod path;
+mod pending;
 pub mod photon;
 pub mod scatter;
 mod shortcut;

@@ -12,6 +12,7 @@
 
 use glam::Vec3;
 
+use super::pending::{roulette, Pending};
 use super::photon::Pass;
 use super::scatter::{Bounce, Lobe, Surface};
 use super::{cosine_sample, RayCounts, Tracer};
@@ -32,16 +33,31 @@ impl Tracer<'_> {
         let mut beta = Vec3::ONE;
         let mut sum = Vec3::ZERO;
         let mut depth = 0;
+        // Conductor bounces are weighed where `beta` is next used.
+        let mut pending = Pending::new();
         loop {
             let Some(hit) = self.intersect(&ray) else {
+                let Some(beta) = pending.settle(self, beta) else {
+                    return sum;
+                };
                 return sum + beta * self.scene.escaped(ray.direction);
             };
             let material = &self.scene.materials[hit.material as usize];
             let wo = -ray.direction;
             let n = hit.shading_normal(ray.direction);
+            let mut conductor = None;
             let next = match material.surface(&hit) {
-                Surface::Shows(radiance) => return sum + beta * radiance,
+                Surface::Shows(radiance) => {
+                    let Some(beta) = pending.settle(self, beta) else {
+                        return sum;
+                    };
+                    return sum + beta * radiance;
+                }
                 Surface::Rough => {
+                    let Some(settled) = pending.settle(self, beta) else {
+                        return sum;
+                    };
+                    beta = settled;
                     sum += beta * self.direct(&hit, n, wo, material, counts);
                     if let Some(pass) = caustics {
                         let bounces = self.settings.max_depth.saturating_sub(depth);
@@ -73,8 +89,17 @@ impl Tracer<'_> {
                         return sum;
                     }
                     let u = sample.take_1d();
-                    let lobe = self.one_lobe(&hit, n, wo, material, u, &mut beta);
-                    (lobe.ray, lobe.bounce)
+                    if let Some((ray, cos_i)) = self.conductor_mirror(&hit, n, wo, material) {
+                        conductor = Some((cos_i, material));
+                        (ray, Bounce::Reflection)
+                    } else {
+                        let Some(settled) = pending.settle(self, beta) else {
+                            return sum;
+                        };
+                        beta = settled;
+                        let lobe = self.one_lobe(&hit, n, wo, material, u, &mut beta);
+                        (lobe.ray, lobe.bounce)
+                    }
                 }
             };
             // A ray the mirror tube holds meets nothing else again: the
@@ -92,20 +117,15 @@ impl Tracer<'_> {
             // Taken whether or not the roulette is played, so that the next
             // vertex's slots are the same for every sample; its number is
             // worked out only where it is played.
-            let roulette = sample.take_1d();
-            let peak = beta.max_element();
-            if peak <= 0.0 {
+            let number = sample.take_1d();
+            let played = match conductor {
+                Some((cos_i, material)) => pending.push(self, (cos_i, material, number), beta),
+                None => roulette(beta, number, self.settings.throughput_cutoff),
+            };
+            let Some(played) = played else {
                 return sum;
-            }
-            if peak < self.settings.throughput_cutoff {
-                // Russian roulette: survive with probability peak / cutoff and
-                // carry 1 / probability, so the estimate stays unbiased.
-                let survive = peak / self.settings.throughput_cutoff;
-                if roulette.value() >= survive {
-                    return sum;
-                }
-                beta /= survive;
-            }
+            };
+            beta = played;
             ray = next.0;
         }
     }
