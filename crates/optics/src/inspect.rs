@@ -169,6 +169,15 @@ fn skipped_parts(job: &RenderJob) -> Vec<(&'static str, Machinery)> {
             },
         ));
     }
+    if lean.trap.is_some() {
+        parts.push((
+            "held_paths",
+            Machinery {
+                trap: None,
+                ..lean.clone()
+            },
+        ));
+    }
     if parts.len() > 1 {
         parts.push(("all", everything));
     }

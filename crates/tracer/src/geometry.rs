@@ -206,18 +206,8 @@ impl<V: Vector> Plane<V> {
     /// The hit in `(t_min, ray.t_max)` from either side; rays parallel to
     /// the plane (including those lying in it) miss.
     pub fn intersect(&self, ray: &Ray<V>, t_min: V::Scalar) -> Option<Hit<V>> {
-        let denom = self.normal.dot(ray.direction);
-        if denom == V::Scalar::lit(0.0) {
-            return None;
-        }
-        let t = (self.point - ray.origin).dot(self.normal) / denom;
-        if !(t > t_min && t < ray.t_max) {
-            return None;
-        }
-        let p = ray.at(t);
-        // Re-projection onto the plane along its normal.
-        let point = p - self.normal * (p - self.point).dot(self.normal);
-        let error = V::Scalar::gamma(8) * point.abs().max(self.point.abs()).max_element();
+        let t = self.parameter(ray, t_min, ray.t_max)?;
+        let (point, error) = self.surface_point(ray, t);
         Some(Hit {
             t,
             point,
@@ -228,6 +218,26 @@ impl<V: Vector> Plane<V> {
             material: self.material,
             object: 0,
         })
+    }
+
+    /// The ray parameter of the plane in `(t_min, t_max)`, or `None`.
+    fn parameter(&self, ray: &Ray<V>, t_min: V::Scalar, t_max: V::Scalar) -> Option<V::Scalar> {
+        let denom = self.normal.dot(ray.direction);
+        if denom == V::Scalar::lit(0.0) {
+            return None;
+        }
+        let t = (self.point - ray.origin).dot(self.normal) / denom;
+        (t > t_min && t < t_max).then_some(t)
+    }
+
+    /// The point at `t` re-projected onto the plane along its normal, and
+    /// the bound on its error.
+    fn surface_point(&self, ray: &Ray<V>, t: V::Scalar) -> (V, V::Scalar) {
+        let p = ray.at(t);
+        // Re-projection onto the plane along its normal.
+        let point = p - self.normal * (p - self.point).dot(self.normal);
+        let error = V::Scalar::gamma(8) * point.abs().max(self.point.abs()).max_element();
+        (point, error)
     }
 }
 
@@ -301,26 +311,44 @@ impl<V: Vector> Tube<V> {
         }
     }
 
-    /// The nearest hit on any strip, from either side.
+    /// The nearest hit on any strip, from either side. Each side's hit is
+    /// worked out as [`Plane::intersect`] does, bit for bit, and the
+    /// nearest one alone becomes a [`Hit`].
     pub fn intersect(&self, ray: &Ray<V>, t_min: V::Scalar) -> Option<Hit<V>> {
-        let mut best: Option<Hit<V>> = None;
-        for ((face, mid), tangent) in self.faces.iter().zip(&self.midpoints).zip(&self.tangents) {
-            let bounded = Ray {
-                t_max: best.map_or(ray.t_max, |h| h.t),
-                ..*ray
+        let mut best: Option<(usize, V::Scalar, V, V::Scalar)> = None;
+        for (i, ((face, mid), tangent)) in self
+            .faces
+            .iter()
+            .zip(&self.midpoints)
+            .zip(&self.tangents)
+            .enumerate()
+        {
+            let t_max = best.map_or(ray.t_max, |(_, t, _, _)| t);
+            let Some(t) = face.parameter(ray, t_min, t_max) else {
+                continue;
             };
-            if let Some(hit) = face.intersect(&bounded, t_min) {
-                // On the strip: within half a side of the side's midline.
-                // A hit exactly on an edge belongs to both strips; the
-                // small slack keeps rays into a corner from slipping through.
-                let along = (hit.point - *mid).dot(*tangent).abs();
-                let slack = V::Scalar::lit(1.0) + V::Scalar::lit(4.0) * V::Scalar::epsilon();
-                if along <= self.half_side * slack + hit.error {
-                    best = Some(hit);
-                }
+            let (point, error) = face.surface_point(ray, t);
+            // On the strip: within half a side of the side's midline.
+            // A hit exactly on an edge belongs to both strips; the
+            // small slack keeps rays into a corner from slipping through.
+            let along = (point - *mid).dot(*tangent).abs();
+            let slack = V::Scalar::lit(1.0) + V::Scalar::lit(4.0) * V::Scalar::epsilon();
+            if along <= self.half_side * slack + error {
+                best = Some((i, t, point, error));
             }
         }
-        best
+        let (i, t, point, error) = best?;
+        let face = &self.faces[i];
+        Some(Hit {
+            t,
+            point,
+            error,
+            normal: face.normal,
+            shading: face.normal,
+            two_sided: true,
+            material: face.material,
+            object: 0,
+        })
     }
 }
 

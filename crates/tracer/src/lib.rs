@@ -42,6 +42,7 @@
 //! | [`tier`] | the precision tier, `f32` or `f64`: the scalar and vector the geometry and the deterministic integrators are written over |
 //! | [`integrator`] | `local`, `whitted`, `path`, `photon` (the path tracer plus a caustic photon map) and the course shader's loop, one file each, and the shared scatter step |
 //! | [`needs`] | what a scene needs, so the renderer runs only that |
+//! | [`trap`] | the rays a mirror tube holds until their depth runs out, whose paths end early |
 //! | [`chains`] | which delta lights reach a rough surface through mirrors or glass: the light no integrator computes |
 //! | [`render`] | the image, in parallel, identical for any thread count |
 //! | [`sampler`] | the camera paths' numbers: Owen-scrambled Sobol pairs, each pixel's samples stratified in every pair of dimensions |
@@ -87,3 +88,4 @@ pub mod sampler;
 pub mod scene;
 pub mod spawn;
 pub mod tier;
+pub mod trap;

@@ -17,6 +17,7 @@ use serde::Serialize;
 use crate::geometry::{Object, Tube};
 use crate::integrator::Machinery;
 use crate::scene::{IntegratorKind, Light, Material, PixelFilter, Scene, Settings};
+use crate::trap::Trap;
 
 /// How deep specular recursion can go in a scene.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
@@ -105,6 +106,9 @@ pub struct Needs {
     /// Whether the path tracer's paths are all deterministic, so one sample
     /// per pixel is the converged image.
     pub deterministic: bool,
+    /// The mirror tube that holds the rays moving away from everything
+    /// else, whose camera paths end there (`path` and `photon` only).
+    pub trap: Option<Trap>,
 }
 
 /// Analyses `scene` for `settings`.
@@ -177,6 +181,10 @@ pub fn analyse(scene: &Scene, settings: &Settings) -> Needs {
             _ => false,
         };
     let deterministic = !(refraction || random_at_rough);
+    let trap = match settings.integrator {
+        IntegratorKind::Path | IntegratorKind::Photon => Trap::of(scene),
+        _ => None,
+    };
     Needs {
         reflection_depth,
         refraction,
@@ -185,6 +193,7 @@ pub fn analyse(scene: &Scene, settings: &Settings) -> Needs {
         shadows,
         lights,
         deterministic,
+        trap,
     }
 }
 
@@ -241,6 +250,7 @@ impl Needs {
             } else {
                 1
             },
+            trap: self.trap.clone(),
         }
     }
 }

@@ -85,11 +85,22 @@ impl Sample {
     /// the slot's pair, so a pixel's first `2^m` samples of one slot put one
     /// number in each interval of length `2^-m`.
     pub fn next_1d(&mut self) -> f32 {
-        let seeds = self.next_seeds();
-        unit(owen_scramble(
-            sobol_0(shuffled(self.index, seeds[0])),
-            seeds[1],
-        ))
+        self.take_1d().value()
+    }
+
+    /// The next slot, counted now, its number worked out only if asked
+    /// ([`Slot1d::value`], the bits of [`Sample::next_1d`]): a path takes
+    /// its slots in the same order whatever it meets, but uses some of
+    /// their numbers only on some surfaces (a lobe choice at glass, not
+    /// at a conductor; the roulette number where the roulette is played).
+    pub fn take_1d(&mut self) -> Slot1d {
+        let slot = Slot1d {
+            key: self.key,
+            index: self.index,
+            slot: self.slot,
+        };
+        self.slot += 1;
+        slot
     }
 
     /// How many slots this sample has drawn.
@@ -97,14 +108,41 @@ impl Sample {
         self.slot
     }
 
-    /// The three 32-bit seeds of the next slot (the index's shuffle and the
-    /// two coordinates' scrambles), and the slot counted.
+    /// The three seeds of the next slot, and the slot counted.
     fn next_seeds(&mut self) -> [u32; 3] {
-        let h = splitmix64(self.key ^ self.slot as u64);
+        let seeds = slot_seeds(self.key, self.slot);
         self.slot += 1;
-        let g = splitmix64(h);
-        [h as u32, (h >> 32) as u32, g as u32]
+        seeds
     }
+}
+
+/// A slot of one sample, taken in order by [`Sample::take_1d`], its
+/// number not yet worked out.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Slot1d {
+    key: u64,
+    index: u32,
+    slot: u32,
+}
+
+impl Slot1d {
+    /// The slot's number, uniform in `[0, 1)`: what [`Sample::next_1d`]
+    /// would have drawn there.
+    pub fn value(&self) -> f32 {
+        let seeds = slot_seeds(self.key, self.slot);
+        unit(owen_scramble(
+            sobol_0(shuffled(self.index, seeds[0])),
+            seeds[1],
+        ))
+    }
+}
+
+/// The three 32-bit seeds of slot `slot` of a pixel's samples (the
+/// index's shuffle and the two coordinates' scrambles).
+fn slot_seeds(key: u64, slot: u32) -> [u32; 3] {
+    let h = splitmix64(key ^ slot as u64);
+    let g = splitmix64(h);
+    [h as u32, (h >> 32) as u32, g as u32]
 }
 
 /// The sample index seen by one slot: a nested uniform scramble of `index`

@@ -30,11 +30,13 @@ use crate::scene::faults::{self, Fault};
 use crate::scene::model::World;
 use crate::scene::{IntegratorKind, Scene, Settings};
 use crate::tier::Vector;
+use crate::trap::Trap;
 
 pub mod course;
 pub mod direct;
 pub mod local;
 pub mod path;
+mod pending;
 pub mod photon;
 pub mod scatter;
 mod shortcut;
@@ -101,6 +103,9 @@ pub struct Machinery {
     pub lights: Vec<bool>,
     /// Samples per pixel actually taken (1 when every path is deterministic).
     pub spp: u32,
+    /// The mirror tube whose held rays end a camera path (`path` and
+    /// `photon`; see [`crate::trap`]): the rest of such a path adds nothing.
+    pub trap: Option<Trap>,
 }
 
 impl Machinery {
@@ -110,6 +115,7 @@ impl Machinery {
             shadow_rays: true,
             lights: vec![true; scene.lights.len()],
             spp: settings.spp,
+            trap: None,
         }
     }
 }

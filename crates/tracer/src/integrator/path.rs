@@ -12,11 +12,12 @@
 
 use glam::Vec3;
 
+use super::pending::{roulette, Pending};
 use super::photon::Pass;
 use super::scatter::{Bounce, Lobe, Surface};
 use super::{cosine_sample, RayCounts, Tracer};
 use crate::geometry::{Hit, Ray};
-use crate::sampler::Sample;
+use crate::sampler::{Sample, Slot1d};
 use crate::scene::Material;
 use crate::spawn;
 
@@ -32,16 +33,31 @@ impl Tracer<'_> {
         let mut beta = Vec3::ONE;
         let mut sum = Vec3::ZERO;
         let mut depth = 0;
+        // Conductor bounces are weighed where `beta` is next used.
+        let mut pending = Pending::new();
         loop {
             let Some(hit) = self.intersect(&ray) else {
+                let Some(beta) = pending.settle(self, beta) else {
+                    return sum;
+                };
                 return sum + beta * self.scene.escaped(ray.direction);
             };
             let material = &self.scene.materials[hit.material as usize];
             let wo = -ray.direction;
             let n = hit.shading_normal(ray.direction);
+            let mut conductor = None;
             let next = match material.surface(&hit) {
-                Surface::Shows(radiance) => return sum + beta * radiance,
+                Surface::Shows(radiance) => {
+                    let Some(beta) = pending.settle(self, beta) else {
+                        return sum;
+                    };
+                    return sum + beta * radiance;
+                }
                 Surface::Rough => {
+                    let Some(settled) = pending.settle(self, beta) else {
+                        return sum;
+                    };
+                    beta = settled;
                     sum += beta * self.direct(&hit, n, wo, material, counts);
                     if let Some(pass) = caustics {
                         let bounces = self.settings.max_depth.saturating_sub(depth);
@@ -72,47 +88,62 @@ impl Tracer<'_> {
                     if depth >= self.settings.max_depth {
                         return sum;
                     }
-                    let u = sample.next_1d();
-                    let lobe = self.one_lobe(&hit, n, wo, material, u, &mut beta);
-                    (lobe.ray, lobe.bounce)
+                    let u = sample.take_1d();
+                    if let Some((ray, cos_i)) = self.conductor_mirror(&hit, n, wo, material) {
+                        conductor = Some((cos_i, material));
+                        (ray, Bounce::Reflection)
+                    } else {
+                        let Some(settled) = pending.settle(self, beta) else {
+                            return sum;
+                        };
+                        beta = settled;
+                        let lobe = self.one_lobe(&hit, n, wo, material, u, &mut beta);
+                        (lobe.ray, lobe.bounce)
+                    }
                 }
             };
-            depth += 1;
-            counts.bounce(next.1, depth);
-            // Drawn whether or not the roulette is played, so that the next
-            // vertex's slots are the same for every sample.
-            let roulette = sample.next_1d();
-            let peak = beta.max_element();
-            if peak <= 0.0 {
+            // A ray the mirror tube holds meets nothing else again: the
+            // rest of the path adds nothing to `sum` (`crate::trap`).
+            if self
+                .machinery
+                .trap
+                .as_ref()
+                .is_some_and(|t| t.holds(&next.0))
+            {
                 return sum;
             }
-            if peak < self.settings.throughput_cutoff {
-                // Russian roulette: survive with probability peak / cutoff and
-                // carry 1 / probability, so the estimate stays unbiased.
-                let survive = peak / self.settings.throughput_cutoff;
-                if roulette >= survive {
-                    return sum;
-                }
-                beta /= survive;
-            }
+            depth += 1;
+            counts.bounce(next.1, depth);
+            // Taken whether or not the roulette is played, so that the next
+            // vertex's slots are the same for every sample; its number is
+            // worked out only where it is played.
+            let number = sample.take_1d();
+            let played = match conductor {
+                Some((cos_i, material)) => pending.push(self, (cos_i, material, number), beta),
+                None => roulette(beta, number, self.settings.throughput_cutoff),
+            };
+            let Some(played) = played else {
+                return sum;
+            };
+            beta = played;
             ray = next.0;
         }
     }
 
     /// One lobe of a smooth surface, its weight folded into `beta`. With a
     /// refracted lobe, the branch is chosen with probability R, so that the
-    /// Fresnel weight cancels (`u`, uniform in `[0, 1)`, picks it). With the
+    /// Fresnel weight cancels (`u`'s number, uniform in `[0, 1)`, picks it). With the
     /// mirror lobe alone (a conductor, or total internal reflection) it is
     /// certain and carries its weight itself (under total internal
     /// reflection 1 for the exact law and Schlick; the course's formula
-    /// gives less).
+    /// gives less), and `u`'s number is not worked out.
     fn one_lobe(
         &self,
         hit: &Hit,
         n: Vec3,
         wo: Vec3,
         material: &Material,
-        u: f32,
+        u: Slot1d,
         beta: &mut Vec3,
     ) -> Lobe {
         let lobes = self.lobes(hit, n, wo, material);
@@ -121,7 +152,7 @@ impl Tracer<'_> {
                 *beta *= lobes.reflection.weight;
                 lobes.reflection
             }
-            Some((refracted, reflectance)) if u >= reflectance => {
+            Some((refracted, reflectance)) if u.value() >= reflectance => {
                 *beta *= refracted.weight / (1.0 - reflectance);
                 refracted
             }

@@ -96,16 +96,8 @@ impl<V: Vector> Tracer<'_, V> {
                 kappa,
                 ref exact,
             } => {
-                let facing = if n.dot(wo) < V::Scalar::lit(0.0) {
-                    -n
-                } else {
-                    n
-                };
-                let weight = self.conductor_fresnel(facing.dot(wo), eta, kappa, exact);
-                let ray = Ray::new(
-                    spawn::origin(hit, facing, self.settings.ray_offset),
-                    specular::reflect(wo, facing),
-                );
+                let (ray, cos_i) = self.mirror_ray(hit, n, wo);
+                let weight = self.conductor_fresnel(cos_i, eta, kappa, exact);
                 Lobes {
                     reflection: mirror(ray, weight),
                     refraction: None,
@@ -113,6 +105,51 @@ impl<V: Vector> Tracer<'_, V> {
             }
             _ => unreachable!("only smooth materials have lobes"),
         }
+    }
+
+    /// A conductor's mirror lobe without its weight, the two halves of
+    /// [`Tracer::lobes`] there for a caller that needs the weight later or
+    /// not at all: the reflected ray, and the cosine that
+    /// [`Tracer::conductor_weight`] takes. `None` for any other material.
+    pub(crate) fn conductor_mirror(
+        &self,
+        hit: &Hit<V>,
+        n: V,
+        wo: V,
+        material: &Material<V>,
+    ) -> Option<(Ray<V>, V::Scalar)> {
+        match material {
+            Material::Conductor { .. } => Some(self.mirror_ray(hit, n, wo)),
+            _ => None,
+        }
+    }
+
+    /// A conductor's mirror-lobe weight at `cos_i` (from
+    /// [`Tracer::conductor_mirror`]): the bits [`Tracer::lobes`] gives.
+    pub(crate) fn conductor_weight(&self, cos_i: V::Scalar, material: &Material<V>) -> V {
+        match *material {
+            Material::Conductor {
+                n: eta,
+                kappa,
+                ref exact,
+            } => self.conductor_fresnel(cos_i, eta, kappa, exact),
+            _ => unreachable!("only a conductor has a conductor's weight"),
+        }
+    }
+
+    /// The mirror ray off the side of `n` that `wo` is on, and `cos θi`
+    /// there.
+    fn mirror_ray(&self, hit: &Hit<V>, n: V, wo: V) -> (Ray<V>, V::Scalar) {
+        let facing = if n.dot(wo) < V::Scalar::lit(0.0) {
+            -n
+        } else {
+            n
+        };
+        let ray = Ray::new(
+            spawn::origin(hit, facing, self.settings.ray_offset),
+            specular::reflect(wo, facing),
+        );
+        (ray, facing.dot(wo))
     }
 
     fn dielectric_lobes(&self, hit: &Hit<V>, n: V, wo: V, eta: V::Scalar) -> Lobes<V> {
