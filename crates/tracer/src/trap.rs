@@ -104,6 +104,7 @@ impl Trap {
     /// at least [`MIN_AXIAL`]), starting outside it, and has a transverse
     /// component (at least [`MIN_TRANSVERSE`]). Such a ray meets only the
     /// tube again, however many times it bounces.
+    #[inline]
     pub fn holds(&self, ray: &Ray) -> bool {
         let axial = ray.direction.dot(self.axis);
         let at = (ray.origin - self.axis_point).dot(self.axis);

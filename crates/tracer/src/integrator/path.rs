@@ -9,6 +9,11 @@
 //! slot at the same depth: the scattering pair (a rough surface's
 //! direction, or a smooth one's lobe from its first number) and the Russian
 //! roulette number.
+//!
+//! A conductor's weight, and the roulette after it, wait until the
+//! throughput is next used (`integrator/pending.rs`), and a path ends where the
+//! mirror tube holds its ray ([`crate::trap`]): neither changes a bit of
+//! the estimate, only the work spent on paths that gather nothing more.
 
 use glam::Vec3;
 
