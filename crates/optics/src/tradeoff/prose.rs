@@ -51,12 +51,21 @@ pub fn sentences(f: &Findings, lang: Lang) -> Vec<String> {
 /// work.
 fn timing(t: &TimingNoise, lang: Lang) -> String {
     let example = t.labels.first().map_or("", String::as_str);
+    let renders = match t.labels.len() {
+        1 => say!(lang, "one setting, `{}`", "egy beállítás, `{}`", example),
+        n => say!(
+            lang,
+            "{} settings, such as `{}`",
+            "{} beállítás, például `{}`",
+            n,
+            example
+        ),
+    };
     say!(
         lang,
-        "Renders of the scene's own work (as many rays, the same image: {} settings, such as `{}`) took {:.2}× to {:.2}× its time: this run's timing noise, so no time ratio inside that band is counted a saving or a cost.",
-        "A jelenet saját munkáját végző képek (ugyanannyi sugár, ugyanaz a kép: {} beállítás, például `{}`) az idő {:.2}–{:.2}-szeresét vették: ez a futás időmérési zaja, így e sávon belüli időarány sem megtakarításnak, sem költségnek nem számít.",
-        t.labels.len(),
-        example,
+        "Renders of the scene's own work (as many rays, the same image: {}) took {:.2}× to {:.2}× its time: this run's timing noise, so no time ratio inside that band is counted a saving or a cost.",
+        "A jelenet saját munkáját végző képek (ugyanannyi sugár, ugyanaz a kép: {}) az idő {:.2}–{:.2}-szeresét vették: ez a futás időmérési zaja, így e sávon belüli időarány sem megtakarításnak, sem költségnek nem számít.",
+        renders,
         t.ratios[0],
         t.ratios[1]
     )
