@@ -81,6 +81,29 @@ fn two_sum_and_two_prod_are_error_free() {
     assert_eq!(two_prod(a, a), (1.0 + 2f64.powi(-29), tiny));
 }
 
+/// `(a b)²` of two widened `f32`s as two parts, against the exact square
+/// `q + e` of the exact product (`two_prod`, error-free): over random
+/// `f32`s from 2^-40 to 2^40, the parts' sum within 2^-25 ε of `(a b)²`
+/// (the low part, some 2^-25 of the high one, rounded once), and the
+/// high part, a square of 26 bits, exact.
+#[test]
+fn the_square_of_a_narrow_product_is_exact_to_far_below_the_wide_ulp() {
+    let mut next = xorshift(0x51_7cc1_b727_220a);
+    let bound = 2f64.powi(-25) * f64::EPSILON;
+    for _ in 0..100_000 {
+        let narrow = |bits: u64| {
+            let m = (bits >> 40) as f32 / (1u64 << 24) as f32 + 0.5;
+            f64::from(m * 2f32.powi((bits % 81) as i32 - 40))
+        };
+        let (a, b) = (narrow(next()), narrow(next()));
+        let square = square_of_narrow_product(a, b);
+        let (q, e) = two_prod(a * b, a * b);
+        let error = ((square.high - q) + (square.low - e)).abs();
+        assert!(error <= bound * q, "({a:e} · {b:e})²: {error:e} off");
+        assert_eq!(two_prod(square.high.sqrt(), square.high.sqrt()).1, 0.0);
+    }
+}
+
 #[test]
 fn discriminant_keeps_digits_that_cancel() {
     // eta = 1 + 2⁻³⁰, c = 0: eta² − 1 = 2⁻²⁹ + 2⁻⁶⁰ exactly; the naive

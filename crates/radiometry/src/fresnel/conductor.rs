@@ -153,8 +153,18 @@ impl<T: Real> Conductor<T> {
         // rounding as often, with one division per amplitude where there
         // were two.
         let u_contrast = u * self.abs_eta2_m1;
-        let r_s = sqr(u_contrast / u_ws2);
-        let r_p = sqr(u_contrast * abs(brewster) / u_wp2);
+        let (r_s, r_p) = if exact {
+            // |Brewster|² as summed, without its square root: a tier whose
+            // results are rounded once more, to a precision 2^29 coarser,
+            // does not see the difference in rounding, and the square
+            // root is the slowest step there is.
+            let [amp_s, amp_p] = T::wide_quotients(u_contrast, u_ws2, u_contrast, u_wp2);
+            (sqr(amp_s), sqr(amp_p) * brewster.norm_sqr())
+        } else {
+            let [amp_s, amp_p] =
+                T::wide_quotients(u_contrast, u_ws2, u_contrast * abs(brewster), u_wp2);
+            (sqr(amp_s), sqr(amp_p))
+        };
         // Index-matched (η = 1) reflects nothing; chosen here rather than
         // computed, as 0 / ws2 is NaN at grazing incidence (ws2 = 0).
         let zero = Wide::<T>::zero();

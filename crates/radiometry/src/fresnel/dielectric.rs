@@ -178,15 +178,25 @@ pub fn dielectric_resolved<T: Real>(incidence: &Incidence<T>) -> DielectricFresn
     let four_c = T::Wide::lit(4.0) * c;
 
     // (a + s)² as a² + 2as + s² with s² = d exactly as computed: at grazing
-    // incidence this makes r_s = (n_i² − n_t²)/d = −1 to the last bit (in
-    // `f32` after its final rounding, the few `f64` roundings of
-    // `wide_quotients` being far below half an `f32` ulp).
-    let ws2 = a * a + (a + a) * s + d;
-
+    // incidence this makes r_s = (n_i² − n_t²)/d = −1 to the last bit.
     // (n_t² c + n_i s)² likewise with n_i² d for (n_i s)²: exact at grazing.
+    //
+    // A tier whose products are exact in the wide precision (`f32`)
+    // squares the sums as they are, in two operations where the expanded
+    // forms take nine: its result is rounded once more, to a precision
+    // 2^29 coarser, which takes r_s and r_p to −1 at grazing incidence all
+    // the same (`s² = d` to within an `f64` ulp), and the few `f64`
+    // roundings of the squares and of `wide_quotients` lie as far below it.
     let n_t2 = n_t * n_t;
     let b = n_t2 * c;
-    let wp2 = b * b + (b + b) * (n_i * s) + n_i * n_i * d;
+    let (ws2, wp2) = if exact {
+        (sqr(a + s), sqr(b + n_i * s))
+    } else {
+        (
+            a * a + (a + a) * s + d,
+            b * b + (b + b) * (n_i * s) + n_i * n_i * d,
+        )
+    };
     let brewster = compensated::brewster_factor(&squares, inside, c, exact);
 
     let [amp_s, amp_p] = T::wide_quotients(contrast, ws2, contrast * brewster, wp2);
@@ -194,7 +204,10 @@ pub fn dielectric_resolved<T: Real>(incidence: &Incidence<T>) -> DielectricFresn
     let (r_s, r_p) = (sqr(amp_s), sqr(amp_p));
     let (t_s, t_p) = (four_c * t_s, four_c * t_p);
 
-    let narrow = |x| T::narrow(fraction(x));
+    // Clamped after rounding, in the tier's own lanes (twice as many as
+    // the wide tier's for `f32`): the same value as clamping before, for
+    // any `x`, as rounding is monotonic and keeps 1.
+    let narrow = |x| fraction(T::narrow(x));
     let general = DielectricFresnel {
         r_s: narrow(r_s),
         r_p: narrow(r_p),
