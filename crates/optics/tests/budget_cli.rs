@@ -28,6 +28,11 @@ fn scene(name: &str) -> String {
 /// `optics --json render` of `name` at 16×12 under a budget, its truth
 /// cached in `dir`.
 fn budget(name: &str, dir: &Path, png: &str, extra: &[&str]) -> Output {
+    budget_with_truth(name, dir, png, "512", extra)
+}
+
+/// [`budget`] with the truth rendered at `truth_spp`.
+fn budget_with_truth(name: &str, dir: &Path, png: &str, truth_spp: &str, extra: &[&str]) -> Output {
     let (path, out) = (scene(name), dir.join(png));
     let cache = dir.join("truth");
     let mut args = vec![
@@ -43,7 +48,7 @@ fn budget(name: &str, dir: &Path, png: &str, extra: &[&str]) -> Output {
         "--truth-cache",
         cache.to_str().unwrap(),
         "--truth-spp",
-        "512",
+        truth_spp,
         // The caustic map's photons, fewer than the scenes' 10⁵: every
         // candidate of the pilot builds its own map.
         "--photons",
@@ -175,34 +180,12 @@ fn every_course_scene_of_the_sweep_is_budgeted_within_its_prediction() {
         ("inside_water", false, "0.5"),
     ];
     for (name, lambert, tolerance) in scenes {
-        let (path, out) = (scene(name), dir.path().join("s.png"));
-        let cache = dir.path().join("truth");
-        let mut args = vec![
-            "--json",
-            "render",
-            &path,
-            "-o",
-            out.to_str().unwrap(),
-            "--width",
-            "16",
-            "--height",
-            "12",
-            "--truth-cache",
-            cache.to_str().unwrap(),
-            "--truth-spp",
-            "256",
-            "--photons",
-            "2000",
-            "--tolerance",
-            tolerance,
-            "--metric",
-            "rel_rmse",
-            "--verify",
-        ];
+        let mut flags = vec!["--tolerance", tolerance, "--metric", "rel_rmse", "--verify"];
         if lambert {
-            args.push("--lambert");
+            flags.push("--lambert");
         }
-        let details = record(&optics(&args))["details"].clone();
+        let output = budget_with_truth(name, dir.path(), "s.png", "256", &flags);
+        let details = record(&output)["details"].clone();
         let achieved = details["verified"]["rel_rmse"].as_f64().unwrap();
         let predicted = details["predicted"]["rel_rmse"].as_f64().unwrap();
         let t: f64 = tolerance.parse().unwrap();
