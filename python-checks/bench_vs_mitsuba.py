@@ -271,7 +271,6 @@ def bench_scene(name, variant, args, workdir, log):
         "tracer_command": " ".join(tracer.command(spp, "SEED")),
         "pairs": pairs,
         "agreement": agree,
-        "images": agree["images"],
         "comparable": agree["images"] != "disagree" and None not in efficiency,
         "time_ratio": spread([p["time_ratio"] for p in pairs]),
         "efficiency_ratio": spread(efficiency) if None not in efficiency else None,
@@ -351,7 +350,7 @@ def table(document):
         if e["comparable"]:
             q = e["efficiency_ratio"]
             efficiency = f"{q['median']:.2f} ({q['min']:.2f}–{q['max']:.2f})"
-            images = e.get("images", "agree")
+            images = e.get("agreement", {}).get("images", "agree")
         else:
             efficiency, images = "not comparable", "disagree"
         bsdf = " (Python BSDF)" if e["mitsuba_bsdf"] == "python" else ""

@@ -117,6 +117,8 @@ def test_quick_run_writes_the_versioned_record(tmp_path):
     assert [e["name"] for e in document["scenes"]] == ["first_red_sphere", "diffuse"]
     for entry in document["scenes"]:
         assert len(entry["pairs"]) == 1 and entry["agreement"]["agrees"], entry["agreement"]
+        # The verdict is the agreement's, recorded once.
+        assert entry["agreement"]["images"] == "agree" and "images" not in entry, entry
         assert entry["spp"] >= 1 and entry["time_ratio"]["median"] > 0
         pair = entry["pairs"][0]
         expected = (pair["mitsuba"]["variance"] * sum(pair["mitsuba"]["seconds"])) / (
@@ -140,7 +142,7 @@ def test_the_documents_get_the_table_and_summary_between_their_markers(tmp_path)
                 "efficiency_ratio": ratio if comparable else None, "load_average": {"median": 1.0}}
     scenes = [entry("a", "scalar_rgb", 2.0, 3.0), entry("b", "scalar_rgb", 8.0, 3.0),
               entry("c", "scalar_rgb", 1.0, 1.0, comparable=False)]
-    scenes[1]["images"] = "agree under Mitsuba's offsets"
+    scenes[1]["agreement"] = {"images": "agree under Mitsuba's offsets"}
     document = {"command": "python-checks/bench_vs_mitsuba.py --docs", "date": "2026-12-03T10:00:00Z",
                 "machine": {"cpu": "Test CPU", "platform": "x", "cores": 2, "load_average_at_end": [1.5, 1, 1]},
                 "scenes": scenes, "not_run": {"llvm_ad_rgb": "no libLLVM"},
