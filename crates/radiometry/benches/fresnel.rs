@@ -25,8 +25,6 @@ use radiometry::fresnel::{
 };
 use radiometry::Real;
 
-const COSINES: usize = 4096;
-
 /// The laws in the order of the table, each with the cosines it is timed
 /// over: both sides of a dielectric, the outside of a conductor.
 const LAWS: [&str; 9] = [
@@ -41,38 +39,24 @@ const LAWS: [&str; 9] = [
     "conductor_exact_slice",
 ];
 
-/// Glass and the course's gold (red channel).
-const ETA: f64 = 1.5;
-const GOLD: (f64, f64) = (0.17, 3.1);
-
-/// Cosines spread evenly over `[low, 1]`.
-fn cosines<T: Real>(low: f64) -> Vec<T> {
-    let step = (1.0 - low) / COSINES as f64;
-    (0..COSINES)
-        .map(|k| T::lit(low + step * (k as f64 + 0.5)))
-        .collect()
-}
-
-/// `law` over `cosines` into `out`: the loop a caller writes.
-#[inline(always)]
-fn over<T: Real>(cosines: &[T], out: &mut [T], law: impl Fn(T) -> T) {
-    for (r, &c) in out.iter_mut().zip(cosines) {
-        *r = law(c);
-    }
-}
-
 #[path = "shared/textbook.rs"]
 mod textbook;
 use textbook::{conductor_textbook, dielectric_textbook};
+#[path = "shared/workload.rs"]
+mod workload;
+use workload::{over, Workload, COSINES};
 
 fn bench_tier<T: Real>(c: &mut Criterion, tier: &str) {
-    let both_sides = cosines::<T>(-1.0);
-    let outside = cosines::<T>(0.0);
+    let Workload {
+        both_sides,
+        outside,
+        eta,
+        inv_eta2,
+        n,
+        kappa,
+    } = Workload::<T>::new();
     let mut out = vec![T::zero(); COSINES];
-    let eta = black_box(T::lit(ETA));
-    let (n, kappa) = black_box((T::lit(GOLD.0), T::lit(GOLD.1)));
     let (f0_glass, f0_gold) = (f0(eta, T::zero()), f0(n, kappa));
-    let inv_eta2 = T::one() / (eta * eta);
 
     let mut group = c.benchmark_group(format!("fresnel_{tier}"));
     group.throughput(Throughput::Elements(COSINES as u64));

@@ -16,35 +16,16 @@ use std::time::Instant;
 use radiometry::fresnel::{conductor_slice, dielectric_slice};
 use radiometry::Real;
 
-const COSINES: usize = 4096;
-
 /// One pass of a law over the cosines, into the given results.
 type Pass<'a, T> = Box<dyn FnMut(&mut [T]) + 'a>;
 const PASSES: usize = 100;
 
-/// Glass and the course's gold (red channel), as in the bench.
-const ETA: f64 = 1.5;
-const GOLD: (f64, f64) = (0.17, 3.1);
-
-/// Cosines spread evenly over `[low, 1]`.
-fn cosines<T: Real>(low: f64) -> Vec<T> {
-    let step = (1.0 - low) / COSINES as f64;
-    (0..COSINES)
-        .map(|k| T::lit(low + step * (k as f64 + 0.5)))
-        .collect()
-}
-
 #[path = "../benches/shared/textbook.rs"]
 mod textbook;
 use textbook::{conductor_textbook, dielectric_textbook};
-
-/// `law` over `cosines` into `out`, inlined: the loop a caller writes.
-#[inline(always)]
-fn over<T: Real>(cosines: &[T], out: &mut [T], law: impl Fn(T) -> T) {
-    for (r, &c) in out.iter_mut().zip(cosines) {
-        *r = law(c);
-    }
-}
+#[path = "../benches/shared/workload.rs"]
+mod workload;
+use workload::{over, Workload, COSINES};
 
 /// Nanoseconds per evaluation of `PASSES` passes of `law`.
 fn time<T: Real>(out: &mut [T], law: &mut dyn FnMut(&mut [T])) -> f64 {
@@ -63,11 +44,15 @@ fn best_and_quartile(mut times: Vec<f64>) -> (f64, f64) {
 }
 
 fn tier<T: Real>(name: &str, rounds: usize) {
-    let (both, outer) = (cosines::<T>(-1.0), cosines::<T>(0.0));
+    let Workload {
+        both_sides: both,
+        outside: outer,
+        eta,
+        inv_eta2,
+        n,
+        kappa,
+    } = Workload::<T>::new();
     let mut out = vec![T::zero(); COSINES];
-    let eta = black_box(T::lit(ETA));
-    let (n, kappa) = black_box((T::lit(GOLD.0), T::lit(GOLD.1)));
-    let inv_eta2 = T::one() / (eta * eta);
     let mut pairs: [(&str, [Pass<T>; 2]); 2] = [
         (
             "dielectric",
