@@ -3,7 +3,9 @@
 //! [`crate::batch::run`] with and without `--no-steps`; and each line read
 //! both ways [`crate::batch::request`] reads it, which must agree.
 
-use super::{check_error_field, check_record, edge_number, runner, Coverage, SCHEMA, VECTORS};
+use super::{
+    check_error_field, check_record, edge_number, run_and_report, runner, Coverage, SCHEMA, VECTORS,
+};
 use crate::batch::request::{self, LINE_STEPS_IGNORED};
 use crate::batch::{self, BatchArgs, NOT_UTF8_STOPS_THE_RUN};
 use crate::lang::Lang;
@@ -270,11 +272,7 @@ fn fuzz(cases: u32, coverage: &Coverage) -> Result<(), String> {
 
 #[test]
 fn batch_lines_keep_their_promises() {
-    let (cases, coverage) = (super::cases(), Coverage::default());
-    let start = std::time::Instant::now();
-    let outcome = fuzz(cases, &coverage);
-    coverage.print("batch lines", cases, start.elapsed().as_secs_f64());
-    outcome.unwrap();
+    run_and_report("batch lines", fuzz);
 }
 
 #[test]

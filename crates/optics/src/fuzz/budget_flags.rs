@@ -9,7 +9,7 @@
 //! `--metric`, `--lambert` set exactly where given; a spoiled one is a usage error naming its flag; nothing
 //! panics.
 
-use super::{check_error_field, runner, Coverage};
+use super::{refused_by_usage, run_and_report, runner, Coverage};
 use crate::budget::TOLERANCE_UNCHECKED;
 use clap::Parser;
 use proptest::prelude::*;
@@ -160,17 +160,19 @@ fn check_line(line: &Line, coverage: &Coverage) -> Result<(), TestCaseError> {
             Ok(())
         }
         Err(usage) => {
-            let error = crate::Error::from(crate::ErrorKind::Usage(usage));
-            let json = error.to_json(crate::lang::Lang::En);
-            coverage.error(&json);
-            prop_assert!(line.spoiled.is_some(), "{:?} refused: {json}", line.args);
-            let flag = line.spoiled.unwrap_or_default();
-            let field = json["field"].as_str().unwrap_or_default();
             // A conflict names either side of it.
-            let named = field.contains(flag)
-                || (CHOSEN.iter().any(|(f, _)| *f == flag) && field.contains("--tolerance"));
-            prop_assert!(named, "{json} does not name {flag}");
-            check_error_field(&json, &line.args, "render", |f| f.to_owned())
+            let conflict: &[&str] = match line.spoiled {
+                Some(flag) if CHOSEN.iter().any(|(f, _)| *f == flag) => &["--tolerance"],
+                _ => &[],
+            };
+            refused_by_usage(
+                usage,
+                &line.args,
+                line.spoiled,
+                conflict,
+                "render",
+                coverage,
+            )
         }
     }
 }
@@ -183,11 +185,7 @@ fn fuzz(cases: u32, coverage: &Coverage) -> Result<(), String> {
 
 #[test]
 fn budget_flags_settle_to_their_values_or_refuse_by_flag() {
-    let (cases, coverage) = (super::cases(), Coverage::default());
-    let start = std::time::Instant::now();
-    let outcome = fuzz(cases, &coverage);
-    coverage.print("budget flags", cases, start.elapsed().as_secs_f64());
-    outcome.unwrap();
+    run_and_report("budget flags", fuzz);
 }
 
 #[test]

@@ -4,7 +4,7 @@
 //! that admits an image before the reference is rendered
 //! ([`crate::compare::admit`]): no panic, and every refusal names `IMAGE`.
 
-use super::{runner, Coverage};
+use super::{run_and_report, runner, Coverage};
 use crate::compare::admit;
 use crate::compare::user_image::LENGTH_UNCHECKED;
 use crate::lang::Lang;
@@ -159,11 +159,7 @@ fn fuzz(cases: u32, coverage: &Coverage) -> Result<(), String> {
 
 #[test]
 fn compare_images_keep_their_promises() {
-    let (cases, coverage) = (super::cases(), Coverage::default());
-    let start = std::time::Instant::now();
-    let outcome = fuzz(cases, &coverage);
-    coverage.print("compare images", cases, start.elapsed().as_secs_f64());
-    outcome.unwrap();
+    run_and_report("compare images", fuzz);
 }
 
 #[test]

@@ -1,7 +1,9 @@
 //! Flag values: every law's command line with numbers at the edges of
 //! `f64`, typed as people type them, through the parser and the law.
 
-use super::{check_error_field, check_record, number_text, runner, Coverage, SCHEMA, VECTORS};
+use super::{
+    check_error_field, check_record, number_text, run_and_report, runner, Coverage, SCHEMA, VECTORS,
+};
 use crate::lang::Lang;
 use clap::{CommandFactory, FromArgMatches};
 use proptest::prelude::*;
@@ -210,11 +212,9 @@ fn fuzz(cases: u32, reverted: bool, coverage: &Coverage) -> Result<(), String> {
 
 #[test]
 fn flag_values_keep_their_promises() {
-    let (cases, coverage) = (super::cases(), Coverage::default());
-    let start = std::time::Instant::now();
-    let outcome = fuzz(cases, false, &coverage);
-    coverage.print("flag values", cases, start.elapsed().as_secs_f64());
-    outcome.unwrap();
+    run_and_report("flag values", |cases, coverage| {
+        fuzz(cases, false, coverage)
+    });
 }
 
 #[test]

@@ -192,6 +192,40 @@ impl Coverage {
     }
 }
 
+/// Runs a target's `fuzz` over [`cases`] cases and prints the error
+/// kinds and fields they reached (`--nocapture` shows it), then fails
+/// where a case broke a promise.
+fn run_and_report(target: &str, fuzz: impl FnOnce(u32, &Coverage) -> Result<(), String>) {
+    let (cases, coverage) = (cases(), Coverage::default());
+    let start = std::time::Instant::now();
+    let outcome = fuzz(cases, &coverage);
+    coverage.print(target, cases, start.elapsed().as_secs_f64());
+    outcome.unwrap();
+}
+
+/// The promises of a command line `args` of `command` that the parser
+/// refused: it was spoiled (`spoiled`, the flag it spoiled), and the usage
+/// error names that flag, or one of `or_named` (the other side of a
+/// conflict), and only fields the line gave.
+fn refused_by_usage(
+    usage: clap::Error,
+    args: &[String],
+    spoiled: Option<&str>,
+    or_named: &[&str],
+    command: &str,
+    coverage: &Coverage,
+) -> Result<(), TestCaseError> {
+    let error = crate::Error::from(crate::ErrorKind::Usage(usage));
+    let json = error.to_json(crate::lang::Lang::En);
+    coverage.error(&json);
+    prop_assert!(spoiled.is_some(), "{args:?} refused: {json}");
+    let flag = spoiled.unwrap_or_default();
+    let field = json["field"].as_str().unwrap_or_default();
+    let named = field.contains(flag) || or_named.iter().any(|other| field.contains(other));
+    prop_assert!(named, "{json} does not name {flag}");
+    check_error_field(&json, args, command, |f| f.to_owned())
+}
+
 /// An error names a real field: `None` only for kinds about the line
 /// itself, else each name (`wi.x` is `wi`) a field of the law's schema or
 /// one the request gave.

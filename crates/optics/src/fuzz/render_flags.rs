@@ -10,7 +10,7 @@
 
 use std::path::PathBuf;
 
-use super::{check_error_field, runner, Coverage};
+use super::{refused_by_usage, run_and_report, runner, Coverage};
 use crate::render::JobArgs;
 use clap::Parser;
 use proptest::prelude::*;
@@ -200,16 +200,7 @@ fn check_line(line: &Line, dropped: Dropped, coverage: &Coverage) -> Result<(), 
             );
             Ok(())
         }
-        Err(usage) => {
-            let error = crate::Error::from(crate::ErrorKind::Usage(usage));
-            let json = error.to_json(crate::lang::Lang::En);
-            coverage.error(&json);
-            prop_assert!(line.spoiled.is_some(), "{:?} refused: {json}", line.args);
-            let flag = line.spoiled.unwrap_or_default();
-            let field = json["field"].as_str().unwrap_or_default();
-            prop_assert!(field.contains(flag), "{json} does not name {flag}");
-            check_error_field(&json, &line.args, "render", |f| f.to_owned())
-        }
+        Err(usage) => refused_by_usage(usage, &line.args, line.spoiled, &[], "render", coverage),
     }
 }
 
@@ -221,11 +212,9 @@ fn fuzz(cases: u32, dropped: Dropped, coverage: &Coverage) -> Result<(), String>
 
 #[test]
 fn render_flags_settle_to_the_filter_they_name_or_refuse_by_flag() {
-    let (cases, coverage) = (super::cases(), Coverage::default());
-    let start = std::time::Instant::now();
-    let outcome = fuzz(cases, Dropped::Nothing, &coverage);
-    coverage.print("render flags", cases, start.elapsed().as_secs_f64());
-    outcome.unwrap();
+    run_and_report("render flags", |cases, coverage| {
+        fuzz(cases, Dropped::Nothing, coverage)
+    });
 }
 
 #[test]

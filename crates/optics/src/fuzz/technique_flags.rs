@@ -8,7 +8,7 @@
 //! only where the light lies on it; an overflow is claimed only of finite
 //! inputs.
 
-use super::{check_error_field, number_text, runner, Coverage};
+use super::{check_error_field, number_text, run_and_report, runner, Coverage};
 use crate::lang::Lang;
 use clap::{CommandFactory, FromArgMatches};
 use proptest::prelude::*;
@@ -197,11 +197,7 @@ fn fuzz(cases: u32, coverage: &Coverage) -> Result<(), String> {
 
 #[test]
 fn technique_flags_keep_their_promises() {
-    let (cases, coverage) = (super::cases(), Coverage::default());
-    let start = std::time::Instant::now();
-    let outcome = fuzz(cases, &coverage);
-    coverage.print("technique flags", cases, start.elapsed().as_secs_f64());
-    outcome.unwrap();
+    run_and_report("technique flags", fuzz);
 }
 
 #[test]

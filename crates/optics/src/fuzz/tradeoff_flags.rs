@@ -6,7 +6,7 @@
 //! its range; a spoiled value is a usage error naming its flag; nothing
 //! panics.
 
-use super::{check_error_field, runner, Coverage};
+use super::{refused_by_usage, run_and_report, runner, Coverage};
 use crate::tradeoff::SECONDS_UNCHECKED;
 use clap::Parser;
 use proptest::prelude::*;
@@ -112,16 +112,7 @@ fn check_line(line: &Line, coverage: &Coverage) -> Result<(), TestCaseError> {
             }
             Ok(())
         }
-        Err(usage) => {
-            let error = crate::Error::from(crate::ErrorKind::Usage(usage));
-            let json = error.to_json(crate::lang::Lang::En);
-            coverage.error(&json);
-            prop_assert!(line.spoiled.is_some(), "{:?} refused: {json}", line.args);
-            let flag = line.spoiled.unwrap_or_default();
-            let field = json["field"].as_str().unwrap_or_default();
-            prop_assert!(field.contains(flag), "{json} does not name {flag}");
-            check_error_field(&json, &line.args, "tradeoff", |f| f.to_owned())
-        }
+        Err(usage) => refused_by_usage(usage, &line.args, line.spoiled, &[], "tradeoff", coverage),
     }
 }
 
@@ -133,11 +124,7 @@ fn fuzz(cases: u32, coverage: &Coverage) -> Result<(), String> {
 
 #[test]
 fn tradeoff_flags_parse_to_their_values_or_refuse_by_flag() {
-    let (cases, coverage) = (super::cases(), Coverage::default());
-    let start = std::time::Instant::now();
-    let outcome = fuzz(cases, &coverage);
-    coverage.print("tradeoff flags", cases, start.elapsed().as_secs_f64());
-    outcome.unwrap();
+    run_and_report("tradeoff flags", fuzz);
 }
 
 #[test]

@@ -10,7 +10,7 @@
 use std::path::PathBuf;
 use std::sync::OnceLock;
 
-use super::{edge_number, runner, Coverage};
+use super::{edge_number, run_and_report, runner, Coverage};
 use crate::error::jobs::{JobError, LineKind, Place};
 use crate::tradeoff::distribute::accept;
 use crate::tradeoff::jobs::{
@@ -241,11 +241,7 @@ fn fuzz(cases: u32, coverage: &Coverage) -> Result<(), String> {
 
 #[test]
 fn tradeoff_jobs_are_read_or_refused_by_a_field_of_their_line() {
-    let (cases, coverage) = (super::cases(), Coverage::default());
-    let start = std::time::Instant::now();
-    let outcome = fuzz(cases, &coverage);
-    coverage.print("tradeoff jobs", cases, start.elapsed().as_secs_f64());
-    outcome.unwrap();
+    run_and_report("tradeoff jobs", fuzz);
 }
 
 #[test]
