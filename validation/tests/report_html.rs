@@ -16,6 +16,7 @@ use std::process::Command;
 use validation::check::Check;
 use validation::report::{to_html, to_json, Report, WorstDeltaE};
 use validation::speed::Timing;
+use validation::tradeoff::findings::{Findings, Shortcut};
 
 /// A report with a check in every area and the awkward content real ones
 /// carry: a JSON request as the place of a worst value, long names, a
@@ -121,11 +122,41 @@ fn sample() -> (Report, Vec<String>) {
         Path::new("docs/tradeoffs/gold_spheres-lambert.json"),
         &Ok(report.tradeoffs[0].clone()),
     ));
+    report.word_tradeoffs(wording);
     report.summarise();
     (
         report,
-        vec!["figures/render_kaleidoscope_lit_path.png".to_owned()],
+        vec![
+            "figures/render_kaleidoscope_lit_path.png".to_owned(),
+            "figures/tradeoff_gold_spheres-lambert.png".to_owned(),
+        ],
     )
+}
+
+/// Words for a sweep's findings, standing in for the command's prose: a
+/// sentence on the scene's own settings and one per shortcut judged, with
+/// Markdown's code spans and characters the page must escape.
+fn wording(findings: &Findings) -> Vec<String> {
+    let mut sentences = vec![format!(
+        "The scene's own settings are {:.3} <relative RMSE> from the truth.",
+        findings.own.rel_rmse
+    )];
+    sentences.extend(shortcuts(findings).map(|s| {
+        format!(
+            "`{}` takes {:.2}× the time & is ΔE p99 {:.2} from them.",
+            s.label, s.time_ratio, s.delta_e_p99
+        )
+    }));
+    sentences
+}
+
+/// The shortcuts the findings judge: worth it, seen, or no gain.
+fn shortcuts(findings: &Findings) -> impl Iterator<Item = &Shortcut> {
+    findings
+        .worth_it
+        .iter()
+        .chain(&findings.seen)
+        .chain(&findings.no_gain)
 }
 
 /// A trade-off record of two settings, as `optics tradeoff` writes one.
@@ -137,16 +168,17 @@ const TRADEOFF: &str = r#"{"schema": "optics.tradeoff", "version": 1,
   "points": [
     {"axis": "scene", "label": "scene: whitted, max_depth 63, fresnel exact",
      "settings": {"integrator": "whitted", "max_depth": 63, "fresnel": "exact"},
-     "seconds_median": 0.000250786, "rays": 5304.0,
-     "errors": {"rel_rmse": 0.1796523927533933, "delta_e_mean": 2.06, "delta_e_p99": 28.047669109095697, "flip_mean": 0.0678083591684686},
+     "seconds_median": 0.000250786, "seconds": [0.000262, 0.000250786, 0.000249],
+     "rays": 5304.0,
+     "errors": {"rel_rmse": 0.1796523927533933, "delta_e_mean": 2.06, "delta_e_p99": 28.047669109095697, "flip_mean": 0.0678083591684686, "light": 0.9623574712545723},
      "against_scene": {"rel_rmse": 0.0, "delta_e_mean": 0.0, "delta_e_p99": 0.0, "flip_mean": 0.0},
      "pareto": ["delta_e_mean", "delta_e_p99", "flip_mean"]},
     {"axis": "fresnel", "label": "fresnel schlick",
      "settings": {"integrator": "whitted", "max_depth": 63, "fresnel": "schlick"},
-     "seconds_median": 0.000238, "rays": 5304.0,
+     "seconds_median": 0.0002, "seconds": [0.0002], "rays": 5304.0,
      "errors": {"rel_rmse": 0.1791, "delta_e_mean": 2.26, "delta_e_p99": 28.05, "flip_mean": 0.072},
      "against_scene": {"rel_rmse": 0.01, "delta_e_mean": 0.1, "delta_e_p99": 1.21, "flip_mean": 0.01},
-     "pareto": ["rel_rmse", "delta_e_mean", "delta_e_p99", "flip_mean"], "verdict": "worse"}
+     "pareto": ["rel_rmse", "delta_e_mean", "delta_e_p99", "flip_mean"], "verdict": "trade"}
   ]}"#;
 
 /// A check of `cases` cases with its worst values `(quantity, value, at)`.
@@ -250,15 +282,43 @@ fn numbers_of(json: &str) -> BTreeMap<String, f64> {
         .iter()
         .enumerate()
     {
-        for i in 0..record["points"].as_array().expect("points").len() {
+        for (i, point) in record["points"]
+            .as_array()
+            .expect("points")
+            .iter()
+            .enumerate()
+        {
             for field in [
                 "seconds_median",
                 "errors/rel_rmse",
+                "errors/delta_e_mean",
                 "errors/delta_e_p99",
                 "errors/flip_mean",
                 "against_scene/delta_e_p99",
             ] {
                 take(format!("/tradeoffs/{k}/points/{i}/{field}"));
+            }
+            if point["errors"].get("light").is_some() {
+                take(format!("/tradeoffs/{k}/points/{i}/errors/light"));
+            }
+            // The range of the timed renders: the fastest and the slowest.
+            let seconds: Vec<f64> = point["seconds"]
+                .as_array()
+                .expect("seconds")
+                .iter()
+                .map(|s| s.as_f64().expect("a time"))
+                .collect();
+            if seconds.len() > 1 {
+                let by_time = |a: &(usize, &f64), b: &(usize, &f64)| a.1.total_cmp(b.1);
+                for (j, _) in [
+                    seconds.iter().enumerate().min_by(by_time),
+                    seconds.iter().enumerate().max_by(by_time),
+                ]
+                .into_iter()
+                .flatten()
+                {
+                    take(format!("/tradeoffs/{k}/points/{i}/seconds/{j}"));
+                }
             }
         }
     }
@@ -288,8 +348,9 @@ fn the_page_carries_every_number_of_report_json() {
         assert_eq!(numbers_of(&json).get(&pointer), Some(&value), "{pointer}");
     }
     // 4 counts, 9 checks' cases, 8 + 3 + 4 worst values, 2 of the metal,
-    // 4 timings, 2 × 5 of the trade-off's settings.
-    assert_eq!(numbers_of(&json).len(), 44);
+    // 4 timings, 2 × 6 of the trade-off's settings, the first's light and
+    // the range of its three timed renders.
+    assert_eq!(numbers_of(&json).len(), 49);
 }
 
 #[test]
@@ -364,6 +425,64 @@ fn the_first_screen_gives_the_verdict_and_a_card_per_area() {
     assert!(html.contains("case 720: cos_i = -0.4081, eta = 0.8535, law = fresnel"));
 }
 
+/// The fold of the page for the trade-off record `stem`: from its
+/// summary to its end.
+fn tradeoff_section<'a>(html: &'a str, stem: &str) -> &'a str {
+    let start = html
+        .find(&format!("<summary><b>{stem}</b>"))
+        .unwrap_or_else(|| panic!("no section for {stem}"));
+    let end = start + html[start..].find("</details>").expect("its end");
+    &html[start..end]
+}
+
+/// Text as the page holds it between tags.
+fn escaped(text: &str) -> String {
+    text.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+}
+
+#[test]
+fn each_swept_scene_shows_its_findings_in_words_its_settings_and_its_plot() {
+    let (report, figures) = sample();
+    let html = to_html(&report, &figures);
+    for record in &report.tradeoffs {
+        let section = tradeoff_section(&html, &record.stem());
+        let findings = record.findings.as_ref().expect("the sample's findings");
+        let sentences = wording(findings);
+        assert!(
+            sentences.len() > 1,
+            "the sample words a setting: {sentences:?}"
+        );
+        // The paragraph, as a reader sees it: every word, the code spans
+        // set as code.
+        let paragraph = sentences.join(" ").replace('`', "");
+        assert!(
+            words(section).contains(&escaped(&paragraph)),
+            "{} does not say {paragraph:?}",
+            record.stem()
+        );
+        for shortcut in shortcuts(findings) {
+            let code = format!("<code>{}</code>", escaped(&shortcut.label));
+            assert!(section.contains(&code), "no {code}");
+        }
+        // A row per setting, in the record's order.
+        let rows: Vec<&str> = section
+            .split("<tr><td>")
+            .skip(1)
+            .map(|row| &row[..row.find("</td>").expect("its first cell")])
+            .collect();
+        let labels: Vec<String> = record.points.iter().map(|p| escaped(&p.label)).collect();
+        assert_eq!(rows, labels, "{}", record.stem());
+        // Where and how its times were taken, and its plot.
+        for stamp in [&record.command, &record.machine, &record.date, &record.load] {
+            assert!(words(section).contains(&escaped(stamp)), "no {stamp}");
+        }
+        let plot = format!("src=\"figures/tradeoff_{}.png\"", record.stem());
+        assert!(section.contains(&plot), "no {plot}");
+    }
+}
+
 // -- in a browser ------------------------------------------------------------
 
 fn chromium() -> Option<PathBuf> {
@@ -423,18 +542,27 @@ addEventListener('load', () => {
 });
 </script>"#;
 
-/// `html` written beside its figure in a fresh directory, the probe for a
+/// `html` written beside its figures in a fresh directory, the probe for a
 /// window `width` pixels wide put first in its head.
 fn page(html: &str, width: u32) -> (tempfile::TempDir, PathBuf) {
     let dir = tempfile::tempdir().unwrap();
     std::fs::create_dir(dir.path().join("figures")).unwrap();
-    let image = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../crates/tracer/scenes/images/kaleidoscope_lit-path.png");
-    std::fs::copy(
-        image,
-        dir.path().join("figures/render_kaleidoscope_lit_path.png"),
-    )
-    .unwrap();
+    // The sample's figures, each from a file of the checkout.
+    for (figure, source) in [
+        (
+            "render_kaleidoscope_lit_path.png",
+            "crates/tracer/scenes/images/kaleidoscope_lit-path.png",
+        ),
+        (
+            "tradeoff_gold_spheres-lambert.png",
+            "docs/tradeoffs/gold_spheres-lambert-pareto.png",
+        ),
+    ] {
+        let source = Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("..")
+            .join(source);
+        std::fs::copy(source, dir.path().join("figures").join(figure)).unwrap();
+    }
     let probe = PROBE.replace("__WIDTH__", &width.to_string());
     let probed = html.replacen("<head>", &format!("<head>{probe}"), 1);
     let path = dir.path().join("report.html");

@@ -17,7 +17,7 @@
 pub(crate) mod distribute;
 pub mod jobs;
 mod metals;
-mod prose;
+pub(crate) mod prose;
 mod report;
 pub(crate) mod setup;
 pub mod sweep;

@@ -17,6 +17,7 @@ use crate::metals::MetalColour;
 use crate::reference::ReferenceError;
 use crate::renders::RenderFigure;
 use crate::speed::Timing;
+use crate::tradeoff::findings::Findings;
 
 /// The schema of `report.json`.
 pub const REPORT_SCHEMA: &str = "validation-report/1";
@@ -52,11 +53,23 @@ pub struct Report {
     /// The speed/accuracy trade-off records read (`docs/tradeoffs`), one a
     /// scene.
     pub tradeoffs: Vec<crate::tradeoff::record::Record>,
+    /// Each trade-off record's findings in words, by the record's stem
+    /// ([`Report::word_tradeoffs`]); not part of `report.json`, which
+    /// carries the findings themselves.
+    #[serde(skip)]
+    pub tradeoff_words: BTreeMap<String, String>,
     /// The render triptychs (ours | Mitsuba | difference), written as PNG
     /// by the command beside the report; not part of `report.json`.
     #[serde(skip)]
     pub render_figures: Vec<RenderFigure>,
 }
+
+/// The sentences that say what a sweep's findings mean, in the report's
+/// language (English): the paragraph under each scene's table in
+/// `docs/tradeoffs.md`. The words belong to the command that writes the
+/// records (`optics tradeoff`), above this crate, which hands them in
+/// ([`crate::pipeline::Options::wording`]).
+pub type Wording = fn(&Findings) -> Vec<String>;
 
 /// Counts over the checks.
 #[derive(Clone, Debug, Default, Serialize)]
@@ -147,6 +160,7 @@ impl Report {
             speed: Vec::new(),
             technique_curves: Default::default(),
             tradeoffs: Vec::new(),
+            tradeoff_words: BTreeMap::new(),
             render_figures: Vec::new(),
         }
     }
@@ -161,6 +175,17 @@ impl Report {
         let info: ReferenceInfo = crate::reference::parse_any(&path, &text)?;
         self.references.insert(name.to_owned(), info);
         Ok(())
+    }
+
+    /// Words each trade-off record's findings by `wording` into
+    /// [`Report::tradeoff_words`], one paragraph a record; a record
+    /// without findings gets none.
+    pub fn word_tradeoffs(&mut self, wording: Wording) {
+        self.tradeoff_words = self
+            .tradeoffs
+            .iter()
+            .filter_map(|r| Some((r.stem(), wording(r.findings.as_ref()?).join(" "))))
+            .collect();
     }
 
     /// Recounts [`Report::summary`] from the checks.

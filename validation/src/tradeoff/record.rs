@@ -70,6 +70,10 @@ pub struct Point {
     pub settings: Settings,
     /// The median render time, s.
     pub seconds_median: f64,
+    /// Every timed render, s (absent from records written before they
+    /// were kept): the spread around the median.
+    #[serde(default)]
+    pub seconds: Vec<f64>,
     /// Rays cast by one render.
     pub rays: f64,
     /// The fixed measures against the truth.

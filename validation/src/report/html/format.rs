@@ -1,5 +1,7 @@
 //! Numbers and text as the page shows them.
 
+use std::fmt::Write as _;
+
 use crate::check::Check;
 
 /// `text` safe inside an element or a quoted attribute.
@@ -12,6 +14,28 @@ pub(super) fn escape(text: &str) -> String {
             '>' => out.push_str("&gt;"),
             '"' => out.push_str("&quot;"),
             _ => out.push(c),
+        }
+    }
+    out
+}
+
+/// Prose as Markdown writes it, for the page: each `` `span` `` between a
+/// pair of backticks as code, the rest escaped; a backtick left unpaired
+/// stays a backtick.
+pub(super) fn inline_code(text: &str) -> String {
+    let parts: Vec<&str> = text.split('`').collect();
+    let paired = parts.len() - (parts.len() + 1) % 2;
+    let mut out = String::with_capacity(text.len() + 16);
+    for (k, part) in parts.iter().enumerate() {
+        match (k % 2, k < paired) {
+            (1, true) => {
+                let _ = write!(out, "<code>{}</code>", escape(part));
+            }
+            (1, false) => {
+                out.push('`');
+                out.push_str(&escape(part));
+            }
+            _ => out.push_str(&escape(part)),
         }
     }
     out

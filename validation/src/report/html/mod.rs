@@ -254,6 +254,7 @@ img{max-width:100%}img.pixels{image-rendering:pixelated}\
 figcaption{font-size:.85em;color:#444;overflow-wrap:anywhere}\
 .render{width:16em;max-width:100%}.flip img{display:block;width:100%;height:100%;object-fit:cover;object-position:0 0}\
 .flip:hover img,.flip:focus img{object-position:var(--second) 0}.flip:focus{outline:2px solid #36c}\
+.trade td,.trade th{overflow-wrap:normal}.trade td:first-child{min-width:9em}.trade td:last-child{white-space:nowrap}.plot{max-width:48em}\
 .ramp{display:inline-block;width:8em;height:1em;border:1px solid #888;vertical-align:middle}code{background:#f4f4f4;overflow-wrap:anywhere}";
 
 /// One card per area: its pass count, its headline, its figure.
@@ -460,6 +461,20 @@ mod tests {
     #[test]
     fn html_is_escaped() {
         assert_eq!(escape("<a & \"b\">"), "&lt;a &amp; &quot;b&quot;&gt;");
+    }
+
+    #[test]
+    fn prose_shows_its_code_spans_as_code_and_escapes_the_rest() {
+        for (markdown, html) in [
+            ("`max_depth 4` (0.77×)", "<code>max_depth 4</code> (0.77×)"),
+            ("a < b, `x & y`", "a &lt; b, <code>x &amp; y</code>"),
+            ("`a` and `b`", "<code>a</code> and <code>b</code>"),
+            ("one ` left", "one ` left"),
+            ("`a` and ` left", "<code>a</code> and ` left"),
+            ("", ""),
+        ] {
+            assert_eq!(format::inline_code(markdown), html, "{markdown}");
+        }
     }
 
     #[test]

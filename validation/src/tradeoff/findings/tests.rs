@@ -36,6 +36,7 @@ fn point(
             fresnel: fresnel.to_owned(),
         },
         seconds_median: seconds,
+        seconds: vec![seconds],
         rays: 1e4 * seconds,
         errors: errors(rel_rmse, 10.0 * rel_rmse, light),
         against_scene: errors(0.0, seen, 1.0),
