@@ -66,6 +66,7 @@ fn record(points: Vec<Point>) -> Record {
         points,
         rgb_against_spectrum: Vec::new(),
         findings: None,
+        mitsuba: None,
     }
 }
 
