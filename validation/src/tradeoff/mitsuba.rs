@@ -351,7 +351,7 @@ fn pixels_f32le(text: &str, count: usize) -> Result<Vec<DVec3>, String> {
 /// settles the factor once, from the sizes, in [`reference_for`].
 pub fn box_downsample(image: &Image, factor: u32) -> Vec<DVec3> {
     assert!(
-        factor > 0 && image.width % factor == 0 && image.height % factor == 0,
+        factor > 0 && image.width.is_multiple_of(factor) && image.height.is_multiple_of(factor),
         "{factor} divides {}×{}",
         image.width,
         image.height
