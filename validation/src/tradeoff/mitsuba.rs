@@ -449,6 +449,49 @@ pub fn measure(reference: &Reference, truth: &[DVec3], points: Vec<Against>) -> 
     }
 }
 
+/// What the findings say of Mitsuba's truth: how much of its light the
+/// sweep's truth and the scene's own settings carry, whether the truth's
+/// share is 1 within [`super::findings::NOISE_SIGMAS`] standard errors,
+/// and whether the two truths rank the settings alike.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct SecondTruth {
+    /// The reference's size, pixels.
+    pub size: [u32; 2],
+    /// The region's pixels.
+    pub pixels: u32,
+    /// The sweep's truth's light share and its standard error.
+    pub truth: [f64; 2],
+    /// The scene's own settings' light share and its standard error.
+    pub own: [f64; 2],
+    /// Whether the truth's share is 1 within the noise.
+    pub within_noise: bool,
+    /// Pairs of settings ranked, alike or not.
+    pub pairs: usize,
+    /// Pairs ranked the other way under Mitsuba's truth.
+    pub discordant: usize,
+}
+
+impl SecondTruth {
+    /// From a record's field; `None` where nothing was measured.
+    pub fn of(truth: Option<&MitsubaTruth>) -> Option<Self> {
+        let Some(MitsubaTruth::Measured(m)) = truth else {
+            return None;
+        };
+        let own = m.points.first()?;
+        let floor = &m.floor;
+        Some(SecondTruth {
+            size: [m.width, m.height],
+            pixels: m.pixels,
+            truth: [floor.light, floor.light_se],
+            own: [own.light, own.light_se],
+            within_noise: (floor.light - 1.0).abs()
+                <= super::findings::NOISE_SIGMAS * floor.light_se,
+            pairs: m.ranking.concordant + m.ranking.discordant.len(),
+            discordant: m.ranking.discordant.len(),
+        })
+    }
+}
+
 /// What `optics validate` holds a record's Mitsuba truth to, given its
 /// points' labels in order: each setting's numbers a value the measure
 /// can take, in the record's order, and the ranking the one its numbers

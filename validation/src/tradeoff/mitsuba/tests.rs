@@ -255,3 +255,32 @@ fn the_record_is_held_to_its_own_numbers() {
     );
     assert!(hold(Some(&MitsubaTruth::NoReference("why".into())), &labels).is_empty());
 }
+
+/// The findings' reading: a truth whose share is 1.0014 ± 0.0014 is
+/// within two standard errors of Mitsuba's light, one of 1.0167 ± 0.0017
+/// is not; the scene's own settings are the first point; a discordant
+/// pair is counted; nothing is said where nothing was measured.
+#[test]
+fn the_findings_say_whether_the_truths_agree_within_the_noise() {
+    let with_floor = |light: f64, se: f64| {
+        let mut m = measured(vec![point("own", 0.3, 0.2), point("b", 0.2, 0.3)]);
+        if let MitsubaTruth::Measured(m) = &mut m {
+            m.floor.light = light;
+            m.floor.light_se = se;
+            m.points[0].light = 1.34;
+        }
+        m
+    };
+    let near = SecondTruth::of(Some(&with_floor(1.0014, 0.0014))).unwrap();
+    assert!(near.within_noise);
+    assert_eq!((near.own[0], near.pairs, near.discordant), (1.34, 1, 1));
+    let far = SecondTruth::of(Some(&with_floor(1.0167, 0.0017))).unwrap();
+    assert!(!far.within_noise);
+    let below = SecondTruth::of(Some(&with_floor(0.9833, 0.0017))).unwrap();
+    assert!(!below.within_noise);
+    assert_eq!(
+        SecondTruth::of(Some(&MitsubaTruth::NoReference("why".into()))),
+        None
+    );
+    assert_eq!(SecondTruth::of(None), None);
+}
