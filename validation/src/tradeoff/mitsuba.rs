@@ -178,8 +178,10 @@ pub enum NoReference {
     NotLambert,
     /// The sweep's scene differs from the one Mitsuba measured.
     SceneDiffers {
-        /// What differs, in words.
-        what: String,
+        /// The first part that differs (`camera`, `background`, ...).
+        part: &'static str,
+        /// Where that is the background: ours and Mitsuba's.
+        backgrounds: Option<([f32; 3], [f32; 3])>,
     },
     /// The camera sees no diffuse surface where the light tracer applies.
     NoRegion,
@@ -199,7 +201,18 @@ impl std::fmt::Display for NoReference {
                 f,
                 "Mitsuba measured course_rough as Lambert: --lambert measures the scene so"
             ),
-            NoReference::SceneDiffers { what } => write!(f, "the scene is not the one Mitsuba measured: {what}"),
+            NoReference::SceneDiffers {
+                backgrounds: Some((ours, theirs)),
+                ..
+            } => write!(
+                f,
+                "the scene is not the one Mitsuba measured: its background {ours:?} lights it, \
+                 where Mitsuba's was {theirs:?}"
+            ),
+            NoReference::SceneDiffers { part, .. } => write!(
+                f,
+                "the scene is not the one Mitsuba measured: its {part} differ"
+            ),
             NoReference::NoRegion => write!(
                 f,
                 "the camera sees no diffuse surface, where Mitsuba's light tracer holds all the light"
@@ -266,8 +279,15 @@ pub fn reference_for(
     {
         return Err(NoReference::NotLambert);
     }
-    if let Some(what) = difference(&scene.resized(s.width, s.height), &decoded.scene) {
-        return Err(NoReference::SceneDiffers { what });
+    let ours = scene.resized(s.width, s.height);
+    if let Some(part) = difference(&ours, &decoded.scene) {
+        let backgrounds = (part == "background").then(|| {
+            (
+                ours.background.to_array(),
+                decoded.scene.background.to_array(),
+            )
+        });
+        return Err(NoReference::SceneDiffers { part, backgrounds });
     }
     let Some(passes) = decoded.passes.get(&(ESTIMATE, REGION)) else {
         return Err(NoReference::NoRegion);
@@ -288,9 +308,9 @@ pub fn reference_for(
 }
 
 /// The first part in which `ours` (at the reference's size) differs from
-/// the scene Mitsuba measured, in words; the render settings are the
-/// sweep's to vary and are not compared.
-fn difference(ours: &Scene, theirs: &Scene) -> Option<String> {
+/// the scene Mitsuba measured; the render settings are the sweep's to vary
+/// and are not compared.
+fn difference(ours: &Scene, theirs: &Scene) -> Option<&'static str> {
     let parts = [
         ("camera", ours.camera == theirs.camera),
         ("background", ours.background == theirs.background),
@@ -310,15 +330,7 @@ fn difference(ours: &Scene, theirs: &Scene) -> Option<String> {
         ),
         ("lights", ours.lights == theirs.lights),
     ];
-    let (part, _) = parts.iter().find(|(_, same)| !same)?;
-    Some(match *part {
-        "background" => format!(
-            "its background {:?} lights it, where Mitsuba's was {:?}",
-            ours.background.to_array(),
-            theirs.background.to_array()
-        ),
-        part => format!("its {part} differ"),
-    })
+    parts.iter().find(|(_, same)| !same).map(|(part, _)| *part)
 }
 
 /// Pixels of three little-endian `f32`, base64, `count` of them.

@@ -93,8 +93,14 @@ fn hungarian(why: &NoReference) -> String {
         NoReference::NotLambert => {
             "a Mitsuba a course_rough anyagot Lambertként mérte: a --lambert így mér".to_owned()
         }
-        NoReference::SceneDiffers { what } => {
-            format!("a jelenet nem az, amelyet a Mitsuba mért: {what}")
+        NoReference::SceneDiffers {
+            backgrounds: Some((ours, theirs)),
+            ..
+        } => format!(
+            "a jelenet nem az, amelyet a Mitsuba mért: háttere, {ours:?}, megvilágítja, a Mitsubáé {theirs:?} volt"
+        ),
+        NoReference::SceneDiffers { part, .. } => {
+            format!("a jelenet nem az, amelyet a Mitsuba mért: eltér: {part}")
         }
         NoReference::NoRegion => {
             "a kamera nem lát diffúz felületet, ahol a Mitsuba fénykövetője az összes fényt adja"
