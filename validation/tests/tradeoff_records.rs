@@ -234,3 +234,44 @@ fn fuzz_a_mutated_record_never_passes_with_a_forbidden_number() {
         caught.get()
     );
 }
+
+/// The record's settings against Mitsuba's truth, ranked alike under both.
+fn mitsuba() -> serde_json::Value {
+    let against = |label: &str, rmse: f64| {
+        serde_json::json!({"label": label, "light": 1.0, "light_se": 0.001,
+                           "rel_rmse": rmse, "rel_rmse_truth": rmse})
+    };
+    serde_json::json!({"measured": {
+        "scene": "gold_spheres", "estimate": "ptracer", "region": "diffuse",
+        "width": 40, "height": 30, "factor": 2, "pixels": 11, "passes": 16, "spp": 64,
+        "max_depth": 16, "floor": against("truth", 0.02),
+        "points": [against("scene", 0.2), against("fresnel schlick", 0.1)],
+        "ranking": {"concordant": 1, "discordant": []}}})
+}
+
+#[test]
+fn a_mitsuba_truth_is_held_to_its_numbers_and_its_settings() {
+    let c = check(
+        Path::new("docs/tradeoffs/x.json"),
+        &record(|v| v["mitsuba"] = mitsuba()),
+    );
+    assert!(c.passed(), "{:?}", c.failures);
+    let f = failures(|v| {
+        v["mitsuba"] = mitsuba();
+        v["mitsuba"]["measured"]["ranking"]["concordant"] = serde_json::json!(0);
+    });
+    assert_eq!(f.len(), 1, "{f:?}");
+    assert!(f[0].contains("ranking"), "{f:?}");
+    let f = failures(|v| {
+        v["mitsuba"] = mitsuba();
+        v["mitsuba"]["measured"]["points"][1]["label"] = serde_json::json!("fresnel course");
+    });
+    assert!(f.iter().any(|m| m.contains("not the record's")), "{f:?}");
+    let f = failures(|v| v["mitsuba"] = serde_json::json!({"no_reference": ""}));
+    assert_eq!(f.len(), 1, "{f:?}");
+    let c = check(
+        Path::new("docs/tradeoffs/x.json"),
+        &record(|v| v["mitsuba"] = serde_json::json!({"no_reference": "a reason"})),
+    );
+    assert!(c.passed(), "{:?}", c.failures);
+}

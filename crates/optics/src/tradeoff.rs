@@ -17,6 +17,7 @@
 pub(crate) mod distribute;
 pub mod jobs;
 mod metals;
+mod mitsuba;
 pub(crate) mod prose;
 mod report;
 pub(crate) mod setup;
@@ -274,6 +275,14 @@ pub struct Sweep {
     /// for a sweep rendered in one run.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub collected: Option<distribute::Collected>,
+    /// Every setting against Mitsuba's estimate of all the light, or why
+    /// there is no such reference for this sweep
+    /// ([`validation::tradeoff::mitsuba`]).
+    pub mitsuba: validation::tradeoff::mitsuba::MitsubaTruth,
+    /// Why there is no reference, typed, for the table's words (not in
+    /// the JSON, which has them in `mitsuba`).
+    #[serde(skip)]
+    mitsuba_missing: Option<validation::tradeoff::mitsuba::NoReference>,
 }
 
 /// Where and when the renders were timed.
@@ -356,8 +365,10 @@ fn measure_points(
     let grazing_truth = (grazing.count() > 0)
         .then(|| measure::Truth::new(truth.image.clone(), truth.noise, &grazing));
     let mut scene_grazing: Option<measure::Truth> = None;
+    let mut second = mitsuba::Second::new(job.scene(), &args.scene);
     for (point, timed) in plan.points.into_iter().zip(timed) {
         let errors = measure::errors(&timed.images, truth, &mask);
+        second.add(&point.label, &timed.images);
         // The first point is the scene's own settings.
         let reference =
             scene_render.get_or_insert_with(|| measure::Truth::from_renders(&timed.images, &mask));
@@ -394,6 +405,7 @@ fn measure_points(
     }
     mark_fronts(&mut points);
     mark_verdicts(&mut points);
+    let (mitsuba, mitsuba_missing) = second.finish(&truth.image);
     Sweep {
         schema: SCHEMA,
         version: SCHEMA_VERSION,
@@ -416,6 +428,8 @@ fn measure_points(
         rgb_against_spectrum: metals::rgb_against_spectrum(job.scene()),
         findings: None,
         collected: provenance.collected,
+        mitsuba,
+        mitsuba_missing,
     }
 }
 

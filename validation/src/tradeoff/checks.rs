@@ -67,7 +67,9 @@ pub fn check(file: &Path, record: &Result<Record, ReferenceError>) -> Check {
         &format!(
             "schema {SCHEMA} version {SCHEMA_VERSION}; every measure finite, ≥ 0 and ꟻLIP ≤ 1; \
              the truth's relative noise ≤ {UNCONVERGED}; the fronts, verdicts and findings recorded \
-             are those the recorded times and errors give"
+             are those the recorded times and errors give; against Mitsuba's truth, where recorded, \
+             every setting's light and relative RMSE finite and ≥ 0 and the ranking the one they give, \
+             or a reason why there is no reference"
         ),
     );
     let record = match record {
@@ -105,6 +107,22 @@ pub fn check(file: &Path, record: &Result<Record, ReferenceError>) -> Check {
     }
     fronts(&mut check, &record.points);
     verdicts(&mut check, base, &record.points[1..]);
+    let labels: Vec<&str> = record.points.iter().map(|p| p.label.as_str()).collect();
+    for failure in super::mitsuba::hold(record.mitsuba.as_ref(), &labels) {
+        check.fail(failure);
+    }
+    if let Some(super::mitsuba::MitsubaTruth::Measured(m)) = &record.mitsuba {
+        check.measure(
+            "our truth's light against Mitsuba's, the floor",
+            m.floor.light,
+            &m.estimate,
+        );
+        check.measure(
+            "our truth's relative RMSE against Mitsuba's, the floor",
+            m.floor.rel_rmse,
+            &m.estimate,
+        );
+    }
     match &record.findings {
         Some(recorded) if *recorded == Findings::of(record) => {}
         Some(_) => {

@@ -59,6 +59,9 @@ pub struct Findings {
     pub local_against_whitted: Option<LocalAgainstWhitted>,
     /// The scene's metals in three channels against their spectra.
     pub metals: Vec<MetalRgb>,
+    /// Against Mitsuba's truth, where the record measured it.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub mitsuba: Option<super::mitsuba::SecondTruth>,
 }
 
 /// What renders of the scene's own work took against its time: a saving
@@ -319,6 +322,7 @@ impl Findings {
             schlick: schlick(base, rest, ratio),
             local_against_whitted: local_against_whitted(base, rest),
             metals: record.rgb_against_spectrum.clone(),
+            mitsuba: super::mitsuba::SecondTruth::of(record.mitsuba.as_ref()),
         }
     }
 
@@ -338,6 +342,7 @@ impl Findings {
             schlick: None,
             local_against_whitted: None,
             metals: record.rgb_against_spectrum.clone(),
+            mitsuba: super::mitsuba::SecondTruth::of(record.mitsuba.as_ref()),
         }
     }
 }

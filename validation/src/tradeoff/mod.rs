@@ -12,6 +12,7 @@ pub mod budget;
 pub mod checks;
 pub mod findings;
 pub mod measure;
+pub mod mitsuba;
 pub mod pareto;
 pub mod record;
 

@@ -5,6 +5,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::findings::{Findings, MetalRgb};
+use super::mitsuba::MitsubaTruth;
 use super::Verdict;
 
 /// One scene's sweep.
@@ -44,6 +45,10 @@ pub struct Record {
     /// command wrote it.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub findings: Option<Findings>,
+    /// Every setting against Mitsuba's estimate of all the light, or why
+    /// there is none (absent from records written before it was measured).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub mitsuba: Option<MitsubaTruth>,
 }
 
 /// The ground truth a record measures against.

@@ -7,6 +7,7 @@ use validation::tradeoff::findings::{
     Bounces, Findings, LightLeftOut, MetalRgb, RgbOutcome, Schlick, Shortcut, TimingNoise,
     GRAZING_COS,
 };
+use validation::tradeoff::mitsuba::SecondTruth;
 use validation::tradeoff::{Verdict, JUST_NOTICEABLE, WORTH_IT};
 
 use crate::lang::{say, Lang};
@@ -44,7 +45,49 @@ pub fn sentences(f: &Findings, lang: Lang) -> Vec<String> {
     if !f.metals.is_empty() {
         out.push(metals(&f.metals, lang));
     }
+    out.extend(f.mitsuba.as_ref().map(|m| second_truth(m, lang)));
     out
+}
+
+/// The truth and the scene's own settings against Mitsuba's light tracer,
+/// and whether the two truths rank the settings alike.
+fn second_truth(m: &SecondTruth, lang: Lang) -> String {
+    let noise = if m.within_noise {
+        lang.pick("within the noise", "a zajon belül")
+    } else {
+        lang.pick(
+            "beyond the noise: the two truths differ",
+            "a zajon túl: a két referencia eltér",
+        )
+    };
+    let ranking = if m.discordant == 0 {
+        say!(
+            lang,
+            "ranked by relative RMSE, the settings stand in the same order under both truths",
+            "relatív RMSE szerint a beállítások sorrendje mindkét referenciával azonos"
+        )
+    } else {
+        say!(
+            lang,
+            "ranked by relative RMSE, {} of {} pairs of settings stand the other way under Mitsuba's",
+            "relatív RMSE szerint a(z) {1} beállításpárból {0} fordítva áll a Mitsubáéval",
+            m.discordant,
+            m.pairs
+        )
+    };
+    say!(
+        lang,
+        "Against Mitsuba's light tracer, on the {} pixels that see a diffuse surface at {}×{}, the truth carries {:.4} ± {:.4} of its light ({}) and the scene's own settings {:.4}; {}.",
+        "A Mitsuba fénykövetőjével szemben, a {1}×{2}-es kép {0} diffúz felületet látó pixelén a referencia annak fényéből {3:.4} ± {4:.4} részt hordoz ({5}), a jelenet saját beállításai {6:.4} részt; {7}.",
+        m.pixels,
+        m.size[0],
+        m.size[1],
+        m.truth[0],
+        m.truth[1],
+        noise,
+        m.own[0],
+        ranking
+    )
 }
 
 /// The band of the run's timing noise, from renders of the scene's own

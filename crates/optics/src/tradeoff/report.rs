@@ -75,6 +75,11 @@ pub fn table(sweep: &Sweep, lang: Lang) -> Vec<String> {
             front_marks(p),
         ));
     }
+    lines.extend(super::mitsuba::table(
+        &sweep.mitsuba,
+        sweep.mitsuba_missing.as_ref(),
+        lang,
+    ));
     lines
 }
 
@@ -165,6 +170,7 @@ pub fn markdown(sweep: &Sweep, stem: &str) -> String {
     for line in verdicts(sweep) {
         out += &format!("- {line}\n");
     }
+    out += &super::mitsuba::markdown(&sweep.mitsuba);
     if !sweep.skipped.is_empty() {
         out += "\nNot swept here: ";
         out += &sweep

@@ -67,6 +67,7 @@ fn record(points: Vec<Point>) -> Record {
         points,
         rgb_against_spectrum: Vec::new(),
         findings: None,
+        mitsuba: None,
     }
 }
 
