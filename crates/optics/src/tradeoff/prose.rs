@@ -104,13 +104,19 @@ fn timing(t: &TimingNoise, lang: Lang) -> String {
             example
         ),
     };
+    // A band whose ends print alike is one number, not "0.95× to 0.95×".
+    let [low, high] = t.ratios.map(|r| format!("{r:.2}"));
+    let band = if low == high {
+        say!(lang, "{}×", "{}-szeresét", low)
+    } else {
+        say!(lang, "{}× to {}×", "{}–{}-szeresét", low, high)
+    };
     say!(
         lang,
-        "Renders of the scene's own work (as many rays, the same image: {}) took {:.2}× to {:.2}× its time: this run's timing noise, so no time ratio inside that band is counted a saving or a cost.",
-        "A jelenet saját munkáját végző képek (ugyanannyi sugár, ugyanaz a kép: {}) az idő {:.2}–{:.2}-szeresét vették: ez a futás időmérési zaja, így e sávon belüli időarány sem megtakarításnak, sem költségnek nem számít.",
+        "Renders of the scene's own work (as many rays, the same image: {}) took {} its time: this run's timing noise, so no time ratio inside that band is counted a saving or a cost.",
+        "A jelenet saját munkáját végző képek (ugyanannyi sugár, ugyanaz a kép: {}) az idő {} vették: ez a futás időmérési zaja, így e sávon belüli időarány sem megtakarításnak, sem költségnek nem számít.",
         renders,
-        t.ratios[0],
-        t.ratios[1]
+        band
     )
 }
 
@@ -434,3 +440,6 @@ fn metals(metals: &[MetalRgb], lang: Lang) -> String {
         items.join("; ")
     )
 }
+
+#[cfg(test)]
+mod tests;
