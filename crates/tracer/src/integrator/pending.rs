@@ -47,7 +47,7 @@ impl<'m> Pending<'m> {
     /// roulette slot; full, the throughput `beta` is settled at once
     /// ([`Pending::settle`]), and `None` where the roulette ended the path.
     pub(super) fn push(&mut self, tracer: &Tracer, bounce: Bounce<'m>, beta: Vec3) -> Option<Vec3> {
-        self.bounces.get_or_insert_with(|| [None; CAPACITY])[self.len] = Some(bounce);
+        self.bounces.get_or_insert([None; CAPACITY])[self.len] = Some(bounce);
         self.len += 1;
         if self.len == CAPACITY {
             return self.settle(tracer, beta);
