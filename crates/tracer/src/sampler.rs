@@ -80,6 +80,7 @@ impl Sampler {
 impl Sample {
     /// The next slot's pair, each number uniform in `[0, 1)`; over the
     /// pixel's samples `0..2^m` the pairs of one slot are a (0, m, 2)-net.
+    #[inline]
     pub fn next_2d(&mut self) -> [f32; 2] {
         let seeds = self.next_seeds();
         let i = shuffled(self.index, seeds[0]);
