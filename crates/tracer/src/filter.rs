@@ -19,6 +19,7 @@ use crate::scene::PixelFilter;
 /// Where `sample`'s primary ray passes under `filter`, each coordinate in
 /// `[0, 1)` from the pixel's top-left corner: the sample's next pair, or
 /// the centre (drawing nothing).
+#[inline]
 pub fn sample_point(filter: PixelFilter, sample: &mut Sample) -> (f64, f64) {
     match filter {
         PixelFilter::Box => {

@@ -11,7 +11,7 @@ use rayon::prelude::*;
 use crate::filter::sample_point;
 use crate::integrator::{Primary, RayCounts, Tracer};
 use crate::job::RenderError;
-use crate::sampler::Sampler;
+use crate::sampler::{Sample, Sampler};
 use crate::tier::Vector;
 
 /// A linear-radiance image, W/(sr·m²) per channel, rows top to bottom.
@@ -117,10 +117,16 @@ pub(crate) fn check_finite(image: &Image) -> Result<(), RenderError> {
     }
 }
 
+/// How many of a pixel's camera rays are made together
+/// ([`Camera::rays_in`](crate::camera::Camera::rays_in)).
+const CAMERA_BLOCK: u32 = 8;
+
 /// One pixel: the mean of its samples, each through the point of the pixel
 /// the filter gives it (`crate::filter`), summed in `f64` so that the mean
 /// of many samples keeps `f32` precision, and rounded once to the film's
-/// `f32`.
+/// `f32`. The samples' camera rays are made [`CAMERA_BLOCK`] at a time;
+/// each sample keeps its own numbers and the sum its order, so the pixel
+/// has the bits of one sample made and traced after another.
 fn pixel<V: Vector>(tracer: &impl Primary<V>, x: u32, y: u32, counts: &mut RayCounts) -> Vec3 {
     let Tracer {
         scene,
@@ -132,7 +138,20 @@ fn pixel<V: Vector>(tracer: &impl Primary<V>, x: u32, y: u32, counts: &mut RayCo
     let samples = Sampler::for_pixel(settings.seed, index);
     let spp = machinery.spp.max(1);
     let mut sum = DVec3::ZERO;
-    for k in 0..spp {
+    let mut k = 0;
+    while spp - k >= CAMERA_BLOCK {
+        let mut block: [Sample; CAMERA_BLOCK as usize] =
+            std::array::from_fn(|i| samples.sample(k + i as u32));
+        let within = block
+            .each_mut()
+            .map(|sample| sample_point(settings.pixel_filter, sample));
+        let rays = scene.camera.rays_in(x, y, within);
+        for (ray, sample) in rays.iter().zip(&mut block) {
+            sum += tracer.primary(ray, sample, counts).to_f64();
+        }
+        k += CAMERA_BLOCK;
+    }
+    for k in k..spp {
         let mut sample = samples.sample(k);
         let within = sample_point(settings.pixel_filter, &mut sample);
         let ray = scene.camera.ray_in(x, y, within);

@@ -40,6 +40,10 @@ const SAMPLER_SALT: u64 = 0x0053_414D_504C_4552;
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Sampler {
     key: u64,
+    /// Slot 0's seeds, the same for every sample of the pixel: worked out
+    /// once here, not once per sample (the box filter's pair is drawn from
+    /// slot 0 by every sample of every pixel).
+    first: [u32; 3],
 }
 
 /// One sample of a pixel: its numbers, drawn one dimension slot at a time.
@@ -48,14 +52,17 @@ pub struct Sample {
     key: u64,
     index: u32,
     slot: u32,
+    first: [u32; 3],
 }
 
 impl Sampler {
     /// The samples of pixel `pixel` (or any other index of a camera ray,
     /// such as a cube map's texel) of a render with seed `seed`.
     pub fn for_pixel(seed: u64, pixel: u64) -> Self {
+        let key = splitmix64(seed ^ splitmix64(pixel ^ SAMPLER_SALT));
         Sampler {
-            key: splitmix64(seed ^ splitmix64(pixel ^ SAMPLER_SALT)),
+            key,
+            first: slot_seeds(key, 0),
         }
     }
 
@@ -65,6 +72,7 @@ impl Sampler {
             key: self.key,
             index,
             slot: 0,
+            first: self.first,
         }
     }
 }
@@ -72,12 +80,17 @@ impl Sampler {
 impl Sample {
     /// The next slot's pair, each number uniform in `[0, 1)`; over the
     /// pixel's samples `0..2^m` the pairs of one slot are a (0, m, 2)-net.
+    #[inline]
     pub fn next_2d(&mut self) -> [f32; 2] {
         let seeds = self.next_seeds();
         let i = shuffled(self.index, seeds[0]);
+        // `owen_scramble(sobol_0(i), s)` and `owen_scramble(sobol_1(i), s)`,
+        // their bits, with the scramble entered in its mirrored form: the
+        // van der Corput point mirrored is `i` itself, and Sobol's second
+        // dimension mirrored is the superset sum of `i`'s bits.
         [
-            unit(owen_scramble(sobol_0(i), seeds[1])),
-            unit(owen_scramble(sobol_1(i), seeds[2])),
+            unit(scramble_mirrored(i, seeds[1])),
+            unit(scramble_mirrored(sobol_1_mirrored(i), seeds[2])),
         ]
     }
 
@@ -110,7 +123,10 @@ impl Sample {
 
     /// The three seeds of the next slot, and the slot counted.
     fn next_seeds(&mut self) -> [u32; 3] {
-        let seeds = slot_seeds(self.key, self.slot);
+        let seeds = match self.slot {
+            0 => self.first,
+            slot => slot_seeds(self.key, slot),
+        };
         self.slot += 1;
         seeds
     }
@@ -130,10 +146,8 @@ impl Slot1d {
     /// would have drawn there.
     pub fn value(&self) -> f32 {
         let seeds = slot_seeds(self.key, self.slot);
-        unit(owen_scramble(
-            sobol_0(shuffled(self.index, seeds[0])),
-            seeds[1],
-        ))
+        // `owen_scramble(sobol_0(i), s)`, as in [`Sample::next_2d`].
+        unit(scramble_mirrored(shuffled(self.index, seeds[0]), seeds[1]))
     }
 }
 
@@ -154,6 +168,7 @@ fn shuffled(index: u32, seed: u32) -> u32 {
 
 /// Dimension 0 of Sobol's sequence, the base-2 van der Corput sequence:
 /// the index's bits mirrored about the binary point, as a 32-bit fraction.
+#[cfg(test)]
 fn sobol_0(index: u32) -> u32 {
     index.reverse_bits()
 }
@@ -161,17 +176,31 @@ fn sobol_0(index: u32) -> u32 {
 /// Dimension 1 of Sobol's sequence: its generator matrix is Pascal's
 /// triangle mod 2, column `j` `v_j = v_{j-1} ^ (v_{j-1} >> 1)` from
 /// `v_0 = 1/2` (I. M. Sobol', 1967; primitive polynomial `x + 1`); the
-/// point is the xor of the columns of the index's set bits, taken a byte
-/// of the index at a time from [`SOBOL_1_BY_BYTE`].
+/// point is the xor of the columns of the index's set bits
+/// ([`sobol_1_mirrored`], mirrored back).
+#[cfg(test)]
 fn sobol_1(index: u32) -> u32 {
-    let [b0, b1, b2, b3] = index.to_le_bytes();
-    SOBOL_1_BY_BYTE[0][b0 as usize]
-        ^ SOBOL_1_BY_BYTE[1][b1 as usize]
-        ^ SOBOL_1_BY_BYTE[2][b2 as usize]
-        ^ SOBOL_1_BY_BYTE[3][b3 as usize]
+    sobol_1_mirrored(index).reverse_bits()
+}
+
+/// [`sobol_1`]'s point mirrored (its bit `i` from the binary point is bit
+/// `i` here). Pascal's triangle mod 2 has `C(j, i)` odd exactly where the
+/// bits of `i` are a subset of those of `j` (Lucas' theorem), so bit `i`
+/// of the point is the xor of the index's bits `j ⊇ i`: the superset sum
+/// over the five bits of a bit's position, one xor-shift per bit, each
+/// adding to bit `i` (where that bit of `i` is clear) bit `i + 2^b`.
+fn sobol_1_mirrored(index: u32) -> u32 {
+    let mut x = index;
+    x ^= (x >> 1) & 0x5555_5555;
+    x ^= (x >> 2) & 0x3333_3333;
+    x ^= (x >> 4) & 0x0f0f_0f0f;
+    x ^= (x >> 8) & 0x00ff_00ff;
+    x ^= (x >> 16) & 0x0000_ffff;
+    x
 }
 
 /// The generator's columns `v_0 … v_31`.
+#[cfg(test)]
 const SOBOL_1_COLUMNS: [u32; 32] = {
     let mut v = [0; 32];
     v[0] = 1 << 31;
@@ -181,28 +210,6 @@ const SOBOL_1_COLUMNS: [u32; 32] = {
         j += 1;
     }
     v
-};
-
-/// Entry `[k][b]`: the xor of the columns `8k + i` for the set bits `i`
-/// of the byte `b` (16 KiB, in cache across a render).
-const SOBOL_1_BY_BYTE: [[u32; 256]; 4] = {
-    let mut table = [[0; 256]; 4];
-    let mut k = 0;
-    while k < 4 {
-        let mut b = 0;
-        while b < 256 {
-            let mut i = 0;
-            while i < 8 {
-                if b >> i & 1 == 1 {
-                    table[k][b] ^= SOBOL_1_COLUMNS[8 * k + i];
-                }
-                i += 1;
-            }
-            b += 1;
-        }
-        k += 1;
-    }
-    table
 };
 
 /// A nested uniform scramble of the 32-bit fraction `x`: bit `b` (from
@@ -216,7 +223,12 @@ const SOBOL_1_BY_BYTE: [[u32; 256]; 4] = {
 /// the bits above it. The even constants are those of the paper's
 /// hash (any even numbers keep the kind; these mix well).
 fn owen_scramble(x: u32, seed: u32) -> u32 {
-    let mut y = x.reverse_bits();
+    scramble_mirrored(x.reverse_bits(), seed)
+}
+
+/// [`owen_scramble`] of the fraction whose mirror image is `y`: the
+/// scramble's steps on the mirrored bits, and the result mirrored back.
+fn scramble_mirrored(mut y: u32, seed: u32) -> u32 {
     y = y.wrapping_add(seed);
     y ^= y.wrapping_mul(0x6c50_b47c);
     y = y.wrapping_mul(seed.rotate_right(16) | 1);

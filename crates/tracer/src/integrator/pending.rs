@@ -27,8 +27,10 @@ const CAPACITY: usize = 16;
 type Bounce<'m> = (f32, &'m Material, Slot1d);
 
 /// The conductor bounces of a path since its throughput was last used.
+/// Its room is laid out at the first bounce held: most paths meet no
+/// conductor, and every path starts a `Pending`.
 pub(super) struct Pending<'m> {
-    bounces: [Option<Bounce<'m>>; CAPACITY],
+    bounces: Option<[Option<Bounce<'m>>; CAPACITY]>,
     len: usize,
 }
 
@@ -36,7 +38,7 @@ impl<'m> Pending<'m> {
     /// No bounce pending.
     pub(super) fn new() -> Self {
         Pending {
-            bounces: [None; CAPACITY],
+            bounces: None,
             len: 0,
         }
     }
@@ -45,7 +47,7 @@ impl<'m> Pending<'m> {
     /// roulette slot; full, the throughput `beta` is settled at once
     /// ([`Pending::settle`]), and `None` where the roulette ended the path.
     pub(super) fn push(&mut self, tracer: &Tracer, bounce: Bounce<'m>, beta: Vec3) -> Option<Vec3> {
-        self.bounces[self.len] = Some(bounce);
+        self.bounces.get_or_insert([None; CAPACITY])[self.len] = Some(bounce);
         self.len += 1;
         if self.len == CAPACITY {
             return self.settle(tracer, beta);
@@ -56,14 +58,26 @@ impl<'m> Pending<'m> {
     /// `beta` with every pending bounce's weight and roulette applied in
     /// order, and none left pending; `None` where the roulette ended the
     /// path at one of them.
-    pub(super) fn settle(&mut self, tracer: &Tracer, mut beta: Vec3) -> Option<Vec3> {
-        let len = std::mem::take(&mut self.len);
-        for (cos_i, material, number) in self.bounces[..len].iter().flatten() {
-            beta *= tracer.conductor_weight(*cos_i, material);
-            beta = roulette(beta, *number, tracer.settings.throughput_cutoff)?;
+    #[inline]
+    pub(super) fn settle(&mut self, tracer: &Tracer, beta: Vec3) -> Option<Vec3> {
+        match (self.len, &self.bounces) {
+            (0, _) | (_, None) => Some(beta),
+            (len, Some(bounces)) => {
+                self.len = 0;
+                weigh(tracer, &bounces[..len], beta)
+            }
         }
-        Some(beta)
     }
+}
+
+/// `beta` with `bounces`' weights and roulettes applied in order; `None`
+/// where the roulette ended the path at one of them.
+fn weigh(tracer: &Tracer, bounces: &[Option<Bounce>], mut beta: Vec3) -> Option<Vec3> {
+    for (cos_i, material, number) in bounces.iter().flatten() {
+        beta *= tracer.conductor_weight(*cos_i, material);
+        beta = roulette(beta, *number, tracer.settings.throughput_cutoff)?;
+    }
+    Some(beta)
 }
 
 /// Russian roulette on the throughput `beta` after a bounce: below

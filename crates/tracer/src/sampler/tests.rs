@@ -210,7 +210,7 @@ fn variance_falls_faster_than_one_over_n_for_a_smooth_integrand() {
 /// Sobol's second dimension from its generator columns 1/2, 3/4, 5/8
 /// (`v_j = v_{j-1} ⊕ v_{j-1}/2`): point `k` is the xor of the columns of
 /// `k`'s set bits, so in index order 0, 1/2, 3/4, 1/4, 5/8, 1/8, 3/8, 7/8
-/// (the byte table gives the columns' xor for 10⁴ random 32-bit indices);
+/// (the superset sum gives the columns' xor for 10⁴ random 32-bit indices);
 /// with the van der Corput dimension every power-of-two prefix is a
 /// (0, m, 2)-net, up to 2^16 points (Sobol's sequence in its first two
 /// dimensions is a (0,2)-sequence).
@@ -283,6 +283,54 @@ fn a_slot_taken_without_its_number_leaves_every_number_unchanged() {
                 );
             }
             assert_eq!(lazy.slots_drawn(), eager.slots_drawn());
+        }
+    }
+}
+
+/// Slot `slot` of sample `index` of pixel `pixel` drawn as the
+/// construction states it, step by step: the slot's seeds hashed from the
+/// pixel's key, the index shuffled, Sobol's point in both dimensions (the
+/// second as the xor of its generator columns), each coordinate scrambled.
+fn constructed_pair(seed: u64, pixel: u64, index: u32, slot: u32) -> [f32; 2] {
+    let key = splitmix64(seed ^ splitmix64(pixel ^ SAMPLER_SALT));
+    let seeds = slot_seeds(key, slot);
+    let i = shuffled(index, seeds[0]);
+    let by_column = (0..32)
+        .filter(|j| i >> j & 1 == 1)
+        .fold(0, |x, j| x ^ SOBOL_1_COLUMNS[j]);
+    [
+        unit(owen_scramble(sobol_0(i), seeds[1])),
+        unit(owen_scramble(by_column, seeds[2])),
+    ]
+}
+
+/// The sampler's pairs have the bits of the construction (tolerance: none,
+/// `f32` compared exactly), the first slot's seeds taken once per pixel
+/// and the scramble entered mirrored: every slot 0..6 of samples 0..64 of
+/// 200 pixels under two seeds, and each slot's taken number the first of
+/// its pair.
+#[test]
+fn pairs_have_the_bits_of_the_scrambled_sobol_construction() {
+    for seed in [0, 0x5eed] {
+        for p in 0..200 {
+            let pixel = Sampler::for_pixel(seed, p);
+            for index in 0..64 {
+                let mut sample = pixel.sample(index);
+                for slot in 0..6 {
+                    let want = constructed_pair(seed, p, index, slot).map(f32::to_bits);
+                    let mut taken = sample.clone();
+                    assert_eq!(
+                        taken.take_1d().value().to_bits(),
+                        want[0],
+                        "seed {seed} pixel {p} sample {index} slot {slot}"
+                    );
+                    let got = sample.next_2d().map(f32::to_bits);
+                    assert_eq!(
+                        got, want,
+                        "seed {seed} pixel {p} sample {index} slot {slot}"
+                    );
+                }
+            }
         }
     }
 }
