@@ -114,6 +114,23 @@ fn dekker_error<T: Real>(a: T, b: T, p: T) -> T {
     ((ah * bh - p) + ah * bl + al * bh) + al * bl
 }
 
+/// The rounding error of `p = fl(a · b)`, exactly, for operands in
+/// Dekker's range whose error does not underflow (a narrow tier's numbers
+/// and their products, widened): one fused multiply-add where the
+/// instructions the caller is compiled for have it (`FUSED`, fixed per
+/// compiled path: the slice laws' AVX2 and AVX-512 loops), Dekker's
+/// product otherwise. The error is a number, not a rounding, so both give
+/// the same bits; the fused one takes one operation where Dekker's takes
+/// eleven.
+#[inline(always)]
+fn exact_error<T: Real, const FUSED: bool>(a: T, b: T, p: T) -> T {
+    if FUSED {
+        a.mul_add(b, -p)
+    } else {
+        dekker_error(a, b, p)
+    }
+}
+
 /// [`two_prod`] of two numbers widened from a tier whose products are exact
 /// in the wide one (`exact`, a constant per tier): the error term is zero,
 /// and is not computed.
@@ -271,11 +288,12 @@ pub(crate) fn snell_discriminant_from_sine<T: Real>(n_t: T, n_i: T, s: T, exact:
 //
 // Where the tier's products are exact in the wide precision (`f32` in
 // `f64`), both `η² · c²` and `(η² + 1) · c² = (η c)² + c²` come from one
-// product, `η c`, exact, squared in two parts by one split
+// product, `η c`, exact, squared in two parts with its exact error
 // ([`square_of_narrow_product`]); Brewster's factor is then
-// `(η c)² + (c² − n_i²)`, the difference carried by Fast2Sum: nine
-// operations and three, where the two products with their errors by
-// Dekker's method took thirty-eight.
+// `(η c)² + (c² − n_i²)`, the difference carried by Fast2Sum: three
+// operations with a fused multiply-add (thirteen without) and three,
+// where the two products with their errors by Dekker's method took
+// thirty-eight.
 
 /// The squares of a dielectric's index `η = n_inside / n_outside` that its
 /// laws take at every angle, each carried unevaluated as if in twice the
@@ -323,6 +341,23 @@ impl<T: Real> IndexSquares<T> {
         }
     }
 
+    /// `η`, widened.
+    #[inline(always)]
+    pub(crate) fn eta(&self) -> T {
+        self.eta
+    }
+
+    /// `n_t²` rounded to the wide precision: `η²` from the outside, 1
+    /// from the inside.
+    #[inline(always)]
+    pub(crate) fn transmitted(&self, inside: bool) -> T {
+        if inside {
+            T::one()
+        } else {
+            self.eta2.high
+        }
+    }
+
     /// `n_i²`: 1 from the outside, `η²` from the inside.
     #[inline(always)]
     fn incident(&self, inside: bool) -> TwoPart<T> {
@@ -365,11 +400,16 @@ fn unit_square<T: Real>(c: T, exact: bool) -> TwoPart<T> {
 /// that are zero by construction where the tier's products are `exact`
 /// (`c²`'s) are not added.
 #[inline(always)]
-fn times_square<T: Real>(k: TwoPart<T>, c2: TwoPart<T>, exact: bool) -> TwoPart<T> {
+fn times_square<T: Real, const FUSED: bool>(
+    k: TwoPart<T>,
+    c2: TwoPart<T>,
+    exact: bool,
+) -> TwoPart<T> {
     let high = k.high * c2.high;
-    // A narrow tier's constants lie below 2^256, in Dekker's range.
+    // A narrow tier's constants lie below 2^256, in Dekker's range, and
+    // their products with c² far above underflow.
     let error = if exact {
-        dekker_error(k.high, c2.high, high)
+        exact_error::<T, FUSED>(k.high, c2.high, high)
     } else {
         two_prod(k.high, c2.high).1
     };
@@ -383,9 +423,10 @@ fn times_square<T: Real>(k: TwoPart<T>, c2: TwoPart<T>, exact: bool) -> TwoPart<
 
 /// `n_t² − n_i² + n_i² c²` `= n_t² − n_i² sin²θ_i = n_t² cos²θ_t` at
 /// `c = |cos θ_i|`, from the side `inside` or not: Snell's discriminant,
-/// which vanishes at the critical angle.
+/// which vanishes at the critical angle. `FUSED`: [`exact_error`]'s, for
+/// a tier whose products are `exact`.
 #[inline(always)]
-pub(crate) fn snell_discriminant<T: Real>(
+pub(crate) fn snell_discriminant<T: Real, const FUSED: bool>(
     squares: &IndexSquares<T>,
     inside: bool,
     c: T,
@@ -394,9 +435,9 @@ pub(crate) fn snell_discriminant<T: Real>(
     let c2 = unit_square(c, exact);
     let x = if inside {
         if exact {
-            square_of_narrow_product(squares.eta, c)
+            square_of_narrow_product::<T, FUSED>(squares.eta, c)
         } else {
-            times_square(squares.eta2, c2, exact)
+            times_square::<T, FUSED>(squares.eta2, c2, exact)
         }
     } else {
         c2
@@ -406,9 +447,10 @@ pub(crate) fn snell_discriminant<T: Real>(
 }
 
 /// `c² (n_t² + n_i²) − n_i²` at `c = |cos θ_i|`, from the side `inside` or
-/// not: Brewster's factor, which vanishes at Brewster's angle.
+/// not: Brewster's factor, which vanishes at Brewster's angle. `FUSED`:
+/// [`exact_error`]'s, for a tier whose products are `exact`.
 #[inline(always)]
-pub(crate) fn brewster_factor<T: Real>(
+pub(crate) fn brewster_factor<T: Real, const FUSED: bool>(
     squares: &IndexSquares<T>,
     inside: bool,
     c: T,
@@ -422,33 +464,29 @@ pub(crate) fn brewster_factor<T: Real>(
         // (n_i = 1), from the inside wherever the factor can vanish
         // (`c_B = η / √(1 + η²) < η`); elsewhere it is a rounding-sized
         // term beside a factor far from zero.
-        let p2 = square_of_narrow_product(squares.eta, c);
+        let p2 = square_of_narrow_product::<T, FUSED>(squares.eta, c);
         let (m, me) = fast_two_sum(-squares.incident(inside).high, c * c);
         return (p2.high + m) + (p2.low + me);
     }
-    let m = times_square(squares.plus_one, unit_square(c, exact), exact);
+    let m = times_square::<T, FUSED>(squares.plus_one, unit_square(c, exact), exact);
     let n_i2 = squares.incident(inside);
     (m.high - n_i2.high) + (m.low - n_i2.low)
 }
 
 /// `(a b)²` for `a`, `b` widened from a tier whose products are exact in
-/// the wide precision: `p = a b` is exact, and split by Dekker's method
-/// into halves `h + l` of at most 26 bits each (a product of two narrow
-/// numbers has at most 48), so `h²` is exact and is the high part, and
-/// `(2h + l) l` (with `2h + l` exact) is the low part, some `2^-25` of
-/// the high part and rounded once: `(a b)²` to about `2^-25 ε` relative,
-/// far beyond what a narrow tier's result keeps, in nine
-/// operations, where `η² · c²` (two 48-bit squares) with its error by
-/// Dekker's method took nineteen.
+/// the wide precision, exactly, as an unevaluated sum: `p = a b` is exact
+/// (a product of two narrow numbers has at most 48 bits), its square is
+/// rounded once and the rounding error taken exactly ([`exact_error`]).
+/// Three operations where the path fuses a multiply-add, thirteen by
+/// Dekker's split elsewhere, the same bits on both; `η² · c²` (two 48-bit
+/// squares) with its error by Dekker's method took nineteen.
 #[inline(always)]
-fn square_of_narrow_product<T: Real>(a: T, b: T) -> TwoPart<T> {
+fn square_of_narrow_product<T: Real, const FUSED: bool>(a: T, b: T) -> TwoPart<T> {
     let p = a * b;
-    let c = T::lit(T::SPLITTER) * p;
-    let high = c - (c - p);
-    let low = p - high;
+    let high = p * p;
     TwoPart {
-        high: high * high,
-        low: (high + high + low) * low,
+        high,
+        low: exact_error::<T, FUSED>(p, p, high),
     }
 }
 
@@ -491,14 +529,15 @@ pub(crate) fn discriminant_from<T: Real>(contrast: TwoPart<T>, c: T, exact: bool
 /// part of Brewster's factor `c² (η² + 1) − 1`, which vanishes near
 /// Brewster's angle when `κ` is small. With `c² = q + e`, the products
 /// `q · A_high` (split exactly), `q · A_low` and `e · A_high` are summed;
-/// the `ε²`-small rest is dropped.
+/// the `ε²`-small rest is dropped. `FUSED`: [`exact_error`]'s, for a tier
+/// whose products are `exact`.
 #[inline(always)]
-pub(crate) fn brewster_from<T: Real>(a: TwoPart<T>, c: T, exact: bool) -> T {
+pub(crate) fn brewster_from<T: Real, const FUSED: bool>(a: TwoPart<T>, c: T, exact: bool) -> T {
     let c2 = unit_square(c, exact);
     if exact {
         // c² is exact; m = c² A_high is split exactly, and cancels the 1
         // exactly.
-        let m = times_square(a, c2, exact);
+        let m = times_square::<T, FUSED>(a, c2, exact);
         return (m.high - T::one()) + m.low;
     }
     // Summed in full, not in the dielectric's short form, which rounds

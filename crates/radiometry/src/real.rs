@@ -62,6 +62,18 @@ pub trait Real: Float + FloatConst + Debug + Display + Default + Send + Sync + '
         b: Self::Wide,
         y: Self::Wide,
     ) -> [Self::Wide; 2];
+    /// `[k / x, k b / y]` in [`Real::Wide`], for the same denominators as
+    /// [`Real::wide_quotients`] and a numerator factor `k` they share.
+    /// `f32` divides once, `k` by `x · y`, and multiplies: the factor rides
+    /// in the division's numerator, two multiplications fewer than
+    /// [`Real::wide_quotients`] of `k` and `k b`. `f64` divides twice,
+    /// `k / x` and `(k b) / y`, as [`Real::wide_quotients`] does.
+    fn wide_quotients_sharing(
+        k: Self::Wide,
+        x: Self::Wide,
+        b: Self::Wide,
+        y: Self::Wide,
+    ) -> [Self::Wide; 2];
 }
 
 /// `2^⌊log₂|x|⌋`, no smaller than `min_positive`, times `epsilon`: the
@@ -108,6 +120,11 @@ impl Real for f32 {
     fn wide_quotients(a: f64, x: f64, b: f64, y: f64) -> [f64; 2] {
         let q = 1.0 / (x * y);
         [a * (y * q), b * (x * q)]
+    }
+    #[inline]
+    fn wide_quotients_sharing(k: f64, x: f64, b: f64, y: f64) -> [f64; 2] {
+        let q = k / (x * y);
+        [y * q, b * (x * q)]
     }
 }
 
@@ -156,6 +173,10 @@ impl Real for f64 {
     #[inline]
     fn wide_quotients(a: f64, x: f64, b: f64, y: f64) -> [f64; 2] {
         [a / x, b / y]
+    }
+    #[inline]
+    fn wide_quotients_sharing(k: f64, x: f64, b: f64, y: f64) -> [f64; 2] {
+        [k / x, (k * b) / y]
     }
 }
 

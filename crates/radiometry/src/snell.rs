@@ -144,15 +144,18 @@ impl<T: Real> Incidence<T> {
     /// `n_t² cos²θ_t = n_t² − n_i² sin²θ_i`, computed without cancellation,
     /// in the tier's wide precision ([`Real::Wide`]). Negative exactly when
     /// Snell's law has no real solution (total internal reflection).
+    /// `FUSED`: whether the path this is compiled into fuses a
+    /// multiply-add, for the exact errors of the products
+    /// (`compensated::exact_error`; the same value either way).
     #[inline(always)]
-    pub(crate) fn discriminant(&self) -> T::Wide {
+    pub(crate) fn discriminant<const FUSED: bool>(&self) -> T::Wide {
         let exact = T::PRODUCTS_EXACT_IN_WIDE;
         let (n_t, n_i) = (self.n_t.widen(), self.n_i.widen());
         match self.sin_i {
             Some(sin_i) => {
                 compensated::snell_discriminant_from_sine(n_t, n_i, sin_i.widen(), exact)
             }
-            None => compensated::snell_discriminant(
+            None => compensated::snell_discriminant::<_, FUSED>(
                 &self.index_squares(),
                 self.from_inside,
                 self.abs_cos_i.widen(),
@@ -186,7 +189,7 @@ impl<T: Real> Incidence<T> {
             // (√ of the rounded cos² would lose bits once cos² underflows).
             return Some(self.abs_cos_i);
         }
-        let snell = self.snell();
+        let snell = self.snell::<false>();
         snell
             .transmits
             .then(|| self.cos_from_root(snell.discriminant.sqrt()))
@@ -195,9 +198,10 @@ impl<T: Real> Incidence<T> {
     /// Snell's decision with the discriminant it is made from, for the
     /// exact Fresnel law, which needs the discriminant itself. Index-matched
     /// interfaces are [`Incidence::cos_transmitted`]'s to special-case.
+    /// `FUSED` as for [`Incidence::discriminant`].
     #[inline(always)]
-    pub(crate) fn snell(&self) -> Snell<T::Wide> {
-        let discriminant = self.discriminant();
+    pub(crate) fn snell<const FUSED: bool>(&self) -> Snell<T::Wide> {
+        let discriminant = self.discriminant::<FUSED>();
         Snell {
             discriminant,
             // `!(d < 0)` would let NaN through; `d >= 0` does not.
@@ -300,7 +304,7 @@ pub fn transmitted_angle<T: Real>(theta_i: T, eta_path: T) -> Option<T> {
     // From the outside of an interface of index eta_path (n_i = 1, n_t =
     // eta_path); resolving it also checks eta_path.
     let incidence = Incidence::resolve_measured(cos_i, eta_path, || sin_i)?;
-    let snell = incidence.snell();
+    let snell = incidence.snell::<false>();
     snell
         .transmits
         .then(|| sin_i.atan2(T::narrow(snell.discriminant.sqrt())))

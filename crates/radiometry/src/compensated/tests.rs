@@ -81,26 +81,31 @@ fn two_sum_and_two_prod_are_error_free() {
     assert_eq!(two_prod(a, a), (1.0 + 2f64.powi(-29), tiny));
 }
 
-/// `(a b)²` of two widened `f32`s as two parts, against the exact square
-/// `q + e` of the exact product (`two_prod`, error-free): over random
-/// `f32`s from 2^-40 to 2^40, the parts' sum within 2^-25 ε of `(a b)²`
-/// (the low part, some 2^-25 of the high one, rounded once), and the
-/// high part, a square of 26 bits, exact.
+/// The square of a product of two widened `f32`s is the exact product's
+/// square, `q + e` (`two_prod`, error-free: Dekker's split in this build),
+/// to the bit, both with the error split by Dekker's method and with it
+/// fused: over random `f32`s from 2^-40 to 2^40. Tolerance zero: both
+/// parts are exact numbers, not roundings.
 #[test]
-fn the_square_of_a_narrow_product_is_exact_to_far_below_the_wide_ulp() {
+fn the_square_of_a_narrow_product_is_exact_fused_or_split() {
     let mut next = xorshift(0x51_7cc1_b727_220a);
-    let bound = 2f64.powi(-25) * f64::EPSILON;
     for _ in 0..100_000 {
         let narrow = |bits: u64| {
             let m = (bits >> 40) as f32 / (1u64 << 24) as f32 + 0.5;
             f64::from(m * 2f32.powi((bits % 81) as i32 - 40))
         };
         let (a, b) = (narrow(next()), narrow(next()));
-        let square = square_of_narrow_product(a, b);
         let (q, e) = two_prod(a * b, a * b);
-        let error = ((square.high - q) + (square.low - e)).abs();
-        assert!(error <= bound * q, "({a:e} · {b:e})²: {error:e} off");
-        assert_eq!(two_prod(square.high.sqrt(), square.high.sqrt()).1, 0.0);
+        for square in [
+            square_of_narrow_product::<_, false>(a, b),
+            square_of_narrow_product::<_, true>(a, b),
+        ] {
+            assert_eq!(
+                (square.high.to_bits(), square.low.to_bits()),
+                (q.to_bits(), e.to_bits()),
+                "({a:e} · {b:e})²"
+            );
+        }
     }
 }
 
@@ -111,7 +116,10 @@ fn discriminant_keeps_digits_that_cancel() {
     let eta = 1.0 + 2f64.powi(-30);
     let exact = 2f64.powi(-29) + 2f64.powi(-60);
     let squares = IndexSquares::of(eta, false);
-    assert_eq!(snell_discriminant(&squares, false, 0.0, false), exact);
+    assert_eq!(
+        snell_discriminant::<_, false>(&squares, false, 0.0, false),
+        exact
+    );
     assert_eq!(squares.contrast(false).value(), exact);
     assert_eq!(squares.contrast(true).value(), -exact);
     assert_ne!(eta * eta - 1.0, exact);
@@ -154,9 +162,19 @@ fn a_narrow_tiers_short_sums_are_within_2_ulps_of_sum2_where_they_cancel() {
                     let inside = n_i != 1.0;
                     let (narrow, wide) =
                         (IndexSquares::of(eta, true), IndexSquares::of(eta, false));
+                    // The fused and the split exact errors: the same bits.
+                    let fused = [
+                        snell_discriminant::<_, true>(&narrow, inside, w, true),
+                        brewster_factor::<_, true>(&narrow, inside, w, true),
+                    ];
+                    let split = [
+                        snell_discriminant::<_, false>(&narrow, inside, w, true),
+                        brewster_factor::<_, false>(&narrow, inside, w, true),
+                    ];
+                    assert_eq!(fused.map(f64::to_bits), split.map(f64::to_bits), "{w:e}");
                     check(
-                        snell_discriminant(&narrow, inside, w, true),
-                        snell_discriminant(&wide, inside, w, false),
+                        split[0],
+                        snell_discriminant::<_, false>(&wide, inside, w, false),
                         "Snell's discriminant",
                     );
                     check(
@@ -165,8 +183,8 @@ fn a_narrow_tiers_short_sums_are_within_2_ulps_of_sum2_where_they_cancel() {
                         "Snell's discriminant from the sine",
                     );
                     check(
-                        brewster_factor(&narrow, inside, w, true),
-                        brewster_factor(&wide, inside, w, false),
+                        split[1],
+                        brewster_factor::<_, false>(&wide, inside, w, false),
                         "Brewster's factor",
                     );
                     // A conductor of small κ from outside.
@@ -180,9 +198,12 @@ fn a_narrow_tiers_short_sums_are_within_2_ulps_of_sum2_where_they_cancel() {
                     );
                     let a = squares_plus(x, y, 1.0, true);
                     let a_full = squares_plus(x, y, 1.0, false);
+                    let from = brewster_from::<_, false>(a, w, true);
+                    let fused = brewster_from::<_, true>(a, w, true);
+                    assert_eq!(from.to_bits(), fused.to_bits(), "{w:e}");
                     check(
-                        brewster_from(a, w, true),
-                        brewster_from(a_full, w, false),
+                        from,
+                        brewster_from::<_, false>(a_full, w, false),
                         "a conductor's Brewster factor",
                     );
                     c = f32::from_bits(c.to_bits() + 1);

@@ -124,6 +124,15 @@ impl<T: Real> Conductor<T> {
     /// arrives from the dielectric side); NaN for a NaN cosine.
     #[inline(always)]
     pub fn polarized(&self, cos_i: T) -> ConductorFresnel<T> {
+        self.polarized_on::<false>(cos_i)
+    }
+
+    /// [`Conductor::polarized`] compiled for a path that fuses a
+    /// multiply-add (`FUSED`) or not: the same law and the same bits, its
+    /// exact product errors taken by the path's quickest means
+    /// (`compensated::exact_error`).
+    #[inline(always)]
+    pub(super) fn polarized_on<const FUSED: bool>(&self, cos_i: T) -> ConductorFresnel<T> {
         // Computed whatever the cosine and a NaN one answered after: no
         // branch, so a loop over many cosines vectorises.
         let exact = T::PRODUCTS_EXACT_IN_WIDE;
@@ -135,7 +144,7 @@ impl<T: Real> Conductor<T> {
         );
         let (u, us) = scaled_root::<T>(d);
         let brewster = Complex::new(
-            compensated::brewster_from(self.brewster, c, exact),
+            compensated::brewster_from::<_, FUSED>(self.brewster, c, exact),
             c * c * self.two_nk,
         );
 

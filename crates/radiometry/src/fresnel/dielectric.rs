@@ -132,11 +132,19 @@ impl<T: Real> DielectricFresnel<T> {
 /// ```
 #[inline(always)]
 pub fn dielectric_polarized<T: Real>(cos_i: T, eta: T) -> DielectricFresnel<T> {
+    polarized_on::<T, false>(cos_i, eta)
+}
+
+/// [`dielectric_polarized`] compiled for a path that fuses a multiply-add
+/// (`FUSED`) or not: the same law and the same bits, its exact product
+/// errors taken by the path's quickest means (`compensated::exact_error`).
+#[inline(always)]
+pub(super) fn polarized_on<T: Real, const FUSED: bool>(cos_i: T, eta: T) -> DielectricFresnel<T> {
     // The law is evaluated whatever the input and the answer for input that
     // describes no interface chosen after it: no branch, so a loop over
     // many cosines vectorises.
     let (incidence, valid) = Incidence::resolve_unchecked(cos_i, eta);
-    let law = dielectric_resolved(&incidence);
+    let law = resolved_on::<T, FUSED>(&incidence);
     if valid {
         law
     } else {
@@ -155,23 +163,36 @@ pub fn dielectric_polarized<T: Real>(cos_i: T, eta: T) -> DielectricFresnel<T> {
 /// ```
 #[inline(always)]
 pub fn dielectric_resolved<T: Real>(incidence: &Incidence<T>) -> DielectricFresnel<T> {
+    resolved_on::<T, false>(incidence)
+}
+
+/// [`dielectric_resolved`] on a path that fuses a multiply-add or not, as
+/// [`polarized_on`].
+#[inline(always)]
+fn resolved_on<T: Real, const FUSED: bool>(incidence: &Incidence<T>) -> DielectricFresnel<T> {
     // Evaluated in the tier's wide precision and rounded once at the end:
     // for `f32`, whose products are exact in `f64`, that leaves one rounding
     // per result.
     let exact = T::PRODUCTS_EXACT_IN_WIDE;
-    let [c, n_i, n_t] = [incidence.abs_cos_i, incidence.n_i, incidence.n_t].map(T::widen);
+    let [c, n_i] = [incidence.abs_cos_i, incidence.n_i].map(T::widen);
     let squares = incidence.index_squares();
     let inside = incidence.from_inside;
     let contrast = squares.contrast(inside).value(); // n_t² − n_i²
                                                      // d = s² with s = n_t cos θ_t; Snell's law decides whether light goes on.
-    let snell = incidence.snell();
+    let snell = incidence.snell::<FUSED>();
     let d = snell.discriminant;
     // The general case is computed whatever the outcome and the special
     // cases are chosen after it, so that a loop over many cosines has no
     // branch and vectorises; `max` keeps the square root of a negative `d`
     // (whose result is not chosen) out of the way.
     let s = d.max(T::Wide::zero()).sqrt();
-    let a = n_i * c; // n_i cos θ_i
+    // The side's indices as products chosen per angle, not as `n_i`, `n_t`
+    // widened per angle: one of the two is 1, and the other's products
+    // are taken whatever the side.
+    let eta = squares.eta();
+    let pick = |times_eta: T::Wide, alone: T::Wide| if inside { times_eta } else { alone };
+    let a = pick(eta * c, c); // n_i cos θ_i
+    let n_i_s = pick(eta * s, s);
 
     // T = 4 a s / w² is evaluated as 4c · (n_i s / w²): at grazing incidence
     // a = n_i c, or the product 4 a s, would underflow before the division.
@@ -187,19 +208,19 @@ pub fn dielectric_resolved<T: Real>(incidence: &Incidence<T>) -> DielectricFresn
     // 2^29 coarser, which takes r_s and r_p to −1 at grazing incidence all
     // the same (`s² = d` to within an `f64` ulp), and the few `f64`
     // roundings of the squares and of `wide_quotients` lie as far below it.
-    let n_t2 = n_t * n_t;
-    let b = n_t2 * c;
+    let n_t2 = squares.transmitted(inside);
+    let b = pick(c, n_t2 * c);
     let (ws2, wp2) = if exact {
-        (sqr(a + s), sqr(b + n_i * s))
+        (sqr(a + s), sqr(b + n_i_s))
     } else {
         (
             a * a + (a + a) * s + d,
-            b * b + (b + b) * (n_i * s) + n_i * n_i * d,
+            b * b + (b + b) * n_i_s + n_i * n_i * d,
         )
     };
-    let brewster = compensated::brewster_factor(&squares, inside, c, exact);
+    let brewster = compensated::brewster_factor::<_, FUSED>(&squares, inside, c, exact);
 
-    let [amp_s, amp_p] = T::wide_quotients(contrast, ws2, contrast * brewster, wp2);
+    let [amp_s, amp_p] = T::wide_quotients_sharing(contrast, ws2, brewster, wp2);
     let [t_s, t_p] = T::wide_quotients(n_i * s, ws2, n_i * n_t2 * s, wp2);
     let (r_s, r_p) = (sqr(amp_s), sqr(amp_p));
     let (t_s, t_p) = (four_c * t_s, four_c * t_p);

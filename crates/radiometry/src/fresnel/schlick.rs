@@ -182,7 +182,7 @@ pub fn schlick_dielectric_resolved<T: Real>(incidence: &Incidence<T>) -> Schlick
     // Snell's law is decided whichever cosine is taken and the outcome chosen
     // after it, by value, so that a loop over many cosines vectorises; the
     // same decision and cosine as `Incidence::cos_transmitted`.
-    let snell = incidence.snell();
+    let snell = incidence.snell::<false>();
     let cos_t = incidence.cos_from_root(snell.discriminant.max(T::Wide::zero()).sqrt());
     let (cosine, reflectance) = if incidence.n_t >= incidence.n_i {
         (SchlickCosine::Incident, schlick(incidence.abs_cos_i, f0))

@@ -7,16 +7,18 @@
 //! # Wider instructions, same bits
 //!
 //! The loop is compiled three times: for the build's own target (on
-//! x86-64 by default SSE2, two `f64` lanes), for AVX2 (four) and for
-//! AVX-512 (eight), and each call takes the widest the CPU has
+//! x86-64 by default SSE2, two `f64` lanes), for AVX2 with FMA (four) and
+//! for AVX-512 (eight), and each call takes the widest the CPU has
 //! ([`Lanes::widest`]). Every path gives the same bits: the laws use only
 //! additions, multiplications, divisions and square roots, each correctly
 //! rounded by IEEE 754 whatever the width; Rust never fuses a
-//! multiplication and an addition on its own; and the error-free products
-//! of [`crate::compensated`] take the same exact error by Dekker's split on
-//! every path (the choice of fused multiply-add there is made for the
-//! build, not per path). The test `fresnel_slice_paths_agree_bit_for_bit`
-//! forces each path the CPU has and compares.
+//! multiplication and an addition on its own; and where the `f32` tier
+//! takes a product's rounding error, an exact number, the wide paths take
+//! it by one fused multiply-add and the baseline by Dekker's split, the
+//! same value either way (`compensated::exact_error`; the `f64` tier's
+//! error-free products choose for the build, not per path). The test
+//! `fresnel_slice_paths_agree_bit_for_bit` forces each path the CPU has
+//! and compares.
 
 use crate::Real;
 
@@ -25,9 +27,9 @@ use crate::Real;
 pub enum Lanes {
     /// The build's own target (SSE2 on the default x86-64 target).
     Baseline,
-    /// AVX2 (x86-64), four `f64` lanes.
+    /// AVX2 with FMA (x86-64), four `f64` lanes.
     Avx2,
-    /// AVX-512 F/DQ/VL (x86-64), eight `f64` lanes.
+    /// AVX-512 F/DQ/VL with FMA (x86-64), eight `f64` lanes.
     Avx512,
 }
 
@@ -40,12 +42,16 @@ impl Lanes {
         match self {
             Lanes::Baseline => true,
             #[cfg(target_arch = "x86_64")]
-            Lanes::Avx2 => std::arch::is_x86_feature_detected!("avx2"),
+            Lanes::Avx2 => {
+                std::arch::is_x86_feature_detected!("avx2")
+                    && std::arch::is_x86_feature_detected!("fma")
+            }
             #[cfg(target_arch = "x86_64")]
             Lanes::Avx512 => {
                 std::arch::is_x86_feature_detected!("avx512f")
                     && std::arch::is_x86_feature_detected!("avx512dq")
                     && std::arch::is_x86_feature_detected!("avx512vl")
+                    && std::arch::is_x86_feature_detected!("fma")
             }
             #[cfg(not(target_arch = "x86_64"))]
             _ => false,
@@ -117,22 +123,24 @@ pub fn conductor_slice_on<T: Real>(lanes: Lanes, cos_i: &[T], n: T, kappa: T, ou
 /// A law of one material at a cosine, called in a loop: a trait rather
 /// than a closure, so that its body is inlined into every width's loop.
 trait AtCosine<T>: Sync {
-    fn at(&self, cos_i: T) -> T;
+    /// The law at `cos_i`, compiled for a path that fuses a multiply-add
+    /// (`FUSED`) or not: the same bits either way.
+    fn at<const FUSED: bool>(&self, cos_i: T) -> T;
 }
 
 struct Dielectric<T>(T);
 
 impl<T: Real> AtCosine<T> for Dielectric<T> {
     #[inline(always)]
-    fn at(&self, cos_i: T) -> T {
-        super::dielectric(cos_i, self.0)
+    fn at<const FUSED: bool>(&self, cos_i: T) -> T {
+        super::dielectric::polarized_on::<T, FUSED>(cos_i, self.0).reflectance()
     }
 }
 
 impl<T: Real> AtCosine<T> for super::Conductor<T> {
     #[inline(always)]
-    fn at(&self, cos_i: T) -> T {
-        self.reflectance(cos_i)
+    fn at<const FUSED: bool>(&self, cos_i: T) -> T {
+        self.polarized_on::<FUSED>(cos_i).reflectance()
     }
 }
 
@@ -141,7 +149,7 @@ struct Undefined;
 
 impl<T: Real> AtCosine<T> for Undefined {
     #[inline(always)]
-    fn at(&self, _: T) -> T {
+    fn at<const FUSED: bool>(&self, _: T) -> T {
         T::nan()
     }
 }
@@ -158,14 +166,16 @@ fn dispatch<T: Real>(lanes: Lanes, cos_i: &[T], out: &mut [T], law: &impl AtCosi
         Lanes::Avx512 => wide::avx512(cos_i, out, law),
         #[cfg(target_arch = "x86_64")]
         Lanes::Avx2 => wide::avx2(cos_i, out, law),
-        _ => each(cos_i, out, law),
+        _ => each::<T, false>(cos_i, out, law),
     }
 }
 
+/// The loop; `FUSED` where it is compiled for instructions that fuse a
+/// multiply-add.
 #[inline(always)]
-fn each<T: Real>(cos_i: &[T], out: &mut [T], law: &impl AtCosine<T>) {
+fn each<T: Real, const FUSED: bool>(cos_i: &[T], out: &mut [T], law: &impl AtCosine<T>) {
     for (r, &c) in out.iter_mut().zip(cos_i) {
-        *r = law.at(c);
+        *r = law.at::<FUSED>(c);
     }
 }
 
@@ -177,24 +187,24 @@ mod wide {
     use super::{each, AtCosine, Lanes};
     use crate::Real;
 
-    #[target_feature(enable = "avx2")]
+    #[target_feature(enable = "avx2,fma")]
     fn each_avx2<T: Real>(cos_i: &[T], out: &mut [T], law: &impl AtCosine<T>) {
-        each(cos_i, out, law);
+        each::<T, true>(cos_i, out, law);
     }
 
-    #[target_feature(enable = "avx512f,avx512dq,avx512vl")]
+    #[target_feature(enable = "avx512f,avx512dq,avx512vl,fma")]
     fn each_avx512<T: Real>(cos_i: &[T], out: &mut [T], law: &impl AtCosine<T>) {
-        each(cos_i, out, law);
+        each::<T, true>(cos_i, out, law);
     }
 
     /// The loop on AVX2 where this CPU has it, on the baseline otherwise.
     #[inline(always)]
     pub(super) fn avx2<T: Real>(cos_i: &[T], out: &mut [T], law: &impl AtCosine<T>) {
         if Lanes::Avx2.available() {
-            // SAFETY: this CPU runs AVX2, checked on the line above.
+            // SAFETY: this CPU runs AVX2 and FMA, checked on the line above.
             unsafe { each_avx2(cos_i, out, law) }
         } else {
-            each(cos_i, out, law)
+            each::<T, false>(cos_i, out, law)
         }
     }
 
@@ -202,11 +212,11 @@ mod wide {
     #[inline(always)]
     pub(super) fn avx512<T: Real>(cos_i: &[T], out: &mut [T], law: &impl AtCosine<T>) {
         if Lanes::Avx512.available() {
-            // SAFETY: this CPU runs AVX-512 F, DQ and VL, checked on the
+            // SAFETY: this CPU runs AVX-512 F, DQ and VL and FMA, checked on the
             // line above.
             unsafe { each_avx512(cos_i, out, law) }
         } else {
-            each(cos_i, out, law)
+            each::<T, false>(cos_i, out, law)
         }
     }
 }
