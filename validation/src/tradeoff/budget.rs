@@ -45,6 +45,8 @@ use tracer::render::Image;
 
 use super::measure::Mask;
 
+pub mod displayed;
+
 /// Standard deviations taken on the unsafe side of each estimated sum:
 /// 3, a one-sided 99.87 % bound for each where the sums are near normal.
 pub const K: f64 = 3.0;
@@ -277,17 +279,46 @@ pub fn cheapest(pilot: &Pilot, energy: f64, tolerance: f64, max_spp: u32) -> Opt
         .find(|p| p.rel_rmse <= tolerance)
 }
 
+/// A prediction of one candidate at its samples, whatever its metric:
+/// the bound it puts on the metric and what the render costs.
+pub trait Bound: Copy {
+    /// The bound on the metric.
+    fn bound(&self) -> f64;
+    /// Rays one render casts.
+    fn rays(&self) -> f64;
+}
+
+impl Bound for Prediction {
+    fn bound(&self) -> f64 {
+        self.rel_rmse
+    }
+
+    fn rays(&self) -> f64 {
+        self.rays
+    }
+}
+
+impl Bound for displayed::Prediction {
+    fn bound(&self) -> f64 {
+        self.bound
+    }
+
+    fn rays(&self) -> f64 {
+        self.rays
+    }
+}
+
 /// What the budget decides among candidates.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 #[serde(tag = "outcome", rename_all = "snake_case")]
-pub enum Choice {
+pub enum Choice<P = Prediction> {
     /// The candidate (its index) that costs the fewest rays within the
     /// tolerance, at its samples.
     Chosen {
         /// Its index among the candidates.
         index: usize,
         /// Its prediction.
-        prediction: Prediction,
+        prediction: P,
     },
     /// No candidate is predicted within the tolerance: the one with the
     /// smallest prediction, at the most samples the budget would render
@@ -296,7 +327,7 @@ pub enum Choice {
         /// Its index among the candidates.
         index: usize,
         /// Its prediction.
-        prediction: Prediction,
+        prediction: P,
         /// What it would need to reach the tolerance.
         need: Need,
     },
@@ -306,27 +337,42 @@ pub enum Choice {
 /// prediction, then the earlier candidate), or the best of them when none
 /// is; `None` only for no candidates.
 pub fn choose(pilots: &[Pilot], energy: f64, tolerance: f64, max_spp: u32) -> Option<Choice> {
-    let within = pilots
-        .iter()
-        .enumerate()
-        .filter_map(|(i, p)| cheapest(p, energy, tolerance, max_spp).map(|q| (i, q)))
+    choose_among(
+        pilots.len(),
+        |i| cheapest(&pilots[i], energy, tolerance, max_spp),
+        |i| predict(&pilots[i], energy, top_spp(&pilots[i], max_spp)),
+        |i| need(&pilots[i], energy, tolerance),
+    )
+}
+
+/// The choice among `count` candidates, of any metric: the cheapest in
+/// rays of those `cheapest` finds within the tolerance (ties: the smaller
+/// bound, then the earlier candidate), or else the smallest `best` (each
+/// at the most samples the budget renders it at) with its `need`; `None`
+/// only for no candidates.
+pub fn choose_among<P: Bound>(
+    count: usize,
+    cheapest: impl Fn(usize) -> Option<P>,
+    best: impl Fn(usize) -> P,
+    need: impl Fn(usize) -> Need,
+) -> Option<Choice<P>> {
+    let within = (0..count)
+        .filter_map(|i| cheapest(i).map(|q| (i, q)))
         .min_by(|(_, a), (_, b)| {
-            a.rays
-                .total_cmp(&b.rays)
-                .then(a.rel_rmse.total_cmp(&b.rel_rmse))
+            a.rays()
+                .total_cmp(&b.rays())
+                .then(a.bound().total_cmp(&b.bound()))
         });
     if let Some((index, prediction)) = within {
         return Some(Choice::Chosen { index, prediction });
     }
-    pilots
-        .iter()
-        .enumerate()
-        .map(|(i, p)| (i, predict(p, energy, top_spp(p, max_spp))))
-        .min_by(|(_, a), (_, b)| a.rel_rmse.total_cmp(&b.rel_rmse))
+    (0..count)
+        .map(|i| (i, best(i)))
+        .min_by(|(_, a), (_, b)| a.bound().total_cmp(&b.bound()))
         .map(|(index, prediction)| Choice::Unreachable {
             index,
             prediction,
-            need: need(&pilots[index], energy, tolerance),
+            need: need(index),
         })
 }
 
