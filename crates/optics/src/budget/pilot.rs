@@ -119,6 +119,8 @@ pub fn same_but_spp(a: &Settings, b: &Settings) -> bool {
 pub struct Pass {
     /// One per candidate, in order.
     pub pilots: Vec<Pilot>,
+    /// Each candidate's two halves, in order.
+    pub halves: Vec<[tracer::render::Image; 2]>,
     /// The truth's settings' two halves.
     pub reference: [tracer::render::Image; 2],
     /// Rays cast by the whole pass.
@@ -151,6 +153,7 @@ pub fn run(
     let [a, b] = halves(truth, true)?;
     let reference = [a.image, b.image];
     let mut pilots = Vec::with_capacity(candidates.len());
+    let mut images = Vec::with_capacity(candidates.len());
     for candidate in candidates {
         let samples = candidate.samples();
         let [a, b] = halves(&candidate.settings, samples)?;
@@ -183,9 +186,11 @@ pub fn run(
             pilot.most_spp = spp.min(u64::from(u32::MAX)) as u32;
         }
         pilots.push(pilot);
+        images.push([a.image, b.image]);
     }
     Ok(Pass {
         pilots,
+        halves: images,
         reference,
         rays,
     })
