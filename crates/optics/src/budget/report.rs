@@ -147,18 +147,26 @@ fn prediction_line(p: &Predicted, lang: Lang) -> String {
                 p.bias
             ),
         },
-        Predicted::Shown(p) => say!(
-            lang,
-            "  = the largest of {} simulated renders (the pilot's mean, its noise at {} and the pilot's own drawn again), {:.4}, + {} of their standard deviations, {:.4}",
-            "  = {} szimulált kép legnagyobbika (a próba átlaga, zaja {} mellett és a próba saját zaja újra sorsolva), {:.4}, + szórásuk {}-szorosa, {:.4}",
-            DRAWS,
-            match p.spp {
-                Some(spp) => format!("{spp} spp"),
-                None => lang.pick("its own samples", "saját mintái").to_owned(),
-            },
-            p.simulated,
-            K,
-            p.margin
-        ),
+        Predicted::Shown(p) => match p.spp {
+            Some(spp) => say!(
+                lang,
+                "  = the largest of {} simulated renders (the pilot's mean, its noise at {} spp and the ground truth's), {:.4}, + {} standard deviations of them with the pilot's own noise drawn again, {:.4}",
+                "  = {} szimulált kép legnagyobbika (a próba átlaga, zaja {} mintánál és a referenciáé), {:.4}, + a próba saját zaját újra sorsoló képek szórásának {}-szorosa, {:.4}",
+                DRAWS,
+                spp,
+                p.simulated,
+                K,
+                p.margin
+            ),
+            None => say!(
+                lang,
+                "  = the largest of {} simulated renders (the pilot's mean; deterministic: only the ground truth's noise), {:.4}, + {} standard deviations of them with the pilot's own noise drawn again, {:.4}",
+                "  = {} szimulált kép legnagyobbika (a próba átlaga; determinisztikus: csak a referencia zaja), {:.4}, + a próba saját zaját újra sorsoló képek szórásának {}-szorosa, {:.4}",
+                DRAWS,
+                p.simulated,
+                K,
+                p.margin
+            ),
+        },
     }
 }
