@@ -174,7 +174,11 @@ fn a_noiseless_pilot_predicts_exactly_what_its_bias_shows() {
         let p = simulation.predict(&reference, measure, 1);
         assert!(p.bound.abs() < 1e-12, "{measure:?}: {p:?}");
         assert_eq!(p.spp, None);
-        let seen = measure.of(&measure::errors(&[biased.clone()], &exact, &mask));
+        let seen = measure.of(&measure::errors(
+            std::slice::from_ref(&biased),
+            &exact,
+            &mask,
+        ));
         let q = shifted.predict(&reference, measure, 1);
         assert!(
             seen > 0.0 && (q.bound - seen).abs() < 1e-9,
