@@ -241,7 +241,7 @@ pub fn run(args: &RenderArgs, budget: Budget, ui: &Ui) -> error::Result<()> {
         &job,
         &args.scene,
         (&truth, &candidates),
-        (half, &mask),
+        (half, &mask, budget.metric.shown().is_some()),
         threads,
     )?;
     let [a, b] = &pass.reference;

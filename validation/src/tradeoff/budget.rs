@@ -1,7 +1,9 @@
 //! The accuracy budget's prediction: from a cheap pilot pass, an upper
 //! bound on the relative RMSE of linear radiance ([`super::measure`]) that
 //! a render at given settings reaches against the ground truth, and the
-//! cheapest settings, in rays, whose bound stays under a tolerance.
+//! cheapest settings, in rays, whose bound stays under a tolerance
+//! ([`choose_among`], for any metric). The displayed image's measures are
+//! bounded by simulated renders in [`displayed`].
 //!
 //! # The bound
 //!
