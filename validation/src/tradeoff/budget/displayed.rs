@@ -289,7 +289,8 @@ impl Simulation {
                 spp: self.pilot.most_spp,
             };
         }
-        let (mut low, mut high) = (0u32, 40u32);
+        let fewest = self.pilot.fewest_spp.next_power_of_two().trailing_zeros();
+        let (mut low, mut high) = (fewest.min(40), 40u32);
         if !within((1u64 << high) as f64) {
             return Need::Never;
         }
