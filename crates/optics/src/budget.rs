@@ -308,7 +308,7 @@ pub fn run(args: &RenderArgs, budget: Budget, ui: &Ui) -> error::Result<()> {
         chosen,
         shortcut: candidates[index].shortcut,
         predicted,
-        terms: terms(&candidates, &predictor, index),
+        terms: predictor::terms(&candidates, &predictor, index),
         scene: predictor.at(0, job.settings().spp),
         rays: rendered.rays.total(),
         pilot_rays: pass.rays,
@@ -347,45 +347,6 @@ pub fn describe(settings: &Settings) -> String {
     } else {
         words
     }
-}
-
-/// The bias of each shortcut of the chosen candidate measured alone, from
-/// the candidates that take it alone, in the budget's metric.
-fn terms(
-    candidates: &[pilot::Candidate],
-    predictor: &Predictor,
-    index: usize,
-) -> Vec<(&'static str, f64)> {
-    use pilot::Shortcut;
-    let chosen = &candidates[index];
-    let alone = |shortcut: Shortcut, keep: &dyn Fn(&Settings) -> bool| {
-        candidates
-            .iter()
-            .position(|c| c.shortcut == shortcut && keep(&c.settings))
-            .map(|i| predictor.bias(i))
-    };
-    let s = chosen.settings;
-    let mut terms = Vec::new();
-    let depth = || alone(Shortcut::MaxDepth, &|c| c.max_depth == s.max_depth);
-    let schlick = || alone(Shortcut::Schlick, &|_| true);
-    match chosen.shortcut {
-        Shortcut::MaxDepth => terms.extend(depth().map(|d| ("max_depth", d))),
-        Shortcut::Schlick => terms.extend(schlick().map(|d| ("fresnel", d))),
-        Shortcut::MaxDepthAndSchlick => {
-            terms.extend(depth().map(|d| ("max_depth", d)));
-            terms.extend(schlick().map(|d| ("fresnel", d)));
-        }
-        Shortcut::Integrator | Shortcut::Scene => {
-            let name = if chosen.shortcut == Shortcut::Scene {
-                "scene_settings"
-            } else {
-                "integrator"
-            };
-            terms.push((name, predictor.bias(index)));
-        }
-        Shortcut::None => {}
-    }
-    terms
 }
 
 /// The measures of `image` against the ground truth of the trade-off

@@ -9,6 +9,8 @@ use validation::tradeoff::budget::displayed::{self, Reference, Shown, Simulation
 use validation::tradeoff::budget::{self, Bound, Choice, Need, Pilot, Prediction};
 use validation::tradeoff::measure::Mask;
 
+use tracer::scene::Settings;
+
 use super::MAX_BUDGET_SPP;
 
 /// A candidate's prediction in the budget's metric.
@@ -193,4 +195,43 @@ impl Predictor {
             } => simulations[index].floor(reference, *measure),
         }
     }
+}
+
+/// The bias of each shortcut of the chosen candidate measured alone, from
+/// the candidates that take it alone, in the budget's metric.
+pub fn terms(
+    candidates: &[super::pilot::Candidate],
+    predictor: &Predictor,
+    index: usize,
+) -> Vec<(&'static str, f64)> {
+    use super::pilot::Shortcut;
+    let chosen = &candidates[index];
+    let alone = |shortcut: Shortcut, keep: &dyn Fn(&Settings) -> bool| {
+        candidates
+            .iter()
+            .position(|c| c.shortcut == shortcut && keep(&c.settings))
+            .map(|i| predictor.bias(i))
+    };
+    let s = chosen.settings;
+    let mut terms = Vec::new();
+    let depth = || alone(Shortcut::MaxDepth, &|c| c.max_depth == s.max_depth);
+    let schlick = || alone(Shortcut::Schlick, &|_| true);
+    match chosen.shortcut {
+        Shortcut::MaxDepth => terms.extend(depth().map(|d| ("max_depth", d))),
+        Shortcut::Schlick => terms.extend(schlick().map(|d| ("fresnel", d))),
+        Shortcut::MaxDepthAndSchlick => {
+            terms.extend(depth().map(|d| ("max_depth", d)));
+            terms.extend(schlick().map(|d| ("fresnel", d)));
+        }
+        Shortcut::Integrator | Shortcut::Scene => {
+            let name = if chosen.shortcut == Shortcut::Scene {
+                "scene_settings"
+            } else {
+                "integrator"
+            };
+            terms.push((name, predictor.bias(index)));
+        }
+        Shortcut::None => {}
+    }
+    terms
 }
