@@ -6,12 +6,14 @@
 //! `T` is rendered. With `--verify` the render is measured against the
 //! ground truth the trade-off sweep uses (its cache shared).
 //!
-//! Only the relative RMSE of linear radiance is predicted: its bias and
-//! noise add in squares. The displayed-image measures (ΔE2000, ꟻLIP) clamp
-//! and quantise the image, so no bound on them follows from these terms
-//! yet: they are refused by name.
+//! The relative RMSE of linear radiance is bounded from the pilot's sums
+//! (its bias and noise add in squares); the displayed image's measures
+//! (ΔE2000, ꟻLIP), which clamp and quantise, by simulating the final
+//! render from the pilot and measuring it with the sweep's own code
+//! ([`predictor`]).
 
 pub mod pilot;
+pub mod predictor;
 mod report;
 
 use std::path::{Path, PathBuf};
@@ -20,8 +22,11 @@ use serde::Serialize;
 use tracer::job::RenderJob;
 use tracer::output::Destination;
 use tracer::scene::{Settings, MAX_SPP};
-use validation::tradeoff::budget::{self, Choice, Prediction};
+use validation::tradeoff::budget::displayed::Shown;
+use validation::tradeoff::budget::{self, Bound, Choice};
 use validation::tradeoff::measure::{self, Mask};
+
+use predictor::{Predicted, Predictor};
 
 use crate::error::{self, ErrorKind};
 use crate::render::RenderArgs;
@@ -59,6 +64,22 @@ impl Metric {
             Metric::FlipMean => "flip_mean",
         }
     }
+
+    /// The displayed image's measure it is, `None` for the relative RMSE.
+    pub fn shown(self) -> Option<Shown> {
+        match self {
+            Metric::RelRmse => None,
+            Metric::DeltaEMean => Some(Shown::DeltaEMean),
+            Metric::DeltaEP99 => Some(Shown::DeltaEP99),
+            Metric::FlipMean => Some(Shown::FlipMean),
+        }
+    }
+
+    /// Its value among the sweep's measures.
+    pub fn of(self, errors: &measure::Errors) -> f64 {
+        self.shown()
+            .map_or(errors.rel_rmse, |shown| shown.of(errors))
+    }
 }
 
 /// The budget's flags beside `render`'s.
@@ -76,7 +97,9 @@ pub struct BudgetArgs {
     )]
     #[serde(skip_serializing_if = "Option::is_none")]
     pub tolerance: Option<f64>,
-    /// The measure the tolerance is of (only rel_rmse can be predicted yet).
+    /// The measure the tolerance is of: the relative RMSE of linear
+    /// radiance, or the mean or 99th percentile of ΔE2000 or the mean
+    /// ꟻLIP of the displayed image, as `optics tradeoff` measures them.
     #[arg(long, value_enum, requires = "tolerance")]
     #[serde(skip_serializing_if = "Option::is_none")]
     pub metric: Option<Metric>,
@@ -143,8 +166,7 @@ fn tolerance_unchecked() -> bool {
     false
 }
 
-/// A budget settled from its flags: a tolerance of a metric that can be
-/// predicted.
+/// A budget settled from its flags: a tolerance of a metric.
 #[derive(Clone, Copy, Debug)]
 pub struct Budget {
     /// The bound on the metric, above 0 and finite.
@@ -154,19 +176,10 @@ pub struct Budget {
 }
 
 impl BudgetArgs {
-    /// The budget the flags ask for, `None` without `--tolerance`; a
-    /// metric the budget cannot predict is refused by name.
-    pub fn settle(&self) -> error::Result<Option<Budget>> {
-        let (Some(tolerance), Some(metric)) = (self.tolerance, self.metric) else {
-            return Ok(None);
-        };
-        if metric != Metric::RelRmse {
-            return Err(ErrorKind::MetricNotPredicted {
-                metric: metric.name(),
-            }
-            .into());
-        }
-        Ok(Some(Budget { tolerance, metric }))
+    /// The budget the flags ask for, `None` without `--tolerance`.
+    pub fn settle(&self) -> Option<Budget> {
+        let (tolerance, metric) = (self.tolerance?, self.metric?);
+        Some(Budget { tolerance, metric })
     }
 }
 
@@ -175,8 +188,8 @@ impl BudgetArgs {
 pub struct Outcome {
     /// The tolerance and its metric.
     pub tolerance: f64,
-    /// The metric's name.
-    pub metric: &'static str,
+    /// The metric.
+    pub metric: Metric,
     /// Whether course_rough was rendered and measured as Lambert
     /// (`--lambert`).
     pub lambert: bool,
@@ -185,11 +198,12 @@ pub struct Outcome {
     /// What they leave out of the truth's settings.
     pub shortcut: pilot::Shortcut,
     /// Their prediction.
-    pub predicted: Prediction,
-    /// The prediction of the terms measured alone (name, relative bound).
+    pub predicted: Predicted,
+    /// The terms measured alone (name, bound in the metric without the
+    /// candidate's own noise).
     pub terms: Vec<(&'static str, f64)>,
     /// The scene's own settings at their own samples.
-    pub scene: Prediction,
+    pub scene: Predicted,
     /// Rays the rendered image cast.
     pub rays: u64,
     /// Rays the pilot pass cast.
@@ -198,7 +212,7 @@ pub struct Outcome {
     pub pilot_spp: u32,
     /// Every candidate, its settings and its cheapest prediction within
     /// the tolerance (none where it cannot reach it).
-    pub candidates: Vec<(String, Option<Prediction>)>,
+    pub candidates: Vec<(String, Option<Predicted>)>,
     /// The measures against the ground truth, with `--verify`.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub verified: Option<measure::Errors>,
@@ -227,15 +241,24 @@ pub fn run(args: &RenderArgs, budget: Budget, ui: &Ui) -> error::Result<()> {
         &job,
         &args.scene,
         (&truth, &candidates),
-        (half, &mask),
+        (half, &mask, budget.metric.shown().is_some()),
         threads,
     )?;
     let [a, b] = &pass.reference;
     let energy = budget::energy([a, b], &mask).ok_or(ErrorKind::BudgetPilotNoisy {
         pilot_spp: 2 * half,
     })?;
-    let choice = budget::choose(&pass.pilots, energy, budget.tolerance, MAX_BUDGET_SPP)
-        .expect("the truth's settings are always a candidate");
+    let predictor = match budget.metric.shown() {
+        None => Predictor::rel_rmse(pass.pilots.clone(), energy),
+        Some(shown) => Predictor::shown(
+            shown,
+            (&pass.reference, &pass.halves),
+            &pass.pilots,
+            (half, &mask, flags.truth_spp),
+        ),
+    };
+    let (choice, within) = predictor.choose(budget.tolerance);
+    let choice = choice.expect("the truth's settings are always a candidate");
     let (index, predicted) = match choice {
         Choice::Chosen { index, prediction } => (index, prediction),
         Choice::Unreachable {
@@ -246,19 +269,19 @@ pub fn run(args: &RenderArgs, budget: Budget, ui: &Ui) -> error::Result<()> {
             return Err(ErrorKind::BudgetUnreachable {
                 metric: budget.metric.name(),
                 tolerance: budget.tolerance,
-                best: prediction.rel_rmse,
+                best: prediction.bound(),
                 settings: describe(&final_settings(
                     &candidates[index].settings,
-                    &prediction,
+                    prediction.spp(),
                     half,
                 )),
-                top_spp: prediction.spp,
+                top_spp: prediction.spp(),
                 need,
             }
             .into());
         }
     };
-    let chosen = final_settings(&candidates[index].settings, &predicted, half);
+    let chosen = final_settings(&candidates[index].settings, predicted.spp(), half);
     let final_job = RenderJob::with_settings(job.scene().clone(), chosen).map_err(|error| {
         ErrorKind::Scene {
             file: args.scene.clone(),
@@ -278,26 +301,22 @@ pub fn run(args: &RenderArgs, budget: Budget, ui: &Ui) -> error::Result<()> {
     } else {
         None
     };
-    let scene_pilot = &pass.pilots[0];
     let outcome = Outcome {
         tolerance: budget.tolerance,
-        metric: budget.metric.name(),
+        metric: budget.metric,
         lambert: flags.lambert,
         chosen,
         shortcut: candidates[index].shortcut,
         predicted,
-        terms: terms(&candidates, &pass.pilots, index, energy),
-        scene: budget::predict(scene_pilot, energy, job.settings().spp),
+        terms: predictor::terms(&candidates, &predictor, index),
+        scene: predictor.at(0, job.settings().spp),
         rays: rendered.rays.total(),
         pilot_rays: pass.rays,
         pilot_spp: 2 * half,
         candidates: candidates
             .iter()
-            .zip(&pass.pilots)
-            .map(|(c, p)| {
-                let best = budget::cheapest(p, energy, budget.tolerance, MAX_BUDGET_SPP);
-                (describe(&c.settings), best)
-            })
+            .zip(within)
+            .map(|(c, best)| (describe(&c.settings), best))
             .collect(),
         verified,
     };
@@ -307,8 +326,8 @@ pub fn run(args: &RenderArgs, budget: Budget, ui: &Ui) -> error::Result<()> {
 /// A candidate's settings at the samples its prediction took (the caustic
 /// map's photons scaled alike), rendered with the seed after the pilot's
 /// two.
-fn final_settings(settings: &Settings, prediction: &Prediction, half_spp: u32) -> Settings {
-    let at = match prediction.spp {
+fn final_settings(settings: &Settings, spp: Option<u32>, half_spp: u32) -> Settings {
+    let at = match spp {
         Some(spp) => pilot::scaled_photons(settings, half_spp, spp),
         None => *settings,
     };
@@ -328,47 +347,6 @@ pub fn describe(settings: &Settings) -> String {
     } else {
         words
     }
-}
-
-/// The bias of each shortcut of the chosen candidate measured alone, from
-/// the candidates that take it alone, and its noise.
-fn terms(
-    candidates: &[pilot::Candidate],
-    pilots: &[budget::Pilot],
-    index: usize,
-    energy: f64,
-) -> Vec<(&'static str, f64)> {
-    use pilot::Shortcut;
-    let chosen = &candidates[index];
-    let alone = |shortcut: Shortcut, keep: &dyn Fn(&Settings) -> bool| {
-        candidates
-            .iter()
-            .zip(pilots)
-            .find(|(c, _)| c.shortcut == shortcut && keep(&c.settings))
-            .map(|(_, p)| budget::predict(p, energy, 1).bias)
-    };
-    let s = chosen.settings;
-    let mut terms = Vec::new();
-    let depth = alone(Shortcut::MaxDepth, &|c| c.max_depth == s.max_depth);
-    let schlick = alone(Shortcut::Schlick, &|_| true);
-    match chosen.shortcut {
-        Shortcut::MaxDepth => terms.extend(depth.map(|d| ("max_depth", d))),
-        Shortcut::Schlick => terms.extend(schlick.map(|d| ("fresnel", d))),
-        Shortcut::MaxDepthAndSchlick => {
-            terms.extend(depth.map(|d| ("max_depth", d)));
-            terms.extend(schlick.map(|d| ("fresnel", d)));
-        }
-        Shortcut::Integrator | Shortcut::Scene => {
-            let name = if chosen.shortcut == Shortcut::Scene {
-                "scene_settings"
-            } else {
-                "integrator"
-            };
-            terms.push((name, budget::predict(&pilots[index], energy, 1).bias));
-        }
-        Shortcut::None => {}
-    }
-    terms
 }
 
 /// The measures of `image` against the ground truth of the trade-off

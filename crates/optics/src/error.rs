@@ -184,12 +184,6 @@ pub enum ErrorKind {
         /// The scene file, as given.
         file: PathBuf,
     },
-    /// `optics render --tolerance` of a metric the budget cannot predict.
-    #[cfg(feature = "harness")]
-    MetricNotPredicted {
-        /// The metric's name, as `--metric` takes it.
-        metric: &'static str,
-    },
     /// `optics render --tolerance` that no candidate is predicted to reach.
     #[cfg(feature = "harness")]
     BudgetUnreachable {
@@ -334,8 +328,6 @@ impl ErrorKind {
             #[cfg(feature = "harness")]
             ErrorKind::TruthIsBlack { .. } => "tradeoff.truth_is_black",
             #[cfg(feature = "harness")]
-            ErrorKind::MetricNotPredicted { .. } => "budget.metric_not_predicted",
-            #[cfg(feature = "harness")]
             ErrorKind::BudgetUnreachable { .. } => "budget.unreachable",
             #[cfg(feature = "harness")]
             ErrorKind::BudgetPilotNoisy { .. } => "budget.pilot_noisy",
@@ -382,8 +374,6 @@ impl ErrorKind {
             ErrorKind::Compare(error) => error.field(),
             #[cfg(feature = "harness")]
             ErrorKind::TruthIsBlack { .. } => Some("SCENE".to_owned()),
-            #[cfg(feature = "harness")]
-            ErrorKind::MetricNotPredicted { .. } => Some("--metric".to_owned()),
             #[cfg(feature = "harness")]
             ErrorKind::BudgetUnreachable { .. } => Some("--tolerance".to_owned()),
             #[cfg(feature = "harness")]

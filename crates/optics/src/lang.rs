@@ -128,10 +128,6 @@ fn hungarian(kind: &ErrorKind) -> String {
             file.display()
         ),
         #[cfg(feature = "harness")]
-        ErrorKind::MetricNotPredicted { metric } => format!(
-            "--metric {metric}: a keret ezt még nem tudja előre becsülni (csak a rel_rmse-t: a megjelenített kép mértékei levágnak és kvantálnak, így a próba tagjaiból nem következik rájuk korlát); az `optics tradeoff` méri"
-        ),
-        #[cfg(feature = "harness")]
         ErrorKind::BudgetUnreachable {
             metric,
             tolerance,

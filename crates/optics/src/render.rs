@@ -156,7 +156,7 @@ impl JobArgs {
 
 pub fn run(args: &RenderArgs, ui: &Ui) -> error::Result<()> {
     #[cfg(feature = "harness")]
-    if let Some(budget) = args.budget.settle()? {
+    if let Some(budget) = args.budget.settle() {
         return crate::budget::run(args, budget, ui);
     }
     let job = args.job.job(&args.scene)?;

@@ -67,29 +67,41 @@ fn record(output: &Output) -> Value {
     serde_json::from_slice(&output.stdout).unwrap()
 }
 
-/// Three scenes (glass and its caustics, gold mirrors, water seen from
-/// inside), three tolerances (10 % and 20 %, and 100 %, where the scenes'
-/// own Whitted settings come within reach), three seeds: each of the 27
-/// renders reaches a relative RMSE within its tolerance. Each prediction
-/// takes its four estimated sums at 3 standard deviations up, so where
-/// they are near normal it fails at most 4 × 0.13 % of the time; a bias
-/// from paths too rare for the pilot to meet (a deep bounce between the
-/// gold mirrors) is what can still exceed it, so the renders are held to
-/// T with a stated confidence: at least 25 of the 27 (93 %), where a
-/// budget the predictor cannot meet answers "cannot reach T" instead (the
-/// bound is conservative: inside_water at T 0.1, seed 2, is one; at most
-/// a third may be, so that the test holds renders to T). Observed:
-/// gold_spheres (as Lambert) at T 0.2, seed 2, reached 0.2135 against a
-/// prediction of 0.1908, where the gold mirrors' path-traced light on the
-/// floor has a heavier tail than the pilot's two halves show. How many
-/// exceed their prediction is printed with `--nocapture` (the achieved
-/// errors too). Where the scene's own settings are predicted within T, the
-/// choice casts no more rays than they would.
-#[test]
-fn the_achieved_error_stays_within_the_tolerance_over_seeds() {
+/// The bound a prediction puts on `metric`: the relative RMSE's own
+/// field, or a displayed measure's simulated `bound`.
+fn bound(prediction: &Value, metric: &str) -> f64 {
+    let field = if metric == "rel_rmse" {
+        "rel_rmse"
+    } else {
+        "bound"
+    };
+    prediction[field].as_f64().unwrap()
+}
+
+/// What the budgets over seeds came to.
+#[derive(Default)]
+struct Tally {
+    /// Budgets that rendered.
+    rendered: usize,
+    /// Budgets answered "cannot reach T".
+    unreachable: usize,
+    /// Renders whose error exceeded their prediction.
+    over_prediction: usize,
+    /// Renders whose error exceeded their tolerance.
+    over_tolerance: usize,
+    /// Choices that cast fewer rays than the scene's own settings, where
+    /// those were predicted within T.
+    cheaper: usize,
+}
+
+/// Budgets `metric` at each of `tolerances` with seeds 1 to 3 on three
+/// scenes (glass and its caustics, gold mirrors as Lambert, water seen
+/// from inside) at 16×12, verified against their truth: each prediction
+/// within T, and where the scene's own settings are predicted within T,
+/// no more rays than they cast. Prints each budget (`--nocapture`).
+fn over_seeds(metric: &str, tolerances: &[&str]) -> Tally {
     let dir = tempfile::tempdir().unwrap();
-    let (mut cheaper, mut over_prediction, mut over_tolerance) = (0, 0, 0);
-    let mut unreachable = 0;
+    let mut tally = Tally::default();
     // gold_spheres's course_rough reflects more than it receives: budgeted
     // with the sweep's Lambert stand-in, as `docs/tradeoffs/make` measures it.
     for (name, lambert) in [
@@ -97,13 +109,13 @@ fn the_achieved_error_stays_within_the_tolerance_over_seeds() {
         ("gold_spheres", true),
         ("inside_water", false),
     ] {
-        for tolerance in ["0.1", "0.2", "1"] {
+        for &tolerance in tolerances {
             for seed in ["1", "2", "3"] {
                 let mut flags = vec![
                     "--tolerance",
                     tolerance,
                     "--metric",
-                    "rel_rmse",
+                    metric,
                     "--verify",
                     "--seed",
                     seed,
@@ -116,87 +128,158 @@ fn the_achieved_error_stays_within_the_tolerance_over_seeds() {
                     // The other promise: "cannot reach T; the best is …".
                     let json: Value = serde_json::from_slice(&output.stdout).unwrap();
                     assert_eq!(json["error"]["kind"], "budget.unreachable", "{json}");
-                    println!("{name} T {tolerance} seed {seed}: cannot reach it");
-                    unreachable += 1;
+                    let text = String::from_utf8_lossy(&output.stderr);
+                    assert!(text.contains(&format!("cannot reach {metric} ")), "{text}");
+                    println!("{name} {metric} T {tolerance} seed {seed}: cannot reach it");
+                    tally.unreachable += 1;
                     continue;
                 }
                 let details = record(&output)["details"].clone();
                 let t: f64 = tolerance.parse().unwrap();
-                let achieved = details["verified"]["rel_rmse"].as_f64().unwrap();
-                let predicted = details["predicted"]["rel_rmse"].as_f64().unwrap();
+                let achieved = details["verified"][metric].as_f64().unwrap();
+                let predicted = bound(&details["predicted"], metric);
                 println!(
-                    "{name} T {t} seed {seed}: achieved {achieved:.4}, predicted {predicted:.4}"
+                    "{name} {metric} T {t} seed {seed}: achieved {achieved:.4}, predicted {predicted:.4}"
                 );
                 assert!(predicted <= t, "{name} {t}: predicted {predicted}");
-                over_tolerance += usize::from(achieved > t);
-                over_prediction += usize::from(achieved > predicted);
+                tally.rendered += 1;
+                tally.over_tolerance += usize::from(achieved > t);
+                tally.over_prediction += usize::from(achieved > predicted);
                 let rays = details["predicted"]["rays"].as_f64().unwrap();
                 let own = &details["scene"];
-                if own["rel_rmse"].as_f64().unwrap() <= t {
+                if bound(own, metric) <= t {
                     let own_rays = own["rays"].as_f64().unwrap();
                     assert!(
                         rays <= own_rays,
                         "{name} {t}: {rays} rays against the scene's {own_rays}"
                     );
-                    cheaper += usize::from(rays < own_rays);
+                    tally.cheaper += usize::from(rays < own_rays);
                 }
             }
         }
     }
     println!(
-        "{unreachable} of 27 answered unreachable; of the rest {over_prediction} above their prediction, {over_tolerance} above T"
+        "{metric}: {} answered unreachable; of the {} rendered {} above their prediction, {} above T, {} cheaper than the scene's own settings",
+        tally.unreachable, tally.rendered, tally.over_prediction, tally.over_tolerance, tally.cheaper
+    );
+    tally
+}
+
+/// The relative RMSE at T 0.1 and 0.2, and 1, where the scenes' own
+/// Whitted settings come within reach; three seeds: each of the 27
+/// renders reaches a relative RMSE within its tolerance. Each prediction
+/// takes its four estimated sums at 3 standard deviations up, so where
+/// they are near normal it fails at most 4 × 0.13 % of the time; a bias
+/// from paths too rare for the pilot to meet (a deep bounce between the
+/// gold mirrors) is what can still exceed it, so the renders are held to
+/// T with a stated confidence: at least 25 of the 27 (93 %), where a
+/// budget the predictor cannot meet answers "cannot reach T" instead (the
+/// bound is conservative: inside_water at T 0.1, seed 2, is one; at most
+/// a third may be, so that the test holds renders to T). Observed once:
+/// gold_spheres (as Lambert) at T 0.2, seed 2, rendered at 1 spp,
+/// reached 0.2135 against a prediction of 0.1908, one sample's tail (the
+/// gold mirrors' path-traced light on the floor) heavier than the
+/// pilot's halves of 4 show; no candidate is now predicted below a
+/// half's samples, and it reaches 0.0544 ≤ 0.1343 at 4 spp. Where the
+/// scene's own settings are predicted within T, the choice casts no more
+/// rays than they would, and at least once fewer.
+#[test]
+fn the_achieved_error_stays_within_the_tolerance_over_seeds() {
+    let tally = over_seeds("rel_rmse", &["0.1", "0.2", "1"]);
+    assert!(
+        tally.over_tolerance <= 2,
+        "{} of 27 renders above their tolerance",
+        tally.over_tolerance
     );
     assert!(
-        over_tolerance <= 2,
-        "{over_tolerance} of 27 renders above their tolerance"
+        tally.unreachable <= 9,
+        "{} of 27 budgets unreachable",
+        tally.unreachable
     );
-    assert!(unreachable <= 9, "{unreachable} of 27 budgets unreachable");
     assert!(
-        cheaper > 0,
+        tally.cheaper > 0,
         "the budget never undercut the scene's own settings"
     );
 }
 
+/// The displayed image's measures, each at two tolerances the three
+/// scenes reach at 16×12 (mean ΔE2000 5 and 10, its 99th percentile 30
+/// and 60, ꟻLIP 0.1 and 0.2), seeds 1 to 3: 18 budgets per measure. Each
+/// bound is the largest of 8 simulated renders plus 3 deviations of
+/// their spread, so the renders are held to T with a stated confidence:
+/// at least 17 of the 18 rendered (94 %), at most a third answering
+/// "cannot reach T"; where the scene's own settings are predicted within
+/// T, the choice casts no more rays than they would.
+#[test]
+fn the_displayed_measures_stay_within_the_tolerance_over_seeds() {
+    for (metric, tolerances) in [
+        ("delta_e_mean", ["5", "10"]),
+        ("delta_e_p99", ["30", "60"]),
+        ("flip_mean", ["0.1", "0.2"]),
+    ] {
+        let tally = over_seeds(metric, &tolerances);
+        assert!(
+            tally.over_tolerance <= 1,
+            "{metric}: {} of {} renders above their tolerance",
+            tally.over_tolerance,
+            tally.rendered
+        );
+        assert!(
+            tally.unreachable <= 6,
+            "{metric}: {} of 18 budgets unreachable",
+            tally.unreachable
+        );
+    }
+}
+
 /// Every physically based course scene the sweep covers, with the flags
 /// `docs/tradeoffs/make` gives it (`--lambert` where course_rough's albedo
-/// π kd exceeds 1), budgeted once at 16×12 with `--verify` against its
-/// matching truth (256 spp): the error reached stays within T and within
-/// the prediction. T is a loose 0.5; kaleidoscope_lit's 2, for its
-/// mirrors' deep paths leave only the truth's full depth within 0.5 and 1,
-/// its caustic map then grown with 128 or 64 times the pilot's samples
-/// (40 s and 12 s here, against 7 s at 2). At 8×6 its pilot (and
-/// blinn_phong's) cannot bound the energy at 8 samples.
+/// π kd exceeds 1), budgeted once per metric at 16×12 with `--verify`
+/// against its matching truth (256 spp): the error reached stays within
+/// T and within the prediction. T is a loose 0.5 for the relative RMSE,
+/// 10 for mean ΔE2000, 60 for its 99th percentile, 0.2 for ꟻLIP;
+/// kaleidoscope_lit's 2, 15, 100 and 0.3, for its mirrors' deep paths
+/// leave only the truth's full depth within 0.5 and 1, its caustic map
+/// then grown with 128 or 64 times the pilot's samples (40 s and 12 s
+/// here, against 7 s at 2), and its pilot's noise between the mirrors
+/// keeps the 99th percentile's bound above 80 (ꟻLIP 0.2 takes 512 spp,
+/// 40 s). At 8×6 its pilot (and blinn_phong's) cannot bound the energy at
+/// 8 samples.
 #[test]
 fn every_course_scene_of_the_sweep_is_budgeted_within_its_prediction() {
     let dir = tempfile::tempdir().unwrap();
+    let loose = ["0.5", "10", "60", "0.2"];
     let scenes = [
-        ("shadow", true, "0.5"),
-        ("blinn_phong", true, "0.5"),
-        ("diffuse", true, "0.5"),
-        ("gold_spheres", true, "0.5"),
-        ("kaleidoscope_lit", true, "2"),
-        ("webgl_seven_spheres", true, "0.5"),
-        ("glass_spheres", false, "0.5"),
-        ("inside_water", false, "0.5"),
+        ("shadow", true, loose),
+        ("blinn_phong", true, loose),
+        ("diffuse", true, loose),
+        ("gold_spheres", true, loose),
+        ("kaleidoscope_lit", true, ["2", "15", "100", "0.3"]),
+        ("webgl_seven_spheres", true, loose),
+        ("glass_spheres", false, loose),
+        ("inside_water", false, loose),
     ];
-    for (name, lambert, tolerance) in scenes {
-        let mut flags = vec!["--tolerance", tolerance, "--metric", "rel_rmse", "--verify"];
-        if lambert {
-            flags.push("--lambert");
+    let metrics = ["rel_rmse", "delta_e_mean", "delta_e_p99", "flip_mean"];
+    for (name, lambert, tolerances) in scenes {
+        for (metric, tolerance) in metrics.into_iter().zip(tolerances) {
+            let mut flags = vec!["--tolerance", tolerance, "--metric", metric, "--verify"];
+            if lambert {
+                flags.push("--lambert");
+            }
+            let output = budget_with_truth(name, dir.path(), "s.png", "256", &flags);
+            let details = record(&output)["details"].clone();
+            let achieved = details["verified"][metric].as_f64().unwrap();
+            let predicted = bound(&details["predicted"], metric);
+            let t: f64 = tolerance.parse().unwrap();
+            println!("{name} {metric} T {t}: achieved {achieved:.4}, predicted {predicted:.4}");
+            assert_eq!(details["lambert"].as_bool().unwrap_or(false), lambert);
+            assert!(predicted <= t, "{name} {metric}: predicted {predicted}");
+            assert!(achieved <= t, "{name} {metric}: achieved {achieved}");
+            assert!(
+                achieved <= predicted,
+                "{name} {metric}: achieved {achieved} over its prediction {predicted}"
+            );
         }
-        let output = budget_with_truth(name, dir.path(), "s.png", "256", &flags);
-        let details = record(&output)["details"].clone();
-        let achieved = details["verified"]["rel_rmse"].as_f64().unwrap();
-        let predicted = details["predicted"]["rel_rmse"].as_f64().unwrap();
-        let t: f64 = tolerance.parse().unwrap();
-        println!("{name} T {t}: achieved {achieved:.4}, predicted {predicted:.4}");
-        assert_eq!(details["lambert"].as_bool().unwrap_or(false), lambert);
-        assert!(predicted <= t, "{name}: predicted {predicted}");
-        assert!(achieved <= t, "{name}: achieved {achieved}");
-        assert!(
-            achieved <= predicted,
-            "{name}: achieved {achieved} over its prediction {predicted}"
-        );
     }
 }
 
@@ -303,11 +386,11 @@ fn bad_budgets_are_refused_by_name_with_nothing_written() {
             "--",
         ),
         (
-            "a metric not predicted",
-            &["--tolerance", "1", "--metric", "delta_e_p99"],
+            "an unreachable budget of a displayed measure",
+            &["--tolerance", "1e-3", "--metric", "delta_e_p99"],
             1,
-            "budget.metric_not_predicted",
-            "--metric",
+            "budget.unreachable",
+            "--tolerance",
         ),
         (
             "an unreachable budget",
@@ -338,6 +421,17 @@ fn bad_budgets_are_refused_by_name_with_nothing_written() {
             "{what}: an image was written"
         );
     }
+    let shown = budget(
+        "glass_spheres",
+        dir.path(),
+        "bad.png",
+        &["--tolerance", "1e-3", "--metric", "delta_e_p99"],
+    );
+    let text = String::from_utf8_lossy(&shown.stderr);
+    assert!(
+        text.contains("cannot reach delta_e_p99 1e-3; the best is delta_e_p99 ≤"),
+        "{text}"
+    );
     let unreachable = budget(
         "glass_spheres",
         dir.path(),

@@ -1,7 +1,9 @@
 //! The accuracy budget's prediction: from a cheap pilot pass, an upper
 //! bound on the relative RMSE of linear radiance ([`super::measure`]) that
 //! a render at given settings reaches against the ground truth, and the
-//! cheapest settings, in rays, whose bound stays under a tolerance.
+//! cheapest settings, in rays, whose bound stays under a tolerance
+//! ([`choose_among`], for any metric). The displayed image's measures are
+//! bounded by simulated renders in [`displayed`].
 //!
 //! # The bound
 //!
@@ -44,6 +46,8 @@ use serde::Serialize;
 use tracer::render::Image;
 
 use super::measure::Mask;
+
+pub mod displayed;
 
 /// Standard deviations taken on the unsafe side of each estimated sum:
 /// 3, a one-sided 99.87 % bound for each where the sums are near normal.
@@ -106,6 +110,12 @@ pub struct Pilot {
     /// `1 / N` (a caustic map that cannot grow with the samples past its
     /// cap); `u32::MAX` where nothing caps it.
     pub most_spp: u32,
+    /// The fewest samples per pixel it is predicted at: a half's. Its
+    /// variance per sample is measured on means of that many samples;
+    /// fewer have heavier tails than the halves show (gold_spheres at
+    /// 16×12, T 0.2, seed 2 predicted ≤ 0.1908 at 1 spp from halves of 4
+    /// and reached 0.2135), so the bound is not taken below it.
+    pub fewest_spp: u32,
 }
 
 impl Pilot {
@@ -143,6 +153,7 @@ impl Pilot {
             samples,
             rays,
             most_spp: u32::MAX,
+            fewest_spp: half_spp.max(1),
         }
     }
 }
@@ -206,9 +217,9 @@ fn noise_squared(pilot: &Pilot, n: f64) -> f64 {
     noise / n + cross
 }
 
-/// The samples per pixel the budget renders `pilot` at, up to `max_spp`
-/// (and the pilot's `most_spp`): the powers of two, `[1]` for a
-/// deterministic candidate.
+/// The samples per pixel the budget renders `pilot` at, from its
+/// `fewest_spp` up to `max_spp` (and its `most_spp`): the powers of two,
+/// `[1]` for a deterministic candidate.
 fn ladder(pilot: &Pilot, max_spp: u32) -> Vec<u32> {
     let max_spp = max_spp.min(pilot.most_spp);
     if !pilot.samples {
@@ -216,6 +227,7 @@ fn ladder(pilot: &Pilot, max_spp: u32) -> Vec<u32> {
     }
     std::iter::successors(Some(1u32), |&n| n.checked_mul(2))
         .take_while(|&n| n <= max_spp)
+        .filter(|&n| n >= pilot.fewest_spp)
         .collect()
 }
 
@@ -262,6 +274,7 @@ pub fn need(pilot: &Pilot, energy: f64, tolerance: f64) -> Need {
     }
     (0..64)
         .map(|k| 1u64 << k)
+        .filter(|&n| n >= u64::from(pilot.fewest_spp))
         .find(|&n| noise_squared(pilot, n as f64) / energy <= room)
         .map_or(Need::Never, |spp| Need::Samples { spp })
 }
@@ -277,17 +290,46 @@ pub fn cheapest(pilot: &Pilot, energy: f64, tolerance: f64, max_spp: u32) -> Opt
         .find(|p| p.rel_rmse <= tolerance)
 }
 
+/// A prediction of one candidate at its samples, whatever its metric:
+/// the bound it puts on the metric and what the render costs.
+pub trait Bound: Copy {
+    /// The bound on the metric.
+    fn bound(&self) -> f64;
+    /// Rays one render casts.
+    fn rays(&self) -> f64;
+}
+
+impl Bound for Prediction {
+    fn bound(&self) -> f64 {
+        self.rel_rmse
+    }
+
+    fn rays(&self) -> f64 {
+        self.rays
+    }
+}
+
+impl Bound for displayed::Prediction {
+    fn bound(&self) -> f64 {
+        self.bound
+    }
+
+    fn rays(&self) -> f64 {
+        self.rays
+    }
+}
+
 /// What the budget decides among candidates.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 #[serde(tag = "outcome", rename_all = "snake_case")]
-pub enum Choice {
+pub enum Choice<P = Prediction> {
     /// The candidate (its index) that costs the fewest rays within the
     /// tolerance, at its samples.
     Chosen {
         /// Its index among the candidates.
         index: usize,
         /// Its prediction.
-        prediction: Prediction,
+        prediction: P,
     },
     /// No candidate is predicted within the tolerance: the one with the
     /// smallest prediction, at the most samples the budget would render
@@ -296,7 +338,7 @@ pub enum Choice {
         /// Its index among the candidates.
         index: usize,
         /// Its prediction.
-        prediction: Prediction,
+        prediction: P,
         /// What it would need to reach the tolerance.
         need: Need,
     },
@@ -306,27 +348,42 @@ pub enum Choice {
 /// prediction, then the earlier candidate), or the best of them when none
 /// is; `None` only for no candidates.
 pub fn choose(pilots: &[Pilot], energy: f64, tolerance: f64, max_spp: u32) -> Option<Choice> {
-    let within = pilots
-        .iter()
-        .enumerate()
-        .filter_map(|(i, p)| cheapest(p, energy, tolerance, max_spp).map(|q| (i, q)))
+    choose_among(
+        pilots.len(),
+        |i| cheapest(&pilots[i], energy, tolerance, max_spp),
+        |i| predict(&pilots[i], energy, top_spp(&pilots[i], max_spp)),
+        |i| need(&pilots[i], energy, tolerance),
+    )
+}
+
+/// The choice among `count` candidates, of any metric: the cheapest in
+/// rays of those `cheapest` finds within the tolerance (ties: the smaller
+/// bound, then the earlier candidate), or else the smallest `best` (each
+/// at the most samples the budget renders it at) with its `need`; `None`
+/// only for no candidates.
+pub fn choose_among<P: Bound>(
+    count: usize,
+    cheapest: impl Fn(usize) -> Option<P>,
+    best: impl Fn(usize) -> P,
+    need: impl Fn(usize) -> Need,
+) -> Option<Choice<P>> {
+    let within = (0..count)
+        .filter_map(|i| cheapest(i).map(|q| (i, q)))
         .min_by(|(_, a), (_, b)| {
-            a.rays
-                .total_cmp(&b.rays)
-                .then(a.rel_rmse.total_cmp(&b.rel_rmse))
+            a.rays()
+                .total_cmp(&b.rays())
+                .then(a.bound().total_cmp(&b.bound()))
         });
     if let Some((index, prediction)) = within {
         return Some(Choice::Chosen { index, prediction });
     }
-    pilots
-        .iter()
-        .enumerate()
-        .map(|(i, p)| (i, predict(p, energy, top_spp(p, max_spp))))
-        .min_by(|(_, a), (_, b)| a.rel_rmse.total_cmp(&b.rel_rmse))
+    (0..count)
+        .map(|i| (i, best(i)))
+        .min_by(|(_, a), (_, b)| a.bound().total_cmp(&b.bound()))
         .map(|(index, prediction)| Choice::Unreachable {
             index,
             prediction,
-            need: need(&pilots[index], energy, tolerance),
+            need: need(index),
         })
 }
 

@@ -119,6 +119,9 @@ pub fn same_but_spp(a: &Settings, b: &Settings) -> bool {
 pub struct Pass {
     /// One per candidate, in order.
     pub pilots: Vec<Pilot>,
+    /// Each candidate's two halves, in order, where they were kept (a
+    /// displayed measure's simulation needs them); empty otherwise.
+    pub halves: Vec<[tracer::render::Image; 2]>,
     /// The truth's settings' two halves.
     pub reference: [tracer::render::Image; 2],
     /// Rays cast by the whole pass.
@@ -127,12 +130,13 @@ pub struct Pass {
 
 /// Renders the truth's settings and every candidate as two halves of
 /// `half_spp` samples (seeds `seed` and `seed + 1`; a candidate that does
-/// not sample at its own) and measures each against the truth's.
+/// not sample at its own) and measures each against the truth's; each
+/// candidate's halves are kept where `keep` says so.
 pub fn run(
     job: &RenderJob,
     file: &Path,
     (truth, candidates): (&Settings, &[Candidate]),
-    (half_spp, mask): (u32, &Mask),
+    (half_spp, mask, keep): (u32, &Mask, bool),
     threads: Option<usize>,
 ) -> error::Result<Pass> {
     let mut rays = 0;
@@ -151,6 +155,7 @@ pub fn run(
     let [a, b] = halves(truth, true)?;
     let reference = [a.image, b.image];
     let mut pilots = Vec::with_capacity(candidates.len());
+    let mut images = Vec::with_capacity(candidates.len());
     for candidate in candidates {
         let samples = candidate.samples();
         let [a, b] = halves(&candidate.settings, samples)?;
@@ -183,9 +188,13 @@ pub fn run(
             pilot.most_spp = spp.min(u64::from(u32::MAX)) as u32;
         }
         pilots.push(pilot);
+        if keep {
+            images.push([a.image, b.image]);
+        }
     }
     Ok(Pass {
         pilots,
+        halves: images,
         reference,
         rays,
     })

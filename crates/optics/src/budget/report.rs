@@ -3,8 +3,10 @@
 //! reached; as text, or as the one `--json` record.
 
 use tracer::output::Destination;
-use validation::tradeoff::budget::Prediction;
+use validation::tradeoff::budget::displayed::DRAWS;
+use validation::tradeoff::budget::{Bound, K};
 
+use super::predictor::Predicted;
 use super::{describe, Outcome};
 use crate::error;
 use crate::lang::{say, Lang};
@@ -46,20 +48,23 @@ pub fn show(
         )
     });
     if let Some(errors) = &outcome.verified {
-        let within = errors.rel_rmse <= outcome.tolerance;
+        let reached = outcome.metric.of(errors);
+        let within = reached <= outcome.tolerance;
         record.step(|| {
             say!(
                 lang,
-                "verified against the ground truth: rel_rmse {:.4} (predicted ≤ {:.4}, tolerance {}): {}; ΔE2000 mean {:.3}, p99 {:.3}, ꟻLIP {:.4}",
-                "ellenőrizve a referencián: rel_rmse {:.4} (becslés ≤ {:.4}, tűrés {}): {}; ΔE2000 átlag {:.3}, p99 {:.3}, ꟻLIP {:.4}",
-                errors.rel_rmse,
-                outcome.predicted.rel_rmse,
+                "verified against the ground truth: {} {:.4} (predicted ≤ {:.4}, tolerance {}): {}; rel_rmse {:.4}, ΔE2000 mean {:.3}, p99 {:.3}, ꟻLIP {:.4}",
+                "ellenőrizve a referencián: {} {:.4} (becslés ≤ {:.4}, tűrés {}): {}; rel_rmse {:.4}, ΔE2000 átlag {:.3}, p99 {:.3}, ꟻLIP {:.4}",
+                outcome.metric.name(),
+                reached,
+                outcome.predicted.bound(),
                 super::written(outcome.tolerance),
                 if within {
                     lang.pick("within", "belül")
                 } else {
                     lang.pick("OVER the tolerance", "a tűrés FÖLÖTT")
                 },
+                errors.rel_rmse,
                 errors.delta_e_mean,
                 errors.delta_e_p99,
                 errors.flip_mean
@@ -94,10 +99,10 @@ fn lines(outcome: &Outcome, lang: Lang) -> Vec<String> {
             "chosen: {}, predicted {} ≤ {:.4} (tolerance {}), {:.3e} rays",
             "választás: {}, becsült {} ≤ {:.4} (tűrés {}), {:.3e} sugár",
             describe(&outcome.chosen),
-            outcome.metric,
-            p.rel_rmse,
+            outcome.metric.name(),
+            p.bound(),
             super::written(outcome.tolerance),
-            p.rays
+            p.rays()
         ),
         prediction_line(p, lang),
     ]);
@@ -115,29 +120,53 @@ fn lines(outcome: &Outcome, lang: Lang) -> Vec<String> {
         lang,
         "the scene's own settings: predicted {} ≤ {:.4}, {:.3e} rays",
         "a jelenet saját beállításai: becsült {} ≤ {:.4}, {:.3e} sugár",
-        outcome.metric,
-        s.rel_rmse,
-        s.rays
+        outcome.metric.name(),
+        s.bound(),
+        s.rays()
     ));
     lines
 }
 
-/// The terms of a prediction: bias and noise, added in squares.
-fn prediction_line(p: &Prediction, lang: Lang) -> String {
-    match p.spp {
-        Some(spp) => say!(
-            lang,
-            "  = √(bias² + noise²): bias ≤ {:.4} (what the settings leave out of the truth, from the pilot), Monte Carlo noise ≤ {:.4} at {} spp",
-            "  = √(torzítás² + zaj²): torzítás ≤ {:.4} (amit a beállítás kihagy a referenciából, a próbából), Monte Carlo zaj ≤ {:.4} {} mintánál",
-            p.bias,
-            p.noise,
-            spp
-        ),
-        None => say!(
-            lang,
-            "  = bias ≤ {:.4} (what the settings leave out of the truth, from the pilot); deterministic: no noise",
-            "  = torzítás ≤ {:.4} (amit a beállítás kihagy a referenciából, a próbából); determinisztikus: nincs zaj",
-            p.bias
-        ),
+/// The terms of a prediction: bias and noise added in squares, or the
+/// simulated renders and their margin.
+fn prediction_line(p: &Predicted, lang: Lang) -> String {
+    match p {
+        Predicted::RelRmse(p) => match p.spp {
+            Some(spp) => say!(
+                lang,
+                "  = √(bias² + noise²): bias ≤ {:.4} (what the settings leave out of the truth, from the pilot), Monte Carlo noise ≤ {:.4} at {} spp",
+                "  = √(torzítás² + zaj²): torzítás ≤ {:.4} (amit a beállítás kihagy a referenciából, a próbából), Monte Carlo zaj ≤ {:.4} {} mintánál",
+                p.bias,
+                p.noise,
+                spp
+            ),
+            None => say!(
+                lang,
+                "  = bias ≤ {:.4} (what the settings leave out of the truth, from the pilot); deterministic: no noise",
+                "  = torzítás ≤ {:.4} (amit a beállítás kihagy a referenciából, a próbából); determinisztikus: nincs zaj",
+                p.bias
+            ),
+        },
+        Predicted::Shown(p) => match p.spp {
+            Some(spp) => say!(
+                lang,
+                "  = the largest of {} simulated renders (the pilot's mean, its noise at {} spp and the ground truth's), {:.4}, + {} standard deviations of them with the pilot's own noise drawn again, {:.4}",
+                "  = {} szimulált kép legnagyobbika (a próba átlaga, zaja {} mintánál és a referenciáé), {:.4}, + a próba saját zaját újra sorsoló képek szórásának {}-szorosa, {:.4}",
+                DRAWS,
+                spp,
+                p.simulated,
+                K,
+                p.margin
+            ),
+            None => say!(
+                lang,
+                "  = the largest of {} simulated renders (the pilot's mean; deterministic: only the ground truth's noise), {:.4}, + {} standard deviations of them with the pilot's own noise drawn again, {:.4}",
+                "  = {} szimulált kép legnagyobbika (a próba átlaga; determinisztikus: csak a referencia zaja), {:.4}, + a próba saját zaját újra sorsoló képek szórásának {}-szorosa, {:.4}",
+                DRAWS,
+                p.simulated,
+                K,
+                p.margin
+            ),
+        },
     }
 }

@@ -95,11 +95,6 @@ impl fmt::Display for ErrorKind {
                 file.display()
             ),
             #[cfg(feature = "harness")]
-            ErrorKind::MetricNotPredicted { metric } => write!(
-                f,
-                "--metric {metric}: the budget cannot predict it yet (it predicts rel_rmse only: the displayed image's measures clamp and quantise, and no bound on them follows from the pilot's terms); measure it with `optics tradeoff`"
-            ),
-            #[cfg(feature = "harness")]
             ErrorKind::BudgetUnreachable {
                 metric,
                 tolerance,

@@ -224,10 +224,6 @@ fn slot(kind: &ErrorKind) -> usize {
             CALCULATOR + render_kinds::SLOTS + harness_kinds::TRUTH_IS_BLACK
         }
         #[cfg(feature = "harness")]
-        ErrorKind::MetricNotPredicted { .. } => {
-            CALCULATOR + render_kinds::SLOTS + harness_kinds::METRIC_NOT_PREDICTED
-        }
-        #[cfg(feature = "harness")]
         ErrorKind::BudgetUnreachable { .. } => {
             CALCULATOR + render_kinds::SLOTS + harness_kinds::BUDGET_UNREACHABLE
         }

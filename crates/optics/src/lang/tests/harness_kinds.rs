@@ -46,21 +46,18 @@ pub const CHECKS_FAILED: usize = 12;
 /// The slot of a black truth (`optics tradeoff`).
 pub const TRUTH_IS_BLACK: usize = 13;
 
-/// The slot of a metric the budget cannot predict.
-pub const METRIC_NOT_PREDICTED: usize = 14;
-
 /// The slot of a budget no candidate reaches.
-pub const BUDGET_UNREACHABLE: usize = 15;
+pub const BUDGET_UNREACHABLE: usize = 14;
 
 /// The slot of a pilot too noisy to bound the truth's energy.
-pub const BUDGET_PILOT_NOISY: usize = 16;
+pub const BUDGET_PILOT_NOISY: usize = 15;
 
 /// The slot of a scene whose rough material gains energy, budgeted
 /// without `--lambert`.
-pub const BUDGET_ENERGY_GAIN: usize = 17;
+pub const BUDGET_ENERGY_GAIN: usize = 16;
 
 /// How many harness slots there are.
-pub const SLOTS: usize = 18;
+pub const SLOTS: usize = 17;
 
 /// An exit status of 3, as a failed tool reports it.
 fn exit_status() -> std::process::ExitStatus {
@@ -200,12 +197,6 @@ pub fn examples() -> Vec<(ErrorKind, Vec<String>)> {
                 file: "scenes/kaleidoscope.json".into(),
             },
             named(&["SCENE", "scenes/kaleidoscope.json"]),
-        ),
-        (
-            ErrorKind::MetricNotPredicted {
-                metric: "delta_e_p99",
-            },
-            named(&["--metric delta_e_p99", "rel_rmse", "`optics tradeoff`"]),
         ),
         (
             ErrorKind::BudgetUnreachable {
