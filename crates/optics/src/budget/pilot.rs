@@ -18,6 +18,12 @@ use crate::tradeoff::sweep;
 /// The bounce limits a candidate may take, up to the truth's.
 const DEPTHS: [u32; 6] = [1, 2, 4, 8, 16, 32];
 
+/// The throughput cutoffs a candidate may take, above the truth's: the
+/// path tracer's Russian roulette below them, unbiased, so a cutoff buys
+/// fewer rays per sample for more noise per sample, both of which the
+/// pilot measures.
+const CUTOFFS: [f32; 2] = [1e-2, 1e-1];
+
 /// What a candidate leaves out of the truth's settings: the terms of its
 /// bias, each measured alone by the pilot where the candidate has one.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
@@ -36,6 +42,9 @@ pub enum Shortcut {
     /// A cheaper integrator (with its own pixel filter): the light it
     /// misses.
     Integrator,
+    /// A throughput cutoff above the truth's: Russian roulette ends more
+    /// paths (no bias in expectation; fewer rays, more noise).
+    Cutoff,
 }
 
 /// One setting the budget may choose.
@@ -96,6 +105,14 @@ pub fn candidates(job: &RenderJob, truth: &Settings) -> Vec<Candidate> {
             };
             add(shortcut, spec);
         }
+    }
+    let cutoffs = CUTOFFS.iter().filter(|&&c| c > truth.throughput_cutoff);
+    for &cutoff in cutoffs {
+        let spec = RenderSpec {
+            throughput_cutoff: Some(f64::from(cutoff)),
+            ..RenderSpec::default()
+        };
+        add(Shortcut::Cutoff, spec);
     }
     for integrator in [IntegratorKind::Whitted, IntegratorKind::Local] {
         let spec = RenderSpec {
@@ -220,4 +237,54 @@ pub fn scaled_photons(settings: &Settings, half_spp: u32, spp: u32) -> Settings 
 /// The truth's settings for `job`: the sweep's ground truth at `spp`.
 pub fn truth_settings(job: &RenderJob, spp: u32) -> Settings {
     sweep::truth_settings(job, spp)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use tracer::job::Overrides;
+
+    fn job(name: &str) -> RenderJob {
+        let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("../tracer/scenes")
+            .join(format!("{name}.json"));
+        let overrides = Overrides {
+            width: Some(8),
+            height: Some(6),
+            ..Overrides::default()
+        };
+        RenderJob::load(&path, &overrides).unwrap()
+    }
+
+    fn cutoffs(truth: &Settings, job: &RenderJob) -> Vec<f32> {
+        candidates(job, truth)
+            .iter()
+            .filter(|c| c.shortcut == Shortcut::Cutoff)
+            .map(|c| c.settings.throughput_cutoff)
+            .collect()
+    }
+
+    #[test]
+    fn the_roulette_cutoffs_above_the_truths_are_candidates_and_none_below() {
+        let job = job("glass_spheres");
+        let truth = truth_settings(&job, 4);
+        assert_eq!(truth.throughput_cutoff, 1e-3);
+        assert_eq!(cutoffs(&truth, &job), CUTOFFS.to_vec());
+        // Each differs from the truth in its cutoff alone (and its samples).
+        for c in candidates(&job, &truth) {
+            if c.shortcut == Shortcut::Cutoff {
+                let same = Settings {
+                    throughput_cutoff: truth.throughput_cutoff,
+                    ..c.settings
+                };
+                assert!(same_but_spp(&same, &truth), "{:?}", c.settings);
+            }
+        }
+        // A truth already at the larger cutoff offers none at or below it.
+        let coarse = Settings {
+            throughput_cutoff: 1e-1,
+            ..truth
+        };
+        assert!(cutoffs(&coarse, &job).is_empty());
+    }
 }

@@ -223,6 +223,7 @@ pub fn terms(
             terms.extend(depth().map(|d| ("max_depth", d)));
             terms.extend(schlick().map(|d| ("fresnel", d)));
         }
+        Shortcut::Cutoff => terms.push(("throughput_cutoff", predictor.bias(index))),
         Shortcut::Integrator | Shortcut::Scene => {
             let name = if chosen.shortcut == Shortcut::Scene {
                 "scene_settings"

@@ -254,13 +254,18 @@ pub fn plan(job: &RenderJob, spp: u32) -> Plan {
     Plan { points, skipped }
 }
 
-/// The settings in a few words: `whitted, max_depth 11, fresnel exact`.
+/// The settings in a few words: `whitted, max_depth 11, fresnel exact`;
+/// a path's throughput cutoff (where its Russian roulette starts) where it
+/// is not the default.
 pub fn describe(s: &Settings) -> String {
     let mut words = format!("{}", s.integrator);
     if s.integrator.samples() || s.pixel_filter == PixelFilter::Box {
         words += &format!(", {} spp", s.spp);
     }
     words += &format!(", max_depth {}, fresnel {}", s.max_depth, s.fresnel);
+    if s.integrator.samples() && s.throughput_cutoff != Settings::default().throughput_cutoff {
+        words += &format!(", throughput_cutoff {}", s.throughput_cutoff);
+    }
     words
 }
 
