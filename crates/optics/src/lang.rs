@@ -145,6 +145,7 @@ fn hungarian(kind: &ErrorKind) -> String {
                 (validation::tradeoff::budget::Need::Capped { spp }, _) => format!(
                     "több minta sem éri el: a zaja {spp} minta fölött már nem csökken, ott a kausztikus térkép fotonjai a legtöbbek"
                 ),
+                (validation::tradeoff::budget::Need::Floor, _) => "semennyi minta nem éri el: már az alsó határa, a torzítás a próba és a referencia zajával együtt, fölötte van (több --pilot-spp a próba részét csökkenti)".to_owned(),
                 _ => "semennyi minta nem éri el: már a torzítás maga fölötte van".to_owned(),
             };
             format!(

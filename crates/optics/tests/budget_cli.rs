@@ -432,6 +432,13 @@ fn bad_budgets_are_refused_by_name_with_nothing_written() {
         text.contains("cannot reach delta_e_p99 1e-3; the best is delta_e_p99 ≤"),
         "{text}"
     );
+    // A displayed measure's floor is more than its bias: the pilot's noise
+    // and the truth's are in it too, and the answer says so.
+    assert!(
+        text.contains("its floor, the bias with the pilot's noise and the ground truth's")
+            && !text.contains("the bias alone"),
+        "{text}"
+    );
     let unreachable = budget(
         "glass_spheres",
         dir.path(),

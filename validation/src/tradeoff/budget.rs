@@ -251,6 +251,10 @@ pub enum Need {
     /// No samples: its bias alone is predicted above the tolerance (or it
     /// is deterministic).
     Never,
+    /// No samples: the floor of a displayed measure, simulated with no
+    /// noise of the candidate's own (its bias, the pilot's noise and the
+    /// ground truth's), is predicted above the tolerance.
+    Floor,
     /// None it can take: its noise stops falling past these samples per
     /// pixel (a caustic map at its most photons).
     Capped {

@@ -2,12 +2,14 @@
 //! scene's own settings would have cost, and with `--verify` the error
 //! reached; as text, or as the one `--json` record.
 
+use clap::ValueEnum;
 use tracer::output::Destination;
 use validation::tradeoff::budget::displayed::DRAWS;
 use validation::tradeoff::budget::{Bound, K};
+use validation::tradeoff::measure::Errors;
 
 use super::predictor::Predicted;
-use super::{describe, Outcome};
+use super::{describe, Metric, Outcome};
 use crate::error;
 use crate::lang::{say, Lang};
 use crate::record::{Answer, Record};
@@ -48,30 +50,58 @@ pub fn show(
         )
     });
     if let Some(errors) = &outcome.verified {
-        let reached = outcome.metric.of(errors);
-        let within = reached <= outcome.tolerance;
         record.step(|| {
-            say!(
+            verified_line(
+                outcome.metric,
+                (outcome.predicted.bound(), outcome.tolerance),
+                errors,
                 lang,
-                "verified against the ground truth: {} {:.4} (predicted ≤ {:.4}, tolerance {}): {}; rel_rmse {:.4}, ΔE2000 mean {:.3}, p99 {:.3}, ꟻLIP {:.4}",
-                "ellenőrizve a referencián: {} {:.4} (becslés ≤ {:.4}, tűrés {}): {}; rel_rmse {:.4}, ΔE2000 átlag {:.3}, p99 {:.3}, ꟻLIP {:.4}",
-                outcome.metric.name(),
-                reached,
-                outcome.predicted.bound(),
-                super::written(outcome.tolerance),
-                if within {
-                    lang.pick("within", "belül")
-                } else {
-                    lang.pick("OVER the tolerance", "a tűrés FÖLÖTT")
-                },
-                errors.rel_rmse,
-                errors.delta_e_mean,
-                errors.delta_e_p99,
-                errors.flip_mean
             )
         });
     }
     ui.show_steps(&record)
+}
+
+/// What `--verify` reached: the chosen measure against its prediction
+/// and tolerance, then each of the other three once.
+fn verified_line(
+    chosen: Metric,
+    (bound, tolerance): (f64, f64),
+    errors: &Errors,
+    lang: Lang,
+) -> String {
+    let reached = chosen.of(errors);
+    let others: Vec<String> = Metric::value_variants()
+        .iter()
+        .filter(|&&metric| metric != chosen)
+        .map(|&metric| measure_text(metric, errors, lang))
+        .collect();
+    say!(
+        lang,
+        "verified against the ground truth: {} {:.4} (predicted ≤ {:.4}, tolerance {}): {}; {}",
+        "ellenőrizve a referencián: {} {:.4} (becslés ≤ {:.4}, tűrés {}): {}; {}",
+        chosen.name(),
+        reached,
+        bound,
+        super::written(tolerance),
+        if reached <= tolerance {
+            lang.pick("within", "belül")
+        } else {
+            lang.pick("OVER the tolerance", "a tűrés FÖLÖTT")
+        },
+        others.join(", ")
+    )
+}
+
+/// One measure reached, as the verify line names it.
+fn measure_text(metric: Metric, errors: &Errors, lang: Lang) -> String {
+    let value = metric.of(errors);
+    match metric {
+        Metric::RelRmse => format!("rel_rmse {value:.4}"),
+        Metric::DeltaEMean => say!(lang, "ΔE2000 mean {:.3}", "ΔE2000 átlag {:.3}", value),
+        Metric::DeltaEP99 => format!("ΔE2000 p99 {value:.3}"),
+        Metric::FlipMean => format!("ꟻLIP {value:.4}"),
+    }
 }
 
 /// The choice and its reasons, one line each.
@@ -168,5 +198,37 @@ fn prediction_line(p: &Predicted, lang: Lang) -> String {
                 p.margin
             ),
         },
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The verify line names each of the four measures once, in both
+    /// languages, the chosen one first: its value (to the printed digits)
+    /// appears exactly once.
+    #[test]
+    fn the_verify_line_names_each_measure_once() {
+        let errors = Errors {
+            rel_rmse: 0.0283,
+            delta_e_mean: 1.095,
+            delta_e_p99: 17.078,
+            flip_mean: 0.0227,
+            light: 1.0,
+            light_noise: None,
+            split: None,
+        };
+        let values = ["0.0283", "1.095", "17.078", "0.0227"];
+        for &chosen in Metric::value_variants() {
+            for lang in [Lang::En, Lang::Hu] {
+                let line = verified_line(chosen, (0.0897, 0.1), &errors, lang);
+                for value in values {
+                    assert_eq!(line.matches(value).count(), 1, "{value} in {line}");
+                }
+                let first = line.split(": ").nth(1).unwrap_or_default();
+                assert!(first.starts_with(chosen.name()), "{line}");
+            }
+        }
     }
 }

@@ -118,6 +118,10 @@ impl fmt::Display for ErrorKind {
                         f,
                         "; more samples cannot reach it: its noise stops falling past {spp} spp, where its caustic map has its most photons"
                     ),
+                    (Need::Floor, _) => write!(
+                        f,
+                        "; no number of samples reaches it: its floor, the bias with the pilot's noise and the ground truth's, is above it (more --pilot-spp lowers the pilot's part)"
+                    ),
                     _ => write!(
                         f,
                         "; no number of samples reaches it: the bias alone is above it"

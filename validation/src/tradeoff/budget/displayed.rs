@@ -282,7 +282,7 @@ impl Simulation {
             simulated + margin <= tolerance
         };
         if !self.pilot.samples || self.floor(reference, measure) > tolerance {
-            return Need::Never;
+            return Need::Floor;
         }
         if self.pilot.most_spp < u32::MAX {
             return Need::Capped {
@@ -292,7 +292,7 @@ impl Simulation {
         let fewest = self.pilot.fewest_spp.next_power_of_two().trailing_zeros();
         let (mut low, mut high) = (fewest.min(40), 40u32);
         if !within((1u64 << high) as f64) {
-            return Need::Never;
+            return Need::Floor;
         }
         while low < high {
             let middle = (low + high) / 2;

@@ -215,6 +215,53 @@ pub fn examples() -> Vec<(ErrorKind, Vec<String>)> {
             ]),
         ),
         (
+            ErrorKind::BudgetUnreachable {
+                metric: "delta_e_p99",
+                tolerance: 0.5,
+                best: 14.6475,
+                settings: "path, 65536 spp, max_depth 1, fresnel exact".into(),
+                top_spp: Some(65536),
+                need: validation::tradeoff::budget::Need::Floor,
+            },
+            named(&[
+                "--tolerance 0.5",
+                "delta_e_p99",
+                "path, 65536 spp, max_depth 1, fresnel exact",
+                "--pilot-spp",
+            ]),
+        ),
+        (
+            ErrorKind::BudgetUnreachable {
+                metric: "rel_rmse",
+                tolerance: 1e-3,
+                best: 0.0612,
+                settings: "whitted, max_depth 64, fresnel exact".into(),
+                top_spp: None,
+                need: validation::tradeoff::budget::Need::Never,
+            },
+            named(&[
+                "--tolerance 1e-3",
+                "rel_rmse",
+                "whitted, max_depth 64, fresnel exact",
+            ]),
+        ),
+        (
+            ErrorKind::BudgetUnreachable {
+                metric: "rel_rmse",
+                tolerance: 1e-3,
+                best: 0.0123,
+                settings: "photon, 4096 spp, max_depth 16, fresnel exact".into(),
+                top_spp: Some(4096),
+                need: validation::tradeoff::budget::Need::Capped { spp: 4096 },
+            },
+            named(&[
+                "--tolerance 1e-3",
+                "rel_rmse",
+                "photon, 4096 spp, max_depth 16, fresnel exact",
+                "4096",
+            ]),
+        ),
+        (
             ErrorKind::BudgetEnergyGain {
                 material: "green".to_owned(),
                 gain: 2.51,

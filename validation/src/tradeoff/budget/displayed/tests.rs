@@ -187,6 +187,44 @@ fn a_noiseless_pilot_predicts_exactly_what_its_bias_shows() {
     }
 }
 
+/// A candidate with no bias at all, piloted with noise (two halves of 2
+/// samples, shared paths half-width 0.6, its own 0.05), still has a floor
+/// above 0 for each measure: the pilot's noise and the truth's. A
+/// tolerance of half that floor is answered `Need::Floor`, not a bias
+/// above it; one of twice the floor is reached by samples.
+#[test]
+fn an_unbiased_candidate_has_a_floor_of_the_pilot_and_truth_noise() {
+    let mut scene = Synthetic::new();
+    scene.bias = vec![Vec3::ZERO; scene.truth.len()];
+    let mask = Mask::all((WIDTH * HEIGHT) as usize);
+    let seeds = [0x2545_f491_4f6c_dd1d_u64, 0x5555, 0xaaaa, 0x3333];
+    let pair = |first: usize, second: usize, candidate: bool| {
+        let (mut paths, mut own) = (seeds[first], seeds[second]);
+        scene.render(2, candidate, &mut paths, &mut own)
+    };
+    let [ra, rb] = [pair(0, 2, false), pair(1, 3, false)];
+    let [ca, cb] = [pair(0, 2, true), pair(1, 3, true)];
+    let pilot = Pilot::measure([&ca, &cb], [&ra, &rb], &mask, 2, true, NO_RAYS);
+    let reference = Reference::new([&ra, &rb], 2, &mask, 1 << 10);
+    let simulation = Simulation::new([&ca, &cb], &reference, 2, pilot);
+    for measure in [Shown::DeltaEMean, Shown::DeltaEP99, Shown::FlipMean] {
+        let floor = simulation.floor(&reference, measure);
+        assert!(floor > 0.0, "{measure:?}: floor {floor}");
+        assert_eq!(
+            simulation.need(&reference, measure, floor / 2.0),
+            Need::Floor,
+            "{measure:?}: floor {floor}"
+        );
+        assert!(
+            matches!(
+                simulation.need(&reference, measure, 2.0 * floor),
+                Need::Samples { .. }
+            ),
+            "{measure:?}: floor {floor}"
+        );
+    }
+}
+
 /// The variance map pools a pixel with its 3 × 3 neighbours and keeps the
 /// larger: one noisy pixel among quiet ones keeps its own, and lends a
 /// ninth of it (a quarter at a corner) to its neighbours.
