@@ -132,18 +132,18 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     );
     println!();
     println!(
-        "Mitsuba's estimates against its ptracer (share ± standard error of the ptracer's passes):"
+        "Mitsuba's estimates against its ptracer (share ± standard error of both estimates' passes):"
     );
     for estimate in [Estimate::Area, Estimate::Path] {
-        let theirs = passes(estimate);
-        let mean = theirs.iter().sum::<f64>() / theirs.len() as f64;
-        let (share, se) = light_share(mean, &passes(Estimate::Ptracer));
-        println!("- {}: {share:.4} ± {se:.4}", estimate.name());
+        let theirs = RegionMean::from_passes(passes(estimate));
+        let (share, se) = light_share(theirs.0.mean, &passes(Estimate::Ptracer));
+        let own = share * theirs.standard_error() / theirs.0.mean;
+        println!("- {}: {share:.4} ± {:.4}", estimate.name(), se.hypot(own));
     }
     println!();
     println!(
-        "Each cell: the mean over the renders ± the standard error of the renders' spread \\
-         and, against an estimate's passes, Mitsuba's (Student t: 3 degrees of freedom at 4 renders)."
+        "Each cell: the mean over the renders ± the standard error of their spread and, \
+         against an estimate's passes, of Mitsuba's passes too."
     );
     println!();
     println!("| setting | seconds | vs ptracer | vs area | vs path | vs ptracer mean, interior | vs ptracer mean, edge |");
