@@ -74,9 +74,14 @@ const VARIATIONS: [Variation; 7] = [
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let mut args = std::env::args().skip(1);
-    let spp: u32 = args.next().map_or(Ok(32), |a| a.parse())?;
-    let renders: u64 = args.next().map_or(Ok(4), |a| a.parse())?;
-    let threads: usize = args.next().map_or(Ok(2), |a| a.parse())?;
+    let mut next = |name: &str, default: u64| -> Result<u64, String> {
+        args.next().map_or(Ok(default), |a| {
+            a.parse().map_err(|e| format!("{name}: {a:?}: {e}"))
+        })
+    };
+    let spp = u32::try_from(next("SPP", 32)?).map_err(|e| format!("SPP: {e}"))?;
+    let renders = next("RENDERS", 4)?;
+    let threads = usize::try_from(next("THREADS", 2)?).map_err(|e| format!("THREADS: {e}"))?;
     if spp == 0 || renders < 2 {
         return Err("SPP must be at least 1 and RENDERS at least 2".into());
     }
