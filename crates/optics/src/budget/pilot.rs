@@ -242,19 +242,7 @@ pub fn truth_settings(job: &RenderJob, spp: u32) -> Settings {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use tracer::job::Overrides;
-
-    fn job(name: &str) -> RenderJob {
-        let path = Path::new(env!("CARGO_MANIFEST_DIR"))
-            .join("../tracer/scenes")
-            .join(format!("{name}.json"));
-        let overrides = Overrides {
-            width: Some(8),
-            height: Some(6),
-            ..Overrides::default()
-        };
-        RenderJob::load(&path, &overrides).unwrap()
-    }
+    use crate::tradeoff::sweep::tests::job;
 
     fn cutoffs(truth: &Settings, job: &RenderJob) -> Vec<f32> {
         candidates(job, truth)

@@ -295,11 +295,13 @@ pub fn truth_settings(job: &RenderJob, spp: u32) -> Settings {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
     use tracer::job::Overrides;
 
-    fn job(name: &str) -> RenderJob {
+    /// A course scene at 8 × 6, for the tests of what a sweep or a budget
+    /// plans for it.
+    pub(crate) fn job(name: &str) -> RenderJob {
         let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
             .join("../tracer/scenes")
             .join(format!("{name}.json"));
