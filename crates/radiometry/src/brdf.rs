@@ -20,7 +20,7 @@
 //! | [`BlinnPhongReciprocal`] | `kd + ks (cos⁺δ)^shine / ‖wi + wo‖²` (the course's fix) | yes | not in general |
 //!
 //! All return 0 when either direction is at or below the surface, and NaN
-//! for a NaN direction.
+//! for a NaN direction, as [`hemisphere`] decides it.
 
 #[allow(unused_imports)]
 use num_traits::{Float, FloatConst, One, Zero};
@@ -36,9 +36,55 @@ pub trait Brdf<T: Real> {
     fn eval<V: Vector3<Scalar = T>>(&self, n: V, wi: V, wo: V) -> T;
 }
 
+/// Where the light and the viewer lie about the surface, as every BRDF here
+/// decides it: a BRDF has a lobe only where both are strictly above.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Hemisphere<T> {
+    /// Both strictly above.
+    Above {
+        /// `cos θ_i = n · wi > 0`.
+        cos_i: T,
+        /// `cos θ_o = n · wo > 0`.
+        cos_o: T,
+    },
+    /// The light is at or below the surface (`n · wi ≤ 0`), whichever side
+    /// the viewer is on: `f_r = 0`.
+    LightBelow,
+    /// The light is above, the viewer at or below (`n · wo ≤ 0`): `f_r = 0`.
+    ViewerBelow,
+    /// A NaN direction: `f_r` is NaN (crate conventions: NaN in, NaN out).
+    Undefined,
+}
+
+/// Decides the [`Hemisphere`] of `wi` (towards the light) and `wo` (towards
+/// the viewer) about the unit normal `n`: the one place every BRDF here
+/// decides whether it has a lobe.
+///
+/// ```
+/// use glam::DVec3;
+/// use radiometry::brdf::{hemisphere, Hemisphere};
+/// // The course's quiz 3: light from (0, 3, 4)/5, seen from below.
+/// let side = hemisphere(DVec3::Z, DVec3::new(0.0, 0.6, 0.8), DVec3::new(0.0, 0.6, -0.8));
+/// assert_eq!(side, Hemisphere::ViewerBelow);
+/// ```
+#[inline]
+pub fn hemisphere<V: Vector3>(n: V, wi: V, wo: V) -> Hemisphere<V::Scalar> {
+    let (cos_i, cos_o) = (n.dot(wi), n.dot(wo));
+    let zero = V::Scalar::zero();
+    if cos_i > zero && cos_o > zero {
+        Hemisphere::Above { cos_i, cos_o }
+    } else if cos_i.is_nan() || cos_o.is_nan() {
+        Hemisphere::Undefined
+    } else if cos_i <= zero {
+        Hemisphere::LightBelow
+    } else {
+        Hemisphere::ViewerBelow
+    }
+}
+
 /// `lobe(cos θ_i, cos θ_o)` where both directions are strictly above the
 /// surface, 0 where either is at or below it, and NaN for a NaN direction
-/// (crate conventions: NaN in, NaN out).
+/// ([`hemisphere`]).
 #[inline]
 fn above<V: Vector3>(
     n: V,
@@ -46,14 +92,10 @@ fn above<V: Vector3>(
     wo: V,
     lobe: impl FnOnce(V::Scalar, V::Scalar) -> V::Scalar,
 ) -> V::Scalar {
-    let (cos_i, cos_o) = (n.dot(wi), n.dot(wo));
-    let zero = V::Scalar::zero();
-    if cos_i > zero && cos_o > zero {
-        lobe(cos_i, cos_o)
-    } else if cos_i.is_nan() || cos_o.is_nan() {
-        V::Scalar::nan()
-    } else {
-        zero
+    match hemisphere(n, wi, wo) {
+        Hemisphere::Above { cos_i, cos_o } => lobe(cos_i, cos_o),
+        Hemisphere::Undefined => V::Scalar::nan(),
+        Hemisphere::LightBelow | Hemisphere::ViewerBelow => V::Scalar::zero(),
     }
 }
 

@@ -8,7 +8,8 @@ use crate::lang::{say, Lang};
 use crate::record::{number, vector, Answer, Record, Steps};
 use glam::DVec3;
 use radiometry::brdf::{
-    half_vector, BlinnPhong, BlinnPhongReciprocal, Brdf, CourseLambert, Lambert, Phong,
+    half_vector, hemisphere, BlinnPhong, BlinnPhongReciprocal, Brdf, CourseLambert, Hemisphere,
+    Lambert, Phong,
 };
 use radiometry::radiance::{directional_irradiance, reflected_radiance};
 use radiometry::specular::reflect;
@@ -139,12 +140,38 @@ impl ShadeArgs {
         record.step(|| format!("L = {}, V = {}", vector(l.to_array()), vector(v.to_array())));
         let cos_in = n.dot(l);
         record.step(|| format!("cos θin = N · L = {}", number(cos_in)));
-        let f = model.evaluate(&mut record, Coefficients { kd, ks, shine }, n, l, v);
+        let side = hemisphere(n, l, v);
+        let f = match side {
+            Hemisphere::Above { .. } | Hemisphere::Undefined => {
+                model.evaluate(&mut record, Coefficients { kd, ks, shine }, n, l, v)
+            }
+            Hemisphere::LightBelow => {
+                record.step(|| {
+                    say!(
+                        lang,
+                        "f_r = 0: the light is at or below the surface (N · L ≤ 0)",
+                        "f_r = 0: a fényforrás a felület síkjában vagy alatta van (N · L ≤ 0)"
+                    )
+                });
+                0.0
+            }
+            Hemisphere::ViewerBelow => {
+                record.step(|| {
+                    say!(
+                        lang,
+                        "f_r = 0: the viewer is at or below the surface (N · V = {} ≤ 0)",
+                        "f_r = 0: a néző a felület síkjában vagy alatta van (N · V = {} ≤ 0)",
+                        number(n.dot(v))
+                    )
+                });
+                0.0
+            }
+        };
         let f = model.finite("f_r", f, via, &[])?;
         let e = directional_irradiance(l_in, n, l);
         record.step(|| {
             format!(
-                "E = L_in cos⁺θin = {} · {} = {}",
+                "E = L_in cos⁺θin = {} · {} = {} W/m²",
                 number(l_in),
                 number(cos_in.max(0.0)),
                 number(e)
@@ -153,17 +180,17 @@ impl ShadeArgs {
         let radiance = model.finite("L_ref", reflected_radiance(f, e), via, &["radiance"])?;
         record.step(|| {
             format!(
-                "L_ref = f_r · E = {} · {} = {}",
+                "L_ref = f_r · E = {} · {} = {} W/(sr m²)",
                 number(f),
                 number(e),
                 number(radiance)
             )
         });
-        if n.dot(v) <= 0.0 {
+        if side == Hemisphere::ViewerBelow {
             record.note(say!(
                 lang,
-                "the viewer is below the surface: nothing is reflected towards it",
-                "a néző a felület alatt van: felé semmi sem verődik vissza"
+                "the viewer is at or below the surface: nothing is reflected towards it",
+                "a néző a felület síkjában vagy alatta van: felé semmi sem verődik vissza"
             ));
         }
         record.answer = Answer::Number(radiance);
@@ -206,32 +233,38 @@ impl ShadeModel {
         match self {
             ShadeModel::Lambert => {
                 let f = Lambert { albedo: kd }.eval(n, l, v);
-                record.step(|| format!("f_r = kd / π = {}", number(f)));
+                record.step(|| format!("f_r = kd / π = {} 1/sr", number(f)));
                 f
             }
             ShadeModel::CourseLambert => {
                 let f = CourseLambert { kd }.eval(n, l, v);
-                record.step(|| format!("f_r = kd = {}", number(f)));
+                record.step(|| format!("f_r = kd = {} 1/sr", number(f)));
                 f
             }
             ShadeModel::Phong => {
                 let cos_alpha = reflect(l, n).dot(v);
                 record.step(|| format!("cos α = R · V = {}", number(cos_alpha)));
                 let f = Phong { kd, ks, shine }.eval(n, l, v);
-                record.step(|| format!("f_r = kd + ks (cos⁺α)^shine / cos θin = {}", number(f)));
+                record
+                    .step(|| format!("f_r = kd + ks (cos⁺α)^shine / cos θin = {} 1/sr", number(f)));
                 f
             }
             ShadeModel::BlinnPhong | ShadeModel::BlinnPhongReciprocal => {
                 step_half_vector(record, n, l, v);
                 let f = if self == ShadeModel::BlinnPhong {
                     let f = BlinnPhong { kd, ks, shine }.eval(n, l, v);
-                    record
-                        .step(|| format!("f_r = kd + ks (cos⁺δ)^shine / cos⁺θin = {}", number(f)));
+                    record.step(|| {
+                        format!("f_r = kd + ks (cos⁺δ)^shine / cos⁺θin = {} 1/sr", number(f))
+                    });
                     f
                 } else {
                     let f = BlinnPhongReciprocal { kd, ks, shine }.eval(n, l, v);
-                    record
-                        .step(|| format!("f_r = kd + ks (cos⁺δ)^shine / |L + V|² = {}", number(f)));
+                    record.step(|| {
+                        format!(
+                            "f_r = kd + ks (cos⁺δ)^shine / |L + V|² = {} 1/sr",
+                            number(f)
+                        )
+                    });
                     f
                 };
                 f

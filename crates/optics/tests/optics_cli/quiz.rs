@@ -135,3 +135,56 @@ fn hungarian_output_speaks_the_course_language() {
     let english = stdout(&optics(&["quiz", "seed"]));
     assert!(!english.contains("kérdés"));
 }
+
+#[test]
+fn a_working_step_computes_the_formula_it_names_when_a_direction_is_below_the_surface() {
+    // The course's BRDFs vanish when the light or the viewer is at or below
+    // the surface (N · L ≤ 0 or N · V ≤ 0): the step says so and why, and
+    // names no formula of kd whose value it does not print.
+    let below = [
+        (
+            ["lambert", "--light-dir", "0,3,-4", "--view-dir", "1,2,3"],
+            "f_r = 0: the light is at or below the surface",
+        ),
+        (
+            ["lambert", "--light-dir", "0,3,4", "--view-dir", "1,2,-3"],
+            "f_r = 0: the viewer is at or below the surface (N · V = -0.801784 ≤ 0)",
+        ),
+        (
+            [
+                "blinn-phong",
+                "--light-dir",
+                "0,3,4",
+                "--view-dir",
+                "0,-4,-3",
+            ],
+            "f_r = 0: the viewer is at or below the surface (N · V = -0.6 ≤ 0)",
+        ),
+        (
+            ["blinn-phong", "--light-dir", "0,1,0", "--view-dir", "0,1,0"],
+            "f_r = 0: the light is at or below the surface",
+        ),
+    ];
+    for (exercise, step) in below {
+        let mut args = vec!["quiz"];
+        args.extend_from_slice(&exercise);
+        args.extend_from_slice(&["--normal", "0,0,1", "--radiance", "5", "--kd", "0.6"]);
+        if exercise[0] == "blinn-phong" {
+            args.extend_from_slice(&["--ks", "1", "--shine", "3"]);
+        }
+        let record = json(&args);
+        assert_eq!(number(&record["answer"]), 0.0, "{record}");
+        assert_eq!(number(&record["details"]["brdf"]), 0.0, "{record}");
+        let steps: Vec<&str> = record["steps"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|s| s.as_str().unwrap())
+            .collect();
+        assert!(steps.iter().any(|s| s.starts_with(step)), "{steps:#?}");
+        assert!(
+            !steps.iter().any(|s| s.starts_with("f_r = kd")),
+            "a step names kd and prints 0: {steps:#?}"
+        );
+    }
+}
