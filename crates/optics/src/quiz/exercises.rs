@@ -111,13 +111,13 @@ impl LambertArgs {
         record.step(|| say!(
             lang,
             "the view direction does not enter: a Lambert surface looks equally bright from everywhere above it",
-            "a nézeti irány nem számít: a Lambert-felület minden irányból egyformán fényes"
+            "a nézeti irány nem számít: a Lambert-felület minden fölötte lévő irányból egyformán fényesnek látszik"
         ));
         let normalized = shading.radiance / std::f64::consts::PI;
         record.note(say!(
             lang,
             "physically normalised, f_r = kd/π, the same surface reflects {} W/(sr m^2); the course's kd is π times the albedo",
-            "fizikailag normált alakban (f_r = kd/π) ugyanez {} W/(sr m^2); a kurzus kd-je az albedó π-szerese",
+            "fizikailag normált alakban (f_r = kd/π) ugyanez a felület {} W/(sr m^2) sugársűrűséget ver vissza; a kurzus kd-je az albedó π-szerese",
             number(normalized)
         ));
         record.detail("normalized_lambert", normalized);
@@ -165,7 +165,7 @@ impl CriticalAngleArgs {
             say!(
             lang,
             "Snell: n sin θ = n_out sin θ_out; nothing leaves once θ_out would reach 90°",
-            "Snellius–Descartes: n sin θ = n_ki sin θ_ki; semmi sem lép ki, ha θ_ki elérné a 90°-ot"
+            "Snellius–Descartes: n sin θ = n_out sin θ_out; semmi sem lép ki, ha θ_out elérné a 90°-ot"
         )
         });
         let Some(theta_c) = critical_angle(n_out / n) else {
@@ -187,11 +187,24 @@ impl CriticalAngleArgs {
         });
         let degrees = theta_c.to_degrees();
         record.step(|| format!("θc = arcsin({}) = {}°", number(n_out / n), number(degrees)));
-        record.step(|| say!(
-            lang,
-            "θc is measured inside the medium, between the ray and the normal pointing towards the air",
-            "θc a közegen belül mérendő, a sugár és a levegő felé mutató normális között"
-        ));
+        // Into air (the quiz's case) the normal points towards the air; any
+        // other outside medium is named by its index.
+        record.step(|| {
+            if n_out == 1.0 {
+                say!(
+                    lang,
+                    "θc is measured inside the medium, between the ray and the normal pointing towards the air",
+                    "θc a közegen belül mérendő, a sugár és a levegő felé mutató normális között"
+                )
+            } else {
+                say!(
+                    lang,
+                    "θc is measured inside the medium, between the ray and the normal pointing towards the outside medium (n_out = {})",
+                    "θc a közegen belül mérendő, a sugár és a külső közeg (n_out = {}) felé mutató normális között",
+                    number(n_out)
+                )
+            }
+        });
         record.answer = Answer::Number(degrees);
         record.detail("radians", theta_c);
         Ok(record)

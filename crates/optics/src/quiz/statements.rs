@@ -61,7 +61,7 @@ const STATEMENTS: [Statement; 9] = [
         printed: true,
         correct: true,
         why_en: "radiance is invariant along a ray in a non-participating medium: dΦ/(dA cos θ dω) keeps its value as the ray's footprint and solid angle trade off",
-        why_hu: "nem részt vevő közegben a sugársűrűség a sugár mentén állandó: a sugárnyaláb keresztmetszete és térszöge kiegyenlíti egymást",
+        why_hu: "nem részt vevő közegben a sugársűrűség a sugár mentén állandó: dΦ/(dA cos θ dω) értéke megmarad, mert a sugárnyaláb keresztmetszete és térszöge kiegyenlíti egymást",
     },
     Statement {
         hu: "Egy pontszerű fényforrásból induló fénysugár sugársűrűsége a forrástól vett távolság négyzetével csökken.",
@@ -101,7 +101,7 @@ const STATEMENTS: [Statement; 9] = [
         printed: false,
         correct: false,
         why_en: "three real primaries mix only the colours of a triangle in the chromaticity diagram, and the region of all colours is bounded by the curved spectral locus, so no three wavelengths cover it; other primaries mix colours too",
-        why_hu: "három valós alapszín csak a színpatkóba írt háromszög színeit keveri ki, a színek tartományát pedig a görbült spektrális vonal határolja, így három hullámhossz sem fedi le; más alapszínekkel is lehet keverni",
+        why_hu: "három valós alapszín csak a színpatkóba írt háromszög színeit keveri ki, a színek tartományát pedig a spektrálszínek íves görbéje határolja, így semelyik három hullámhossz sem fedi le; más alapszínekkel is lehet keverni",
     },
     Statement {
         hu: "Az emberi szem kizárólag a 444, 526 és 645 nm hullámhosszú fényre érzékeny.",

@@ -136,6 +136,122 @@ fn hungarian_output_speaks_the_course_language() {
     assert!(!english.contains("kérdés"));
 }
 
+/// The tokens of a line of working that carry its mathematics: numbers,
+/// symbols and formulas, without the Hungarian suffix a number takes
+/// (`4-szeres`, `90°-ot`) or the punctuation around it.
+fn mathematics(line: &str) -> Vec<String> {
+    // A statement of question 1 is quoted as each language prints it (the
+    // Hungarian verbatim from the course); only its reason is the suite's.
+    let reason = match line.split_once(" — ") {
+        Some((_, why)) => why,
+        None => line,
+    };
+    let mut tokens: Vec<String> = reason
+        .split_whitespace()
+        .map(|token| token.trim_matches(|c: char| "(),;:.".contains(c)))
+        .map(|token| match token.rsplit_once('-') {
+            Some((head, suffix)) if !head.is_empty() && suffix.chars().all(char::is_alphabetic) => {
+                head
+            }
+            _ => token,
+        })
+        .map(|token| token.trim_matches(|c: char| "(),;:.".contains(c)))
+        // A lone `=` is a word ("equals" in a sentence), not a quantity.
+        .filter(|token| *token != "=")
+        .filter(|token| {
+            token
+                .chars()
+                .any(|c| c.is_ascii_digit() || "_/=²·ΦθδκπΔ°₁₂⁺".contains(c))
+        })
+        .map(str::to_owned)
+        .collect();
+    tokens.sort();
+    tokens
+}
+
+/// `optics <args>` in English and in Hungarian, line by line.
+fn both_languages(args: &[&str]) -> Vec<(String, String)> {
+    let english = stdout(&optics(args));
+    let mut hungarian_args = vec!["--lang", "hu"];
+    hungarian_args.extend_from_slice(args);
+    let hungarian = stdout(&optics(&hungarian_args));
+    let (en, hu): (Vec<&str>, Vec<&str>) = (english.lines().collect(), hungarian.lines().collect());
+    assert_eq!(en.len(), hu.len(), "{english}\n---\n{hungarian}");
+    en.into_iter()
+        .zip(hu)
+        .map(|(e, h)| (e.to_owned(), h.to_owned()))
+        .collect()
+}
+
+#[test]
+fn hungarian_working_has_the_numbers_symbols_and_formulas_of_the_english() {
+    // Every line of the working, each note and each reason says the same in
+    // both languages: the same numbers, units, symbols and formulas (exact
+    // token equality; the numbers are printed by the same formatter).
+    let exercises: [&[&str]; 5] = [
+        &["quiz", "seed"],
+        &[
+            "quiz",
+            "critical-angle",
+            "--n",
+            "1.5",
+            "--n-outside",
+            "1.33",
+        ],
+        &[
+            "quiz",
+            "lambert",
+            "--normal",
+            "0,0,1",
+            "--light-dir",
+            "0,3,-4",
+            "--view-dir",
+            "1,2,3",
+            "--radiance",
+            "5",
+            "--kd",
+            "0.6",
+        ],
+        &[
+            "quiz",
+            "blinn-phong",
+            "--normal",
+            "0,0,1",
+            "--light-dir",
+            "0,3,4",
+            "--view-dir",
+            "0,-4,-3",
+            "--radiance",
+            "5",
+            "--ks",
+            "1",
+            "--shine",
+            "3",
+        ],
+        &[
+            "quiz",
+            "blinn-phong",
+            "--normal",
+            "0,0,1",
+            "--light-dir",
+            "0,3,4",
+            "--view-dir",
+            "0,4,3",
+            "--radiance",
+            "5",
+            "--ks",
+            "1.41421356",
+            "--shine",
+            "3",
+        ],
+    ];
+    for args in exercises {
+        for (en, hu) in both_languages(args) {
+            assert_eq!(mathematics(&en), mathematics(&hu), "\n{en}\n{hu}");
+        }
+    }
+}
+
 #[test]
 fn a_working_step_computes_the_formula_it_names_when_a_direction_is_below_the_surface() {
     // The course's BRDFs vanish when the light or the viewer is at or below
@@ -187,4 +303,26 @@ fn a_working_step_computes_the_formula_it_names_when_a_direction_is_below_the_su
             "a step names kd and prints 0: {steps:#?}"
         );
     }
+}
+
+#[test]
+fn critical_angle_names_the_outside_medium_it_was_given() {
+    // Into air (the quiz) the normal points towards the air; into water
+    // (n_out = 1.33) there is no air to point to.
+    let water = json(&[
+        "quiz",
+        "critical-angle",
+        "--n",
+        "1.5",
+        "--n-outside",
+        "1.33",
+    ]);
+    let steps = water["steps"].to_string();
+    assert!(!steps.contains("air"), "{steps}");
+    assert!(
+        steps.contains("towards the outside medium (n_out = 1.33)"),
+        "{steps}"
+    );
+    let air = json(&["quiz", "critical-angle", "--n", "10"]);
+    assert!(air["steps"].to_string().contains("towards the air"));
 }
