@@ -62,7 +62,7 @@ const EXERCISES: [(&str, &str, &str, &str); 5] = [
     (
         "f0",
         "reflectance at normal incidence from n (and kappa)",
-        "merőleges visszaverődés n-ből (és kappából)",
+        "merőleges beesésű visszaverődés n-ből (és kappából)",
         "optics quiz f0 --n 1.4",
     ),
     (
@@ -80,7 +80,7 @@ const EXERCISES: [(&str, &str, &str, &str); 5] = [
     (
         "blinn-phong",
         "radiance from the course's Phong-Blinn surface",
-        "a kurzus Phong–Blinn felületéről visszavert sugársűrűség",
+        "a kurzus Phong–Blinn-felületéről visszavert sugársűrűség",
         "optics quiz blinn-phong --normal 0,0,1 --light-dir 0,3,4 --view-dir 0,4,3 --radiance 5 --ks 1.41421356 --shine 3",
     ),
 ];

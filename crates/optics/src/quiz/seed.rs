@@ -140,6 +140,15 @@ pub fn seed(lang: Lang) -> Result<Vec<Record>> {
         "the printed working labels the angle in the medium θ and then writes θin = arcsin(1/10); θin there is the angle in the air, 90°",
         "a közölt levezetés a közegbeli szöget θ-nak nevezi, majd θin = arcsin(1/10)-et ír; ott θin a levegőbeli szög, 90°"
     ));
+    // Questions 3 and 5 give the light as "5 W/m^2/st sugársűrűségű
+    // irányfényforrás"; the laws take it as the irradiance it delivers.
+    for q in [2, 4] {
+        questions[q].note(say!(
+            lang,
+            "the course gives the directional light as a radiance, 5 W/m^2/st; a directional light has no finite radiance (it arrives from one direction, a zero solid angle): its 5 is what it delivers to a surface facing it, W/m², and only so is L_in cos θin f_r in W/(sr m²)",
+            "a kurzus az irányfényforrást sugársűrűséggel adja meg (5 W/m^2/st); egy irányfényforrásnak nincs véges sugársűrűsége (egyetlen irányból, nulla térszögből érkezik): az 5 a rá merőleges felületen keltett irradiancia, W/m², és csak így lesz L_in cos θin f_r mértékegysége W/(sr m²)"
+        ));
+    }
     for (i, q) in questions.iter_mut().enumerate() {
         q.detail("question", i + 1);
     }

@@ -326,3 +326,21 @@ fn critical_angle_names_the_outside_medium_it_was_given() {
     let air = json(&["quiz", "critical-angle", "--n", "10"]);
     assert!(air["steps"].to_string().contains("towards the air"));
 }
+
+#[test]
+fn quiz_seed_says_the_directional_light_is_given_as_a_radiance_but_is_an_irradiance() {
+    // Questions 3 and 5 print the light as 5 W/m^2/st; the laws take 5 W/m²
+    // on a surface facing it, which is what makes the answers W/(sr m²).
+    let quiz = json(&["quiz", "seed"]);
+    for q in [2, 4] {
+        let question = &quiz["details"]["questions"][q];
+        assert_eq!(number(&question["inputs"]["radiance"]), 5.0);
+        assert_eq!(question["unit"], "W/(sr m^2)");
+        let notes = question["notes"].to_string();
+        assert!(
+            notes.contains("5 W/m^2/st") && notes.contains("surface facing it, W/m²"),
+            "question {}: {notes}",
+            q + 1
+        );
+    }
+}
