@@ -408,4 +408,40 @@ mod tests {
             }
         }
     }
+
+    #[test]
+    fn hemisphere_names_the_direction_at_or_below_the_surface() {
+        // Exact: the cosines are the z components, 0.8 and 0 in binary as
+        // the dot products with +z compute them.
+        let n = DVec3::Z;
+        let (up, down, grazing) = (
+            DVec3::new(0.0, 0.6, 0.8),
+            DVec3::new(0.0, 0.6, -0.8),
+            DVec3::Y,
+        );
+        let cases = [
+            (
+                (up, up),
+                Hemisphere::Above {
+                    cos_i: 0.8,
+                    cos_o: 0.8,
+                },
+            ),
+            ((down, up), Hemisphere::LightBelow),
+            ((down, down), Hemisphere::LightBelow),
+            ((grazing, up), Hemisphere::LightBelow),
+            ((up, down), Hemisphere::ViewerBelow),
+            ((up, grazing), Hemisphere::ViewerBelow),
+            ((up, DVec3::NAN), Hemisphere::Undefined),
+        ];
+        for ((wi, wo), side) in cases {
+            assert_eq!(hemisphere(n, wi, wo), side, "wi = {wi}, wo = {wo}");
+            let f = CourseLambert { kd: 0.6 }.eval(n, wi, wo);
+            match side {
+                Hemisphere::Above { .. } => assert_eq!(f, 0.6),
+                Hemisphere::Undefined => assert!(f.is_nan()),
+                _ => assert_eq!(f, 0.0),
+            }
+        }
+    }
 }
