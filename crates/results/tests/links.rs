@@ -1,6 +1,8 @@
 //! Every relative link and image of the documents leads somewhere: the
 //! README, `docs/*.md`, `validation/README.md` and the crates' READMEs name
-//! files that exist in the checkout (a `#fragment` is not followed).
+//! files that exist in the checkout, and a `#fragment` into a Markdown
+//! document (another, or the same one) names one of its headings as GitHub
+//! writes their anchors, or an explicit `<a id>`.
 
 use std::path::{Path, PathBuf};
 
@@ -36,15 +38,7 @@ fn documents() -> Vec<PathBuf> {
 /// `![alt](target)` of `text`, outside code spans and fenced blocks.
 fn targets(text: &str) -> Vec<String> {
     let mut found = Vec::new();
-    let mut fenced = false;
-    for line in text.lines() {
-        if line.trim_start().starts_with("```") {
-            fenced = !fenced;
-            continue;
-        }
-        if fenced {
-            continue;
-        }
+    for line in prose_lines(text) {
         // Code spans hold examples, not links.
         let prose: String = line
             .split('`')
@@ -64,11 +58,83 @@ fn targets(text: &str) -> Vec<String> {
     found
 }
 
+/// The lines of `text` outside fenced code blocks.
+fn prose_lines(text: &str) -> impl Iterator<Item = &str> {
+    let mut fenced = false;
+    text.lines().filter(move |line| {
+        if line.trim_start().starts_with("```") {
+            fenced = !fenced;
+            return false;
+        }
+        !fenced
+    })
+}
+
+/// GitHub's anchor of a heading's text: its rendered words (code spans'
+/// contents, links' texts) lower-cased, every character but a letter, a
+/// digit, `_`, `-` or a space dropped, and each space a `-`.
+fn slug(heading: &str) -> String {
+    let mut text = String::new();
+    let mut rest = heading;
+    // A link `[words](target)` shows its words only.
+    while let Some(open) = rest.find('[') {
+        text += &rest[..open];
+        let after = &rest[open + 1..];
+        match after.find("](").and_then(|close| {
+            let tail = &after[close + 2..];
+            tail.find(')').map(|end| (close, &tail[end + 1..]))
+        }) {
+            Some((close, tail)) => {
+                text += &after[..close];
+                rest = tail;
+            }
+            None => {
+                text.push('[');
+                rest = after;
+            }
+        }
+    }
+    text += rest;
+    text.to_lowercase()
+        .chars()
+        .filter(|c| c.is_alphanumeric() || matches!(c, '_' | '-' | ' '))
+        .map(|c| if c == ' ' { '-' } else { c })
+        .collect()
+}
+
+/// The anchors of a Markdown document: its headings' slugs, a repeated one
+/// numbered `-1`, `-2`, … as GitHub numbers them, and its `<a id="…">` and
+/// `<a name="…">`.
+fn anchors(text: &str) -> std::collections::HashSet<String> {
+    let mut found = std::collections::HashSet::new();
+    let mut seen = std::collections::HashMap::<String, usize>::new();
+    for line in prose_lines(text) {
+        let hashes = line.chars().take_while(|&c| c == '#').count();
+        if (1..=6).contains(&hashes) && line[hashes..].starts_with(' ') {
+            let base = slug(line[hashes..].trim());
+            let n = seen.entry(base.clone()).or_insert(0);
+            found.insert(if *n == 0 {
+                base.clone()
+            } else {
+                format!("{base}-{n}")
+            });
+            *n += 1;
+        }
+        for key in ["<a id=\"", "<a name=\""] {
+            let mut rest = line;
+            while let Some(i) = rest.find(key) {
+                let after = &rest[i + key.len()..];
+                let Some(end) = after.find('"') else { break };
+                found.insert(after[..end].to_owned());
+                rest = &after[end..];
+            }
+        }
+    }
+    found
+}
+
 fn is_local(target: &str) -> bool {
-    !(target.is_empty()
-        || target.starts_with('#')
-        || target.contains("://")
-        || target.starts_with("mailto:"))
+    !(target.is_empty() || target.contains("://") || target.starts_with("mailto:"))
 }
 
 #[test]
@@ -81,10 +147,26 @@ fn every_relative_link_and_image_of_the_documents_exists() {
         let text = std::fs::read_to_string(doc).expect("a readable document");
         let dir = doc.parent().expect("a directory");
         for target in targets(&text).into_iter().filter(|t| is_local(t)) {
-            let file = target.split('#').next().unwrap_or(&target);
+            let (file, fragment) = match target.split_once('#') {
+                Some((file, fragment)) => (file, Some(fragment)),
+                None => (target.as_str(), None),
+            };
             checked += 1;
-            if !dir.join(file).exists() {
+            let path = if file.is_empty() {
+                doc.clone()
+            } else {
+                dir.join(file)
+            };
+            if !path.exists() {
                 broken.push(format!("{}: {target}", doc.display()));
+                continue;
+            }
+            let Some(fragment) = fragment else { continue };
+            if path.extension().is_some_and(|e| e == "md") {
+                let linked = std::fs::read_to_string(&path).expect("a readable document");
+                if !anchors(&linked).contains(fragment) {
+                    broken.push(format!("{}: {target} (no such heading)", doc.display()));
+                }
             }
         }
     }
@@ -96,6 +178,26 @@ fn every_relative_link_and_image_of_the_documents_exists() {
         broken.is_empty(),
         "links to nothing:\n{}",
         broken.join("\n")
+    );
+}
+
+#[test]
+fn anchors_are_githubs_slugs_of_the_headings_numbered_when_repeated() {
+    let text = "# Is Schlick good enough?\n## `optics validate`: the report\n\
+                ### [The missing light](x.md) — 5.85×\n## Notes\n## Notes\n\
+                <a id=\"kept\"></a>\n```\n# not a heading\n```\n#not-a-heading";
+    let mut got: Vec<String> = anchors(text).into_iter().collect();
+    got.sort();
+    assert_eq!(
+        got,
+        [
+            "is-schlick-good-enough",
+            "kept",
+            "notes",
+            "notes-1",
+            "optics-validate-the-report",
+            "the-missing-light--585",
+        ]
     );
 }
 
