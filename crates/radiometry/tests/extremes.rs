@@ -175,8 +175,9 @@ fn extreme_indices_1e_minus_3_and_1e3_stay_in_range() {
 
 /// κ = 1e3: an almost perfect mirror. F0 = (0 + 1e6)/(4 + 1e6) leaves 4e-6
 /// unreflected; the exact law must agree at normal incidence and stay in
-/// [0.999, 1] at every angle: R_p dips to its minimum, 0.999001 (mpmath, at
-/// cos θ = 1e-3 = 1/κ), before rising to 1 at grazing incidence.
+/// [0.999, 1] at every angle: R dips to its minimum, 0.999001 (mpmath, at
+/// cos θ = 1e-3 = 1/κ, where R_p is 0.998002 and R_s 0.999999996),
+/// before rising to 1 at grazing incidence.
 #[test]
 fn kappa_1e3_is_an_almost_perfect_mirror() {
     let f0 = f0(1.0_f64, 1e3);
