@@ -8,6 +8,7 @@ mod tables;
 
 use caught::{caught_at, caught_only};
 use radiometry::colour::{self, Lab};
+use radiometry::spectrum;
 use validation::colorimetry::{self, Colorimetry, ColourLaws};
 use validation::reference::committed_dir;
 
@@ -42,23 +43,19 @@ fn delta_e_1976_in_place_of_2000_is_caught() {
     caught_at(&check, |f| f.starts_with("Sharma 2005 pair 1:"));
 }
 
-/// Lab against the white of the spectral integration instead of the D65
-/// chromaticity: a change of white shifts a*, b* by up to ~0.1 and is caught.
-fn xyz_to_lab_with_equal_energy_white(xyz: colour::Xyz, _white: colour::Xyz) -> Lab {
-    colour::xyz_to_lab(
-        xyz,
-        colour::Xyz {
-            x: 1.0,
-            y: 1.0,
-            z: 1.0,
-        },
-    )
+/// Lab against the white of the spectral integration, chromaticity
+/// (0.31271, 0.32901), instead of the D65 chromaticity (0.3127, 0.3290)
+/// that sRGB and colour-science use: the smallest change of white there is
+/// to make, which moves the perfect reflector's a*, b* by 0.0016 and
+/// 0.0054 (`radiometry::colour::D65_WHITE_XY`), far beyond `LAB_ABS`.
+fn xyz_to_lab_with_integrated_white(xyz: colour::Xyz, _white: colour::Xyz) -> Lab {
+    colour::xyz_to_lab(xyz, spectrum::reflectance_to_xyz(&[1.0; spectrum::SAMPLES]))
 }
 
 #[test]
 fn cielab_against_the_wrong_white_is_caught() {
     let broken = ColourLaws {
-        xyz_to_lab: xyz_to_lab_with_equal_energy_white,
+        xyz_to_lab: xyz_to_lab_with_integrated_white,
         ..ColourLaws::radiometry()
     };
     let check = colorimetry::check_spectra(&broken, &reference());

@@ -6,7 +6,12 @@
 //!
 //! - **Helmholtz reciprocity**, `f_r(wi, wo) = f_r(wo, wi)`: [`reciprocity`].
 //! - **Energy conservation**, the directional albedo
-//!   `ρ(wo) = ∫ f_r(wi, wo) cos θ_i dω_i ≤ 1`: [`directional_albedo`].
+//!   `ρ(wi) = ∫ f_r(wi, wo) cos θ_o dω_o ≤ 1` for every `wi`: of the power
+//!   arriving from `wi`, no more than all is reflected
+//!   ([`directional_albedo`]). The integral runs over the outgoing
+//!   directions; the one over incoming directions, `∫ f_r(wi, wo) cos θ_i
+//!   dω_i`, is the radiance towards `wo` under unit uniform light, and
+//!   equals it only for a reciprocal BRDF (E. Veach, thesis, 1997, ch. 6).
 //!
 //! The models: the course's (`003`, "Rücskös felületek", whose specular
 //! model is Phong-Blinn), and classic Phong beside them for comparison:
@@ -15,8 +20,8 @@
 //! |---|---|---|---|
 //! | [`Lambert`] | `albedo / π` | yes | yes, albedo = `albedo` |
 //! | [`CourseLambert`] | `kd` (the course's un-normalised form) | yes | only for `kd ≤ 1/π` |
-//! | [`Phong`] | `kd + ks (cos⁺α)^shine / cos θ_i`, α from the mirror direction | no | no |
-//! | [`BlinnPhong`] | `kd + ks (cos⁺δ)^shine / cos θ_i`, δ from the half vector (course form) | no | no |
+//! | [`Phong`] | `kd + ks (cos⁺α)^shine / cos θ_i`, α from the mirror direction | no | no: `ρ(wi)` grows like `1 / cos θ_i` towards grazing |
+//! | [`BlinnPhong`] | `kd + ks (cos⁺δ)^shine / cos θ_i`, δ from the half vector (course form) | no | no: `ρ(wi)` grows like `1 / cos θ_i` towards grazing |
 //! | [`BlinnPhongReciprocal`] | `kd + ks (cos⁺δ)^shine / ‖wi + wo‖²` (the course's fix) | yes | not in general |
 //!
 //! All return 0 when either direction is at or below the surface, and NaN
@@ -310,7 +315,7 @@ pub fn hemisphere_directions<V: Vector3>(count: usize) -> Vec<V> {
 /// A directional albedo with the estimated error of its quadrature.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct AlbedoEstimate<T> {
-    /// `ρ(wo) = ∫ f_r(wi, wo) cos θ_i dω_i` over the hemisphere, unitless.
+    /// `ρ(wi) = ∫ f_r(wi, wo) cos θ_o dω_o` over the hemisphere, unitless.
     pub albedo: T,
     /// `|ρ_2N − ρ_N|`, the change from halving the quadrature step: an
     /// estimate of the quadrature error of `ρ_N`, so a conservative one of
@@ -320,24 +325,30 @@ pub struct AlbedoEstimate<T> {
     pub evaluations: usize,
 }
 
-/// The directional albedo `ρ(wo) = ∫_H f_r(wi, wo) cos θ_i dω_i`, the
-/// fraction of light from `wo` (by reciprocity, towards `wo`) that the
-/// surface reflects; energy conservation requires `ρ ≤ 1` for every `wo`.
+/// The directional albedo `ρ(wi) = ∫_H f_r(wi, wo) cos θ_o dω_o`, the
+/// fraction of the power arriving from `wi` that the surface reflects into
+/// the hemisphere; energy conservation requires `ρ ≤ 1` for every `wi`.
 ///
-/// Integrated with the midpoint rule in `(cos θ_i, φ_i)`, where
+/// The integral is over the outgoing directions `wo`, whatever the BRDF: a
+/// BRDF that is not reciprocal (the course's Phong-Blinn, which divides by
+/// `cos θ_i`) can send a grazing `wi` more power than it received while
+/// every integral over incoming directions stays below 1. For a reciprocal
+/// BRDF the two integrals are the same.
+///
+/// Integrated with the midpoint rule in `(cos θ_o, φ_o)`, where
 /// `dω = d(cos θ) dφ`, on an `n × 4n` grid and again on a `2n × 8n` grid;
 /// the finer result is returned with their difference as its error
 /// estimate. The midpoint rule is exact for an integrand linear in
-/// `cos θ_i`, so Lambertian albedos come out exact to rounding.
+/// `cos θ_o`, so Lambertian albedos come out exact to rounding.
 pub fn directional_albedo<V: Vector3, B: Brdf<V::Scalar>>(
     brdf: &B,
     n: V,
-    wo: V,
+    wi: V,
     resolution: usize,
 ) -> AlbedoEstimate<V::Scalar> {
     let resolution = resolution.max(1);
-    let coarse = midpoint_albedo(brdf, n, wo, resolution);
-    let fine = midpoint_albedo(brdf, n, wo, 2 * resolution);
+    let coarse = midpoint_albedo(brdf, n, wi, resolution);
+    let fine = midpoint_albedo(brdf, n, wi, 2 * resolution);
     AlbedoEstimate {
         albedo: fine,
         error_estimate: (fine - coarse).abs(),
@@ -348,7 +359,7 @@ pub fn directional_albedo<V: Vector3, B: Brdf<V::Scalar>>(
 fn midpoint_albedo<V: Vector3, B: Brdf<V::Scalar>>(
     brdf: &B,
     n: V,
-    wo: V,
+    wi: V,
     rows: usize,
 ) -> V::Scalar {
     let (t, b) = orthonormal_frame(n);
@@ -364,7 +375,7 @@ fn midpoint_albedo<V: Vector3, B: Brdf<V::Scalar>>(
         let mut ring = V::Scalar::zero();
         for column in 0..columns {
             let phi = (V::Scalar::lit(column as f64) + half) * d_phi;
-            let wi = t * (sin_theta * phi.cos()) + b * (sin_theta * phi.sin()) + n * mu;
+            let wo = t * (sin_theta * phi.cos()) + b * (sin_theta * phi.sin()) + n * mu;
             ring = ring + brdf.eval(n, wi, wo) * mu;
         }
         total = total + ring;

@@ -56,8 +56,20 @@ pub const XYZ_TO_LINEAR_SRGB: [[f64; 3]; 3] = [
     [0.0557, -0.2040, 1.0570],
 ];
 
-/// The chromaticity `(x, y)` of the D65 white point (CIE 15:2004, table T.3,
-/// as sRGB and CIELAB use it).
+/// The chromaticity `(x, y)` of the D65 white point as sRGB defines it
+/// (IEC 61966-2-1:1999) and colour-science's `CCS_ILLUMINANTS` gives it:
+/// CIE 15:2004 table T.3's `(0.31272, 0.32903)` to four decimals. The
+/// white of [`crate::spectrum::reflectance_to_xyz`], summed over the CIE
+/// grid, lies between the two, `(0.31271, 0.32901)`; CIELAB of a perfect
+/// reflector against this white is `(100, 0.0016, 0.0054)`:
+///
+/// ```
+/// use radiometry::colour::{d65_white, xyz_to_lab};
+/// use radiometry::spectrum::{reflectance_to_xyz, SAMPLES};
+/// let white = xyz_to_lab(reflectance_to_xyz(&[1.0; SAMPLES]), d65_white());
+/// assert!((white.l - 100.0).abs() < 1e-12);
+/// assert!((white.a - 0.0016).abs() < 1e-4 && (white.b - 0.0054).abs() < 1e-4);
+/// ```
 pub const D65_WHITE_XY: (f64, f64) = (0.3127, 0.3290);
 
 /// The tristimulus values of chromaticity `(x, y)` at luminance `Y = 1`.

@@ -443,7 +443,20 @@ pub(crate) fn snell_discriminant<T: Real, const FUSED: bool>(
         c2
     };
     let k = squares.contrast(inside);
-    (k.high + x.high) + (x.low + k.low)
+    let d = (k.high + x.high) + (x.low + k.low);
+    // From the inside at normal incidence d = n_t² = 1 exactly. Beyond
+    // η ≈ 1.27e16 (η² ≈ 2^107) the two parts of 1 − η² no longer hold
+    // its 1 (the part below η²'s rounding is a double whose ulp exceeds
+    // 1), and the sum gives 0: cos θ_t = 0 and R_p = 0 where both are 1.
+    // There no cosine below 1 transmits (sin θ_c = 1/η, and the largest
+    // cosine below 1 has a sine of 1.5e-8), so that one input is chosen
+    // by value, not branched around. A tier whose products are exact in
+    // the wide precision stops at η = 1e9 (`domain::INDEX_RANGE_F32`).
+    if !exact && inside && c == T::one() {
+        T::one()
+    } else {
+        d
+    }
 }
 
 /// `c² (n_t² + n_i²) − n_i²` at `c = |cos θ_i|`, from the side `inside` or
@@ -470,7 +483,15 @@ pub(crate) fn brewster_factor<T: Real, const FUSED: bool>(
     }
     let m = times_square::<T, FUSED>(squares.plus_one, unit_square(c, exact), exact);
     let n_i2 = squares.incident(inside);
-    (m.high - n_i2.high) + (m.low - n_i2.low)
+    let factor = (m.high - n_i2.high) + (m.low - n_i2.low);
+    // From the inside at normal incidence the factor is n_t² = 1 exactly,
+    // which the two parts of η² + 1 and η² lose beyond η ≈ 1.27e16, as
+    // `snell_discriminant`'s do.
+    if inside && c == T::one() {
+        T::one()
+    } else {
+        factor
+    }
 }
 
 /// `(a b)²` for `a`, `b` widened from a tier whose products are exact in

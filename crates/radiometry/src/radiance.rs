@@ -141,9 +141,11 @@ pub fn reflected_radiance<T: Real>(brdf: T, irradiance: T) -> T {
 /// `η = eta_path = n_t / n_i` the effective relative index along the
 /// direction the *radiance is traced* (the
 /// [`crate::specular::Refraction::eta_path`] of a camera path). Radiance
-/// divided by `n²` is invariant along a ray across refractions (the beam's solid angle is compressed by `n_i² / n_t²`;
-/// Nicodemus 1963; Veach's thesis §5.2; pbrt-v4 §9.5.2), so the factor
-/// cancels over a path that enters and leaves the same medium.
+/// divided by `n²` is invariant along a ray across refractions (the beam's
+/// projected solid angle is compressed by `n_i² / n_t²`,
+/// `n_i² cos θ_i dω_i = n_t² cos θ_t dω_t`; Nicodemus 1963; Veach's
+/// thesis §5.2; pbrt-v4 §9.5.2), so the factor cancels over a path that
+/// enters and leaves the same medium.
 ///
 /// ```
 /// use radiometry::radiance::across_interface;

@@ -18,7 +18,7 @@ use radiometry::specular::{incidence, refract, Refraction};
 use radiometry::Vector3;
 
 mod common;
-use common::strategies::{relative_index_with_extremes, unit_direction};
+use common::strategies::{relative_index_with_extremes, signed_cosine, unit_direction};
 
 /// An optional refraction as bits, so that `-0.0` and `0.0` differ and NaN
 /// equals itself.
@@ -56,15 +56,6 @@ fn refraction_agrees<V: Vector3>(wi: V, n: V, eta: V::Scalar) -> Result<(), Test
         wi
     );
     Ok(())
-}
-
-/// A cosine of either sign, with the extremes a uniform draw misses: the
-/// normal, grazing, and cosines whose square underflows.
-fn signed_cosine() -> impl Strategy<Value = f64> {
-    prop_oneof![
-        8 => -1.0..=1.0f64,
-        1 => prop_oneof![Just(1.0), Just(-1.0), Just(0.0), Just(-0.0), Just(1e-160), Just(-1e-160)],
-    ]
 }
 
 /// An index that is sometimes exactly 1 (index-matched), besides the

@@ -27,16 +27,42 @@ use radiometry::{domain, Vector3};
 const EPS: f64 = f64::EPSILON;
 const GLASS: f64 = 1.5;
 
+/// At normal incidence, from either side, both polarisations reflect
+/// F0 = ((η − 1)/(η + 1))² and transmit T0 = 4η/(η + 1)², and the light
+/// goes straight on (cos θ_t = 1), over the whole documented range of
+/// indices, its ends included: from the denser side beyond η ≈ 1.27e16
+/// (η² ≈ 2^107) the two-part sums of 1 − η² and Brewster's factor lose
+/// their 1, which once gave cos θ_t = 0, R_p = 0 and T = 0 there. T0 is
+/// 4e-50 at the ends, so it is compared relatively: 8ε, the closed form's
+/// three roundings and the law's few.
 #[test]
 fn normal_incidence_cos_1_gives_f0_from_both_sides() {
-    for eta in [GLASS, 1.333, 2.42, 1e-3, 1e3] {
+    let (lo, hi) = domain::INDEX_RANGE.range.into_inner();
+    let beyond_two_parts = [1.3e16, 1e20, 1e30];
+    let indices = [GLASS, 1.333, 2.42, 1e-3, 1e3, 2f64.powi(53), lo, hi];
+    for eta in indices
+        .into_iter()
+        .chain(beyond_two_parts)
+        .chain(beyond_two_parts.map(|eta| 1.0 / eta))
+    {
         let f0 = f0(eta, 0.0);
+        let t0 = 4.0 * eta / ((eta + 1.0) * (eta + 1.0));
         for cos_i in [1.0, -1.0] {
-            let r = dielectric(cos_i, eta);
-            assert!(
-                (r - f0).abs() <= 4.0 * EPS * f0,
-                "eta {eta}, cos {cos_i}: {r} vs {f0}"
-            );
+            let f = dielectric_polarized(cos_i, eta);
+            for r in [f.r_s, f.r_p] {
+                assert!(
+                    (r - f0).abs() <= 4.0 * EPS * f0,
+                    "eta {eta}, cos {cos_i}: {f:?} vs F0 {f0}"
+                );
+            }
+            for t in [f.t_s, f.t_p] {
+                assert!(
+                    (t - t0).abs() <= 8.0 * EPS * t0,
+                    "eta {eta}, cos {cos_i}: {f:?} vs T0 {t0}"
+                );
+            }
+            assert_eq!(f.cos_t, Some(1.0), "eta {eta}, cos {cos_i}");
+            assert_eq!(cos_transmitted(cos_i, eta), Some(1.0), "eta {eta}");
         }
     }
 }
@@ -149,8 +175,9 @@ fn extreme_indices_1e_minus_3_and_1e3_stay_in_range() {
 
 /// κ = 1e3: an almost perfect mirror. F0 = (0 + 1e6)/(4 + 1e6) leaves 4e-6
 /// unreflected; the exact law must agree at normal incidence and stay in
-/// [0.999, 1] at every angle: R_p dips to its minimum, 0.999001 (mpmath, at
-/// cos θ = 1e-3 = 1/κ), before rising to 1 at grazing incidence.
+/// [0.999, 1] at every angle: R dips to its minimum, 0.999001 (mpmath, at
+/// cos θ = 1e-3 = 1/κ, where R_p is 0.998002 and R_s 0.999999996),
+/// before rising to 1 at grazing incidence.
 #[test]
 fn kappa_1e3_is_an_almost_perfect_mirror() {
     let f0 = f0(1.0_f64, 1e3);

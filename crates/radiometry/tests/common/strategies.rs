@@ -61,6 +61,26 @@ pub fn relative_index_uniform() -> impl Strategy<Value = f64> {
     0.25..=4.0f64
 }
 
+/// A relative index to the ends of the documented `f64` range (crate
+/// conventions, `domain::INDEX_RANGE`): three cases in four from 1/4 to 4
+/// log-uniformly, as [`relative_index_log_uniform`], the fourth from 1e-50
+/// to 1e50 log-uniformly, where the sums of `η² ± 1` outgrow two doubles.
+pub fn relative_index_to_the_documented_ends() -> impl Strategy<Value = f64> {
+    prop_oneof![
+        3 => relative_index_log_uniform(),
+        1 => (-50.0..=50.0f64).prop_map(|e| 10f64.powf(e)),
+    ]
+}
+
+/// A cosine of either sign, with the extremes a uniform draw misses: the
+/// normal, grazing, and cosines whose square underflows.
+pub fn signed_cosine() -> impl Strategy<Value = f64> {
+    prop_oneof![
+        8 => -1.0..=1.0f64,
+        1 => prop_oneof![Just(1.0), Just(-1.0), Just(0.0), Just(-0.0), Just(1e-160), Just(-1e-160)],
+    ]
+}
+
 /// A relative index with a critical angle on one side or the other: from
 /// 1/4 to 4 log-uniformly, and one case in nine from the extremes near 1
 /// (`1 ± 1e-12`) and far from it (`1e3`, `1e-3`).
