@@ -396,6 +396,13 @@ fn bad_job_lines_are_refused_by_field_with_nothing_written() {
             "{field} {value}: {message}"
         );
     }
+    // A key given twice, even with the value it has, is refused by name.
+    let twice = format!("{{\"width\": {}, ", lines[2]["width"]);
+    let file = dir.path().join("twice.jsonl");
+    std::fs::write(&file, lines[2].to_string().replacen('{', &twice, 1) + "\n").unwrap();
+    let out = job_command(&file, "0", &results).output().unwrap();
+    let message = refused(&out, "jobs.line", "width");
+    assert!(message.contains(tracer::json::TWICE), "{message}");
     let file = dir.path().join("broken.jsonl");
     std::fs::write(&file, "{\"schema\": \"optics.tradeoff-job\",\n").unwrap();
     let out = job_command(&file, "0", &results).output().unwrap();

@@ -192,3 +192,28 @@ fn a_steps_that_is_not_a_boolean_is_refused_naming_the_field() {
         assert_eq!(message, expected, "{result}");
     }
 }
+
+#[test]
+fn a_key_given_twice_is_refused_naming_it_and_the_rest_go_on() {
+    // Keeping either value would answer a question the line does not ask
+    // unambiguously: `eta` 1.5 or 2.
+    let input = [
+        r#"{"law": "fresnel", "eta": 1.5, "cos_i": 0.3, "eta": 2}"#,
+        r#"{"law": "f0", "n": 1.5, "law": "f0"}"#,
+        r#"{"law": "f0", "n": 1.5, "steps": true, "steps": true}"#,
+        r#"{"eta": 1.5, "eta": 1.5, "law": "fresnel", "cos_i": 0.3}"#,
+        r#"{"law": "f0", "n": 1.5}"#,
+    ]
+    .join("\n");
+    let (results, output) = batch(&input);
+    assert_eq!(output.status.code(), Some(1), "{}", stderr(&output));
+    assert_eq!(results.len(), 5);
+    for (result, field) in results.iter().zip(["eta", "law", "steps", "eta"]) {
+        let error = &result["error"];
+        assert_eq!(error["kind"], "request", "{result}");
+        assert_eq!(error["field"], field, "{result}");
+        let message = error["message"].as_str().unwrap();
+        assert_eq!(message, format!("{field}: {}", tracer::json::TWICE));
+    }
+    assert_eq!(results[4]["answer"], 0.04, "the next line is evaluated");
+}
