@@ -217,3 +217,34 @@ fn a_key_given_twice_is_refused_naming_it_and_the_rest_go_on() {
     }
     assert_eq!(results[4]["answer"], 0.04, "the next line is evaluated");
 }
+
+#[test]
+fn a_line_past_the_length_limit_is_one_error_and_the_rest_go_on() {
+    let most = optics::batch::MAX_LINE_BYTES;
+    // A request padded with white space to `len` bytes.
+    let padded = |len: usize| {
+        let head = r#"{"law": "f0", "n": 1.5"#;
+        format!("{head}{}}}", " ".repeat(len - head.len() - 1))
+    };
+    let mut input = Vec::new();
+    for line in [
+        padded(most),
+        padded(most + 1),
+        r#"{"law": "f0", "n": 1.5}"#.into(),
+    ] {
+        input.extend_from_slice(line.as_bytes());
+        input.extend_from_slice(b"\r\n");
+    }
+    // A line that never ends: skipped to the end of the input.
+    input.extend(std::iter::repeat_n(b'x', 3 * most));
+    let (results, output) = batch_bytes(&[], &["--no-steps"], &input);
+    assert_eq!(output.status.code(), Some(1), "{}", stderr(&output));
+    assert_eq!(results.len(), 4, "one record per line");
+    for (i, result) in results.iter().enumerate() {
+        assert_eq!(result["line"].as_u64().map_or(i + 1, |n| n as usize), i + 1);
+        match i {
+            0 | 2 => assert_eq!(result["answer"], 0.04, "{result}"),
+            _ => assert_eq!(result["error"]["kind"], "line_too_long", "{result}"),
+        }
+    }
+}
