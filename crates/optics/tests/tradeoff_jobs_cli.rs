@@ -353,6 +353,36 @@ fn a_scene_changed_since_planning_is_refused_by_job_and_by_collect() {
 }
 
 #[test]
+fn a_plan_replaces_neither_the_scene_nor_what_is_not_a_regular_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = scene_in(dir.path());
+    let before = std::fs::read(&scene).unwrap();
+    let link = dir.path().join("link.jsonl");
+    std::os::unix::fs::symlink(&scene, &link).unwrap();
+    let directory = dir.path().join("a-directory");
+    std::fs::create_dir(&directory).unwrap();
+    for (plan, reason) in [
+        (&scene, "which is being read"),
+        (&link, "is not a regular file"),
+        (&directory, "is not a regular file"),
+    ] {
+        let out = tradeoff(&scene, &["--plan", plan.to_str().unwrap()]);
+        let message = refused(&out, "jobs.write", "--plan");
+        assert!(message.contains(reason), "{message}");
+    }
+    assert_eq!(
+        std::fs::read(&scene).unwrap(),
+        before,
+        "the scene is as it was"
+    );
+    assert!(std::fs::symlink_metadata(&link)
+        .unwrap()
+        .file_type()
+        .is_symlink());
+    assert!(directory.is_dir());
+}
+
+#[test]
 fn bad_job_lines_are_refused_by_field_with_nothing_written() {
     let dir = tempfile::tempdir().unwrap();
     let scene = scene_in(dir.path());
