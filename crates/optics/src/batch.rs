@@ -22,7 +22,7 @@ use crate::error::{Error, ErrorKind, Result};
 use crate::lang::Lang;
 use crate::record::Steps;
 use serde_json::{json, Value};
-use std::io::{BufRead, Write};
+use std::io::{BufRead, Read, Write};
 use std::ops::Range;
 
 #[derive(clap::Args, Debug)]
@@ -100,9 +100,27 @@ fn failed_line(number: usize, law: Value, error: &Error, lang: Lang, out: &mut V
     let _ = serde_json::to_writer(out, &json);
 }
 
-/// A line as read: where its text lies in the block, or the 1-based column
-/// of its first byte that is not UTF-8.
-type Text = std::result::Result<Range<usize>, usize>;
+/// The most bytes a line may hold, without its newline: a request is an
+/// object of a few numbers, a few hundred bytes. A longer line is skipped
+/// to its newline without being held, so a stream that never ends a line
+/// (`optics batch < /dev/zero`) is one error, not all of memory.
+pub const MAX_LINE_BYTES: usize = 1 << 20;
+
+/// The text a block holds before it is evaluated, whatever `--block`:
+/// with [`MAX_LINE_BYTES`], what bounds the memory of lines read.
+const MAX_BLOCK_BYTES: usize = 64 << 20;
+
+/// A line as read: where its text lies in the block, or why it was not.
+type Text = std::result::Result<Range<usize>, Unread>;
+
+/// Why a line's text is not in the block.
+#[derive(Clone, Copy)]
+enum Unread {
+    /// The 1-based column of its first byte that is not UTF-8.
+    NotUtf8(usize),
+    /// Longer than [`MAX_LINE_BYTES`].
+    TooLong,
+}
 
 /// The lines of one block: their text, one after another, and where each lies.
 #[derive(Default)]
@@ -127,7 +145,10 @@ impl Block {
     fn fill(&mut self, input: &mut impl BufRead, lines: usize, first: usize) -> Result<()> {
         self.text.clear();
         self.lines.clear();
-        while self.lines.len() < lines && self.read_line(input, first + self.lines.len())? {}
+        while self.lines.len() < lines
+            && self.text.len() < MAX_BLOCK_BYTES
+            && self.read_line(input, first + self.lines.len())?
+        {}
         Ok(())
     }
 
@@ -135,35 +156,65 @@ impl Block {
     /// without its `\n` or `\r\n`; `false` at the end. Only the reader
     /// itself failing is an error.
     fn read_line(&mut self, input: &mut impl BufRead, number: usize) -> Result<bool> {
-        self.bytes.clear();
-        let read = input.read_until(b'\n', &mut self.bytes);
-        let read = read.map_err(|source| ErrorKind::ReadLine {
+        let failed = |source| ErrorKind::ReadLine {
             line: number,
             source,
-        })?;
-        if read == 0 {
+        };
+        self.bytes.clear();
+        // At most the longest line and its `\r\n`.
+        let most = MAX_LINE_BYTES as u64 + 2;
+        let read = input.by_ref().take(most).read_until(b'\n', &mut self.bytes);
+        if read.map_err(failed)? == 0 {
             return Ok(false);
         }
         let mut bytes = &self.bytes[..];
+        let ended = bytes.ends_with(b"\n");
         if let Some(line) = bytes.strip_suffix(b"\n") {
             bytes = line.strip_suffix(b"\r").unwrap_or(line);
         }
-        let text = match std::str::from_utf8(bytes) {
-            Ok(line) => {
-                let start = self.text.len();
-                self.text.push_str(line);
-                Ok(start..self.text.len())
+        let text = if bytes.len() > MAX_LINE_BYTES {
+            if !ended {
+                skip_line(input).map_err(failed)?;
             }
-            Err(e) => Err(e.valid_up_to() + 1),
+            Err(Unread::TooLong)
+        } else {
+            match std::str::from_utf8(bytes) {
+                Ok(line) => {
+                    let start = self.text.len();
+                    self.text.push_str(line);
+                    Ok(start..self.text.len())
+                }
+                Err(e) => Err(Unread::NotUtf8(e.valid_up_to() + 1)),
+            }
         };
         #[cfg(test)]
-        if text.is_err() && NOT_UTF8_STOPS_THE_RUN.get() {
+        if matches!(text, Err(Unread::NotUtf8(_))) && NOT_UTF8_STOPS_THE_RUN.get() {
             let source = std::io::Error::from(std::io::ErrorKind::InvalidData);
             let line = number;
             return Err(ErrorKind::ReadLine { line, source }.into());
         }
         self.lines.push(text);
         Ok(true)
+    }
+}
+
+/// Consumes `input` to the end of the line, holding none of it.
+fn skip_line(input: &mut impl BufRead) -> std::io::Result<()> {
+    loop {
+        let buffer = input.fill_buf()?;
+        if buffer.is_empty() {
+            return Ok(());
+        }
+        match buffer.iter().position(|&b| b == b'\n') {
+            Some(i) => {
+                input.consume(i + 1);
+                return Ok(());
+            }
+            None => {
+                let all = buffer.len();
+                input.consume(all);
+            }
+        }
     }
 }
 
@@ -192,8 +243,14 @@ impl Share {
                     steps,
                     &mut self.out,
                 ),
-                Err(column) => {
-                    let error = Error::from(ErrorKind::NotUtf8 { column: *column });
+                Err(unread) => {
+                    let kind = match *unread {
+                        Unread::NotUtf8(column) => ErrorKind::NotUtf8 { column },
+                        Unread::TooLong => ErrorKind::LineTooLong {
+                            limit: MAX_LINE_BYTES,
+                        },
+                    };
+                    let error = Error::from(kind);
                     failed_line(number, Value::Null, &error, lang, &mut self.out);
                     false
                 }

@@ -124,6 +124,12 @@ pub enum ErrorKind {
         /// The operating system's reason.
         source: std::io::Error,
     },
+    /// A batch line longer than [`crate::batch::MAX_LINE_BYTES`]: skipped
+    /// to its newline unread.
+    LineTooLong {
+        /// The most bytes a line may hold.
+        limit: usize,
+    },
     /// A batch line whose bytes are not UTF-8 text.
     NotUtf8 {
         /// The 1-based column of the first byte that is not.
@@ -310,6 +316,7 @@ impl ErrorKind {
             ErrorKind::Request { .. } => "request",
             ErrorKind::ReadLine { .. } => "read_line",
             ErrorKind::NotUtf8 { .. } => "not_utf8",
+            ErrorKind::LineTooLong { .. } => "line_too_long",
             ErrorKind::Overflow { .. } => "overflow",
             ErrorKind::Write(_) => "write",
             ErrorKind::Encode(_) => "encode",
@@ -358,6 +365,7 @@ impl ErrorKind {
             | ErrorKind::NotAnObject
             | ErrorKind::ReadLine { .. }
             | ErrorKind::NotUtf8 { .. }
+            | ErrorKind::LineTooLong { .. }
             | ErrorKind::Write(_)
             | ErrorKind::Encode(_)
             | ErrorKind::Threads(_)

@@ -99,6 +99,10 @@ fn hungarian(kind: &ErrorKind) -> String {
         ErrorKind::ReadLine { line, source } => {
             format!("a(z) {line}. sor nem olvasható: {source}")
         }
+        ErrorKind::LineTooLong { limit } => format!(
+            "a sor hosszabb {limit} bájtnál (egy kérés néhány számból álló objektum): \
+             olvasás nélkül a végéig átugorva"
+        ),
         ErrorKind::NotUtf8 { column } => {
             format!("a sor nem UTF-8 szöveg: a(z) {column}. oszlopban lévő bájt hibás")
         }

@@ -307,7 +307,7 @@ pub fn run(args: &TradeoffArgs, ui: &Ui) -> error::Result<()> {
     if let Mode::Plan(jobs) = mode {
         return distribute::plan(&setup, args, jobs, ui);
     }
-    setup.files.prepare()?;
+    setup.files.prepare(&args.scene)?;
     let truth_dir = setup.files.truth_dir();
     let request = setup.truth_request(args, &truth_dir);
     let (truth, truth_record, timed, provenance) = match mode {

@@ -106,6 +106,34 @@ fn misleading_errors_name_the_right_field_and_kind() {
 }
 
 #[test]
+fn a_key_given_twice_is_refused_naming_it() {
+    // Either value could be meant: the last one would otherwise replace the
+    // first without a word (a 640 × 480 scene rendered at 4 × 3).
+    let good = course_scene("shadow").to_string();
+    let body = good.strip_suffix('}').unwrap();
+    let once = r#""material":"green""#;
+    for (text, field) in [
+        (
+            format!(r#"{body}, "image": {{"width": 4, "height": 3}}}}"#),
+            "image",
+        ),
+        (
+            good.replacen(once, &format!("{once},{once}"), 1),
+            "objects[0].material",
+        ),
+    ] {
+        let error = refusal(text.as_bytes());
+        assert_eq!(error["kind"], "scene.schema", "{error}");
+        assert_eq!(error["field"], field, "{error}");
+        let message = error["message"].as_str().unwrap();
+        assert!(
+            message.ends_with(&format!("{field}: {}", tracer::json::TWICE)),
+            "{message}"
+        );
+    }
+}
+
+#[test]
 fn a_missing_scene_gives_the_reason_once() {
     let out = optics(&["render", "no/such/scene.json", "-o", "x.png"]);
     let stderr = String::from_utf8_lossy(&out.stderr);

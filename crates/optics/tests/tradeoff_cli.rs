@@ -258,6 +258,57 @@ fn bad_flags_are_refused_by_name_and_nothing_is_written() {
 }
 
 #[test]
+fn the_sweep_replaces_neither_its_scene_nor_what_is_not_a_regular_file() {
+    // The record is SCENE.json in --out: the scene's own directory as
+    // --out would write it over the scene.
+    let dir = tempfile::tempdir().unwrap();
+    let copy = dir.path().join("shadow.json");
+    std::fs::copy(scene("shadow"), &copy).unwrap();
+    let before = std::fs::read(&copy).unwrap();
+    let elsewhere = dir.path().join("elsewhere");
+    std::fs::create_dir_all(elsewhere.join("shadow.md")).unwrap();
+    for (out, reason) in [
+        (dir.path(), "which is being read"),
+        (elsewhere.as_path(), "is not a regular file"),
+    ] {
+        let out = optics(&[
+            "--json",
+            "tradeoff",
+            copy.to_str().unwrap(),
+            "--no-plot",
+            "--width",
+            "16",
+            "--height",
+            "12",
+            "--truth-spp",
+            "16",
+            "--repeats",
+            "1",
+            "--min-seconds",
+            "0",
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(1), "{stderr}");
+        let error: Value = serde_json::from_slice(&out.stdout).unwrap();
+        assert_eq!(error["error"]["kind"], "jobs.write", "{error}");
+        assert_eq!(error["error"]["field"], "--out", "{error}");
+        let message = error["error"]["message"].as_str().unwrap();
+        assert!(message.contains(reason), "{message}");
+    }
+    assert_eq!(
+        std::fs::read(&copy).unwrap(),
+        before,
+        "the scene is as it was"
+    );
+    assert!(elsewhere.join("shadow.md").is_dir());
+    for out in [dir.path(), elsewhere.as_path()] {
+        assert!(!out.join("truth").exists(), "refused before any render");
+    }
+}
+
+#[test]
 fn a_scene_without_light_has_nothing_to_trade_and_says_so() {
     let dir = tempfile::tempdir().unwrap();
     let out = sweep("kaleidoscope", dir.path(), &["--truth-spp", "4"]);

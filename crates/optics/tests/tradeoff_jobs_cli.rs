@@ -353,6 +353,36 @@ fn a_scene_changed_since_planning_is_refused_by_job_and_by_collect() {
 }
 
 #[test]
+fn a_plan_replaces_neither_the_scene_nor_what_is_not_a_regular_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = scene_in(dir.path());
+    let before = std::fs::read(&scene).unwrap();
+    let link = dir.path().join("link.jsonl");
+    std::os::unix::fs::symlink(&scene, &link).unwrap();
+    let directory = dir.path().join("a-directory");
+    std::fs::create_dir(&directory).unwrap();
+    for (plan, reason) in [
+        (&scene, "which is being read"),
+        (&link, "is not a regular file"),
+        (&directory, "is not a regular file"),
+    ] {
+        let out = tradeoff(&scene, &["--plan", plan.to_str().unwrap()]);
+        let message = refused(&out, "jobs.write", "--plan");
+        assert!(message.contains(reason), "{message}");
+    }
+    assert_eq!(
+        std::fs::read(&scene).unwrap(),
+        before,
+        "the scene is as it was"
+    );
+    assert!(std::fs::symlink_metadata(&link)
+        .unwrap()
+        .file_type()
+        .is_symlink());
+    assert!(directory.is_dir());
+}
+
+#[test]
 fn bad_job_lines_are_refused_by_field_with_nothing_written() {
     let dir = tempfile::tempdir().unwrap();
     let scene = scene_in(dir.path());
@@ -396,6 +426,13 @@ fn bad_job_lines_are_refused_by_field_with_nothing_written() {
             "{field} {value}: {message}"
         );
     }
+    // A key given twice, even with the value it has, is refused by name.
+    let twice = format!("{{\"width\": {}, ", lines[2]["width"]);
+    let file = dir.path().join("twice.jsonl");
+    std::fs::write(&file, lines[2].to_string().replacen('{', &twice, 1) + "\n").unwrap();
+    let out = job_command(&file, "0", &results).output().unwrap();
+    let message = refused(&out, "jobs.line", "width");
+    assert!(message.contains(tracer::json::TWICE), "{message}");
     let file = dir.path().join("broken.jsonl");
     std::fs::write(&file, "{\"schema\": \"optics.tradeoff-job\",\n").unwrap();
     let out = job_command(&file, "0", &results).output().unwrap();

@@ -5,7 +5,7 @@
 //! when its `law` comes first and nothing in it is wrong. Any other line
 //! (the law later, a field missing, mistyped, unknown or given twice, a key
 //! with escapes, text that is not JSON) is read again by [`general`]: into
-//! a JSON object, then into the arguments, which names what is wrong as
+//! a JSON object whose keys are each given once ([`UniqueKeys`]), then into the arguments, which names what is wrong as
 //! every error object of `optics batch` does. For each line the typed
 //! reading accepts, both give the same request (the `batch_lines` fuzz
 //! target checks it), so the reading that answers is never visible in
@@ -20,9 +20,11 @@ use crate::record::{Record, Steps};
 use serde::de::value::{BorrowedStrDeserializer, MapAccessDeserializer};
 use serde::de::{DeserializeSeed, Deserializer, Error as _, MapAccess, Visitor};
 use serde::Deserialize;
+use serde_json::error::Category;
 use serde_json::Value;
 use std::borrow::Cow;
 use std::fmt;
+use tracer::json::UniqueKeys;
 
 /// One request: the law as the line names it, its arguments, and whether
 /// its working is wanted (the line's `"steps"`, else the run's choice).
@@ -150,7 +152,7 @@ impl<'de, A: MapAccess<'de>> MapAccess<'de> for Rest<'_, A> {
                 Some("steps") if self.steps.is_none() => {
                     *self.steps = Some(self.map.next_value()?);
                 }
-                // The general reading takes the last of a key given twice.
+                // The general reading refuses a key given twice, naming it.
                 Some("law" | "steps") => return Err(A::Error::custom("a key given twice")),
                 Some(key) => {
                     return seed
@@ -166,6 +168,39 @@ impl<'de, A: MapAccess<'de>> MapAccess<'de> for Rest<'_, A> {
     }
 }
 
+#[cfg(test)]
+thread_local! {
+    /// A fault for the fuzz targets to find: the general reading keeps the
+    /// last of a key given twice, as `serde_json::Value` does.
+    pub(crate) static REPEATED_KEYS_KEPT: std::cell::Cell<bool> =
+        const { std::cell::Cell::new(false) };
+}
+
+/// The line as one JSON value, each object's keys given once; a key
+/// given twice is refused as a field of the request, named.
+fn object(text: &str) -> std::result::Result<Value, ErrorKind> {
+    #[cfg(test)]
+    if REPEATED_KEYS_KEPT.get() {
+        return serde_json::from_str(text).map_err(ErrorKind::MalformedJson);
+    }
+    let json = &mut serde_json::Deserializer::from_str(text);
+    let UniqueKeys(value) = serde_path_to_error::deserialize(&mut *json).map_err(|e| {
+        if e.inner().classify() != Category::Data {
+            return ErrorKind::MalformedJson(e.into_inner());
+        }
+        let path = Some(e.path().to_string());
+        let message = e.inner().to_string();
+        let message = message
+            .split(" at line ")
+            .next()
+            .unwrap_or_default()
+            .to_owned();
+        ErrorKind::Request { path, message }
+    })?;
+    json.end().map_err(ErrorKind::MalformedJson)?;
+    Ok(value)
+}
+
 /// What is wrong with a line: the error, and the law as the line gave it
 /// (`null` when it gave none, or the line is not a JSON object).
 pub type Refusal = (Value, Error);
@@ -179,10 +214,10 @@ pub fn general(text: &str, steps: Steps) -> Result<Request<'static>, Refusal> {
     if text.trim().is_empty() {
         return refuse(Value::Null, ErrorKind::EmptyLine);
     }
-    let mut fields = match serde_json::from_str::<Value>(text) {
+    let mut fields = match object(text) {
         Ok(Value::Object(map)) => map,
         Ok(_) => return refuse(Value::Null, ErrorKind::NotAnObject),
-        Err(e) => return refuse(Value::Null, ErrorKind::MalformedJson(e)),
+        Err(kind) => return refuse(Value::Null, kind),
     };
     let name = match fields.remove("law") {
         Some(Value::String(law)) => law,

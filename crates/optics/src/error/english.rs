@@ -54,6 +54,11 @@ impl fmt::Display for ErrorKind {
                 None => write!(f, "{message}"),
             },
             ErrorKind::ReadLine { line, source } => write!(f, "reading line {line}: {source}"),
+            ErrorKind::LineTooLong { limit } => write!(
+                f,
+                "the line is longer than {limit} bytes (a request is an object of a few \
+                 numbers): skipped to its end unread"
+            ),
             ErrorKind::NotUtf8 { column } => write!(
                 f,
                 "the line is not UTF-8 text: the byte at column {column} is not"

@@ -6,13 +6,15 @@
 use super::{
     check_error_field, check_record, edge_number, run_and_report, runner, Coverage, SCHEMA, VECTORS,
 };
-use crate::batch::request::{self, LINE_STEPS_IGNORED};
+use crate::batch::request::{self, LINE_STEPS_IGNORED, REPEATED_KEYS_KEPT};
 use crate::batch::{self, BatchArgs, NOT_UTF8_STOPS_THE_RUN};
 use crate::lang::Lang;
 use crate::record::Steps;
 use proptest::prelude::*;
 use proptest::test_runner::TestCaseError;
+use serde_json::error::Category;
 use serde_json::{json, Map, Value};
+use tracer::json::UniqueKeys;
 
 /// One request of each law, as the course's quiz and the docs give them.
 fn course_requests() -> Vec<Value> {
@@ -139,13 +141,20 @@ fn request_line() -> impl Strategy<Value = Vec<u8>> {
         prop::collection::vec(change(), 0..3),
         prop::collection::vec(mutation, 0..3),
         prop::bool::weighted(0.8),
+        prop::option::weighted(0.15, any::<prop::sample::Index>()),
     )
-        .prop_map(|(request, changes, mutations, law_first)| {
+        .prop_map(|(request, changes, mutations, law_first, repeat)| {
             let Value::Object(request) = request else {
                 unreachable!()
             };
             let request = changes.into_iter().fold(request, apply);
-            let mut bytes = line_text(&request, law_first).into_bytes();
+            let mut text = line_text(&request, law_first);
+            // One of its keys given again, first, with the value it has.
+            if let Some(at) = repeat.filter(|_| !request.is_empty()) {
+                let (key, value) = request.iter().nth(at.index(request.len())).unwrap();
+                text.insert_str(1, &format!("{}:{value},", Value::from(key.as_str())));
+            }
+            let mut bytes = text.into_bytes();
             for (at, op, byte) in mutations {
                 let i = at.index(bytes.len() + 1);
                 match op {
@@ -195,6 +204,15 @@ fn steps_wanted(line: &[u8], no_steps: bool) -> bool {
         .unwrap_or(!no_steps)
 }
 
+/// The key a line that is UTF-8 and JSON gives twice in an object, as a
+/// path.
+fn repeated_key(line: &[u8]) -> Option<String> {
+    let line = line.strip_suffix(b"\r").unwrap_or(line);
+    let json = &mut serde_json::Deserializer::from_str(std::str::from_utf8(line).ok()?);
+    let err = serde_path_to_error::deserialize::<_, UniqueKeys>(json).err()?;
+    (err.inner().classify() == Category::Data).then(|| err.path().to_string())
+}
+
 /// The line read straight into its law's arguments, where that reading
 /// takes it, is the request the general reading gives.
 fn check_readings_agree(line: &[u8], steps: Steps) -> Result<(), TestCaseError> {
@@ -213,6 +231,25 @@ fn check_readings_agree(line: &[u8], steps: Steps) -> Result<(), TestCaseError> 
     );
     let general = general.expect("checked above");
     prop_assert_eq!(format!("{typed:?}"), format!("{general:?}"), "{:?}", text);
+    Ok(())
+}
+
+/// A line that gives a key twice is refused naming that key, by the run
+/// and by the general reading on this thread (whose test switches the
+/// run's worker threads do not see).
+fn check_repeat_refused(line: &[u8], record: &Value) -> Result<(), TestCaseError> {
+    let Some(key) = repeated_key(line) else {
+        return Ok(());
+    };
+    let field = &record["error"]["field"];
+    prop_assert_eq!(field, &json!(key), "{}: a key given twice", record);
+    let text = std::str::from_utf8(line).expect("checked by repeated_key");
+    let text = text.strip_suffix('\r').unwrap_or(text);
+    let general = request::general(text, Steps::from_wanted(true));
+    let field = general
+        .err()
+        .map(|(_, error)| error.to_json(Lang::En)["field"].clone());
+    prop_assert_eq!(field, Some(json!(key)), "{:?}: a key given twice", text);
     Ok(())
 }
 
@@ -238,6 +275,7 @@ fn check_batch(
     for (i, (record, line)) in records.iter().zip(lines).enumerate() {
         let record: Value = serde_json::from_str(record).expect("each record is JSON");
         check_readings_agree(line, Steps::from_wanted(!no_steps))?;
+        check_repeat_refused(line, &record)?;
         let Some(error) = record.get("error") else {
             coverage.answer();
             check_record(&record)?;
@@ -251,9 +289,11 @@ fn check_batch(
         };
         coverage.error(error);
         prop_assert_eq!(&record["line"], &json!(i + 1));
-        let given: Vec<String> = serde_json::from_slice::<Map<String, Value>>(line)
+        // The keys of the line, and one it gives twice before any error.
+        let mut given: Vec<String> = serde_json::from_slice::<Map<String, Value>>(line)
             .map(|m| m.keys().cloned().collect())
             .unwrap_or_default();
+        given.extend(repeated_key(line));
         let law = record["law"].as_str().unwrap_or_default();
         check_error_field(error, &given, law, str::to_owned)?;
     }
@@ -291,4 +331,13 @@ fn batch_lines_find_a_line_whose_steps_are_ignored() {
     LINE_STEPS_IGNORED.set(false);
     let failure = outcome.expect_err("the reverted fix is found");
     assert!(failure.contains("steps"), "{failure}");
+}
+
+#[test]
+fn batch_lines_find_a_key_given_twice_that_is_kept() {
+    REPEATED_KEYS_KEPT.set(true);
+    let outcome = fuzz(256, &Coverage::default());
+    REPEATED_KEYS_KEPT.set(false);
+    let failure = outcome.expect_err("the reverted fix is found");
+    assert!(failure.contains("a key given twice"), "{failure}");
 }

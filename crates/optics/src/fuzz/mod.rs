@@ -237,7 +237,13 @@ fn check_error_field(
 ) -> Result<(), TestCaseError> {
     let kind = error["kind"].as_str().unwrap_or_default();
     let Some(field) = error["field"].as_str() else {
-        let unnamed = ["empty_line", "malformed_json", "not_an_object", "not_utf8"];
+        let unnamed = [
+            "empty_line",
+            "malformed_json",
+            "not_an_object",
+            "not_utf8",
+            "line_too_long",
+        ];
         prop_assert!(
             unnamed.contains(&kind)
                 || kind == "request"

@@ -137,6 +137,7 @@ fn every_kind() -> Vec<(Error, Vec<String>)> {
         ),
         (ErrorKind::Write(os_error()), vec![os_error().to_string()]),
         (ErrorKind::NotUtf8 { column: 7 }, vec![]),
+        (ErrorKind::LineTooLong { limit: 1024 }, vec![]),
         (
             ErrorKind::Overflow {
                 quantity: "L_ref",
@@ -203,6 +204,7 @@ fn slot(kind: &ErrorKind) -> usize {
         ErrorKind::Encode(_) => 19,
         ErrorKind::NotUtf8 { .. } => 20,
         ErrorKind::Overflow { .. } => 21,
+        ErrorKind::LineTooLong { .. } => 22,
         ErrorKind::Scene { error, .. } => CALCULATOR + render_kinds::scene_slot(error.kind()),
         ErrorKind::Output(error) => CALCULATOR + render_kinds::output_slot(error),
         ErrorKind::Threads(_) => CALCULATOR + render_kinds::THREADS,
@@ -254,7 +256,7 @@ fn slot(kind: &ErrorKind) -> usize {
 }
 
 /// The calculator's own kinds' slots.
-const CALCULATOR: usize = 22;
+const CALCULATOR: usize = 23;
 
 #[cfg(feature = "harness")]
 const SLOTS: usize = CALCULATOR

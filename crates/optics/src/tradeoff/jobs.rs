@@ -19,8 +19,10 @@ mod result;
 pub use result::{encode, JobResult, RESULT_FIELDS};
 
 use serde::{Deserialize, Serialize};
+use serde_json::error::Category;
 use serde_json::Value;
 use tracer::job::RenderJob;
+use tracer::json::UniqueKeys;
 use tracer::scene::Settings;
 
 use super::{sweep, truth};
@@ -300,8 +302,8 @@ fn same(a: &Value, b: &Value) -> bool {
 }
 
 /// A line read as `kind`: JSON of the line's fields (none unknown, none
-/// missing), then its schema and version; each refusal names the line and
-/// the field.
+/// given twice, none missing), then its schema and version; each refusal
+/// names the line and the field.
 pub fn read_line<T: serde::de::DeserializeOwned>(
     text: &str,
     kind: LineKind,
@@ -313,7 +315,13 @@ pub fn read_line<T: serde::de::DeserializeOwned>(
         field,
         message,
     };
-    let value: Value = serde_json::from_str(text).map_err(|e| line_error(None, e.to_string()))?;
+    let json = &mut serde_json::Deserializer::from_str(text);
+    let UniqueKeys(value) = serde_path_to_error::deserialize(&mut *json).map_err(|e| {
+        // A key given twice is named; a syntax error has no field.
+        let field = (e.inner().classify() == Category::Data).then(|| e.path().to_string());
+        line_error(field, e.into_inner().to_string())
+    })?;
+    json.end().map_err(|e| line_error(None, e.to_string()))?;
     // The schema and version first: a line of another version is refused
     // as that, not by the first field the versions disagree on.
     if let Some(found) = value.get("schema") {

@@ -10,6 +10,7 @@ use validation::tradeoff::findings::GRAZING_COS;
 
 use super::measure::Mask;
 use super::{jobs, sweep, truth, TradeoffArgs};
+use crate::error::jobs::JobError;
 use crate::error::{self, ErrorKind};
 
 /// The scene as the sweep and the budget measure it: with `--lambert`,
@@ -154,14 +155,29 @@ impl Files {
         self.dir.join("truth")
     }
 
-    /// Creates the directories, before any render is spent.
-    pub fn prepare(&self) -> error::Result<()> {
-        std::fs::create_dir_all(self.truth_dir()).map_err(|source| {
-            ErrorKind::Output(tracer::output::OutputError::Io {
-                path: self.truth_dir().display().to_string(),
-                source,
+    /// Creates the directories and checks the files as `render` checks
+    /// its own, before any render is spent: none may be the `scene` being
+    /// read (`--out` its directory would write the record over it) or
+    /// anything a rename must not replace.
+    pub fn prepare(&self, scene: &Path) -> error::Result<()> {
+        let create = |dir: &Path| {
+            std::fs::create_dir_all(dir).map_err(|source| {
+                ErrorKind::Output(tracer::output::OutputError::Io {
+                    path: dir.display().to_string(),
+                    source,
+                })
             })
-        })?;
+        };
+        create(&self.dir)?;
+        for file in [&self.json, &self.markdown, &self.plot] {
+            tracer::output::check_destination(file, &[scene]).map_err(|error| {
+                ErrorKind::Jobs(JobError::Write {
+                    field: "--out",
+                    error,
+                })
+            })?;
+        }
+        create(&self.truth_dir())?;
         Ok(())
     }
 }

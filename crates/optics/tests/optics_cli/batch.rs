@@ -192,3 +192,59 @@ fn a_steps_that_is_not_a_boolean_is_refused_naming_the_field() {
         assert_eq!(message, expected, "{result}");
     }
 }
+
+#[test]
+fn a_key_given_twice_is_refused_naming_it_and_the_rest_go_on() {
+    // Keeping either value would answer a question the line does not ask
+    // unambiguously: `eta` 1.5 or 2.
+    let input = [
+        r#"{"law": "fresnel", "eta": 1.5, "cos_i": 0.3, "eta": 2}"#,
+        r#"{"law": "f0", "n": 1.5, "law": "f0"}"#,
+        r#"{"law": "f0", "n": 1.5, "steps": true, "steps": true}"#,
+        r#"{"eta": 1.5, "eta": 1.5, "law": "fresnel", "cos_i": 0.3}"#,
+        r#"{"law": "f0", "n": 1.5}"#,
+    ]
+    .join("\n");
+    let (results, output) = batch(&input);
+    assert_eq!(output.status.code(), Some(1), "{}", stderr(&output));
+    assert_eq!(results.len(), 5);
+    for (result, field) in results.iter().zip(["eta", "law", "steps", "eta"]) {
+        let error = &result["error"];
+        assert_eq!(error["kind"], "request", "{result}");
+        assert_eq!(error["field"], field, "{result}");
+        let message = error["message"].as_str().unwrap();
+        assert_eq!(message, format!("{field}: {}", tracer::json::TWICE));
+    }
+    assert_eq!(results[4]["answer"], 0.04, "the next line is evaluated");
+}
+
+#[test]
+fn a_line_past_the_length_limit_is_one_error_and_the_rest_go_on() {
+    let most = optics::batch::MAX_LINE_BYTES;
+    // A request padded with white space to `len` bytes.
+    let padded = |len: usize| {
+        let head = r#"{"law": "f0", "n": 1.5"#;
+        format!("{head}{}}}", " ".repeat(len - head.len() - 1))
+    };
+    let mut input = Vec::new();
+    for line in [
+        padded(most),
+        padded(most + 1),
+        r#"{"law": "f0", "n": 1.5}"#.into(),
+    ] {
+        input.extend_from_slice(line.as_bytes());
+        input.extend_from_slice(b"\r\n");
+    }
+    // A line that never ends: skipped to the end of the input.
+    input.extend(std::iter::repeat_n(b'x', 3 * most));
+    let (results, output) = batch_bytes(&[], &["--no-steps"], &input);
+    assert_eq!(output.status.code(), Some(1), "{}", stderr(&output));
+    assert_eq!(results.len(), 4, "one record per line");
+    for (i, result) in results.iter().enumerate() {
+        assert_eq!(result["line"].as_u64().map_or(i + 1, |n| n as usize), i + 1);
+        match i {
+            0 | 2 => assert_eq!(result["answer"], 0.04, "{result}"),
+            _ => assert_eq!(result["error"]["kind"], "line_too_long", "{result}"),
+        }
+    }
+}

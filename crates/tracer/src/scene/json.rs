@@ -1,9 +1,12 @@
 //! Scene text to a [`SceneFile`]: bytes to UTF-8 text, text to one JSON
-//! value and nothing after it, its shapes checked ([`super::shape`]), then
+//! value, no key given twice in an object, and nothing after it, its shapes checked ([`super::shape`]), then
 //! serde with the JSON path of every error, after rewriting the schema's
 //! `"type"` tags into serde's external tagging.
 
+use serde_json::error::Category;
 use serde_json::Value;
+
+use crate::json::UniqueKeys;
 
 use super::faults::{self, Fault};
 use super::schema::SceneFile;
@@ -27,8 +30,17 @@ pub(super) fn text(bytes: &[u8]) -> Result<&str, SceneError> {
 pub(super) fn scene_file(text: &str) -> Result<SceneFile, SceneError> {
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     let de = &mut serde_json::Deserializer::from_str(text);
-    let mut value: Value = serde_path_to_error::deserialize(&mut *de)
-        .map_err(|err| syntax(text, json_path(err.path()), err.into_inner()))?;
+    let UniqueKeys(mut value) = serde_path_to_error::deserialize(&mut *de).map_err(|err| {
+        let path = json_path(err.path());
+        match err.inner().classify() {
+            // A key given twice: the text is JSON, the scene is not.
+            Category::Data => {
+                let message = without_position(err.inner());
+                SceneError::new(path, ErrorKind::Schema { message })
+            }
+            _ => syntax(text, path, err.into_inner()),
+        }
+    })?;
     // One scene per file: text after it is an error, not ignored.
     if !faults::undone(Fault::TrailingTextIgnored) {
         de.end().map_err(|err| syntax(text, ".".to_owned(), err))?;
