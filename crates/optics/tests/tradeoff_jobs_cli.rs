@@ -464,3 +464,31 @@ fn bad_job_lines_are_refused_by_field_with_nothing_written() {
     let message = refused(&run_job(&jobs, 2, &file), "jobs.write", "--out");
     assert!(message.contains("a-file"), "{message}");
 }
+
+#[test]
+fn an_empty_plan_is_refused_as_holding_no_jobs_in_both_languages() {
+    let dir = tempfile::tempdir().unwrap();
+    let jobs = dir.path().join("empty.jsonl");
+    std::fs::write(&jobs, b"").unwrap();
+    let results = dir.path().join("results");
+    let without_index = Command::new(env!("CARGO_BIN_EXE_optics"))
+        .args(["--json", "tradeoff-job"])
+        .arg(&jobs)
+        .output()
+        .unwrap();
+    let needed = refused(&without_index, "jobs.index_needed", "JOBS");
+    assert!(needed.contains("holds no jobs"), "{needed}");
+    let no_such = refused(&run_job(&jobs, 0, &results), "jobs.no_such_job", "INDEX");
+    assert!(no_such.contains("has no jobs"), "{no_such}");
+    for message in [needed, no_such] {
+        assert!(!message.contains("0 to 0"), "a range of no jobs: {message}");
+    }
+    let hungarian = Command::new(env!("CARGO_BIN_EXE_optics"))
+        .args(["--json", "--lang", "hu", "tradeoff-job"])
+        .arg(&jobs)
+        .output()
+        .unwrap();
+    let message = refused(&hungarian, "jobs.index_needed", "JOBS");
+    assert!(message.contains("nem tartalmaz feladatot"), "{message}");
+    assert!(!results.exists(), "nothing written");
+}

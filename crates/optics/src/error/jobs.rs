@@ -236,6 +236,7 @@ impl JobError {
             | JobError::NotPlanned { field, .. }
             | JobError::Times { field, .. }
             | JobError::Write { field, .. } => field,
+            JobError::IndexNeeded { lines: 0, .. } => "JOBS",
             JobError::IndexNeeded { .. } => "INDEX",
             JobError::Line { field, .. } => return field.clone(),
             JobError::Schema { .. } => "schema",
@@ -288,6 +289,16 @@ impl fmt::Display for JobError {
                 "{at}: version {found} of {}; this optics reads version {}",
                 kind.schema(),
                 super::super::tradeoff::jobs::VERSION
+            ),
+            JobError::NoSuchJob {
+                field,
+                at,
+                index,
+                jobs,
+            } if *jobs == 0 => write!(
+                f,
+                "{field} {index}: the plan {} has no jobs (it is empty)",
+                at.path.display()
             ),
             JobError::NoSuchJob {
                 field,
@@ -353,6 +364,11 @@ impl fmt::Display for JobError {
             JobError::NoResults { path } => write!(
                 f,
                 "--collect {}: no result files (*.json, *.jsonl) in it",
+                path.display()
+            ),
+            JobError::IndexNeeded { path, lines: 0 } => write!(
+                f,
+                "JOBS: {} holds no jobs (it is empty): nothing to run",
                 path.display()
             ),
             JobError::IndexNeeded { path, lines } => write!(

@@ -68,6 +68,15 @@ pub fn jobs_hu(error: &JobError) -> String {
             field,
             at,
             index,
+            jobs: 0,
+        } => format!(
+            "{field} {index}: a(z) {} terv nem tartalmaz feladatot (üres)",
+            at.path.display()
+        ),
+        JobError::NoSuchJob {
+            field,
+            at,
+            index,
             jobs,
         } => format!(
             "{field} {index}: a(z) {} terv {jobs} feladatból áll (0–{})",
@@ -105,6 +114,10 @@ pub fn jobs_hu(error: &JobError) -> String {
         ),
         JobError::NoResults { path } => format!(
             "--collect {}: nincs benne eredményfájl (*.json, *.jsonl)",
+            path.display()
+        ),
+        JobError::IndexNeeded { path, lines: 0 } => format!(
+            "JOBS: a(z) {} nem tartalmaz feladatot (üres): nincs mit futtatni",
             path.display()
         ),
         JobError::IndexNeeded { path, lines } => format!(
