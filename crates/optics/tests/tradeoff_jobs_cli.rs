@@ -433,6 +433,21 @@ fn bad_job_lines_are_refused_by_field_with_nothing_written() {
     let out = job_command(&file, "0", &results).output().unwrap();
     let message = refused(&out, "jobs.line", "width");
     assert!(message.contains(tracer::json::TWICE), "{message}");
+    // A line of JSON that is not an object is refused as such, not by
+    // the fields serde would count in a list.
+    for not_an_object in ["[]", "[1, 2]", "3", "null", "\"job\""] {
+        let file = dir.path().join("not-an-object.jsonl");
+        std::fs::write(&file, format!("{not_an_object}\n")).unwrap();
+        let out = job_command(&file, "0", &results).output().unwrap();
+        assert_eq!(out.status.code(), Some(1), "{}", stderr(&out));
+        let error: Value = serde_json::from_slice(&out.stdout).unwrap();
+        assert_eq!(error["error"]["kind"], "jobs.line", "{error}");
+        let message = error["error"]["message"].as_str().unwrap();
+        assert!(
+            message.contains("JSON object"),
+            "{not_an_object}: {message}"
+        );
+    }
     let file = dir.path().join("broken.jsonl");
     std::fs::write(&file, "{\"schema\": \"optics.tradeoff-job\",\n").unwrap();
     let out = job_command(&file, "0", &results).output().unwrap();

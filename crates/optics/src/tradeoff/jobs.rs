@@ -322,6 +322,12 @@ pub fn read_line<T: serde::de::DeserializeOwned>(
         line_error(field, e.into_inner().to_string())
     })?;
     json.end().map_err(|e| line_error(None, e.to_string()))?;
+    if !value.is_object() {
+        return Err(line_error(
+            None,
+            format!("a line is a JSON object of the job's fields, not {value}"),
+        ));
+    }
     // The schema and version first: a line of another version is refused
     // as that, not by the first field the versions disagree on.
     if let Some(found) = value.get("schema") {
