@@ -112,6 +112,16 @@ impl<'de> Visitor<'de> for ValueVisitor {
     }
 }
 
+/// `error`'s message without the position `serde_json` appends to it
+/// (" at line L column C"), for a reader that names the place itself.
+pub fn without_position(error: &serde_json::Error) -> String {
+    let text = error.to_string();
+    match text.find(" at line ") {
+        Some(i) => text[..i].to_owned(),
+        None => text,
+    }
+}
+
 /// The refusal of a key given twice; the path names the key.
 pub const TWICE: &str = "given twice (a key may appear once in an object)";
 
@@ -137,8 +147,7 @@ mod tests {
         serde_path_to_error::deserialize::<_, UniqueKeys>(de)
             .map(|v| v.0)
             .map_err(|e| {
-                let message = e.inner().to_string();
-                let message = message.split(" at line ").next().unwrap().to_owned();
+                let message = without_position(e.inner());
                 (e.inner().classify(), message, e.path().to_string())
             })
     }

@@ -5,11 +5,11 @@
 //! when its `law` comes first and nothing in it is wrong. Any other line
 //! (the law later, a field missing, mistyped, unknown or given twice, a key
 //! with escapes, text that is not JSON) is read again by [`general`]: into
-//! a JSON object whose keys are each given once ([`UniqueKeys`]), then into the arguments, which names what is wrong as
-//! every error object of `optics batch` does. For each line the typed
-//! reading accepts, both give the same request (the `batch_lines` fuzz
-//! target checks it), so the reading that answers is never visible in
-//! the output.
+//! a JSON object whose keys are each given once ([`UniqueKeys`]), then
+//! into the arguments, which names what is wrong as every error object of
+//! `optics batch` does. For each line the typed reading accepts, both give
+//! the same request (the `batch_lines` fuzz target checks it), so the
+//! reading that answers is never visible in the output.
 
 use crate::error::{Error, ErrorKind, Result};
 use crate::input::Via;
@@ -24,7 +24,7 @@ use serde_json::error::Category;
 use serde_json::Value;
 use std::borrow::Cow;
 use std::fmt;
-use tracer::json::UniqueKeys;
+use tracer::json::{without_position, UniqueKeys};
 
 /// One request: the law as the line names it, its arguments, and whether
 /// its working is wanted (the line's `"steps"`, else the run's choice).
@@ -189,12 +189,7 @@ fn object(text: &str) -> std::result::Result<Value, ErrorKind> {
             return ErrorKind::MalformedJson(e.into_inner());
         }
         let path = Some(e.path().to_string());
-        let message = e.inner().to_string();
-        let message = message
-            .split(" at line ")
-            .next()
-            .unwrap_or_default()
-            .to_owned();
+        let message = without_position(e.inner());
         ErrorKind::Request { path, message }
     })?;
     json.end().map_err(ErrorKind::MalformedJson)?;

@@ -1,12 +1,13 @@
 //! Scene text to a [`SceneFile`]: bytes to UTF-8 text, text to one JSON
-//! value, no key given twice in an object, and nothing after it, its shapes checked ([`super::shape`]), then
-//! serde with the JSON path of every error, after rewriting the schema's
-//! `"type"` tags into serde's external tagging.
+//! value, no key given twice in an object, and nothing after it, its
+//! shapes checked ([`super::shape`]), then serde with the JSON path of
+//! every error, after rewriting the schema's `"type"` tags into serde's
+//! external tagging.
 
 use serde_json::error::Category;
 use serde_json::Value;
 
-use crate::json::UniqueKeys;
+use crate::json::{without_position, UniqueKeys};
 
 use super::faults::{self, Fault};
 use super::schema::SceneFile;
@@ -81,14 +82,6 @@ fn syntax(text: &str, path: String, err: serde_json::Error) -> SceneError {
         column: err.column(),
     };
     SceneError::new(path, kind)
-}
-
-fn without_position(err: &serde_json::Error) -> String {
-    let text = err.to_string();
-    match text.find(" at line ") {
-        Some(i) => text[..i].to_owned(),
-        None => text,
-    }
 }
 
 /// The path of a value as the file spells it: variant names, which exist
