@@ -8,7 +8,7 @@
 use criterion::measurement::WallTime;
 use criterion::{criterion_group, BatchSize, BenchmarkGroup, Criterion, Throughput};
 use optics::batch::{self, BatchArgs};
-use optics::lang::Lang;
+use record::Lang;
 
 /// `count` requests cycling through the laws, with varying inputs.
 fn requests(count: usize) -> String {

@@ -19,8 +19,8 @@
 pub(crate) mod request;
 
 use crate::error::{Error, ErrorKind, Result};
-use crate::lang::Lang;
-use crate::record::Steps;
+use record::Lang;
+use record::Steps;
 use serde_json::{json, Value};
 use std::io::{BufRead, Read, Write};
 use std::ops::Range;

@@ -6,10 +6,10 @@
 
 use crate::error::Result;
 use crate::input::{Vec3Arg, Via};
-use crate::lang::{say, Lang};
 use crate::laws::note_normalized;
-use crate::record::{number, vector, Answer, Record, Steps};
 use glam::DVec3;
+use record::{number, vector, Answer, Record, Steps};
+use record::{say, Lang};
 use serde_json::{json, Map, Value};
 use techniques::envmap::cube::CubeTexel;
 use techniques::envmap::lat_long::LatLong;

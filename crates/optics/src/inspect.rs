@@ -11,10 +11,11 @@ use tracer::needs::{Needs, ReflectionDepth};
 use tracer::render::Rendered;
 
 use crate::error;
-use crate::lang::{needs, say, Lang};
-use crate::record::{Answer, Record};
+use crate::lang::needs;
 use crate::render::JobArgs;
 use crate::Ui;
+use record::{say, Lang};
+use record::{Answer, Record};
 
 #[derive(clap::Args, Debug)]
 #[command(after_help = "Examples:

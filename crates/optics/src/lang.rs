@@ -1,9 +1,9 @@
-//! The two languages of the text output: English, and Hungarian, the
-//! language of the source course.
+//! The suite's errors in its two languages ([`record::Lang`]): English is
+//! each kind's `Display`, Hungarian an exhaustive `match` over the kinds here.
 
 use crate::error::{Error, ErrorKind};
-use clap::ValueEnum;
 use radiometry::domain::{self, DomainError, Expected};
+use record::Lang;
 
 #[cfg(feature = "harness")]
 mod compare;
@@ -13,35 +13,6 @@ mod harness;
 mod jobs;
 pub mod needs;
 mod render;
-
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum Lang {
-    /// English.
-    En,
-    /// Magyar (Hungarian).
-    Hu,
-}
-
-impl Lang {
-    /// The text in this language.
-    pub fn pick<'a>(self, en: &'a str, hu: &'a str) -> &'a str {
-        match self {
-            Lang::En => en,
-            Lang::Hu => hu,
-        }
-    }
-}
-
-/// `say!(lang, "English {x}", "Magyar {x}")`: a formatted line in `lang`.
-macro_rules! say {
-    ($lang:expr, $en:literal, $hu:literal $(, $arg:expr)* $(,)?) => {
-        match $lang {
-            $crate::lang::Lang::En => format!($en $(, $arg)*),
-            $crate::lang::Lang::Hu => format!($hu $(, $arg)*),
-        }
-    };
-}
-pub(crate) use say;
 
 /// An error's message in `lang`: the English is the kind's `Display`, the
 /// Hungarian an exhaustive `match` over the kinds.

@@ -25,7 +25,6 @@ pub mod laws;
 mod missing_light;
 mod planar;
 pub mod quiz;
-pub mod record;
 pub(crate) mod render;
 #[cfg(feature = "harness")]
 pub mod tradeoff;
@@ -33,7 +32,7 @@ pub mod tradeoff;
 mod validate;
 
 pub use error::{Error, ErrorKind};
-pub use lang::Lang;
+pub use record::Lang;
 
 use clap::{Parser, Subcommand};
 use input::Via;
@@ -236,7 +235,7 @@ fn run(command: &Command, ui: &Ui) -> error::Result<ExitCode> {
             let stdout = std::io::BufWriter::with_capacity(1 << 16, std::io::stdout().lock());
             let (read, failed) = batch::run(args, stdin, stdout, lang)?;
             if failed > 0 {
-                let summary = lang::say!(
+                let summary = record::say!(
                     lang,
                     "optics batch: {failed} of {read} lines gave errors",
                     "optics batch: {read} sorból {failed} hibás"

@@ -12,7 +12,8 @@ use tracer::chains;
 use tracer::job::RenderJob;
 use tracer::scene::IntegratorKind;
 
-use crate::lang::{needs, say, Lang};
+use crate::lang::needs;
+use record::{say, Lang};
 
 /// The report's lines and its JSON detail.
 pub fn report(job: &RenderJob, scene_file: &Path, lang: Lang) -> (Vec<String>, Value) {

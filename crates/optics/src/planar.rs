@@ -21,9 +21,9 @@ pub(crate) use shadow::UNCHECKED_VERTEX;
 
 use crate::error::{ErrorKind, Result};
 use crate::input::{Vec3Arg, Via};
-use crate::lang::{say, Lang};
-use crate::record::{number, vector, Answer, Record};
 use glam::{DMat4, DVec3, DVec4};
+use record::{number, vector, Answer, Record};
+use record::{say, Lang};
 use serde_json::Value;
 use techniques::planar::Plane;
 

@@ -14,9 +14,10 @@ use tracer::scene::{FresnelModel, IntegratorKind, PixelFilter, Precision, Render
 use tracer::scene::{MAX_DEPTH, MAX_IMAGE_SIDE, MAX_PHOTONS, MAX_PHOTON_PASSES, MAX_SPP};
 
 use crate::error::{self, ErrorKind};
-use crate::lang::{needs, say, Lang};
-use crate::record::{Answer, Record};
+use crate::lang::needs;
 use crate::Ui;
+use record::{say, Lang};
+use record::{Answer, Record};
 
 #[derive(clap::Args, Debug)]
 #[command(after_help = "Examples:

@@ -12,9 +12,9 @@ use validation::pipeline::{self, Options, Outcome, PythonOptions, Step};
 use validation::python::SetUp;
 
 use crate::error::{self, ErrorKind};
-use crate::lang::{say, Lang};
-use crate::record::{Answer, Record};
 use crate::Ui;
+use record::{say, Lang};
+use record::{Answer, Record};
 
 #[derive(clap::Args, Debug)]
 #[command(after_help = "Examples:

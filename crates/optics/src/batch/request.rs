@@ -13,10 +13,10 @@
 
 use crate::error::{Error, ErrorKind, Result};
 use crate::input::Via;
-use crate::lang::Lang;
 use crate::laws::{FresnelArgs, ReflectArgs, RefractArgs, ShadeArgs};
 use crate::quiz::{BlinnPhongArgs, CriticalAngleArgs, F0Args, LambertArgs};
-use crate::record::{Record, Steps};
+use record::Lang;
+use record::{Record, Steps};
 use serde::de::value::{BorrowedStrDeserializer, MapAccessDeserializer};
 use serde::de::{DeserializeSeed, Deserializer, Error as _, MapAccess, Visitor};
 use serde::Deserialize;

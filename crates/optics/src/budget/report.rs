@@ -11,10 +11,10 @@ use validation::tradeoff::measure::Errors;
 use super::predictor::Predicted;
 use super::{describe, Metric, Outcome};
 use crate::error;
-use crate::lang::{say, Lang};
-use crate::record::{Answer, Record};
 use crate::render::RenderArgs;
 use crate::Ui;
+use record::{say, Lang};
+use record::{Answer, Record};
 
 /// Shows the budget's record.
 pub fn show(

@@ -13,7 +13,7 @@ use validation::renders::{sample_statistics, tracer_render};
 
 use crate::error::compare::CompareError;
 use crate::error::{self, ErrorKind};
-use crate::lang::{say, Lang};
+use record::{say, Lang};
 
 /// The first seed of a path-traced reference's renders: a user's renders
 /// with seeds below 2³² share no random stream with it.

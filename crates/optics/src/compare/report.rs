@@ -9,8 +9,8 @@ use validation::renders::ALPHA;
 
 use super::reference::{self, Reference, FIRST_SEED};
 use super::{CompareArgs, Outcome};
-use crate::lang::{say, Lang};
-use crate::record::{number, percent, Answer, Record};
+use record::{number, percent, Answer, Record};
+use record::{say, Lang};
 
 /// The record of one comparison.
 pub(crate) fn record(

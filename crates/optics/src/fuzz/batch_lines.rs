@@ -8,10 +8,10 @@ use super::{
 };
 use crate::batch::request::{self, LINE_STEPS_IGNORED, REPEATED_KEYS_KEPT};
 use crate::batch::{self, BatchArgs, NOT_UTF8_STOPS_THE_RUN};
-use crate::lang::Lang;
-use crate::record::Steps;
 use proptest::prelude::*;
 use proptest::test_runner::TestCaseError;
+use record::Lang;
+use record::Steps;
 use serde_json::error::Category;
 use serde_json::{json, Map, Value};
 use tracer::json::UniqueKeys;

@@ -7,10 +7,10 @@
 use super::{run_and_report, runner, Coverage};
 use crate::compare::admit;
 use crate::compare::user_image::LENGTH_UNCHECKED;
-use crate::lang::Lang;
 use image::ImageEncoder;
 use proptest::prelude::*;
 use proptest::test_runner::TestCaseError;
+use record::Lang;
 use std::path::{Path, PathBuf};
 
 /// The scene the images are of (8 × 6 in the file; any size is asked).

@@ -4,10 +4,10 @@
 use super::{
     check_error_field, check_record, number_text, run_and_report, runner, Coverage, SCHEMA, VECTORS,
 };
-use crate::lang::Lang;
 use clap::{CommandFactory, FromArgMatches};
 use proptest::prelude::*;
 use proptest::test_runner::TestCaseError;
+use record::Lang;
 
 /// The words before the flags: `fresnel`, `quiz f0`, ….
 fn subcommand(law: &str) -> Vec<String> {

@@ -216,7 +216,7 @@ fn refused_by_usage(
     coverage: &Coverage,
 ) -> Result<(), TestCaseError> {
     let error = crate::Error::from(crate::ErrorKind::Usage(usage));
-    let json = error.to_json(crate::lang::Lang::En);
+    let json = error.to_json(record::Lang::En);
     coverage.error(&json);
     prop_assert!(spoiled.is_some(), "{args:?} refused: {json}");
     let flag = spoiled.unwrap_or_default();

@@ -171,7 +171,7 @@ fn check_line(line: &Line, dropped: Dropped, coverage: &Coverage) -> Result<(), 
             let (precision, served) = expected_tier(line);
             let job = match args.job(&scene()) {
                 Err(e) if !served => {
-                    let json = e.to_json(crate::lang::Lang::En);
+                    let json = e.to_json(record::Lang::En);
                     coverage.error(&json);
                     prop_assert_eq!(json["field"].as_str(), Some("overrides.precision"));
                     return Ok(());

@@ -9,10 +9,10 @@
 //! inputs.
 
 use super::{check_error_field, number_text, run_and_report, runner, Coverage};
-use crate::lang::Lang;
 use clap::{CommandFactory, FromArgMatches};
 use proptest::prelude::*;
 use proptest::test_runner::TestCaseError;
+use record::Lang;
 use serde_json::Value;
 
 /// Each command's flags, as the record's inputs name them.

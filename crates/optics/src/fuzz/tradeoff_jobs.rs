@@ -206,7 +206,7 @@ fn check(case: &Case, coverage: &Coverage) -> Result<(), TestCaseError> {
         }
         Err(error) => error,
     };
-    let json = crate::Error::from(error).to_json(crate::lang::Lang::En);
+    let json = crate::Error::from(error).to_json(record::Lang::En);
     coverage.error(&json);
     prop_assert!(
         !case.untouched,

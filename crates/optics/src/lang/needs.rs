@@ -6,7 +6,7 @@ use tracer::chains::Chain;
 use tracer::needs::{LightKind, Unused};
 use tracer::scene::{Material, Scene};
 
-use super::Lang;
+use record::Lang;
 
 /// A light's kind, as `inspect` and `render` name it.
 pub fn light_kind(kind: LightKind, lang: Lang) -> &'static str {

@@ -17,9 +17,9 @@ pub use reflect::ReflectArgs;
 pub use refract::RefractArgs;
 pub use shade::{ShadeArgs, ShadeModel, Shading};
 
-use crate::lang::{say, Lang};
-use crate::record::{number, vector, Record};
 use radiometry::domain::Direction;
+use record::{number, vector, Record};
+use record::{say, Lang};
 
 /// Says in the working when a direction was not unit length.
 pub fn note_normalized(record: &mut Record, lang: Lang, field: &str, d: &Direction) {

@@ -3,9 +3,9 @@
 use super::note_normalized;
 use crate::error::Result;
 use crate::input::{Vec3Arg, Via};
-use crate::lang::{say, Lang};
-use crate::record::{number, vector, Answer, Record, Steps};
 use radiometry::specular::reflect;
+use record::{number, vector, Answer, Record, Steps};
+use record::{say, Lang};
 use serde::Deserialize;
 
 /// The mirror direction (law of reflection).

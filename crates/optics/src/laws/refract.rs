@@ -3,11 +3,11 @@
 use super::note_normalized;
 use crate::error::Result;
 use crate::input::{Vec3Arg, Via};
-use crate::lang::{say, Lang};
-use crate::record::{number, vector, Answer, Record, Steps};
 use glam::DVec3;
 use radiometry::snell::Incidence;
 use radiometry::specular::{incidence, reflect, refract_resolved};
+use record::{number, vector, Answer, Record, Steps};
+use record::{say, Lang};
 use serde::Deserialize;
 
 /// The refracted direction (Snell's law in vector form).

@@ -4,8 +4,6 @@
 use super::note_normalized;
 use crate::error::{ErrorKind, Result};
 use crate::input::{Vec3Arg, Via};
-use crate::lang::{say, Lang};
-use crate::record::{number, vector, Answer, Record, Steps};
 use glam::DVec3;
 use radiometry::brdf::{
     half_vector, hemisphere, BlinnPhong, BlinnPhongReciprocal, Brdf, CourseLambert, Hemisphere,
@@ -13,6 +11,8 @@ use radiometry::brdf::{
 };
 use radiometry::radiance::{directional_irradiance, reflected_radiance};
 use radiometry::specular::reflect;
+use record::{number, vector, Answer, Record, Steps};
+use record::{say, Lang};
 use serde::Deserialize;
 
 /// A BRDF model, by the course's names.

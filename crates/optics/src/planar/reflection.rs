@@ -8,8 +8,8 @@ use super::{
 };
 use crate::error::Result;
 use crate::input::{Vec3Arg, Via};
-use crate::lang::{say, Lang};
-use crate::record::{number, vector, Record, Steps};
+use record::{number, vector, Record, Steps};
+use record::{say, Lang};
 use techniques::planar::reflection;
 
 /// The matrix that mirrors a scene in a plane.

@@ -7,9 +7,9 @@ use super::{
 };
 use crate::error::{ErrorKind, Result};
 use crate::input::{Vec3Arg, Via};
-use crate::lang::{say, Lang};
-use crate::record::{number, vector, Record, Steps};
 use glam::{DMat4, DVec3, DVec4};
+use record::{number, vector, Record, Steps};
+use record::{say, Lang};
 use techniques::planar::{
     light_on_plane, project_shadow, shadow_matrix, shadow_matrix_y0, Plane, Shadow,
 };

@@ -5,11 +5,11 @@
 use crate::error::Result;
 use crate::error::{Error, ErrorKind};
 use crate::input::{Vec3Arg, Via};
-use crate::lang::{say, Lang};
 use crate::laws::{ShadeArgs, ShadeModel};
-use crate::record::{number, percent, Answer, Record, Steps};
 use radiometry::fresnel::f0;
 use radiometry::snell::critical_angle;
+use record::{number, percent, Answer, Record, Steps};
+use record::{say, Lang};
 use serde::Deserialize;
 
 /// Normal-incidence reflectance from the index (and extinction).

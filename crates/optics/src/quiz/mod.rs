@@ -15,8 +15,8 @@ mod statements;
 pub use exercises::{BlinnPhongArgs, CriticalAngleArgs, F0Args, LambertArgs};
 pub use seed::{seed, seed_record};
 
-use crate::lang::{say, Lang};
-use crate::record::{Answer, Record};
+use record::{say, Lang};
+use record::{Answer, Record};
 use serde_json::Value;
 
 #[derive(clap::Args, Debug)]

@@ -5,8 +5,8 @@ use super::exercises::{BlinnPhongArgs, CriticalAngleArgs, F0Args, LambertArgs};
 use super::statements::question_one;
 use crate::error::Result;
 use crate::input::{Vec3Arg, Via};
-use crate::lang::{say, Lang};
-use crate::record::{number, Answer, Record, Steps};
+use record::{number, Answer, Record, Steps};
+use record::{say, Lang};
 use serde_json::Value;
 
 /// A record's answer as a number (NaN if it has none).

@@ -1,11 +1,11 @@
 //! Question 1 of the quiz: nine true/false statements, each with the
 //! printed verdict, the verdict of the laws, and why.
 
-use crate::lang::{say, Lang};
-use crate::record::{number, Answer, Record};
 use glam::DVec3;
 use radiometry::photon::compton_shift_m;
 use radiometry::radiance::point_irradiance;
+use record::{number, Answer, Record};
+use record::{say, Lang};
 use serde_json::{json, Value};
 
 /// One true/false statement of question 1: the course's text, a translation,

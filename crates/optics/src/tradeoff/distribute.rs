@@ -17,9 +17,9 @@ use super::truth;
 use super::{Provenance, Renders, Setup, Timed, TradeoffArgs};
 use crate::error::jobs::{JobError, LineKind, Place};
 use crate::error::{self, ErrorKind};
-use crate::lang::say;
-use crate::record::{Answer, Record};
 use crate::Ui;
+use record::say;
+use record::{Answer, Record};
 
 /// How a collected sweep was run: the record's `collected` (absent from
 /// a sweep rendered in one run).

@@ -17,7 +17,7 @@ use validation::tradeoff::mitsuba::{
     Reference,
 };
 
-use crate::lang::{say, Lang};
+use record::{say, Lang};
 
 /// Mitsuba's truth for one sweep, gathered as its points are measured.
 pub(crate) struct Second {

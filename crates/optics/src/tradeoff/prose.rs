@@ -10,7 +10,7 @@ use validation::tradeoff::findings::{
 use validation::tradeoff::mitsuba::SecondTruth;
 use validation::tradeoff::{Verdict, JUST_NOTICEABLE, WORTH_IT};
 
-use crate::lang::{say, Lang};
+use record::{say, Lang};
 
 /// The sentences, in the order a reader asks: what to take, what not,
 /// what each integrator and bounce misses, Schlick, local against

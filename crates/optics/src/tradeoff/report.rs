@@ -11,9 +11,9 @@ use validation::python::{run_tool, Task, ToolError};
 
 use super::{prose, Measured, Sweep, TradeoffArgs, Verdict, UNCONVERGED};
 use crate::error::{self, ErrorKind};
-use crate::lang::{say, Lang};
-use crate::record::{Answer, Record};
 use crate::Ui;
+use record::{say, Lang};
+use record::{Answer, Record};
 
 /// The table, one line a point, a header first.
 pub fn table(sweep: &Sweep, lang: Lang) -> Vec<String> {

@@ -13,9 +13,9 @@ use super::jobs::{self, Job, JobResult, Planned};
 use super::{median, render, renders_wanted, Setup, TradeoffArgs, MAX_RENDERS};
 use crate::error::jobs::{JobError, LineKind, Place};
 use crate::error::{self, ErrorKind};
-use crate::lang::say;
-use crate::record::{Answer, Record};
 use crate::Ui;
+use record::say;
+use record::{Answer, Record};
 
 #[derive(clap::Args, Debug, Serialize)]
 #[command(after_help = "Examples:

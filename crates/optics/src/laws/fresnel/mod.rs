@@ -9,12 +9,12 @@
 use crate::error::Result;
 use crate::error::{Error, ErrorKind};
 use crate::input::Via;
-use crate::lang::{say, Lang};
-use crate::record::{Answer, Record, Steps};
 use radiometry::fresnel::{
     conductor_polarized, dielectric_resolved, f0, schlick_dielectric_resolved,
 };
 use radiometry::snell::Incidence;
+use record::{say, Lang};
+use record::{Answer, Record, Steps};
 use serde::Deserialize;
 pub use tracer::scene::FresnelModel;
 use working::{

@@ -1,10 +1,10 @@
 //! The working of `optics fresnel` reports the laws' own numbers.
 
 use super::*;
-use crate::record::number;
-use crate::record::Steps;
 use radiometry::fresnel::SchlickCosine;
 use radiometry::fresnel::{dielectric_polarized, schlick_dielectric_working};
+use record::number;
+use record::Steps;
 
 fn solve(eta: f64, cos_i: f64, model: FresnelModel) -> Record {
     let args = FresnelArgs {

@@ -1,12 +1,12 @@
 //! The working of `optics fresnel`, narrated from what each law returned.
 
-use crate::lang::{say, Lang};
-use crate::record::{number, Record};
 use radiometry::course;
 use radiometry::fresnel::{
     conductor_polarized, f0, schlick, DielectricFresnel, SchlickCosine, SchlickDielectric,
 };
 use radiometry::snell::Incidence;
+use record::{number, Record};
+use record::{say, Lang};
 
 /// The side and angle of incidence, as resolved.
 pub(super) fn narrate_incidence(

@@ -8,16 +8,16 @@
 //! ([`Record::new`], then [`Record::input`]/[`Record::inputs_from`],
 //! [`Record::step`], [`Record::set_answer`], [`Record::detail`]/
 //! [`Record::details_from`], [`Record::note`]) and printed by
-//! [`crate::Ui::show`] (or [`crate::Ui::show_steps`], whose text is the
-//! steps alone). A failure prints the error object of
-//! [`crate::Error::to_json`] instead.
+//! the front end (`optics`'s `Ui::show`, or `Ui::show_steps`, whose text
+//! is the steps alone). A failure prints the front end's error object
+//! instead.
 //!
 //! Whether the working is wanted ([`Steps`]) is decided once by the caller
 //! (`optics batch --no-steps`, a request's `"steps"`) and handed to the law,
 //! which gives it to its record ([`Record::with_steps`]); each step is a
 //! closure, so a record whose working is skipped never formats it.
 
-use crate::lang::Lang;
+use crate::Lang;
 use serde::ser::SerializeMap;
 use serde::{Serialize, Serializer};
 use serde_json::{Map, Value};
