@@ -21,6 +21,7 @@ pub(crate) mod request;
 use crate::error::{Error, ErrorKind, Result};
 use record::Lang;
 use record::Steps;
+
 use serde_json::{json, Value};
 use std::io::{BufRead, Read, Write};
 use std::ops::Range;
@@ -55,18 +56,6 @@ impl BatchArgs {
         Steps::from_wanted(!self.no_steps)
     }
 }
-
-/// The laws a request may name, in the order `--help` lists them.
-pub const LAWS: [&str; 8] = [
-    "fresnel",
-    "refract",
-    "reflect",
-    "shade",
-    "f0",
-    "lambert",
-    "critical_angle",
-    "blinn_phong",
-];
 
 /// One input line to one output line, without the newline, appended to
 /// `out`; whether it was evaluated. `steps` is the working wanted unless

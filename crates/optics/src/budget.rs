@@ -31,7 +31,7 @@ use predictor::{Predicted, Predictor};
 use crate::error::{self, ErrorKind};
 use crate::render::RenderArgs;
 use crate::tradeoff::{setup, sweep, truth};
-use crate::Ui;
+use crate::ui::Ui;
 
 /// The most samples per pixel the budget gives a candidate: 2^16.
 pub const MAX_BUDGET_SPP: u32 = 1 << 16;

@@ -27,7 +27,7 @@ use validation::renders::ALPHA;
 
 use crate::error::compare::CompareError;
 use crate::error::{self, ErrorKind};
-use crate::Ui;
+use crate::ui::Ui;
 use reference::Reference;
 pub(crate) use user_image::UserImage;
 

@@ -13,7 +13,7 @@ use tracer::render::Rendered;
 use crate::error;
 use crate::lang::needs;
 use crate::render::JobArgs;
-use crate::Ui;
+use crate::ui::Ui;
 use record::{say, Lang};
 use record::{Answer, Record};
 

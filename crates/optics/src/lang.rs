@@ -57,7 +57,7 @@ fn hungarian(kind: &ErrorKind) -> String {
         ErrorKind::LawNotString => "law: szövegnek kell lennie".to_owned(),
         ErrorKind::UnknownLaw { law } => format!(
             "law: ismeretlen törvény: {law:?}, a lehetségesek: {}",
-            crate::batch::LAWS.join(", ")
+            crate::law_names::LAWS.join(", ")
         ),
         ErrorKind::Request {
             path: Some(path),

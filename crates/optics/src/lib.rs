@@ -1,5 +1,7 @@
 //! The suite's command line, `optics`, as a library: the binary is a thin
-//! `main` over [`main_entry`], and benches drive [`batch`] directly.
+//! `main` over [`main_entry`], and benches drive [`batch`] directly. It
+//! parses, calls, and prints through [`ui`]; the features it fronts live in
+//! the library crates below it.
 //!
 //! Every subcommand prints a record (the working and the answer) as text, or
 //! with `--json` as one JSON object whose fields `docs/cli.md` documents
@@ -21,6 +23,7 @@ mod fuzz;
 pub mod input;
 mod inspect;
 pub mod lang;
+pub mod law_names;
 pub mod laws;
 mod missing_light;
 mod planar;
@@ -28,104 +31,19 @@ pub mod quiz;
 pub(crate) mod render;
 #[cfg(feature = "harness")]
 pub mod tradeoff;
+pub mod ui;
 #[cfg(feature = "harness")]
 mod validate;
 
 pub use error::{Error, ErrorKind};
 pub use record::Lang;
+pub use ui::Ui;
+use ui::{print_err, print_out, reader_gone};
 
 use clap::{Parser, Subcommand};
 use input::Via;
 use record::{Record, Steps};
-use std::io::Write;
 use std::process::ExitCode;
-
-/// How results are shown: plain text or one JSON object, in English or Hungarian.
-#[derive(Debug, Clone, Copy)]
-pub struct Ui {
-    pub json: bool,
-    pub lang: Lang,
-}
-
-impl Ui {
-    /// Prints a record in the chosen form.
-    pub fn show(&self, record: &Record) -> error::Result<()> {
-        let text = if self.json {
-            let json = serde_json::to_string(record).map_err(ErrorKind::Encode)?;
-            json + "\n"
-        } else {
-            record.to_text(self.lang)
-        };
-        print_out(&text)
-    }
-
-    /// Prints a record whose text form is its steps alone, one a line
-    /// (`render`, `inspect`, `validate`: their steps are what they report).
-    pub fn show_steps(&self, record: &Record) -> error::Result<()> {
-        if self.json {
-            return self.show(record);
-        }
-        let steps: String = record
-            .steps
-            .iter()
-            .map(|step| format!("{step}\n"))
-            .collect();
-        print_out(&steps)
-    }
-
-    /// The form chosen on a command line that did not parse: `--json` and
-    /// `--lang hu` are looked for among the raw arguments, so that even a
-    /// syntax error is reported in the form asked for.
-    fn from_raw_args(args: impl IntoIterator<Item = std::ffi::OsString>) -> Self {
-        let args: Vec<_> = args.into_iter().collect();
-        let hu = args.windows(2).any(|w| w[0] == "--lang" && w[1] == "hu")
-            || args.iter().any(|a| a == "--lang=hu");
-        Ui {
-            json: args.iter().any(|a| a == "--json"),
-            lang: if hu { Lang::Hu } else { Lang::En },
-        }
-    }
-
-    /// Reports a failure: the JSON error object on stdout with `--json`,
-    /// and the message on stderr. Where either is closed there is no one
-    /// left to tell, and the exit status says it.
-    fn report(&self, error: &Error) {
-        if self.json {
-            let json = serde_json::json!({ "error": error.to_json(self.lang) });
-            let _ = print_out(&format!("{json}\n"));
-        }
-        let text = match (error.kind(), self.lang) {
-            // The parser's own rendering, with its usage line and hint.
-            (ErrorKind::Usage(usage), Lang::En) => usage.render().to_string(),
-            _ => format!(
-                "{}: {}\n",
-                self.lang.pick("error", "hiba"),
-                lang::error_message(error, self.lang)
-            ),
-        };
-        print_err(&text);
-    }
-}
-
-/// Writes `text` to stdout, all of it or an error; the one way the
-/// commands print, so that a closed stdout is one [`ErrorKind::Write`].
-fn print_out(text: &str) -> error::Result<()> {
-    let mut out = std::io::stdout().lock();
-    let written = out.write_all(text.as_bytes()).and_then(|()| out.flush());
-    written.map_err(|e| ErrorKind::Write(e).into())
-}
-
-/// Writes `text` to stderr, where a failure has nowhere left to go: the
-/// one way the commands write to it, so a closed stderr never panics.
-pub(crate) fn print_err(text: &str) {
-    let _ = std::io::stderr().lock().write_all(text.as_bytes());
-}
-
-/// Whether the output's reader has gone (`optics … | head`): not a failure
-/// to report but the end of the run, as for the Unix tools.
-fn reader_gone(error: &Error) -> bool {
-    matches!(error.kind(), ErrorKind::Write(e) if e.kind() == std::io::ErrorKind::BrokenPipe)
-}
 
 #[derive(Parser, Debug)]
 #[command(

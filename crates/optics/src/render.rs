@@ -15,7 +15,7 @@ use tracer::scene::{MAX_DEPTH, MAX_IMAGE_SIDE, MAX_PHOTONS, MAX_PHOTON_PASSES, M
 
 use crate::error::{self, ErrorKind};
 use crate::lang::needs;
-use crate::Ui;
+use crate::ui::Ui;
 use record::{say, Lang};
 use record::{Answer, Record};
 
@@ -180,7 +180,7 @@ pub fn run(args: &RenderArgs, ui: &Ui) -> error::Result<()> {
 /// Past [`WARN_RAYS`], the estimate on stderr before the work starts.
 pub(crate) fn warn_if_long(job: &RenderJob, lang: Lang) {
     if job.rays() > WARN_RAYS {
-        crate::print_err(&say!(
+        crate::ui::print_err(&say!(
             lang,
             "warning: this may cast up to {:.2e} rays (more than {:e}): it may take long\n",
             "figyelem: ez legfeljebb {:.2e} sugarat indíthat (több, mint {:e}): sokáig tarthat\n",

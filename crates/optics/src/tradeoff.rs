@@ -37,7 +37,7 @@ use serde::Serialize;
 use tracer::scene::{MAX_IMAGE_SIDE, MAX_SPP};
 
 use crate::error::{self, ErrorKind};
-use crate::Ui;
+use crate::ui::Ui;
 use measure::Errors;
 use setup::Files;
 pub(crate) use setup::Setup;

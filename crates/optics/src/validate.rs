@@ -12,7 +12,7 @@ use validation::pipeline::{self, Options, Outcome, PythonOptions, Step};
 use validation::python::SetUp;
 
 use crate::error::{self, ErrorKind};
-use crate::Ui;
+use crate::ui::Ui;
 use record::{say, Lang};
 use record::{Answer, Record};
 
@@ -170,7 +170,7 @@ fn progress(ui: &Ui, bar: Option<&ProgressBar>, step: Step) {
         Some(bar) if !bar.is_finished() && !bar.is_hidden() => {
             bar.println(format!("optics validate: {message}"));
         }
-        _ => crate::print_err(&format!("optics validate: {message}\n")),
+        _ => crate::ui::print_err(&format!("optics validate: {message}\n")),
     }
 }
 

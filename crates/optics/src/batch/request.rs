@@ -49,7 +49,7 @@ pub enum Law {
 }
 
 impl Law {
-    /// The arguments of the law `name` (one of [`super::LAWS`]) read from
+    /// The arguments of the law `name` (one of [`crate::law_names::LAWS`]) read from
     /// `fields`; `None` for a law the batch does not evaluate.
     fn read<'de, D: Deserializer<'de>>(name: &str, fields: D) -> Option<Result<Self, D::Error>> {
         Some(match name {

@@ -12,7 +12,7 @@ use super::predictor::Predicted;
 use super::{describe, Metric, Outcome};
 use crate::error;
 use crate::render::RenderArgs;
-use crate::Ui;
+use crate::ui::Ui;
 use record::{say, Lang};
 use record::{Answer, Record};
 

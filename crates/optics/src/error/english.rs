@@ -47,7 +47,7 @@ impl fmt::Display for ErrorKind {
             ErrorKind::UnknownLaw { law } => write!(
                 f,
                 "law: unknown law {law:?}, expected one of {}",
-                crate::batch::LAWS.join(", ")
+                crate::law_names::LAWS.join(", ")
             ),
             ErrorKind::Request { path, message } => match path {
                 Some(path) => write!(f, "{path}: {message}"),

@@ -37,7 +37,7 @@ fn every_kind() -> Vec<(Error, Vec<String>)> {
     let our_usage = usage(&["optics", "reflect", "--wi", "0,1", "--normal", "0,0,1"]);
     let json_error = || serde_json::from_str::<serde_json::Value>("{").unwrap_err();
     let named = |name: &str| vec![name.to_owned()];
-    let laws = crate::batch::LAWS.join(", ");
+    let laws = crate::law_names::LAWS.join(", ");
     let mut kinds: Vec<(ErrorKind, Vec<String>)> = vec![
         (
             DomainError::NotFinite {

@@ -17,7 +17,7 @@ use super::truth;
 use super::{Provenance, Renders, Setup, Timed, TradeoffArgs};
 use crate::error::jobs::{JobError, LineKind, Place};
 use crate::error::{self, ErrorKind};
-use crate::Ui;
+use crate::ui::Ui;
 use record::say;
 use record::{Answer, Record};
 

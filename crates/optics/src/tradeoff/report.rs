@@ -11,7 +11,7 @@ use validation::python::{run_tool, Task, ToolError};
 
 use super::{prose, Measured, Sweep, TradeoffArgs, Verdict, UNCONVERGED};
 use crate::error::{self, ErrorKind};
-use crate::Ui;
+use crate::ui::Ui;
 use record::{say, Lang};
 use record::{Answer, Record};
 
@@ -308,7 +308,7 @@ pub fn write_and_show(sweep: &Sweep, args: &TradeoffArgs, ui: &Ui) -> error::Res
     // after the table in text too, not only in the JSON.
     if !ui.json {
         let notes: String = record.notes.iter().map(|n| format!("{n}\n")).collect();
-        crate::print_out(&notes)?;
+        crate::ui::print_out(&notes)?;
     }
     Ok(())
 }

@@ -13,7 +13,7 @@ use super::jobs::{self, Job, JobResult, Planned};
 use super::{median, render, renders_wanted, Setup, TradeoffArgs, MAX_RENDERS};
 use crate::error::jobs::{JobError, LineKind, Place};
 use crate::error::{self, ErrorKind};
-use crate::Ui;
+use crate::ui::Ui;
 use record::say;
 use record::{Answer, Record};
 

@@ -111,19 +111,23 @@ fn a_block_of_four_billion_lines_is_held_only_as_lines_arrive() {
 }
 
 /// Each output line of `optics batch [args]` on the ROUND_TRIP requests,
-/// one per law of `optics::batch::LAWS`, with the given line endings.
+/// one per law of `optics::law_names::LAWS`, with the given line endings.
 fn round_trip_records(args: &[&str], extra: &str) -> Vec<serde_json::Value> {
     let laws: Vec<&str> = ROUND_TRIP
         .iter()
         .map(|(request, _)| {
             let law = &serde_json::from_str::<serde_json::Value>(request).unwrap()["law"];
-            optics::batch::LAWS
+            optics::law_names::LAWS
                 .into_iter()
                 .find(|name| law == name)
                 .expect("a law of the batch")
         })
         .collect();
-    assert_eq!(laws, optics::batch::LAWS, "one request per law, in order");
+    assert_eq!(
+        laws,
+        optics::law_names::LAWS,
+        "one request per law, in order"
+    );
     let input: String = ROUND_TRIP
         .iter()
         .map(|(request, _)| format!("{}{extra}}}\n", request.trim_end_matches('}')))
