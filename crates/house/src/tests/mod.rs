@@ -1,0 +1,1 @@
+//! Each rule shown to fail by a planted offender.
