@@ -142,8 +142,15 @@ struct Texts<'a> {
 }
 
 impl Texts<'_> {
-    fn literal(&mut self, owner: &str, text: &str, line: usize) {
-        if let Some(flag) = flag(text) {
+    /// Checks one literal: `value` as the program sees it, `written` as the
+    /// source spells it (the flag's own line is counted there), `line` where
+    /// the literal starts.
+    fn literal(&mut self, owner: &str, value: &str, written: &str, line: usize) {
+        if let Some(flag) = flag(value) {
+            let down = written
+                .find(&flag)
+                .map_or(0, |at| written[..at].matches('\n').count());
+            let line = line + down;
             self.found.push(Offender {
                 rule: Rule::FlagInLibraryError,
                 place: Place::Text {
@@ -163,8 +170,9 @@ impl Texts<'_> {
                 TokenTree::Group(group) => self.tokens(owner, group.stream()),
                 TokenTree::Literal(literal) => {
                     let line = literal.span().start().line;
+                    let written = literal.to_string();
                     if let syn::Lit::Str(s) = syn::Lit::new(literal) {
-                        self.literal(owner, &s.value(), line);
+                        self.literal(owner, &s.value(), &written, line);
                     }
                 }
                 _ => {}
@@ -255,7 +263,8 @@ impl<'ast> Visit<'ast> for Texts<'_> {
 
     fn visit_lit_str(&mut self, lit: &'ast syn::LitStr) {
         if let Some(owner) = self.owner.clone() {
-            self.literal(&owner, &lit.value(), lit.span().start().line);
+            let written = lit.token().to_string();
+            self.literal(&owner, &lit.value(), &written, lit.span().start().line);
         }
     }
 

@@ -9,6 +9,7 @@
 //! opens with `#![cfg(test)]`. A product file with an inline `#[cfg(test)] mod
 //! tests { .. }` is still one product file, counted whole.
 
+use std::collections::btree_map::Entry;
 use std::collections::BTreeMap;
 use std::fs;
 use std::path::{Path, PathBuf};
@@ -104,9 +105,9 @@ fn package(root: &Path, dir: &Path) -> Result<Package, Error> {
     // Product files no root declares are still product files.
     for folder in PRODUCT_FOLDERS {
         for file in rust_files(&dir.join(folder))? {
-            if !package.sources.contains_key(&file) {
-                let source = parse(root, &file, false)?;
-                package.sources.insert(file, source);
+            if let Entry::Vacant(entry) = package.sources.entry(file) {
+                let source = parse(root, entry.key(), false)?;
+                entry.insert(source);
             }
         }
     }
@@ -218,7 +219,14 @@ impl Walk<'_> {
                 } else {
                     children
                 };
-                self.file(package, tree, &base.join(path), module, test, true)?;
+                self.file(
+                    package,
+                    tree,
+                    &lexical(&base.join(path)),
+                    module,
+                    test,
+                    true,
+                )?;
             } else if children.join(format!("{name}.rs")).is_file() {
                 let file = children.join(format!("{name}.rs"));
                 self.file(package, tree, &file, module, test, false)?;
@@ -237,6 +245,22 @@ struct Place<'a> {
     file: &'a Path,
     module: Vec<String>,
     test: bool,
+}
+
+/// `path` with its `.` and `..` steps taken, without asking the file
+/// system, so a file a `#[path]` reaches twice is one file.
+fn lexical(path: &Path) -> PathBuf {
+    let mut out = PathBuf::new();
+    for part in path.components() {
+        match part {
+            std::path::Component::CurDir => {}
+            std::path::Component::ParentDir if out.file_name().is_some() => {
+                out.pop();
+            }
+            other => out.push(other),
+        }
+    }
+    out
 }
 
 /// The value of a `#[path = "..."]` attribute.
