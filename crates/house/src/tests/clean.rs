@@ -25,6 +25,15 @@ pub enum SizeError {
     Width(i64),
 }
 
+/// A command line a report shows: a Display, but of no error type.
+pub struct Rerun;
+
+impl std::fmt::Display for Rerun {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("optics validate --quick")
+    }
+}
+
 pub fn floor() -> Floor {
     Floor
 }
