@@ -1,0 +1,139 @@
+"""The references are regenerated only when what made them changes, and a
+changed generator, input, tool pin, or a corrupted file is always caught."""
+import json
+import os
+import shutil
+
+import pytest
+
+import reference_keys as rk
+
+
+def test_every_committed_reference_is_current_by_its_key():
+    recorded = rk.read_keys()
+    assert [g[0] for g in rk.GENERATORS] == list(recorded), "keys.json lists the generators in order"
+    stale = {script: why for script in recorded
+             if (why := rk.state(script, recorded, rk.key(script)))}
+    assert not stale, f"{stale}; regenerate with: {rk.REGENERATE}"
+
+
+def test_the_scene_list_input_is_the_one_mitsuba_render_reads():
+    # mitsuba_render.py reads its scene list from SCENE_LIST; the key must
+    # hash the same place, or a new scene would leave the key unchanged.
+    with open(os.path.join(rk.HERE, "mitsuba_render.py"), encoding="utf-8") as fh:
+        source = fh.read()
+    path = rk.SCENE_LIST.partition("#")[0]
+    assert f'SCENE_LIST = "{path}"' in source
+    assert "pub const COURSE_SCENES" in rk.SCENE_LIST
+
+
+@pytest.fixture
+def tree(tmp_path):
+    """A copy of the files a render reference's key reads."""
+    shutil.copytree(rk.HERE, tmp_path / "python-checks",
+                    ignore=shutil.ignore_patterns("__pycache__"))
+    for pattern in (rk.SCENE_LIST.partition("#")[0], "crates/tracer/scenes/*.json"):
+        for name, _ in rk.inputs([pattern]):
+            os.makedirs(tmp_path / os.path.dirname(name), exist_ok=True)
+            shutil.copyfile(os.path.join(rk.ROOT, name), tmp_path / name)
+    return tmp_path
+
+
+def key_of(tree, script="mitsuba_render.py", python="3.11"):
+    return rk.key(script, root=str(tree), folder=str(tree / "python-checks"),
+                  requirements=str(tree / "python-checks" / "requirements.txt"), python=python)
+
+
+def append(path, text):
+    with open(path, "a", encoding="utf-8") as fh:
+        fh.write(text)
+
+
+@pytest.mark.parametrize("change", [
+    "the generator", "a module it imports", "a scene file", "the scene list",
+    "a tool pin", "the python version",
+])
+def test_a_changed_input_changes_the_key(tree, change):
+    before = key_of(tree)
+    python = "3.11"
+    if change == "the generator":
+        append(tree / "python-checks" / "mitsuba_render.py", "\n# changed\n")
+    elif change == "a module it imports":
+        append(tree / "python-checks" / "atomic_write.py", "\n# changed\n")
+    elif change == "a scene file":
+        append(tree / "crates" / "tracer" / "scenes" / "shadow.json", " ")
+    elif change == "the scene list":
+        path = tree / rk.SCENE_LIST.partition("#")[0]
+        text = path.read_text(encoding="utf-8").replace('"shadow"', '"shadow", "new_scene"', 1)
+        text = text.replace("pub const COURSE_SCENES: [&str; ", "pub const COURSE_SCENES: [&str; 1", 1)
+        path.write_text(text, encoding="utf-8")
+    elif change == "a tool pin":
+        path = tree / "python-checks" / "requirements.txt"
+        path.write_text(path.read_text().replace("mitsuba==", "mitsuba==9"), encoding="utf-8")
+    else:
+        python = "3.12"
+    assert key_of(tree, python=python) != before, change
+
+
+def test_a_change_outside_what_a_generator_reads_keeps_its_key(tree):
+    before = key_of(tree, "flip_reference.py")
+    append(tree / "python-checks" / "mitsuba_render.py", "\n# changed\n")
+    append(tree / "crates" / "tracer" / "scenes" / "shadow.json", " ")
+    assert key_of(tree, "flip_reference.py") == before
+
+
+def test_a_scene_list_that_cannot_be_found_is_an_error_not_an_empty_input(tree):
+    path = tree / rk.SCENE_LIST.partition("#")[0]
+    path.write_text("// no list here\n", encoding="utf-8")
+    with pytest.raises(FileNotFoundError):
+        key_of(tree)
+
+
+def test_a_corrupted_or_stale_committed_reference_is_not_current(tmp_path, monkeypatch):
+    recorded = rk.read_keys()
+    script = "flip_reference.py"
+    entry = recorded[script]
+    assert rk.state(script, recorded, entry["key"]) is None
+    assert "stale" in rk.state(script, recorded, "0" * 64)
+    corrupted = dict(entry, outputs={name: "0" * 64 for name in entry["outputs"]})
+    assert "SHA-256" in rk.state(script, {script: corrupted}, entry["key"])
+    assert rk.state(script, {}, entry["key"]) == "no key recorded"
+
+
+def fake_generator(calls):
+    def run(script, folder):
+        calls.append(script)
+        os.makedirs(folder, exist_ok=True)
+        for name in rk.generator(script)[1]:
+            with open(os.path.join(folder, name), "w", encoding="utf-8") as fh:
+                fh.write(f"{name} as written\n")
+    return run
+
+
+def test_a_whole_cache_entry_of_this_key_is_used_and_anything_else_regenerated(tmp_path, monkeypatch):
+    calls, cache, out = [], tmp_path / "cache", tmp_path / "out"
+    run = fake_generator(calls)
+    script = "colorimetry.py"
+    assert rk.fresh(script, out, cache, run) is True
+    assert rk.fresh(script, out, cache, run) is False, "an unchanged key is served from the cache"
+    assert calls == [script]
+    assert (out / "cie_tables.rs").read_text() == "cie_tables.rs as written\n"
+
+    entry = cache / "colorimetry"
+    (entry / "colorimetry.json").write_text("corrupted\n")
+    assert rk.fresh(script, out, cache, run) is True, "a corrupted entry is regenerated"
+    assert (out / "colorimetry.json").read_text() == "colorimetry.json as written\n"
+
+    (entry / "cie_tables.rs").unlink()
+    assert rk.fresh(script, out, cache, run) is True, "an incomplete entry is regenerated"
+
+    manifest = json.loads((entry / "entry.json").read_text())
+    (entry / "entry.json").write_text(json.dumps(dict(manifest, key="0" * 64)))
+    assert rk.fresh(script, out, cache, run) is True, "an entry of another key is regenerated"
+
+    (entry / "entry.json").write_text("{ not json")
+    assert rk.fresh(script, out, cache, run) is True, "an unreadable entry is regenerated"
+
+    monkeypatch.setattr(rk, "key", lambda script: "f" * 64)
+    assert rk.fresh(script, out, cache, run) is True, "a changed key is regenerated"
+    assert len(calls) == 6
