@@ -27,6 +27,7 @@ and the entry is rewritten whole.
 Usage (from the repository root, in the pinned environment)::
 
     .venv/bin/python python-checks/reference_keys.py            # each reference's state; exit 1 if any is stale
+    .venv/bin/python python-checks/reference_keys.py --json     # the same as one JSON object, exit 0
     .venv/bin/python python-checks/reference_keys.py --regenerate  # regenerate the stale ones, then record the keys
     .venv/bin/python python-checks/reference_keys.py --regenerate --all  # every reference, from scratch
     .venv/bin/python python-checks/reference_keys.py --fresh GENERATOR DIR --cache CACHE  # one generator's output in DIR
@@ -278,6 +279,17 @@ def report():
     return 1 if stale else 0
 
 
+def states_json():
+    """Each generator, its outputs and its state (None: current), as JSON:
+    what ``optics validate`` reads to decide what to regenerate."""
+    recorded = read_keys()
+    return json.dumps({"generators": [
+        {"generator": script, "kind": kind, "outputs": outputs,
+         "state": state(script, recorded, key(script))}
+        for script, outputs, _, kind in GENERATORS
+    ]})
+
+
 def main(argv):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--regenerate", action="store_true")
@@ -285,8 +297,12 @@ def main(argv):
     parser.add_argument("--fresh", nargs=2, metavar=("GENERATOR", "DIR"))
     parser.add_argument("--cache", default=os.path.join(ROOT, "validation", "out", "cache"))
     parser.add_argument("--key", metavar="GENERATOR")
+    parser.add_argument("--json", action="store_true", help="each reference's state as one JSON object")
     args = parser.parse_args(argv)
     try:
+        if args.json:
+            print(states_json())
+            return 0
         if args.key:
             print(key(args.key))
             return 0

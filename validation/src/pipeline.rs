@@ -200,7 +200,7 @@ pub fn run(options: &Options, mut progress: impl FnMut(Step)) -> Result<Outcome,
             let fresh = out.join("reference");
             create_dir(&fresh)?;
             progress(Step::Regenerating);
-            first_checks.push(regenerate(python, checkout, &fresh)?);
+            first_checks.push(regenerate(python, checkout, &fresh, &out.join("cache"))?);
             fresh
         }
         _ => checkout.reference_dir(),

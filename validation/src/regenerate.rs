@@ -1,27 +1,43 @@
-//! Regenerating the references with the pinned tools, and checking that
-//! each reproduces the committed one by the rule of
+//! The references, regenerated only where what made them changed.
+//!
+//! `python-checks/reference_keys.py` keys each reference by its generator's
+//! source, the inputs it reads and the pinned tools, and
+//! `validation/reference/keys.json` records the key each committed file was
+//! written under, with its SHA-256. A reference whose key and bytes are as
+//! recorded is current and is used as committed; any other is regenerated
+//! (through the cache `out/cache`, whose entries are used only whole and of
+//! the current key) and must reproduce the committed one by the rule of
 //! `python-checks/reproduce.py` (byte for byte, but for the files written
-//! through colour-science's BLAS products).
+//! through colour-science's BLAS products). `.ci/run` regenerates one
+//! reference of each kind from scratch on every run, which keeps the proof
+//! that the keyed references still reproduce.
 
 use std::path::Path;
 use std::process::Command;
+
+use serde::Deserialize;
 
 use crate::check::Check;
 use crate::checkout::Checkout;
 use crate::python::{run_tool, Task, ToolError};
 
-/// The reference generators and the files each writes, in the order the
-/// full run regenerates them.
-pub const GENERATORS: [(&str, &[&str]); 8] = [
-    ("fresnel_mpmath.py", &["fresnel_mpmath.json"]),
-    ("fresnel_random.py", &["fresnel_random.json"]),
-    ("mitsuba_laws.py", &["mitsuba_laws.json"]),
-    ("colorimetry.py", &["colorimetry.json", "cie_tables.rs"]),
-    ("metals.py", &["metals.json"]),
-    ("mitsuba_render.py", &["mitsuba_renders.json"]),
-    ("mitsuba_full_light.py", &["mitsuba_full_light.json"]),
-    ("flip_reference.py", &["flip.json"]),
-];
+/// One reference generator as `reference_keys.py --json` reports it.
+#[derive(Clone, Debug, Deserialize)]
+pub struct Generator {
+    /// The script in `python-checks/`.
+    pub generator: String,
+    /// The kind of reference (the tool that computes it).
+    pub kind: String,
+    /// The files it writes, by name.
+    pub outputs: Vec<String>,
+    /// Why its committed output is not current; `None` when it is.
+    pub state: Option<String>,
+}
+
+#[derive(Deserialize)]
+struct States {
+    generators: Vec<Generator>,
+}
 
 /// Why the regeneration could not be judged.
 #[derive(Debug, thiserror::Error)]
@@ -51,32 +67,68 @@ fn committed(checkout: &Checkout, name: &str) -> std::path::PathBuf {
     }
 }
 
-/// Regenerates every reference into `fresh` with `python` and checks each
-/// against the checkout's committed copy.
+const KEYS: &str = "python-checks/reference_keys.py";
+
+/// Each generator and the state of its committed output, in the order the
+/// references are regenerated.
+pub fn states(python: &Path, checkout: &Checkout) -> Result<Vec<Generator>, RegenerateError> {
+    let mut command = Command::new(python);
+    command
+        .arg(checkout.python_checks().join("reference_keys.py"))
+        .arg("--json");
+    let said = run_tool(command, Task::Script(KEYS.to_owned()))?;
+    let states: States =
+        serde_json::from_str(&said).map_err(|error| RegenerateError::Undecided {
+            file: "validation/reference/keys.json".to_owned(),
+            status: format!("{KEYS} --json printed no states"),
+            stderr: error.to_string(),
+        })?;
+    Ok(states.generators)
+}
+
+/// Puts every reference into `fresh`: the current ones as committed, the
+/// others regenerated (through `cache`) and checked against the
+/// checkout's committed copy.
 pub fn regenerate(
     python: &Path,
     checkout: &Checkout,
     fresh: &Path,
+    cache: &Path,
 ) -> Result<Check, RegenerateError> {
     let scripts = checkout.python_checks();
     let mut check = Check::new(
         "references.regenerated",
-        "Every committed reference regenerates with the pinned tools",
-        "python-checks/ generators in the pinned environment",
+        "Every committed reference is current by its key, or regenerates with the pinned tools",
+        "python-checks/reference_keys.py (the key: generator, inputs, pinned tools) and the \
+         python-checks/ generators in the pinned environment",
         "the rule of python-checks/reproduce.py: byte-identical, but for the files written \
          through colour-science's BLAS products, whose numbers may move within its stated \
          tolerance",
     );
-    for (script, outputs) in GENERATORS {
-        let mut command = Command::new(python);
-        command.arg("-W").arg("ignore").arg(scripts.join(script));
-        for name in outputs {
-            command.arg(fresh.join(name));
+    let mut regenerated = Vec::new();
+    for generator in states(python, checkout)? {
+        let script = &generator.generator;
+        if let Some(why) = &generator.state {
+            let mut command = Command::new(python);
+            command
+                .arg("-W")
+                .arg("ignore")
+                .arg(scripts.join("reference_keys.py"))
+                .arg("--fresh")
+                .arg(script)
+                .arg(fresh)
+                .arg("--cache")
+                .arg(cache);
+            run_tool(command, Task::Script(format!("python-checks/{script}")))?;
+            regenerated.push(format!("{script} ({why})"));
         }
-        run_tool(command, Task::Script(format!("python-checks/{script}")))?;
-        for name in outputs {
+        for name in &generator.outputs {
             check.cases += 1;
             let old = committed(checkout, name);
+            if generator.state.is_none() {
+                copy_committed(&old, &fresh.join(name), &mut check);
+                continue;
+            }
             // Both must exist: two missing files are not a reproduction.
             if !(old.is_file() && fresh.join(name).is_file()) {
                 check.fail(format!("{} or its regeneration is missing", old.display()));
@@ -90,7 +142,20 @@ pub fn regenerate(
             }
         }
     }
+    let count = regenerated.len() as f64;
+    check.measure(
+        "references regenerated, their key having changed",
+        count,
+        &regenerated.join("; "),
+    );
     Ok(check)
+}
+
+/// The committed `old`, current by its key, copied to `new` for the checks.
+fn copy_committed(old: &Path, new: &Path, check: &mut Check) {
+    if let Err(error) = std::fs::copy(old, new) {
+        check.fail(format!("{} could not be read: {error}", old.display()));
+    }
 }
 
 /// `None` when `new` reproduces `old`; else where they differ, as
@@ -130,15 +195,42 @@ fn reproduces(
 mod tests {
     use super::*;
 
+    #[derive(Deserialize)]
+    struct Recorded {
+        generators: Vec<Entry>,
+    }
+
+    #[derive(Deserialize)]
+    struct Entry {
+        generator: String,
+        outputs: std::collections::BTreeMap<String, String>,
+    }
+
     #[test]
-    fn every_regenerated_file_has_a_committed_copy() {
+    fn every_keyed_reference_has_its_generator_and_a_committed_copy() {
         let checkout = Checkout::at_build_time();
-        for (script, outputs) in GENERATORS {
+        let keys = std::fs::read_to_string(checkout.reference_dir().join("keys.json")).unwrap();
+        let recorded: Recorded = serde_json::from_str(&keys).unwrap();
+        let mut keyed = std::collections::BTreeSet::new();
+        for entry in recorded.generators {
+            let script = &entry.generator;
             assert!(checkout.python_checks().join(script).is_file(), "{script}");
-            for name in outputs {
+            for name in entry.outputs.keys() {
                 let old = committed(&checkout, name);
                 assert!(old.is_file(), "{}", old.display());
+                keyed.insert(name.clone());
             }
         }
+        // And every reference is keyed: none is left out of the regeneration.
+        for file in std::fs::read_dir(checkout.reference_dir()).unwrap() {
+            let name = file.unwrap().file_name().into_string().unwrap();
+            if name.ends_with(".json") && name != "keys.json" {
+                assert!(keyed.contains(&name), "{name} has no key in keys.json");
+            }
+        }
+        assert!(
+            keyed.contains("cie_tables.rs"),
+            "the CIE tables are keyed too"
+        );
     }
 }
