@@ -1,8 +1,10 @@
 //! Rules c and d over one crate's import arrows: a circle of files (a
 //! strongly connected component of more than one file, found by Tarjan's
-//! algorithm), and an upward import (a file importing from the file of one
-//! of its ancestor modules: the crate root or a parent module file; the
-//! parent is the floor above its children).
+//! algorithm), and an upward import (a file importing a name defined in
+//! the file of one of its ancestor modules: the crate root or a parent
+//! module file; the parent is the floor above its children). An arrow
+//! already ends at the defining file, so a name an ancestor only
+//! re-exports is no upward import.
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::PathBuf;

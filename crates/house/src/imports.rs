@@ -1,13 +1,16 @@
 //! The import arrows between the files of one crate.
 //!
-//! An arrow runs from a file to the file that defines the module a path
-//! names: `use crate::a::b::X`, `use super::X`, `use self::a::X`, `use
-//! child::X` and `pub use child::X` (a re-export is an import too), and the
-//! same paths written inline (`crate::needs::MAX_RAYS`, also inside macro
-//! calls such as `write!`). A path is resolved to the deepest module it
-//! names, so `crate::scene::Scene` points at `scene.rs` or `scene/mod.rs`
-//! and `crate::Ui` at the crate root. `mod child;` is no arrow: declaring a
-//! child is not using it. Code under `#[cfg(test)]` draws no arrows.
+//! An arrow runs from a file to the file that defines the name a path
+//! names (`resolve` says how a path is followed): `use crate::a::b::X`,
+//! `use super::X`, `use self::a::X`, `use child::X` and `pub use child::X`
+//! (a re-export is an import too), and the same paths written inline
+//! (`crate::needs::MAX_RAYS`, also inside macro calls such as `write!`).
+//! So `use crate::Real`, where the crate root only re-exports `real::Real`,
+//! points at `real.rs`, and `crate::Ui`, defined in the root, at the root; a
+//! path to a module itself (`use crate::fresnel;`) points at its file.
+//! `mod child;` is no arrow: declaring a child is not using it, nor is
+//! `$crate::X` in a `macro_rules!` body. Code under `#[cfg(test)]` draws
+//! no arrows.
 
 use std::path::{Path, PathBuf};
 
@@ -16,6 +19,8 @@ use syn::spanned::Spanned;
 use syn::visit::{self, Visit};
 
 use crate::cfg;
+use crate::resolve::{Resolved, Resolver};
+use crate::scope::unraw;
 use crate::tree::CrateTree;
 
 /// One import arrow between two files of a crate.
@@ -28,11 +33,13 @@ pub(crate) struct Arrow {
     pub written: String,
 }
 
-/// The arrows out of `file`, whose own module is `module`.
-pub(crate) fn arrows(tree: &CrateTree, file: &Path, ast: &syn::File) -> Vec<Arrow> {
+/// The arrows out of `file`, which `resolver` reads in its crate.
+pub(crate) fn arrows(resolver: &Resolver, file: &Path, ast: &syn::File) -> Vec<Arrow> {
+    let tree = resolver.tree;
     let module = tree.files[file].clone();
     let mut visitor = Arrows {
         tree,
+        resolver,
         file,
         modules: vec![module],
         found: Vec::new(),
@@ -43,6 +50,7 @@ pub(crate) fn arrows(tree: &CrateTree, file: &Path, ast: &syn::File) -> Vec<Arro
 
 struct Arrows<'a> {
     tree: &'a CrateTree,
+    resolver: &'a Resolver<'a>,
     file: &'a Path,
     /// The module stack: the file's own module, then inline modules inside it.
     modules: Vec<Vec<String>>,
@@ -56,15 +64,32 @@ impl Arrows<'_> {
             .expect("the file's own module is never popped")
     }
 
-    /// Records an arrow for `segments` if they name a module of this crate.
-    fn path(&mut self, segments: &[String], line: usize) {
-        let Some(absolute) = self.absolute(segments) else {
+    /// Records an arrow for `segments` if they lead to a module of this
+    /// crate: to the file defining the name they end in, or to the file of
+    /// the module they name. A path written outside a `use` counts only
+    /// when it starts at `crate`, `self`, `super` or a child module: one
+    /// that starts at a name the file imports repeats that import's arrow.
+    fn path(&mut self, segments: &[String], line: usize, used: bool) {
+        let here = self.here();
+        let anchored = match segments.first().map(String::as_str) {
+            Some("crate" | "self" | "super") => true,
+            Some(first) => {
+                let child = [here, &[first.to_string()]].concat();
+                self.tree.modules.contains_key(&child)
+            }
+            None => false,
+        };
+        if !used && !anchored {
+            return;
+        }
+        let Some(module) = self
+            .resolver
+            .resolve(here, segments)
+            .and_then(Resolved::module)
+        else {
             return;
         };
-        let Some(to) = (0..=absolute.len())
-            .rev()
-            .find_map(|n| self.tree.modules.get(&absolute[..n]))
-        else {
+        let Some(to) = self.tree.modules.get(&module) else {
             return;
         };
         if to.test || to.file == self.file {
@@ -78,35 +103,9 @@ impl Arrows<'_> {
         });
     }
 
-    /// The module path from the crate root that `segments` start from, with
-    /// the rest appended; `None` for another crate or a local name.
-    fn absolute(&self, segments: &[String]) -> Option<Vec<String>> {
-        let here = self.here();
-        let first = segments.first()?;
-        let mut base: Vec<String> = match first.as_str() {
-            "crate" => Vec::new(),
-            "self" => here.to_vec(),
-            "super" => {
-                let ups = segments.iter().take_while(|s| *s == "super").count();
-                let kept = here.len().checked_sub(ups)?;
-                let mut base = here[..kept].to_vec();
-                base.extend(segments[ups..].iter().cloned());
-                return Some(base);
-            }
-            _ => {
-                let mut child = here.to_vec();
-                child.push(first.clone());
-                if !self.tree.modules.contains_key(&child) {
-                    return None;
-                }
-                return Some([here, segments].concat());
-            }
-        };
-        base.extend(segments[1..].iter().cloned());
-        Some(base)
-    }
-
     /// Finds `crate::a::b`, `super::a`, `self::a` in a macro's tokens.
+    /// `$crate::a` in a `macro_rules!` body is no arrow: it is read where
+    /// the macro is called, not where it is defined.
     fn tokens(&mut self, tokens: TokenStream) {
         let trees: Vec<TokenTree> = tokens.into_iter().collect();
         let mut i = 0;
@@ -114,7 +113,8 @@ impl Arrows<'_> {
             match &trees[i] {
                 TokenTree::Group(group) => self.tokens(group.stream()),
                 TokenTree::Ident(ident)
-                    if ["crate", "super", "self"].contains(&&*ident.to_string()) =>
+                    if ["crate", "super", "self"].contains(&&*ident.to_string())
+                        && !follows_dollar(&trees, i) =>
                 {
                     let line = ident.span().start().line;
                     let mut segments = vec![ident.to_string()];
@@ -131,7 +131,7 @@ impl Arrows<'_> {
                         i += 3;
                     }
                     if segments.len() > 1 {
-                        self.path(&segments, line);
+                        self.path(&segments, line, false);
                     }
                 }
                 _ => {}
@@ -141,17 +141,25 @@ impl Arrows<'_> {
     }
 }
 
+/// Whether the token at `i` comes right after a `$` (`$crate`).
+fn follows_dollar(trees: &[TokenTree], i: usize) -> bool {
+    i.checked_sub(1)
+        .and_then(|before| trees.get(before))
+        .is_some_and(|t| matches!(t, TokenTree::Punct(p) if p.as_char() == '$'))
+}
+
 /// Every full path a `use` tree names; a glob names its module.
 fn use_paths(tree: &syn::UseTree, prefix: &mut Vec<String>, out: &mut Vec<Vec<String>>) {
     match tree {
         syn::UseTree::Path(p) => {
-            prefix.push(p.ident.to_string());
+            prefix.push(unraw(&p.ident));
             use_paths(&p.tree, prefix, out);
             prefix.pop();
         }
         syn::UseTree::Name(n) if n.ident == "self" => out.push(prefix.clone()),
-        syn::UseTree::Name(n) => out.push([prefix.as_slice(), &[n.ident.to_string()]].concat()),
-        syn::UseTree::Rename(r) => out.push([prefix.as_slice(), &[r.ident.to_string()]].concat()),
+        syn::UseTree::Name(n) => out.push([prefix.as_slice(), &[unraw(&n.ident)]].concat()),
+        syn::UseTree::Rename(r) if r.ident == "self" => out.push(prefix.clone()),
+        syn::UseTree::Rename(r) => out.push([prefix.as_slice(), &[unraw(&r.ident)]].concat()),
         syn::UseTree::Glob(_) => out.push(prefix.clone()),
         syn::UseTree::Group(g) => g.items.iter().for_each(|t| use_paths(t, prefix, out)),
     }
@@ -177,7 +185,7 @@ impl<'ast> Visit<'ast> for Arrows<'_> {
         use_paths(&item.tree, &mut Vec::new(), &mut paths);
         let line = item.use_token.span().start().line;
         for path in paths {
-            self.path(&path, line);
+            self.path(&path, line, true);
         }
     }
 
@@ -202,7 +210,7 @@ impl<'ast> Visit<'ast> for Arrows<'_> {
     fn visit_path(&mut self, path: &'ast syn::Path) {
         if path.leading_colon.is_none() && path.segments.len() > 1 {
             let segments: Vec<String> = path.segments.iter().map(|s| s.ident.to_string()).collect();
-            self.path(&segments, path.span().start().line);
+            self.path(&segments, path.span().start().line, false);
         }
         visit::visit_path(self, path);
     }

@@ -18,7 +18,7 @@ pub enum Rule {
     LongFunction,
     /// Files of one crate that import each other round a circle.
     ImportCircle,
-    /// A file importing from one of its ancestor module files.
+    /// A file importing a name defined in one of its ancestor module files.
     UpwardImport,
     /// A library error text that names a command-line flag (`--name`).
     FlagInLibraryError,

@@ -9,6 +9,7 @@ use crate::{offenders, Offender, Rule};
 
 mod clean;
 mod planted;
+mod resolved;
 
 /// A temporary workspace holding one package at its root.
 struct Tree(tempfile::TempDir);
