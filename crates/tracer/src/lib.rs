@@ -47,9 +47,7 @@
 //! | [`render`] | the image, in parallel, identical for any thread count |
 //! | [`sampler`] | the camera paths' numbers: Owen-scrambled Sobol pairs, each pixel's samples stratified in every pair of dimensions |
 //! | [`rng`] | PCG32 streams, one per photon |
-//! | [`json`] | JSON read with every object's keys given once: the one reading of scene files, batch lines and plans |
-//! | [`output`] | PNG (sRGB, stated tone mapping) and PFM, the destination checked before the render, the pair written atomically |
-//! | [`interrupt`] | SIGINT and SIGTERM while writing: temporaries removed, a commit finished first |
+//! | [`output`] | PNG (sRGB, stated tone mapping) and PFM, the destination checked before the render, the pair written atomically (through `safe_io`) |
 //!
 //! # Precision
 //!
@@ -79,9 +77,7 @@ pub mod environment;
 pub mod filter;
 pub mod geometry;
 pub mod integrator;
-pub mod interrupt;
 pub mod job;
-pub mod json;
 pub mod needs;
 pub mod output;
 pub mod render;

@@ -3,6 +3,7 @@
 
 use std::path::Path;
 
+use safe_io::WriteError;
 use techniques::bump::{FieldError, MAX_SLOPE, MIN_PERIOD};
 use tracer::output::OutputError;
 use tracer::scene::error::{ImageProblem, JsonType, SizeRule};
@@ -166,17 +167,19 @@ fn json_type_hu(t: JsonType) -> &'static str {
 /// An image that could not be written: the file, and why.
 pub fn output_hu(error: &OutputError) -> String {
     match error {
-        OutputError::Io { path, source } => format!("a(z) {path} nem írható: {source}"),
-        OutputError::NoDirectory { path, dir } => {
+        OutputError::Write(WriteError::Io { path, source }) => {
+            format!("a(z) {path} nem írható: {source}")
+        }
+        OutputError::Write(WriteError::NoDirectory { path, dir }) => {
             format!("a(z) {path} nem írható: a(z) {dir} könyvtár nem létezik")
         }
-        OutputError::Unwritable { dir, source } => {
+        OutputError::Write(WriteError::Unwritable { dir, source }) => {
             format!("a(z) {dir} könyvtárba nem írható fájl: {source}")
         }
-        OutputError::NotARegularFile { path } => {
+        OutputError::Write(WriteError::NotARegularFile { path }) => {
             format!("a(z) {path} létezik, és nem közönséges fájl; nem íródik felül")
         }
-        OutputError::IsAnInput { path, input } => {
+        OutputError::Write(WriteError::IsAnInput { path, input }) => {
             format!("a(z) {path} azonos a beolvasott {input} fájllal; más kimenetet kell megadni")
         }
         OutputError::PfmIsPng { path } => {

@@ -7,7 +7,7 @@
 use serde_json::error::Category;
 use serde_json::Value;
 
-use crate::json::{without_position, UniqueKeys};
+use safe_io::json::{without_position, UniqueKeys};
 
 use super::faults::{self, Fault};
 use super::schema::SceneFile;
