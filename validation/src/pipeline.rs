@@ -14,17 +14,17 @@
 //! ```
 //!
 //! Every file is written to a temporary name beside it and renamed into
-//! place (`tracer::output::write_atomically`), so an interrupted run never
+//! place (`safe_io::write_atomically`), so an interrupted run never
 //! leaves a partial report. The destinations are checked before any check
 //! runs ([`check_outputs`]), the figures are written before the report, and
 //! `report.json` and `report.html` are renamed into place as one pair
-//! (`tracer::output::write_all_atomically`): never one without the other.
+//! (`safe_io::write_all_atomically`): never one without the other.
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-use tracer::output::{check_destination, writable_directory, write_all_atomically};
-use tracer::output::{write_atomically, OutputError};
+use safe_io::{check_destination, writable_directory, write_all_atomically, write_atomically};
+use tracer::output::OutputError;
 
 use crate::check::Check;
 use crate::checkout::Checkout;
@@ -265,7 +265,8 @@ pub fn run(options: &Options, mut progress: impl FnMut(Step)) -> Result<Outcome,
     write_all_atomically(&[
         (&out.join("report.json"), json.as_bytes()),
         (&out.join("report.html"), html.as_bytes()),
-    ])?;
+    ])
+    .map_err(OutputError::from)?;
     Ok(Outcome {
         report,
         out,
@@ -285,9 +286,9 @@ pub fn check_outputs(out: &Path) -> Result<(), PipelineError> {
     }
     let figures = out.join("figures");
     create_dir(&figures)?;
-    writable_directory(&figures)?;
+    writable_directory(&figures).map_err(OutputError::from)?;
     for name in ["report.json", "report.html"] {
-        check_destination(&out.join(name), &[])?;
+        check_destination(&out.join(name), &[]).map_err(OutputError::from)?;
     }
     Ok(())
 }
@@ -301,7 +302,7 @@ fn create_dir(path: &Path) -> Result<(), PipelineError> {
 
 /// Writes `dir/name` atomically.
 fn write(dir: &Path, name: &str, contents: &[u8]) -> Result<(), OutputError> {
-    write_atomically(&dir.join(name), contents)
+    Ok(write_atomically(&dir.join(name), contents)?)
 }
 
 /// The environment's interpreter, the environment set up first if needed.

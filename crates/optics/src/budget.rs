@@ -360,10 +360,13 @@ fn verify(
     threads: Option<usize>,
 ) -> error::Result<measure::Errors> {
     std::fs::create_dir_all(&flags.truth_cache).map_err(|source| {
-        ErrorKind::Output(tracer::output::OutputError::Io {
-            path: flags.truth_cache.display().to_string(),
-            source,
-        })
+        ErrorKind::Output(
+            safe_io::WriteError::Io {
+                path: flags.truth_cache.display().to_string(),
+                source,
+            }
+            .into(),
+        )
     })?;
     let request = truth::Request {
         scene_file: scene,

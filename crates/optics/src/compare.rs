@@ -16,8 +16,9 @@ pub(crate) mod user_image;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
+use safe_io::check_destination;
 use serde::Serialize;
-use tracer::output::{check_destination, to_srgb8, write_png};
+use tracer::output::{to_srgb8, write_png};
 use tracer::scene::IntegratorKind;
 use validation::compare::map::difference_map;
 use validation::compare::regions::{summarise, Summary};
@@ -94,7 +95,8 @@ pub fn run(args: &CompareArgs, ui: &Ui) -> error::Result<ExitCode> {
     if let Some(diff) = &args.diff {
         let mut inputs = vec![args.image.as_path(), args.scene.as_path()];
         inputs.extend(args.variance.as_deref());
-        check_destination(diff, &inputs).map_err(|e| ErrorKind::Compare(CompareError::Diff(e)))?;
+        check_destination(diff, &inputs)
+            .map_err(|e| ErrorKind::Compare(CompareError::Diff(e.into())))?;
     }
     crate::render::warn_if_long(&job, ui.lang);
     let reference = reference::render(job, args.reference_samples)?;

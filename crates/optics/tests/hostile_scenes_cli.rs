@@ -127,7 +127,7 @@ fn a_key_given_twice_is_refused_naming_it() {
         assert_eq!(error["field"], field, "{error}");
         let message = error["message"].as_str().unwrap();
         assert!(
-            message.ends_with(&format!("{field}: {}", tracer::json::TWICE)),
+            message.ends_with(&format!("{field}: {}", safe_io::json::TWICE)),
             "{message}"
         );
     }

@@ -1,7 +1,7 @@
 //! SIGINT and SIGTERM during `optics render`'s write, through the binary:
 //! no temporary left, and the PNG/PFM pair never mixed. The signal is sent
 //! at a known point, not a guessed moment: the writer's test hook
-//! (`TRACER_TEST_PAUSE`, see `tracer::interrupt`) pauses it there and says
+//! (`TRACER_TEST_PAUSE`, see `safe_io::interrupt`) pauses it there and says
 //! so on stderr, and the signal's handler reports the phase it arrived in,
 //! which each test asserts.
 #![cfg(unix)]

@@ -432,7 +432,7 @@ fn bad_job_lines_are_refused_by_field_with_nothing_written() {
     std::fs::write(&file, lines[2].to_string().replacen('{', &twice, 1) + "\n").unwrap();
     let out = job_command(&file, "0", &results).output().unwrap();
     let message = refused(&out, "jobs.line", "width");
-    assert!(message.contains(tracer::json::TWICE), "{message}");
+    assert!(message.contains(safe_io::json::TWICE), "{message}");
     // A line of JSON that is not an object is refused as such, not by
     // the fields serde would count in a list.
     for not_an_object in ["[]", "[1, 2]", "3", "null", "\"job\""] {

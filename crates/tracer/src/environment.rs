@@ -11,7 +11,7 @@
 //! |---|---|---|
 //! | [`Environment::DirectionColour`] | `scale · (d + 1) / 2` along unit `d` | procedural, exact: for tests |
 //! | [`Environment::LatLong`] | a `2h × h` image, `u` across, `v` down | the slides' latitude–longitude map |
-//! | [`Environment::Cube`] | six square faces of one side, OpenGL's order, from six images or one cross ([`CROSS`]) | the slides' cube map; also what [`capture_cube`] makes |
+//! | [`Environment::Cube`] | six square faces of one side, OpenGL's order, from six images or one cross ([`CROSS`]) | the slides' cube map; also what `capture::capture_cube` makes |
 //!
 //! **Texels.** Row 0 of an image is `v = 0` and column 0 is `u = 0` (the
 //! first row of a texture upload is `t = 0` in OpenGL). Texel `(i, j)` of
@@ -28,16 +28,10 @@
 
 use std::fmt;
 
-use glam::{DVec3, Vec3};
-use rayon::prelude::*;
+use glam::Vec3;
 use techniques::envmap::cube::{CubeTexel, Face};
 use techniques::envmap::lat_long::LatLong;
 use techniques::envmap::Direction;
-
-use crate::geometry::Ray;
-use crate::integrator::{Machinery, RayCounts, Tracer};
-use crate::sampler::Sampler;
-use crate::scene::{Scene, Settings};
 
 /// An image of linear radiance, W/(sr·m²) per channel, rows top (`v = 0`)
 /// to bottom.
@@ -124,7 +118,7 @@ pub struct CubeMap {
 impl CubeMap {
     /// The cube map of `faces`, in [`Face::ALL`]'s order, each
     /// `side × side`: checked once, where the faces enter (the scene
-    /// reader, for files; [`capture_cube`], which makes them so), and
+    /// reader, for files; `capture::capture_cube`, which makes them so), and
     /// trusted by every lookup.
     pub(crate) fn of_side(side: u32, faces: Vec<Texels>) -> Self {
         CubeMap { side, faces }
@@ -237,44 +231,6 @@ impl Environment {
     }
 }
 
-/// The slides' step 1 for a cube map: the radiance `scene` sends towards
-/// `centre` from every direction, traced from `centre` by `settings`'
-/// integrator, one ray through each texel's centre of six `side × side`
-/// faces. The caller removes the object the map is for: the slides'
-/// object never sees itself. Texels are traced in parallel, each with its
-/// own sample (`seed`, face and texel), so the map does not depend
-/// on the thread count.
-pub fn capture_cube(scene: &Scene, settings: Settings, centre: Vec3, side: u32) -> CubeMap {
-    let tracer = Tracer::new(scene, settings, Machinery::everything(scene, &settings));
-    let n = side as usize;
-    let faces = Face::ALL
-        .iter()
-        .enumerate()
-        .map(|(f, &face)| {
-            let texels = (0..n * n)
-                .into_par_iter()
-                .map(|k| {
-                    let (i, j) = ((k % n) as f64, (k / n) as f64);
-                    let (u, v) = ((i + 0.5) / n as f64, (j + 0.5) / n as f64);
-                    // Texel centres lie inside the unit square.
-                    let texel = CubeTexel::from_uv(face, u, v).expect("a texel centre");
-                    let direction: DVec3 = texel.direction().get();
-                    let ray = Ray::new(centre, direction.as_vec3());
-                    let mut sample =
-                        Sampler::for_pixel(settings.seed, (f * n * n + k) as u64).sample(0);
-                    tracer.radiance(&ray, &mut sample, &mut RayCounts::default())
-                })
-                .collect();
-            Texels {
-                width: side,
-                height: side,
-                texels,
-            }
-        })
-        .collect();
-    CubeMap::of_side(side, faces)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -342,38 +298,5 @@ mod tests {
         assert!(Texels::new(2, 2, vec![Vec3::ZERO; 3]).is_none());
         assert!(Texels::new(0, 2, Vec::new()).is_none());
         assert!(Texels::new(2, 1, vec![Vec3::ZERO; 2]).is_some());
-    }
-
-    /// A cube map captured under the direction-colour sky looks up, in
-    /// every direction, what the sky sends there: each face is where
-    /// `techniques::envmap::cube` looks (a face flipped or swapped would
-    /// be wrong by up to 1). Within 0.016: inside a face the bilinear
-    /// filter errs by about (π/2 / 32)² / 8, 3e-4; within half a texel of
-    /// a face's edge it clamps, holding the edge texel's value over half a
-    /// texel (at most 1/32 rad) of a sky whose slope is at most 1/2 per
-    /// radian. 5.8e-3 measured.
-    #[test]
-    fn a_captured_cube_map_looks_up_what_it_captured() {
-        let scene = crate::scene::parse(
-            r#"{ "version": 1, "image": { "width": 1, "height": 1 },
-                 "camera": { "type": "course_pinhole" }, "materials": {}, "objects": [],
-                 "environment": { "type": "direction_colour" } }"#,
-        )
-        .unwrap();
-        let sky = scene.environment.as_deref().unwrap().clone();
-        let map = Environment::Cube {
-            map: capture_cube(&scene, scene.settings, Vec3::new(3.0, -2.0, 1.0), 32),
-            scale: 1.0,
-        };
-        let mut worst = 0.0_f32;
-        for k in 0..2000 {
-            // A spiral over the sphere of directions.
-            let z = 1.0 - 2.0 * (k as f32 + 0.5) / 2000.0;
-            let phi = k as f32 * 2.399_963;
-            let r = (1.0 - z * z).sqrt();
-            let d = Vec3::new(r * phi.cos(), r * phi.sin(), z);
-            worst = worst.max((map.radiance(d) - sky.radiance(d)).abs().max_element());
-        }
-        assert!(worst < 0.016, "{worst}");
     }
 }

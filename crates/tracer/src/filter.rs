@@ -13,8 +13,8 @@
 //! they were before there was a filter.
 
 use crate::camera::PIXEL_CENTRE;
+use crate::kinds::PixelFilter;
 use crate::sampler::Sample;
-use crate::scene::PixelFilter;
 
 /// Where `sample`'s primary ray passes under `filter`, each coordinate in
 /// `[0, 1)` from the pixel's top-left corner: the sample's next pair, or

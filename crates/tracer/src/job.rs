@@ -18,7 +18,7 @@ use crate::integrator::{Machinery, Tracer};
 use crate::needs::{self, Needs};
 use crate::output::{Destination, OutputError};
 use crate::render::{self, Rendered};
-use crate::scene::validate::image_size;
+use crate::scene::values::image_size;
 use crate::scene::{
     self, ErrorKind, IntegratorKind, Material, Precision, RenderSpec, Scene, SceneError, Settings,
 };
@@ -184,7 +184,9 @@ impl RenderJob {
                 render::render(&tracer, threads, progress)?
             }
         };
-        render::check_finite(&rendered.image)?;
+        if let Some((x, y)) = rendered.image.first_not_finite() {
+            return Err(RenderError::NotFinite { x, y });
+        }
         Ok(rendered)
     }
 

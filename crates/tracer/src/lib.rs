@@ -32,11 +32,13 @@
 //! | module | what |
 //! |---|---|
 //! | [`job`] | the way in: a scene with its settings settled once, rendered and written |
+//! | [`kinds`] | the settings' vocabulary: integrator, Fresnel law, glass shortcut, pixel filter, ray offset, precision, the counts' limits |
 //! | [`scene`] | the JSON scene schema, parsing and validation (`docs/scene-schema.md`), the settings |
 //! | [`geometry`] | rays, spheres, two-sided planes, the kaleidoscope's mirror tube |
 //! | [`bump`] | an object's bump map: the hit's shading normal bent, its geometry untouched |
 //! | [`camera`] | the course's pinhole and the look-at camera unprojected through the inverse view-projection |
-//! | [`environment`] | what rays that leave the scene receive: a procedural sky, a lat-long or cube map looked up through `techniques::envmap`, and the slides' capture of a cube map by tracing |
+//! | [`environment`] | what rays that leave the scene receive: a procedural sky, a lat-long or cube map looked up through `techniques::envmap`, |
+//! | [`capture`] | the slides' capture of a cube map by tracing |
 //! | [`filter`] | the pixel filter: stratified rays over the pixel (box) or its centre |
 //! | [`spawn`] | where secondary rays start: the hit's error bound, or the course's fixed epsilon |
 //! | [`tier`] | the precision tier, `f32` or `f64`: the scalar and vector the geometry and the deterministic integrators are written over |
@@ -47,9 +49,7 @@
 //! | [`render`] | the image, in parallel, identical for any thread count |
 //! | [`sampler`] | the camera paths' numbers: Owen-scrambled Sobol pairs, each pixel's samples stratified in every pair of dimensions |
 //! | [`rng`] | PCG32 streams, one per photon |
-//! | [`json`] | JSON read with every object's keys given once: the one reading of scene files, batch lines and plans |
-//! | [`output`] | PNG (sRGB, stated tone mapping) and PFM, the destination checked before the render, the pair written atomically |
-//! | [`interrupt`] | SIGINT and SIGTERM while writing: temporaries removed, a commit finished first |
+//! | [`output`] | PNG (sRGB, stated tone mapping) and PFM, the destination checked before the render, the pair written atomically (through `safe_io`) |
 //!
 //! # Precision
 //!
@@ -62,7 +62,7 @@
 //! `f64` and rounded once; pixel means are summed in `f64`.
 //!
 //! `local` and `whitted` also compute in `f64` (`render.precision`,
-//! [`tier::Precision`]): the geometry, the camera ray, the direct light and
+//! [`kinds::Precision`]): the geometry, the camera ray, the direct light and
 //! the specular lobes are written once over [`tier::Vector`] and call the
 //! laws at the same tier; the scene, validated in `f32`, is widened once
 //! per render, and the image is `f32` either way. `path`, `photon` and
@@ -74,14 +74,14 @@
 
 pub mod bump;
 pub mod camera;
+pub mod capture;
 pub mod chains;
 pub mod environment;
 pub mod filter;
 pub mod geometry;
 pub mod integrator;
-pub mod interrupt;
 pub mod job;
-pub mod json;
+pub mod kinds;
 pub mod needs;
 pub mod output;
 pub mod render;

@@ -19,6 +19,8 @@ use crate::integrator::Machinery;
 use crate::scene::{IntegratorKind, Light, Material, PixelFilter, Scene, Settings};
 use crate::trap::Trap;
 
+pub use crate::kinds::{MAX_RAYS, WARN_RAYS};
+
 /// How deep specular recursion can go in a scene.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]
@@ -254,15 +256,6 @@ impl Needs {
         }
     }
 }
-
-/// The most rays a render may cast without the caller allowing more
-/// (`optics render --allow-expensive`): 10¹², hours at the tracer's
-/// 10⁷–10⁸ rays per second.
-pub const MAX_RAYS: f64 = 1e12;
-
-/// Past this many rays a render is announced as long before it starts:
-/// 10¹⁰, minutes.
-pub const WARN_RAYS: f64 = 1e10;
 
 impl Needs {
     /// An upper estimate of the rays a render casts, before it starts, from

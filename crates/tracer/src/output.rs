@@ -10,17 +10,12 @@
 //! renamed over the destination only once complete, so an interrupted or
 //! failed write never leaves a partial image; the PNG and its PFM are
 //! renamed as one set, so they are never of two renders
-//! ([`write_all_atomically`], and [`crate::interrupt`] for signals). The
-//! destination is checked before the render ([`Destination::new`],
-//! [`check_destination`]).
-
-mod atomic;
-mod check;
-
-pub use atomic::{write_all_atomically, write_atomically};
-pub use check::{check_destination, writable_directory};
+//! (`safe_io::write_all_atomically`, and `safe_io::interrupt` for
+//! signals). The destination is checked before the render
+//! ([`Destination::new`], `safe_io::check_destination`).
 
 use image::ImageEncoder;
+use safe_io::{check_destination, write_all_atomically, write_atomically, WriteError};
 use std::path::{Path, PathBuf};
 
 use crate::render::Image;
@@ -28,45 +23,9 @@ use crate::render::Image;
 /// Why an image could not be written.
 #[derive(Debug, thiserror::Error)]
 pub enum OutputError {
-    /// An I/O failure, with the file it concerns.
-    #[error("cannot write {path}: {source}")]
-    Io {
-        /// The destination.
-        path: String,
-        /// The reason.
-        source: std::io::Error,
-    },
-    /// The destination's directory does not exist.
-    #[error("cannot write {path}: the directory {dir} does not exist")]
-    NoDirectory {
-        /// The destination.
-        path: String,
-        /// Its directory.
-        dir: String,
-    },
-    /// A directory in which no file can be created.
-    #[error("cannot write into the directory {dir}: {source}")]
-    Unwritable {
-        /// The directory.
-        dir: String,
-        /// The reason.
-        source: std::io::Error,
-    },
-    /// A destination that exists and is not a regular file (a directory,
-    /// FIFO, device, socket or symbolic link), which writing would replace.
-    #[error("{path} exists and is not a regular file; it is not replaced")]
-    NotARegularFile {
-        /// The destination.
-        path: String,
-    },
-    /// A destination that is one of the files being read.
-    #[error("{path} is {input}, which is being read; give another output")]
-    IsAnInput {
-        /// The destination.
-        path: String,
-        /// The input, as given.
-        input: String,
-    },
+    /// The file could not be written (`safe_io`'s kinds, texts unchanged).
+    #[error(transparent)]
+    Write(#[from] WriteError),
     /// A PNG's name whose PFM would be itself (it ends in `.pfm`).
     #[error("{path}: give the PNG's name (the PFM is written beside it)")]
     PfmIsPng {
@@ -116,21 +75,6 @@ pub fn pfm_bytes(image: &Image) -> Vec<u8> {
     out
 }
 
-/// The directory `path` is written into, which must exist.
-pub(crate) fn directory(path: &Path) -> Result<&Path, OutputError> {
-    let dir = match path.parent() {
-        Some(d) if !d.as_os_str().is_empty() => d,
-        _ => Path::new("."),
-    };
-    if !dir.is_dir() {
-        return Err(OutputError::NoDirectory {
-            path: path.display().to_string(),
-            dir: dir.display().to_string(),
-        });
-    }
-    Ok(dir)
-}
-
 /// Where a render is written: a PNG and, beside it, the PFM of the same
 /// name. Checked when made ([`check_destination`], for each), so that a
 /// destination that cannot or must not be written is refused before the
@@ -174,13 +118,16 @@ impl Destination {
     /// one of each.
     pub fn write(&self, image: &Image) -> Result<(), OutputError> {
         let png = png_bytes(&self.png, image)?;
-        write_all_atomically(&[(&self.png, &png), (&self.pfm, &pfm_bytes(image))])
+        Ok(write_all_atomically(&[
+            (&self.png, &png),
+            (&self.pfm, &pfm_bytes(image)),
+        ])?)
     }
 }
 
 /// Writes the image as an sRGB PNG, atomically.
 pub fn write_png(path: &Path, image: &Image) -> Result<(), OutputError> {
-    write_atomically(path, &png_bytes(path, image)?)
+    Ok(write_atomically(path, &png_bytes(path, image)?)?)
 }
 
 /// The image encoded as an sRGB PNG (`path` names it in an error).
@@ -202,7 +149,7 @@ fn png_bytes(path: &Path, image: &Image) -> Result<Vec<u8>, OutputError> {
 
 /// Writes the image as a PFM, atomically.
 pub fn write_pfm(path: &Path, image: &Image) -> Result<(), OutputError> {
-    write_atomically(path, &pfm_bytes(image))
+    Ok(write_atomically(path, &pfm_bytes(image))?)
 }
 
 /// Reads a PFM written by [`pfm_bytes`] (three channels, little-endian).
@@ -283,18 +230,5 @@ mod tests {
         let first = f32::from_le_bytes(bytes[12..16].try_into().unwrap());
         assert_eq!(first, 3.0);
         assert_eq!(read_pfm(&bytes), Some(image));
-    }
-
-    #[test]
-    fn atomic_write_replaces_the_file_whole_and_leaves_no_temporary() {
-        let dir = tempfile::tempdir().unwrap();
-        let path = dir.path().join("out.pfm");
-        std::fs::write(&path, b"old").unwrap();
-        write_atomically(&path, b"new contents").unwrap();
-        assert_eq!(std::fs::read(&path).unwrap(), b"new contents");
-        assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 1);
-        let missing = dir.path().join("no/such/dir/out.png");
-        let err = write_atomically(&missing, b"x").unwrap_err().to_string();
-        assert!(err.contains("does not exist"), "{err}");
     }
 }

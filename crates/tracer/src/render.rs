@@ -10,7 +10,6 @@ use rayon::prelude::*;
 
 use crate::filter::sample_point;
 use crate::integrator::{Primary, RayCounts, Tracer};
-use crate::job::RenderError;
 use crate::sampler::{Sample, Sampler};
 use crate::tier::Vector;
 
@@ -26,6 +25,16 @@ pub struct Image {
 }
 
 impl Image {
+    /// The first pixel, in row order, whose radiance is not finite: the
+    /// last check before an image is written. The scene's numbers are
+    /// bounded at validation (`scene::bound`); this catches what the bound
+    /// cannot see, a path's gain.
+    pub fn first_not_finite(&self) -> Option<(u32, u32)> {
+        let i = self.pixels.iter().position(|p| !p.is_finite())?;
+        let width = self.width as usize;
+        Some(((i % width) as u32, (i / width) as u32))
+    }
+
     /// The pixel at column `x`, row `y` (0 is the top row).
     pub fn get(&self, x: u32, y: u32) -> Vec3 {
         self.pixels[(y * self.width + x) as usize]
@@ -102,19 +111,6 @@ pub(crate) fn render<V: Vector>(
         rays,
         elapsed,
     })
-}
-
-/// The last check before an image is written: every pixel finite. The
-/// scene's numbers are bounded at validation (`scene::bound`); this catches
-/// what the bound cannot see, a path's gain.
-pub(crate) fn check_finite(image: &Image) -> Result<(), RenderError> {
-    match image.pixels.iter().position(|p| !p.is_finite()) {
-        None => Ok(()),
-        Some(i) => Err(RenderError::NotFinite {
-            x: (i % image.width as usize) as u32,
-            y: (i / image.width as usize) as u32,
-        }),
-    }
 }
 
 /// How many of a pixel's camera rays are made together

@@ -16,7 +16,7 @@ use num_traits::Float;
 use radiometry::Real;
 
 use crate::geometry::Hit;
-use crate::scene::RayOffset;
+use crate::kinds::RayOffset;
 use crate::tier::Vector;
 
 /// The smallest offset used, m: keeps a hit at the origin (error bound 0)

@@ -12,59 +12,10 @@
 //! differ only in the arithmetic. The image stays `f32` radiance (the
 //! film): each pixel's mean is rounded once at the end.
 
-use core::fmt;
 use core::ops::{AddAssign, Div, Index, Mul};
 
 use glam::{DVec3, Vec3};
 use radiometry::{Real, Vector3};
-use serde::{Deserialize, Serialize};
-
-use crate::scene::IntegratorKind;
-
-/// The precision tier a render computes in: a render setting
-/// (`render.precision`, `--precision`), `f32` by default.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Deserialize, Serialize)]
-#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
-pub enum Precision {
-    /// Single precision, `glam::Vec3`: the course's shaders' and every
-    /// integrator's.
-    #[serde(rename = "f32")]
-    #[cfg_attr(
-        feature = "clap",
-        value(name = "f32", help = "Single precision (every integrator)")
-    )]
-    #[default]
-    F32,
-    /// Double precision, `glam::DVec3`: `local` and `whitted` only.
-    #[serde(rename = "f64")]
-    #[cfg_attr(
-        feature = "clap",
-        value(name = "f64", help = "Double precision (local and whitted only)")
-    )]
-    F64,
-}
-
-impl Precision {
-    /// Whether `integrator` computes at this tier: every one in `f32`;
-    /// in `f64` the deterministic `local` and `whitted`, whose steps are
-    /// written over [`Vector`] (`path`, `photon` and the course's shader
-    /// stay `f32`).
-    pub fn serves(self, integrator: IntegratorKind) -> bool {
-        match self {
-            Precision::F32 => true,
-            Precision::F64 => matches!(integrator, IntegratorKind::Local | IntegratorKind::Whitted),
-        }
-    }
-}
-
-impl fmt::Display for Precision {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(match self {
-            Precision::F32 => "f32",
-            Precision::F64 => "f64",
-        })
-    }
-}
 
 /// A tracer's scalar: `f32` or `f64`.
 pub trait Tier: Real {

@@ -123,3 +123,16 @@ fn progress_is_reported_from_the_start() {
     rest.sort();
     assert_eq!(rest, vec![1, 2, 3]);
 }
+
+/// A refusal names the values at fault and what would be accepted, never a
+/// command line's flag: the front end that took the value adds its flag.
+#[test]
+fn the_refusals_name_no_flag() {
+    for kind in [
+        ErrorKind::TooExpensive { rays: 1e13 },
+        ErrorKind::CourseHasNoRefraction,
+    ] {
+        let text = tracer::scene::SceneError::new(".", kind).to_string();
+        assert!(!text.contains("--"), "{text}");
+    }
+}

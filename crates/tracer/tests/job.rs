@@ -268,7 +268,7 @@ fn a_destination_is_refused_before_the_render() {
     let nowhere = dir.path().join("no/such/dir/out.png");
     assert!(matches!(
         Destination::new(&nowhere, &[]),
-        Err(OutputError::NoDirectory { .. })
+        Err(OutputError::Write(safe_io::WriteError::NoDirectory { .. }))
     ));
     let png = dir.path().join("out.png");
     let destination = Destination::new(&png, &[]).unwrap();

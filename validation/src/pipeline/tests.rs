@@ -2,6 +2,7 @@
 //! refused before any check runs, the report's pair never split.
 
 use super::*;
+use safe_io::WriteError;
 
 #[test]
 fn writing_replaces_the_file_whole() {
@@ -53,7 +54,7 @@ fn a_report_html_that_cannot_be_replaced_is_refused_before_any_check() {
     assert!(
         matches!(
             &error,
-            PipelineError::Write(OutputError::NotARegularFile { .. })
+            PipelineError::Write(OutputError::Write(WriteError::NotARegularFile { .. }))
         ),
         "{error}"
     );
@@ -73,7 +74,10 @@ fn an_unwritable_figures_directory_is_refused_before_any_check() {
     std::os::unix::fs::symlink("/sys", dir.path().join("figures")).unwrap();
     let (error, steps) = refused(dir.path());
     assert!(
-        matches!(&error, PipelineError::Write(OutputError::Unwritable { .. })),
+        matches!(
+            &error,
+            PipelineError::Write(OutputError::Write(WriteError::Unwritable { .. }))
+        ),
         "{error}"
     );
     assert_eq!(steps, 0, "checks ran before the refusal");

@@ -4,7 +4,7 @@
 //!
 //! The map is made as the slides make it (step 1): the surroundings are
 //! rendered from the mirror's centre, with the mirror removed, by the
-//! tracer, into a cube map ([`tracer::environment::capture_cube`]), from
+//! tracer, into a cube map ([`tracer::capture::capture_cube`]), from
 //! geometry at a finite distance. The mirror is then rendered twice by the
 //! same Whitted tracer: (a) alone under that map, so that each reflected
 //! ray looks its direction up (steps 2–5), and (b) among the surroundings
@@ -33,7 +33,8 @@ use std::sync::Arc;
 use glam::Vec3;
 use serde::Serialize;
 use serde_json::{json, Value};
-use tracer::environment::{capture_cube, Environment};
+use tracer::capture::capture_cube;
+use tracer::environment::Environment;
 use tracer::geometry::Ray;
 use tracer::integrator::{Machinery, Tracer};
 use tracer::job::RenderJob;

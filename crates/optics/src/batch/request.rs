@@ -17,6 +17,7 @@ use crate::laws::{FresnelArgs, ReflectArgs, RefractArgs, ShadeArgs};
 use crate::quiz::{BlinnPhongArgs, CriticalAngleArgs, F0Args, LambertArgs};
 use record::Lang;
 use record::{Record, Steps};
+use safe_io::json::{without_position, UniqueKeys};
 use serde::de::value::{BorrowedStrDeserializer, MapAccessDeserializer};
 use serde::de::{DeserializeSeed, Deserializer, Error as _, MapAccess, Visitor};
 use serde::Deserialize;
@@ -24,7 +25,6 @@ use serde_json::error::Category;
 use serde_json::Value;
 use std::borrow::Cow;
 use std::fmt;
-use tracer::json::{without_position, UniqueKeys};
 
 /// One request: the law as the line names it, its arguments, and whether
 /// its working is wanted (the line's `"steps"`, else the run's choice).

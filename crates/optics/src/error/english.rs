@@ -70,7 +70,10 @@ impl fmt::Display for ErrorKind {
             ),
             ErrorKind::Write(error) => write!(f, "cannot write the output: {error}"),
             ErrorKind::Encode(error) => write!(f, "cannot write the result as JSON: {error}"),
-            ErrorKind::Scene { file, error } => write!(f, "scene {}: {error}", file.display()),
+            ErrorKind::Scene { file, error } => {
+                let advice = super::render::advice_en(error.kind());
+                write!(f, "scene {}: {error}{advice}", file.display())
+            }
             ErrorKind::Output(error) => write!(f, "--output: {error}"),
             ErrorKind::Threads(error) => {
                 write!(f, "cannot start the render's threads: {error}")

@@ -3,6 +3,7 @@
 //! own (the JSON path of a scene error), or `--output` for an image.
 
 use radiometry::domain::DomainError;
+use safe_io::WriteError;
 use techniques::bump::FieldError;
 use tracer::output::OutputError;
 use tracer::scene::ErrorKind as Scene;
@@ -43,14 +44,30 @@ pub fn scene_name(kind: &Scene) -> &'static str {
     }
 }
 
+/// The flags that settle a refused scene, for the commands that take
+/// them: the tracer names the values, the command line its flags. Empty
+/// for the other kinds.
+pub fn advice_en(kind: &Scene) -> &'static str {
+    match kind {
+        Scene::TooExpensive { .. } => {
+            "; optics render and inspect take --allow-expensive to render it anyway"
+        }
+        Scene::CourseHasNoRefraction => {
+            "; choose one with --integrator whitted or path (render, inspect, compare) or \
+             the scene's render.integrator"
+        }
+        _ => "",
+    }
+}
+
 /// The name of an image-writing error's kind: `output.` and the kind.
 pub fn output_name(error: &OutputError) -> &'static str {
     match error {
-        OutputError::Io { .. } => "output.io",
-        OutputError::NoDirectory { .. } => "output.no_directory",
-        OutputError::Unwritable { .. } => "output.unwritable",
-        OutputError::NotARegularFile { .. } => "output.not_a_regular_file",
-        OutputError::IsAnInput { .. } => "output.is_an_input",
+        OutputError::Write(WriteError::Io { .. }) => "output.io",
+        OutputError::Write(WriteError::NoDirectory { .. }) => "output.no_directory",
+        OutputError::Write(WriteError::Unwritable { .. }) => "output.unwritable",
+        OutputError::Write(WriteError::NotARegularFile { .. }) => "output.not_a_regular_file",
+        OutputError::Write(WriteError::IsAnInput { .. }) => "output.is_an_input",
         OutputError::PfmIsPng { .. } => "output.pfm_is_png",
         OutputError::Png { .. } => "output.png",
     }

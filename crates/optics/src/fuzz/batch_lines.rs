@@ -12,9 +12,9 @@ use proptest::prelude::*;
 use proptest::test_runner::TestCaseError;
 use record::Lang;
 use record::Steps;
+use safe_io::json::UniqueKeys;
 use serde_json::error::Category;
 use serde_json::{json, Map, Value};
-use tracer::json::UniqueKeys;
 
 /// One request of each law, as the course's quiz and the docs give them.
 fn course_requests() -> Vec<Value> {

@@ -3,6 +3,7 @@
 
 use std::path::Path;
 
+use safe_io::WriteError;
 use techniques::bump::{FieldError, MAX_SLOPE, MIN_PERIOD};
 use tracer::output::OutputError;
 use tracer::scene::error::{ImageProblem, JsonType, SizeRule};
@@ -14,11 +15,26 @@ use super::domain_hu;
 /// name its subject itself), and what is wrong.
 pub fn scene_hu(file: &Path, error: &SceneError) -> String {
     let file = file.display();
-    let what = scene_kind_hu(error.kind());
+    let what = scene_kind_hu(error.kind()) + advice_hu(error.kind());
     match error.kind() {
         Scene::Read { .. } | Scene::Domain(_) => format!("a(z) {file} jelenet: {what}"),
         _ if error.field() == "." => format!("a(z) {file} jelenet: {what}"),
         _ => format!("a(z) {file} jelenet: {}: {what}", error.field()),
+    }
+}
+
+/// The flags that settle a refused scene, for the commands that take
+/// them (`crate::error::render::advice_en` in English); empty for the rest.
+fn advice_hu(kind: &Scene) -> &'static str {
+    match kind {
+        Scene::TooExpensive { .. } => {
+            "; az optics render és az inspect a --allow-expensive kapcsolóval mégis rendereli"
+        }
+        Scene::CourseHasNoRefraction => {
+            "; a --integrator whitted vagy path kapcsolóval (render, inspect, compare) vagy a \
+             jelenet render.integrator mezőjében választható"
+        }
+        _ => "",
     }
 }
 
@@ -77,17 +93,17 @@ pub(super) fn scene_kind_hu(kind: &Scene) -> String {
             f32::MAX
         ),
         Scene::TooExpensive { rays } => format!(
-            "ez a kép legfeljebb {rays:.3e} sugarat indíthat, több a --allow-expensive \
-             nélkül megengedett {:e}-nál: csökkentse a max_depth, az spp értékét vagy a \
-             méretet, vagy növelje a throughput_cutoff értékét",
+            "ez a kép legfeljebb {rays:.3e} sugarat indíthat, több a drága renderelés \
+             engedélye nélkül megengedett {:e}-nál: csökkentse a max_depth, az spp értékét \
+             vagy a méretet, vagy növelje a throughput_cutoff értékét",
             tracer::needs::MAX_RAYS
         ),
         Scene::DielectricWithoutInside => "a dielektrikumhoz belső térrel bíró zárt felület \
                                            kell: csak gömb lehet dielektrikum"
             .to_owned(),
-        Scene::CourseHasNoRefraction => "a kurzus árnyalójában nincs fénytörés; a \
-                                         dielektrikumokat a --integrator whitted vagy path \
-                                         kapcsolóval kell renderelni"
+        Scene::CourseHasNoRefraction => "a kurzus árnyalójában nincs fénytörés: a \
+                                         dielektrikumokat a whitted és a path integrátor \
+                                         rendereli"
             .to_owned(),
         Scene::PrecisionNotServed {
             precision,
@@ -166,17 +182,19 @@ fn json_type_hu(t: JsonType) -> &'static str {
 /// An image that could not be written: the file, and why.
 pub fn output_hu(error: &OutputError) -> String {
     match error {
-        OutputError::Io { path, source } => format!("a(z) {path} nem írható: {source}"),
-        OutputError::NoDirectory { path, dir } => {
+        OutputError::Write(WriteError::Io { path, source }) => {
+            format!("a(z) {path} nem írható: {source}")
+        }
+        OutputError::Write(WriteError::NoDirectory { path, dir }) => {
             format!("a(z) {path} nem írható: a(z) {dir} könyvtár nem létezik")
         }
-        OutputError::Unwritable { dir, source } => {
+        OutputError::Write(WriteError::Unwritable { dir, source }) => {
             format!("a(z) {dir} könyvtárba nem írható fájl: {source}")
         }
-        OutputError::NotARegularFile { path } => {
+        OutputError::Write(WriteError::NotARegularFile { path }) => {
             format!("a(z) {path} létezik, és nem közönséges fájl; nem íródik felül")
         }
-        OutputError::IsAnInput { path, input } => {
+        OutputError::Write(WriteError::IsAnInput { path, input }) => {
             format!("a(z) {path} azonos a beolvasott {input} fájllal; más kimenetet kell megadni")
         }
         OutputError::PfmIsPng { path } => {

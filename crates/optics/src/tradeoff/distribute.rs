@@ -36,15 +36,15 @@ pub struct Collected {
 /// `--plan JOBS`: writes the sweep's jobs, one line each, whole or not at
 /// all, and prints how to run and collect them.
 pub fn plan(setup: &Setup, args: &TradeoffArgs, path: &Path, ui: &Ui) -> error::Result<()> {
-    let refused = |error| {
+    let refused = |error: safe_io::WriteError| {
         ErrorKind::Jobs(JobError::Write {
             field: "--plan",
-            error,
+            error: error.into(),
         })
     };
     // The rename would replace a FIFO, device node, directory or link, or
     // the scene itself, with the plan.
-    tracer::output::check_destination(path, &[&args.scene]).map_err(refused)?;
+    safe_io::check_destination(path, &[&args.scene]).map_err(refused)?;
     let lang = ui.lang;
     let planned = Planned::new(&setup.key, &setup.job, &setup.plan);
     let mut text = String::new();
@@ -52,7 +52,7 @@ pub fn plan(setup: &Setup, args: &TradeoffArgs, path: &Path, ui: &Ui) -> error::
         text += &serde_json::to_string(job).map_err(ErrorKind::Encode)?;
         text += "\n";
     }
-    tracer::output::write_atomically(path, text.as_bytes()).map_err(refused)?;
+    safe_io::write_atomically(path, text.as_bytes()).map_err(refused)?;
     let count = planned.jobs.len();
     let mut record = Record::new("tradeoff", String::new(), "");
     record

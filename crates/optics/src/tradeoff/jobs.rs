@@ -18,11 +18,11 @@ mod result;
 
 pub use result::{encode, JobResult, RESULT_FIELDS};
 
+use safe_io::json::UniqueKeys;
 use serde::{Deserialize, Serialize};
 use serde_json::error::Category;
 use serde_json::Value;
 use tracer::job::RenderJob;
-use tracer::json::UniqueKeys;
 use tracer::scene::Settings;
 
 use super::{sweep, truth};

@@ -233,11 +233,11 @@ pub fn write_and_show(sweep: &Sweep, args: &TradeoffArgs, ui: &Ui) -> error::Res
     let files = &sweep.files;
     let json = serde_json::to_string_pretty(sweep).map_err(ErrorKind::Encode)? + "\n";
     let markdown = markdown(sweep, &sweep.stem);
-    tracer::output::write_all_atomically(&[
+    safe_io::write_all_atomically(&[
         (files.json.as_path(), json.as_bytes()),
         (files.markdown.as_path(), markdown.as_bytes()),
     ])
-    .map_err(ErrorKind::Output)?;
+    .map_err(|error| ErrorKind::Output(error.into()))?;
     let plotted = if args.no_plot {
         None
     } else {

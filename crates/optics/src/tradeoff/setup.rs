@@ -162,18 +162,21 @@ impl Files {
     pub fn prepare(&self, scene: &Path) -> error::Result<()> {
         let create = |dir: &Path| {
             std::fs::create_dir_all(dir).map_err(|source| {
-                ErrorKind::Output(tracer::output::OutputError::Io {
-                    path: dir.display().to_string(),
-                    source,
-                })
+                ErrorKind::Output(
+                    safe_io::WriteError::Io {
+                        path: dir.display().to_string(),
+                        source,
+                    }
+                    .into(),
+                )
             })
         };
         create(&self.dir)?;
         for file in [&self.json, &self.markdown, &self.plot] {
-            tracer::output::check_destination(file, &[scene]).map_err(|error| {
+            safe_io::check_destination(file, &[scene]).map_err(|error| {
                 ErrorKind::Jobs(JobError::Write {
                     field: "--out",
-                    error,
+                    error: error.into(),
                 })
             })?;
         }

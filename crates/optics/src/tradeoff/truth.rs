@@ -5,9 +5,10 @@
 
 use std::path::{Path, PathBuf};
 
+use safe_io::write_all_atomically;
 use serde::{Deserialize, Serialize};
 use tracer::job::RenderJob;
-use tracer::output::{read_pfm, write_all_atomically};
+use tracer::output::read_pfm;
 use tracer::render::Image;
 use tracer::scene::Settings;
 
@@ -132,7 +133,7 @@ impl Cache {
             (self.image_path.as_path(), pfm.as_slice()),
             (self.meta_path.as_path(), meta.as_bytes()),
         ])
-        .map_err(ErrorKind::Output)?;
+        .map_err(|error| ErrorKind::Output(error.into()))?;
         Ok((truth, record))
     }
 }

@@ -77,22 +77,22 @@ pub fn run_job(args: &TradeoffJobArgs, ui: &Ui) -> error::Result<()> {
     let index = planned.check(&line, &at)?;
     // Before any render is spent: a result with nowhere to go is refused now.
     std::fs::create_dir_all(&args.out).map_err(|source| {
-        let error = tracer::output::OutputError::Io {
+        let error = safe_io::WriteError::Io {
             path: args.out.display().to_string(),
             source,
         };
         JobError::Write {
             field: "--out",
-            error,
+            error: error.into(),
         }
     })?;
     let result = run(&setup, &planned, index, &sweep, &line)?;
 
     let file = args.out.join(format!("job-{index:04}.json"));
     let json = serde_json::to_string(&result).map_err(ErrorKind::Encode)? + "\n";
-    tracer::output::write_atomically(&file, json.as_bytes()).map_err(|error| JobError::Write {
+    safe_io::write_atomically(&file, json.as_bytes()).map_err(|error| JobError::Write {
         field: "--out",
-        error,
+        error: error.into(),
     })?;
 
     let mut record = Record::new("tradeoff-job", String::new(), "");

@@ -217,7 +217,7 @@ fn a_key_given_twice_is_refused_naming_it_and_the_rest_go_on() {
         assert_eq!(error["kind"], "request", "{result}");
         assert_eq!(error["field"], field, "{result}");
         let message = error["message"].as_str().unwrap();
-        assert_eq!(message, format!("{field}: {}", tracer::json::TWICE));
+        assert_eq!(message, format!("{field}: {}", safe_io::json::TWICE));
     }
     assert_eq!(results[4]["answer"], 0.04, "the next line is evaluated");
 }

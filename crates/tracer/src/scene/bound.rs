@@ -20,7 +20,8 @@
 
 use glam::{DVec3, Vec3};
 
-use super::{ErrorKind, Light, Material, Scene, SceneError};
+use super::error::{ErrorKind, SceneError};
+use super::model::{Light, Material, Scene};
 use crate::geometry::Object;
 
 /// Refuses a scene whose rough surfaces can send radiance beyond `f32`.

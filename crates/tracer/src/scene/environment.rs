@@ -10,10 +10,10 @@ use glam::Vec3;
 use image::ImageDecoder;
 use radiometry::domain;
 
+use super::error::{ErrorKind, SceneError};
 use super::error::{ImageProblem, SizeRule};
 use super::faults::{self, Fault};
 use super::schema::EnvironmentSpec;
-use super::{ErrorKind, SceneError};
 use crate::environment::{cut_cross, CubeMap, Environment, Texels};
 
 /// The longest side of an environment image accepted, texels: a lat-long

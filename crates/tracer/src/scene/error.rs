@@ -8,7 +8,7 @@ use std::fmt;
 use radiometry::domain::DomainError;
 use techniques::bump::FieldError;
 
-use super::{MAX_PIXELS, SCHEMA_VERSION};
+use crate::kinds::{MAX_PIXELS, MAX_RAYS, SCHEMA_VERSION};
 
 /// A refused scene or setting: what is wrong, and where.
 #[derive(Debug)]
@@ -124,7 +124,7 @@ pub enum ErrorKind {
         bound: f64,
     },
     /// A render whose bound on the rays it casts is past
-    /// [`MAX_RAYS`](crate::needs::MAX_RAYS), not allowed by the caller.
+    /// [`MAX_RAYS`], not allowed by the caller.
     TooExpensive {
         /// The bound on the rays cast.
         rays: f64,
@@ -137,7 +137,7 @@ pub enum ErrorKind {
     /// `local` and `whitted`).
     PrecisionNotServed {
         /// The tier asked for.
-        precision: crate::tier::Precision,
+        precision: crate::kinds::Precision,
         /// The integrator settled beside it.
         integrator: super::IntegratorKind,
     },
@@ -382,16 +382,17 @@ impl fmt::Display for ErrorKind {
             ),
             ErrorKind::TooExpensive { rays } => write!(
                 f,
-                "this render may cast up to {rays:.3e} rays, past the {:e} allowed without \
-                 --allow-expensive: lower max_depth, spp or the size, or raise throughput_cutoff",
-                crate::needs::MAX_RAYS
+                "this render may cast up to {rays:.3e} rays, past the {:e} allowed unless an \
+                 expensive render is allowed: lower max_depth, spp or the size, or raise \
+                 throughput_cutoff",
+                MAX_RAYS
             ),
             ErrorKind::DielectricWithoutInside => f.write_str(
                 "a dielectric needs a closed surface with an inside: only spheres may be dielectric",
             ),
             ErrorKind::CourseHasNoRefraction => f.write_str(
-                "the course's shader has no refraction; render dielectrics with \
-                 --integrator whitted or path",
+                "the course's shader has no refraction: dielectrics are rendered by the \
+                 integrators whitted and path",
             ),
             ErrorKind::PrecisionNotServed {
                 precision,

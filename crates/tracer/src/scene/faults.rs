@@ -6,7 +6,12 @@
 //! with the fix undone would pass without it. Off unless a test turns one
 //! on. A render reads the switch once, on the thread that starts it, so it
 //! holds for every row whichever thread traces it.
+//!
+//! The switches exist only with the cargo feature `faults`, which the
+//! tests turn on through their dev-dependencies: a build without it (the
+//! shipped binary) has no switch, and every check below is `false`.
 
+#[cfg(feature = "faults")]
 use std::cell::Cell;
 
 /// A fix of the scene reader, undone.
@@ -32,11 +37,13 @@ pub enum Fault {
     PhotonsStoredBeforeAnyMirror,
 }
 
+#[cfg(feature = "faults")]
 thread_local! {
     static UNDONE: Cell<Option<Fault>> = const { Cell::new(None) };
 }
 
 /// Runs `f` with `fault`'s fix undone on this thread.
+#[cfg(feature = "faults")]
 pub fn with<T>(fault: Fault, f: impl FnOnce() -> T) -> T {
     UNDONE.with(|u| u.set(Some(fault)));
     let out = f();
@@ -50,6 +57,13 @@ pub(crate) fn undone(fault: Fault) -> bool {
 }
 
 /// The fault planted on this thread, if any.
+#[cfg(feature = "faults")]
 pub(crate) fn current() -> Option<Fault> {
     UNDONE.with(|u| u.get())
+}
+
+/// No fault: without the feature `faults` no switch exists.
+#[cfg(not(feature = "faults"))]
+pub(crate) const fn current() -> Option<Fault> {
+    None
 }

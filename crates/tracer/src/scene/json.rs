@@ -7,11 +7,12 @@
 use serde_json::error::Category;
 use serde_json::Value;
 
-use crate::json::{without_position, UniqueKeys};
+use safe_io::json::{without_position, UniqueKeys};
 
+use super::error::{ErrorKind, SceneError};
 use super::faults::{self, Fault};
 use super::schema::SceneFile;
-use super::{fields, shape, ErrorKind, SceneError};
+use super::{fields, shape};
 
 /// Bytes to text: UTF-8, or the position of the first byte that is not.
 pub(super) fn text(bytes: &[u8]) -> Result<&str, SceneError> {

@@ -15,6 +15,7 @@
 //! | [`fields`] | the schema's fields, as the JSON paths errors name |
 //! | `json` | bytes to text to the schema, errors with their JSON path |
 //! | `shape` | the shapes serde would accept beyond the schema, refused |
+//! | [`values`] | one value in its domain: finite, positive, a count, a direction, an image size |
 //! | [`validate`] | the schema to the model, each value in its domain |
 //! | [`environment`] | the environment's scale and image files, read and sized once |
 //! | [`bound`] | the largest radiance the scene's numbers can give, within `f32` |
@@ -25,8 +26,11 @@
 pub mod bound;
 pub mod environment;
 pub mod error;
+#[cfg(feature = "faults")]
 #[doc(hidden)]
 pub mod faults;
+#[cfg(not(feature = "faults"))]
+pub(crate) mod faults;
 pub mod fields;
 mod json;
 pub mod model;
@@ -34,19 +38,17 @@ pub mod schema;
 pub mod settings;
 mod shape;
 pub mod validate;
+pub mod values;
 
-pub use crate::tier::Precision;
+pub use crate::kinds::{
+    FresnelModel, GlassShortcut, IntegratorKind, PixelFilter, Precision, RayOffset,
+};
+pub use crate::kinds::{MAX_DEPTH, MAX_PHOTONS, MAX_PHOTON_PASSES, MAX_SPP};
+pub use crate::kinds::{MAX_IMAGE_SIDE, MAX_PIXELS, SCHEMA_VERSION};
 pub use error::{ErrorKind, SceneError};
 pub use model::{Light, Material, Scene};
 pub use schema::SceneFile;
-pub use settings::{
-    FresnelModel, GlassShortcut, IntegratorKind, PhotonSettings, PixelFilter, RayOffset,
-    RenderSpec, Settings,
-};
-pub use settings::{MAX_DEPTH, MAX_PHOTONS, MAX_PHOTON_PASSES, MAX_SPP};
-
-/// The only schema version this crate reads.
-pub const SCHEMA_VERSION: u32 = 1;
+pub use settings::{PhotonSettings, RenderSpec, Settings};
 
 /// The course's scenes that ship with the tracer, as
 /// `crates/tracer/scenes/<name>.json`, in the order the course meets them
@@ -71,15 +73,6 @@ pub const COURSE_SCENES: [&str; 11] = [
 /// (`docs/techniques.md`): rendered for the documents and read by the
 /// tests, but not among the [`COURSE_SCENES`] the harness cross-checks.
 pub const TECHNIQUE_SCENES: [&str; 1] = ["bump_sphere"];
-
-/// The largest image side accepted, in pixels. 16384 is the largest texture
-/// side common GPUs allow and four times a 4K display; a larger image is
-/// almost certainly a typo, and 16384² RGB floats are already 3 GiB.
-pub const MAX_IMAGE_SIDE: u32 = 16_384;
-
-/// The most pixels accepted: 8192², a 64-megapixel image (768 MiB of
-/// `f32` radiance).
-pub const MAX_PIXELS: u64 = 8192 * 8192;
 
 /// Reads and validates a scene file; an environment's image files are
 /// named relative to its directory.

@@ -7,7 +7,7 @@ use glam::Vec3;
 
 use techniques::bump::HeightField;
 
-use super::Settings;
+use super::settings::Settings;
 use crate::camera::Camera;
 use crate::environment::Environment;
 use crate::geometry::Object;

@@ -7,7 +7,7 @@ use std::collections::BTreeMap;
 
 use serde::Deserialize;
 
-use super::RenderSpec;
+use super::settings::RenderSpec;
 
 /// A scene file as written, before validation.
 #[derive(Clone, Debug, Deserialize)]
@@ -48,9 +48,9 @@ pub struct SceneFile {
 #[derive(Clone, Copy, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct ImageSpec {
-    /// Width, 1 to [`MAX_IMAGE_SIDE`](super::MAX_IMAGE_SIDE).
+    /// Width, 1 to [`MAX_IMAGE_SIDE`](crate::kinds::MAX_IMAGE_SIDE).
     pub width: f64,
-    /// Height, 1 to [`MAX_IMAGE_SIDE`](super::MAX_IMAGE_SIDE).
+    /// Height, 1 to [`MAX_IMAGE_SIDE`](crate::kinds::MAX_IMAGE_SIDE).
     pub height: f64,
 }
 

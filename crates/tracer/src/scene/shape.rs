@@ -8,7 +8,7 @@
 use serde_json::Value;
 
 use super::error::JsonType;
-use super::{ErrorKind, SceneError};
+use super::error::{ErrorKind, SceneError};
 
 /// The scene's settings that are one of several names.
 const CHOICES: [&str; 4] = ["integrator", "fresnel", "pixel_filter", "precision"];

@@ -3,6 +3,7 @@
 use super::{named, os_error};
 use crate::error::compare::{CompareError, PfmProblem};
 use crate::error::ErrorKind;
+use safe_io::WriteError;
 use tracer::output::OutputError;
 use tracer::scene::{ErrorKind as Scene, SceneError};
 
@@ -149,10 +150,10 @@ pub fn examples() -> Vec<(ErrorKind, Vec<String>)> {
             &["cannot start the render's threads"],
         ),
         compare(
-            CompareError::Diff(OutputError::IsAnInput {
+            CompareError::Diff(OutputError::Write(WriteError::IsAnInput {
                 path: image.into(),
                 input: image.into(),
-            }),
+            })),
             &["--diff", image],
         ),
         compare(

@@ -3,6 +3,7 @@
 
 use super::{named, os_error};
 use crate::error::ErrorKind;
+use safe_io::WriteError;
 use tracer::output::OutputError;
 use validation::checkout::{CheckoutError, Via, MARKERS};
 use validation::pipeline::PipelineError;
@@ -114,10 +115,10 @@ pub fn examples() -> Vec<(ErrorKind, Vec<String>)> {
             ],
         ),
         pipeline(
-            PipelineError::Write(OutputError::Io {
+            PipelineError::Write(OutputError::Write(WriteError::Io {
                 path: "/tmp/out/report.json".into(),
                 source: os_error(),
-            }),
+            })),
             &["/tmp/out/report.json", &os],
         ),
         pipeline(

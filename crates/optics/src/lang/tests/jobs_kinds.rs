@@ -4,6 +4,7 @@
 use super::{named, os_error};
 use crate::error::jobs::{ImageProblem, JobError, LineKind, Place};
 use crate::error::ErrorKind;
+use safe_io::WriteError;
 use tracer::output::OutputError;
 
 /// The place of a jobs error's kind among the jobs slots (each image
@@ -193,10 +194,10 @@ pub fn examples() -> Vec<(ErrorKind, Vec<String>)> {
         jobs(
             JobError::Write {
                 field: "--plan",
-                error: OutputError::Io {
+                error: OutputError::Write(WriteError::Io {
                     path: "jobs.jsonl".into(),
                     source: os_error(),
-                },
+                }),
             },
             &["--plan", "jobs.jsonl", &os],
         ),

@@ -4,6 +4,7 @@
 use super::{named, os_error};
 use crate::error::ErrorKind;
 use radiometry::domain::{DomainError, Expected};
+use safe_io::WriteError;
 use techniques::bump::{FieldError, Parameter};
 use tracer::output::OutputError;
 use tracer::scene::{ErrorKind as Scene, SceneError};
@@ -47,13 +48,13 @@ pub fn scene_slot(kind: &Scene) -> usize {
 /// The place of an output error's kind among the render slots.
 pub fn output_slot(error: &OutputError) -> usize {
     match error {
-        OutputError::Io { .. } => 27,
-        OutputError::NoDirectory { .. } => 28,
+        OutputError::Write(WriteError::Io { .. }) => 27,
+        OutputError::Write(WriteError::NoDirectory { .. }) => 28,
         OutputError::PfmIsPng { .. } => 29,
         OutputError::Png { .. } => 30,
-        OutputError::Unwritable { .. } => 31,
-        OutputError::NotARegularFile { .. } => 32,
-        OutputError::IsAnInput { .. } => 33,
+        OutputError::Write(WriteError::Unwritable { .. }) => 31,
+        OutputError::Write(WriteError::NotARegularFile { .. }) => 32,
+        OutputError::Write(WriteError::IsAnInput { .. }) => 33,
     }
 }
 
@@ -249,37 +250,37 @@ pub fn examples() -> Vec<(ErrorKind, Vec<String>)> {
         ),
         scene("objects[0].bump", Scene::BumpOnSmoothSurface, &[]),
         output(
-            OutputError::Io {
+            OutputError::Write(WriteError::Io {
                 path: "out/a.png".into(),
                 source: os_error(),
-            },
+            }),
             &["out/a.png", &os],
         ),
         output(
-            OutputError::NoDirectory {
+            OutputError::Write(WriteError::NoDirectory {
                 path: "nowhere/a.png".into(),
                 dir: "nowhere".into(),
-            },
+            }),
             &["nowhere/a.png", "nowhere"],
         ),
         output(
-            OutputError::Unwritable {
+            OutputError::Write(WriteError::Unwritable {
                 dir: "/sys".into(),
                 source: os_error(),
-            },
+            }),
             &["/sys", &os],
         ),
         output(
-            OutputError::NotARegularFile {
+            OutputError::Write(WriteError::NotARegularFile {
                 path: "/dev/null".into(),
-            },
+            }),
             &["/dev/null"],
         ),
         output(
-            OutputError::IsAnInput {
+            OutputError::Write(WriteError::IsAnInput {
                 path: "./scene.json".into(),
                 input: "scene.json".into(),
-            },
+            }),
             &["./scene.json", "scene.json"],
         ),
         output(

@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 
 use tempfile::TempPath;
 
-use super::{directory, OutputError};
+use crate::error::WriteError;
 use crate::interrupt::{self, PausePoint, Phase, Registry};
 
 /// A complete temporary and the file it becomes.
@@ -22,20 +22,35 @@ struct Backup<'a> {
     aside: Option<TempPath>,
 }
 
-fn io_error(path: &Path) -> impl Fn(io::Error) -> OutputError + '_ {
-    move |source| OutputError::Io {
+fn io_error(path: &Path) -> impl Fn(io::Error) -> WriteError + '_ {
+    move |source| WriteError::Io {
         path: path.display().to_string(),
         source,
     }
 }
 
+/// The directory `path` is written into, which must exist.
+pub(crate) fn directory(path: &Path) -> Result<&Path, WriteError> {
+    let dir = match path.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d,
+        _ => Path::new("."),
+    };
+    if !dir.is_dir() {
+        return Err(WriteError::NoDirectory {
+            path: path.display().to_string(),
+            dir: dir.display().to_string(),
+        });
+    }
+    Ok(dir)
+}
+
 /// A new, empty, registered temporary in `dir`.
-pub(super) fn temporary(dir: &Path) -> io::Result<tempfile::NamedTempFile> {
+fn temporary(dir: &Path) -> io::Result<tempfile::NamedTempFile> {
     new_temporary(&mut interrupt::lock(), dir)
 }
 
 /// Whether a file can be created in `dir`: one is, then removed.
-pub(super) fn probe(dir: &Path) -> io::Result<()> {
+pub(crate) fn probe(dir: &Path) -> io::Result<()> {
     let mut registry = interrupt::lock();
     let file = new_temporary(&mut registry, dir)?;
     registry.forget(file.path());
@@ -54,7 +69,7 @@ fn new_temporary(registry: &mut Registry, dir: &Path) -> io::Result<tempfile::Na
 }
 
 /// Writes `bytes` to `path` atomically: a temporary file beside it, renamed.
-pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), OutputError> {
+pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), WriteError> {
     write_all_atomically(&[(path, bytes)])
 }
 
@@ -62,7 +77,7 @@ pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), OutputError> {
 /// replaced whole or none is: after a write error, a failed rename or
 /// SIGINT/SIGTERM the previous files are as they were (see
 /// [`crate::interrupt`] for what SIGKILL and power loss can leave).
-pub fn write_all_atomically(files: &[(&Path, &[u8])]) -> Result<(), OutputError> {
+pub fn write_all_atomically(files: &[(&Path, &[u8])]) -> Result<(), WriteError> {
     interrupt::set_phase(Phase::Staging);
     let mut staged = Vec::with_capacity(files.len());
     let mut result = Ok(());
@@ -98,7 +113,7 @@ pub fn write_all_atomically(files: &[(&Path, &[u8])]) -> Result<(), OutputError>
 }
 
 /// Writes `bytes` to a complete temporary beside `path`.
-fn stage<'a>(path: &'a Path, bytes: &[u8]) -> Result<Staged<'a>, OutputError> {
+fn stage<'a>(path: &'a Path, bytes: &[u8]) -> Result<Staged<'a>, WriteError> {
     let io = io_error(path);
     let mut temp = temporary(directory(path)?).map_err(&io)?;
     if let Err(error) = fill(&mut temp, path, bytes) {
@@ -138,7 +153,7 @@ fn commit(
     registry: &mut Registry,
     staged: Vec<Staged<'_>>,
     rename: &dyn Fn(&Path, &Path) -> io::Result<()>,
-) -> Result<(), OutputError> {
+) -> Result<(), WriteError> {
     interrupt::set_phase(Phase::Committing);
     let last = staged.len().saturating_sub(1);
     let mut done: Vec<Backup> = Vec::new();
@@ -169,7 +184,7 @@ fn commit_one<'a>(
     file: Staged<'a>,
     keep_previous: bool,
     rename: &dyn Fn(&Path, &Path) -> io::Result<()>,
-) -> Result<Backup<'a>, OutputError> {
+) -> Result<Backup<'a>, WriteError> {
     let temp: PathBuf = file.temp.to_path_buf();
     let aside = match keep_previous {
         true => set_aside(registry, file.target)?,
@@ -196,7 +211,7 @@ fn commit_one<'a>(
 
 /// Moves `target`'s previous file, if any, to a new name beside it; the
 /// backup is removed when dropped.
-fn set_aside(registry: &mut Registry, target: &Path) -> Result<Option<TempPath>, OutputError> {
+fn set_aside(registry: &mut Registry, target: &Path) -> Result<Option<TempPath>, WriteError> {
     if std::fs::symlink_metadata(target).is_err() {
         return Ok(None);
     }
@@ -240,7 +255,7 @@ mod tests {
 
     /// Stages `files` and commits them with a rename that fails for
     /// `failing`.
-    fn commit_failing_at(files: &[(&Path, &[u8])], failing: &Path) -> Result<(), OutputError> {
+    fn commit_failing_at(files: &[(&Path, &[u8])], failing: &Path) -> Result<(), WriteError> {
         let staged = files
             .iter()
             .map(|(path, bytes)| stage(path, bytes))
@@ -275,7 +290,7 @@ mod tests {
         std::fs::write(&png, "old png").unwrap();
         std::fs::write(&pfm, "old pfm").unwrap();
         let error = commit_failing_at(&[(&png, b"new png"), (&pfm, b"new pfm")], &pfm);
-        assert!(matches!(error, Err(OutputError::Io { .. })), "{error:?}");
+        assert!(matches!(error, Err(WriteError::Io { .. })), "{error:?}");
         assert_eq!(std::fs::read(&png).unwrap(), b"old png");
         assert_eq!(std::fs::read(&pfm).unwrap(), b"old pfm");
         assert_eq!(listing(dir.path()), ["a.pfm", "a.png"]);
@@ -299,10 +314,23 @@ mod tests {
         std::fs::remove_dir(second.path()).unwrap();
         let error = write_all_atomically(&[(&kept, b"new"), (&gone, b"new")]);
         assert!(
-            matches!(error, Err(OutputError::NoDirectory { .. })),
+            matches!(error, Err(WriteError::NoDirectory { .. })),
             "{error:?}"
         );
         assert_eq!(std::fs::read(&kept).unwrap(), b"old");
         assert_eq!(listing(first.path()), ["report.json"]);
+    }
+
+    #[test]
+    fn atomic_write_replaces_the_file_whole_and_leaves_no_temporary() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("out.pfm");
+        std::fs::write(&path, b"old").unwrap();
+        write_atomically(&path, b"new contents").unwrap();
+        assert_eq!(std::fs::read(&path).unwrap(), b"new contents");
+        assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 1);
+        let missing = dir.path().join("no/such/dir/out.png");
+        let err = write_atomically(&missing, b"x").unwrap_err().to_string();
+        assert!(err.contains("does not exist"), "{err}");
     }
 }

@@ -9,7 +9,7 @@
 //! once.
 //!
 //! ```
-//! use tracer::json::UniqueKeys;
+//! use safe_io::json::UniqueKeys;
 //!
 //! let ok: UniqueKeys = serde_json::from_str(r#"{"eta": 1.5, "cos_i": [1, 2]}"#).unwrap();
 //! assert_eq!(ok.0["eta"], 1.5);

@@ -2,7 +2,7 @@
 //! a commit already under way finished, and the process ended by the
 //! signal.
 //!
-//! The writer ([`crate::output`]) registers each temporary file here while
+//! The writer ([`crate::atomic`]) registers each temporary file here while
 //! it exists, and renames a set of files into place while holding the
 //! registry's lock. On the first registration a thread starts that waits
 //! for SIGINT or SIGTERM. When one comes it takes the lock (so a commit

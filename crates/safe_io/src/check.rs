@@ -4,24 +4,24 @@
 
 use std::path::Path;
 
-use super::atomic::probe;
-use super::{directory, OutputError};
+use crate::atomic::{directory, probe};
+use crate::error::WriteError;
 
 /// Refuses `path` as a destination unless a write there can succeed and
 /// replaces nothing it must not: its directory exists and a file can be
 /// created in it; if `path` exists it is a regular file (not a directory,
 /// FIFO, device, socket or symbolic link, which a rename would replace);
 /// and it is not one of `inputs` (the files the work reads), under any name.
-pub fn check_destination(path: &Path, inputs: &[&Path]) -> Result<(), OutputError> {
+pub fn check_destination(path: &Path, inputs: &[&Path]) -> Result<(), WriteError> {
     let dir = directory(path)?;
     if let Ok(existing) = std::fs::symlink_metadata(path) {
         if !existing.file_type().is_file() {
-            return Err(OutputError::NotARegularFile {
+            return Err(WriteError::NotARegularFile {
                 path: path.display().to_string(),
             });
         }
         if let Some(input) = inputs.iter().find(|input| same_file(path, input)) {
-            return Err(OutputError::IsAnInput {
+            return Err(WriteError::IsAnInput {
                 path: path.display().to_string(),
                 input: input.display().to_string(),
             });
@@ -31,8 +31,8 @@ pub fn check_destination(path: &Path, inputs: &[&Path]) -> Result<(), OutputErro
 }
 
 /// Refuses `dir` unless a file can be created in it (tried, then removed).
-pub fn writable_directory(dir: &Path) -> Result<(), OutputError> {
-    probe(dir).map_err(|source| OutputError::Unwritable {
+pub fn writable_directory(dir: &Path) -> Result<(), WriteError> {
+    probe(dir).map_err(|source| WriteError::Unwritable {
         dir: dir.display().to_string(),
         source,
     })
