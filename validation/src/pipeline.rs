@@ -33,8 +33,8 @@ use crate::laws::{Laws, Laws64};
 use crate::python::{self, run_tool, SetUp, Task, ToolError};
 use crate::reference::ReferenceError;
 use crate::regenerate::{regenerate, RegenerateError};
+use crate::report::Report;
 use crate::report::{to_html, to_json};
-use crate::report::{Report, Wording};
 use crate::suite::{self, Context};
 
 /// Random cases of each law that Mitsuba evaluates: reduced set, full set.
@@ -58,9 +58,6 @@ pub struct Options {
     pub seed: u64,
     /// The command line recorded in the report.
     pub command: String,
-    /// The words of the trade-off records' findings, shown under each
-    /// scene's table; `None`: the tables and plots without the words.
-    pub wording: Option<Wording>,
 }
 
 /// The Python environment the references come from.
@@ -83,7 +80,6 @@ impl Options {
             python: None,
             seed: 1,
             command: command.to_owned(),
-            wording: None,
         }
     }
 }
@@ -258,9 +254,7 @@ pub fn run(options: &Options, mut progress: impl FnMut(Step)) -> Result<Outcome,
     };
     figures.extend(write_render_figures(&out, &report)?);
     figures.extend(copy_tradeoff_plots(checkout, &out, &report)?);
-    if let Some(wording) = options.wording {
-        report.word_tradeoffs(wording);
-    }
+    report.word_tradeoffs();
     let (json, html) = (to_json(&report), to_html(&report, &figures));
     write_all_atomically(&[
         (&out.join("report.json"), json.as_bytes()),

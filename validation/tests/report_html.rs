@@ -122,7 +122,12 @@ fn sample() -> (Report, Vec<String>) {
         Path::new("docs/tradeoffs/gold_spheres-lambert.json"),
         &Ok(report.tradeoffs[0].clone()),
     ));
-    report.word_tradeoffs(wording);
+    // Stand-in words (not the library's prose), to show the page escapes them.
+    report.tradeoff_words = report
+        .tradeoffs
+        .iter()
+        .filter_map(|r| Some((r.stem(), wording(r.findings.as_ref()?).join(" "))))
+        .collect();
     report.summarise();
     (
         report,

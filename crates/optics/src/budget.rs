@@ -12,7 +12,7 @@
 //! render from the pilot and measuring it with the sweep's own code
 //! ([`predictor`]).
 
-pub mod pilot;
+pub use validation::tradeoff::pilot;
 pub mod predictor;
 mod report;
 
@@ -126,18 +126,6 @@ pub struct BudgetArgs {
     /// Where the ground truth is cached (shared with `optics tradeoff`).
     #[arg(long, default_value = "validation/out/tradeoff/truth")]
     pub truth_cache: PathBuf,
-}
-
-/// A tolerance as people write it: the shorter of its plain and its
-/// scientific form, each the shortest that reads back the same (`0.05`,
-/// `1e-7`, not `0.0000001`).
-pub fn written(tolerance: f64) -> String {
-    let (plain, scientific) = (format!("{tolerance}"), format!("{tolerance:e}"));
-    if scientific.len() < plain.len() {
-        scientific
-    } else {
-        plain
-    }
 }
 
 /// `--tolerance`: a finite number above 0.

@@ -271,6 +271,19 @@ impl From<compare::CompareError> for Error {
 }
 
 #[cfg(feature = "harness")]
+impl From<validation::tradeoff::error::TradeoffError> for Error {
+    fn from(error: validation::tradeoff::error::TradeoffError) -> Self {
+        use validation::tradeoff::error::TradeoffError;
+        match error {
+            TradeoffError::Scene { file, error } => ErrorKind::Scene { file, error }.into(),
+            TradeoffError::Render(error) => error.into(),
+            TradeoffError::Output(error) => ErrorKind::Output(error).into(),
+            TradeoffError::Encode(error) => ErrorKind::Encode(error).into(),
+        }
+    }
+}
+
+#[cfg(feature = "harness")]
 impl From<jobs::JobError> for Error {
     fn from(error: jobs::JobError) -> Self {
         ErrorKind::Jobs(error).into()

@@ -111,7 +111,7 @@ fn hungarian(kind: &ErrorKind) -> String {
             top_spp,
             need,
         } => {
-            let tolerance = crate::budget::written(*tolerance);
+            let tolerance = validation::tradeoff::budget::written(*tolerance);
             let need = match (need, top_spp) {
                 (validation::tradeoff::budget::Need::Samples { spp }, Some(top)) => format!(
                     "2^{} = {spp} minta kellene pixelenként (kettőhatvány, ahogy a költségvetés renderel), több, mint a legtöbb, amennyivel renderel, {top}",

@@ -18,18 +18,16 @@ pub(crate) mod distribute;
 pub mod jobs;
 mod metals;
 mod mitsuba;
-pub(crate) mod prose;
 mod report;
 pub(crate) mod setup;
-pub mod sweep;
+pub use validation::tradeoff::{sweep, truth};
 mod timing;
-pub(crate) mod truth;
 mod worker;
 
 pub use worker::{run_job, TradeoffJobArgs};
 
 pub use validation::tradeoff::checks::UNCONVERGED;
-pub use validation::tradeoff::{measure, pareto, Verdict, MEASURES, SCHEMA, SCHEMA_VERSION};
+pub use validation::tradeoff::{measure, pareto, prose, Verdict, MEASURES, SCHEMA, SCHEMA_VERSION};
 
 use std::path::{Path, PathBuf};
 
@@ -41,8 +39,9 @@ use crate::ui::Ui;
 use measure::Errors;
 use setup::Files;
 pub(crate) use setup::Setup;
-pub(crate) use timing::{render, renders_wanted, Timed, MAX_RENDERS};
+pub(crate) use timing::{renders_wanted, Timed, MAX_RENDERS};
 use validation::tradeoff::findings::{Findings, MetalRgb};
+pub(crate) use validation::tradeoff::render::render;
 
 #[derive(clap::Args, Debug, Serialize)]
 #[command(after_help = "Examples:

@@ -82,8 +82,6 @@ impl ValidateArgs {
             }),
             seed: self.seed,
             command,
-            // The report is written in English, whatever `--lang` says.
-            wording: Some(|findings| crate::tradeoff::prose::sentences(findings, Lang::En)),
         })
     }
 }
@@ -252,43 +250,6 @@ fn record(args: &ValidateArgs, outcome: &Outcome, lang: Lang) -> Record {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// This checkout, as `--checkout` names it.
-    fn args() -> ValidateArgs {
-        ValidateArgs {
-            quick: true,
-            checkout: Some(PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/../.."))),
-            out: None,
-            venv: None,
-            python: PathBuf::from("python3"),
-            no_python: true,
-            seed: 1,
-        }
-    }
-
-    #[test]
-    fn the_report_words_each_sweep_s_findings_as_docs_tradeoffs_md_does() {
-        let options = args().options().unwrap();
-        let wording = options.wording.expect("the report words the findings");
-        let root = options.checkout.root();
-        let docs = std::fs::read_to_string(root.join("docs/tradeoffs.md")).unwrap();
-        let dir = root.join(validation::tradeoff::checks::DIR);
-        let records = validation::tradeoff::checks::read(&dir).unwrap();
-        assert!(!records.is_empty(), "no record in {}", dir.display());
-        for (file, record) in records {
-            let record = record.unwrap();
-            let findings = record.findings.as_ref().expect("findings recorded");
-            let paragraph = format!(
-                "**What the numbers say.** {}\n",
-                wording(findings).join(" ")
-            );
-            assert!(
-                docs.contains(&paragraph),
-                "{}: the report's words are not docs/tradeoffs.md's: {paragraph}",
-                file.display()
-            );
-        }
-    }
 
     #[test]
     fn the_checkout_flag_is_read_before_the_variable_and_the_search() {

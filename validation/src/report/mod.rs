@@ -17,7 +17,8 @@ use crate::metals::MetalColour;
 use crate::reference::ReferenceError;
 use crate::renders::RenderFigure;
 use crate::speed::Timing;
-use crate::tradeoff::findings::Findings;
+use crate::tradeoff::prose::sentences;
+use record::Lang;
 
 /// The schema of `report.json`.
 pub const REPORT_SCHEMA: &str = "validation-report/1";
@@ -63,13 +64,6 @@ pub struct Report {
     #[serde(skip)]
     pub render_figures: Vec<RenderFigure>,
 }
-
-/// The sentences that say what a sweep's findings mean, in the report's
-/// language (English): the paragraph under each scene's table in
-/// `docs/tradeoffs.md`. The words belong to the command that writes the
-/// records (`optics tradeoff`), above this crate, which hands them in
-/// ([`crate::pipeline::Options::wording`]).
-pub type Wording = fn(&Findings) -> Vec<String>;
 
 /// Counts over the checks.
 #[derive(Clone, Debug, Default, Serialize)]
@@ -177,14 +171,19 @@ impl Report {
         Ok(())
     }
 
-    /// Words each trade-off record's findings by `wording` into
-    /// [`Report::tradeoff_words`], one paragraph a record; a record
+    /// Words each trade-off record's findings into
+    /// [`Report::tradeoff_words`] in the report's language, English
+    /// ([`crate::tradeoff::prose::sentences`]), one paragraph a record: the
+    /// paragraph under each scene's table in `docs/tradeoffs.md`. A record
     /// without findings gets none.
-    pub fn word_tradeoffs(&mut self, wording: Wording) {
+    pub fn word_tradeoffs(&mut self) {
         self.tradeoff_words = self
             .tradeoffs
             .iter()
-            .filter_map(|r| Some((r.stem(), wording(r.findings.as_ref()?).join(" "))))
+            .filter_map(|r| {
+                let findings = r.findings.as_ref()?;
+                Some((r.stem(), sentences(findings, Lang::En).join(" ")))
+            })
             .collect();
     }
 

@@ -48,6 +48,8 @@ use tracer::render::Image;
 use super::measure::Mask;
 
 pub mod displayed;
+mod tolerance;
+pub use tolerance::written;
 
 /// Standard deviations taken on the unsafe side of each estimated sum:
 /// 3, a one-sided 99.87 % bound for each where the sums are near normal.

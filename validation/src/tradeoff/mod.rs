@@ -10,11 +10,17 @@
 
 pub mod budget;
 pub mod checks;
+pub mod error;
 pub mod findings;
 pub mod measure;
 pub mod mitsuba;
 pub mod pareto;
+pub mod pilot;
+pub mod prose;
 pub mod record;
+pub mod render;
+pub mod sweep;
+pub mod truth;
 
 use serde::{Deserialize, Serialize};
 
@@ -22,6 +28,11 @@ use serde::{Deserialize, Serialize};
 pub const SCHEMA: &str = "optics.tradeoff";
 /// The version of [`SCHEMA`]: raised when a field changes meaning or goes.
 pub const SCHEMA_VERSION: u32 = 1;
+
+/// The version of the two line schemas of a sweep spread over machines,
+/// its jobs (`optics.tradeoff-job`) and their results
+/// (`optics.tradeoff-result`): raised when a field changes meaning or goes.
+pub const JOB_VERSION: u32 = 1;
 
 /// The fixed error measures, by their names in the record.
 pub const MEASURES: [&str; 4] = ["rel_rmse", "delta_e_mean", "delta_e_p99", "flip_mean"];

@@ -5,7 +5,7 @@
 use clap::ValueEnum;
 use tracer::output::Destination;
 use validation::tradeoff::budget::displayed::DRAWS;
-use validation::tradeoff::budget::{Bound, K};
+use validation::tradeoff::budget::{self, Bound, K};
 use validation::tradeoff::measure::Errors;
 
 use super::predictor::Predicted;
@@ -83,7 +83,7 @@ fn verified_line(
         chosen.name(),
         reached,
         bound,
-        super::written(tolerance),
+        budget::written(tolerance),
         if reached <= tolerance {
             lang.pick("within", "belül")
         } else {
@@ -131,7 +131,7 @@ fn lines(outcome: &Outcome, lang: Lang) -> Vec<String> {
             describe(&outcome.chosen),
             outcome.metric.name(),
             p.bound(),
-            super::written(outcome.tolerance),
+            budget::written(outcome.tolerance),
             p.rays()
         ),
         prediction_line(p, lang),

@@ -111,7 +111,7 @@ impl fmt::Display for ErrorKind {
                 top_spp,
                 need,
             } => {
-                let tolerance = crate::budget::written(*tolerance);
+                let tolerance = validation::tradeoff::budget::written(*tolerance);
                 write!(
                     f,
                     "--tolerance {tolerance}: cannot reach {metric} {tolerance}; the best is {metric} ≤ {best:.4}, with {settings}"

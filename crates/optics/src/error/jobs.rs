@@ -288,7 +288,7 @@ impl fmt::Display for JobError {
                 f,
                 "{at}: version {found} of {}; this optics reads version {}",
                 kind.schema(),
-                super::super::tradeoff::jobs::VERSION
+                validation::tradeoff::JOB_VERSION
             ),
             JobError::NoSuchJob {
                 field,

@@ -62,7 +62,7 @@ pub fn jobs_hu(error: &JobError) -> String {
         JobError::Version { kind, at, found } => format!(
             "{at}: a(z) {} {found}. változata; ez az optics a(z) {}. változatot olvassa",
             kind.schema(),
-            crate::tradeoff::jobs::VERSION
+            validation::tradeoff::JOB_VERSION
         ),
         JobError::NoSuchJob {
             field,

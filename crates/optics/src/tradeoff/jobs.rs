@@ -28,9 +28,7 @@ use tracer::scene::Settings;
 use super::{sweep, truth};
 use crate::error::jobs::{JobError, LineKind, Place};
 
-/// The version of both line schemas ([`LineKind::schema`]): raised when a
-/// field changes meaning or goes.
-pub const VERSION: u32 = 1;
+pub use validation::tradeoff::JOB_VERSION as VERSION;
 
 /// Jobs before the sweep's points: the truth's two halves.
 pub const TRUTH_JOBS: usize = 2;

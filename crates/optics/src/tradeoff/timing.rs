@@ -4,9 +4,10 @@
 
 use std::path::Path;
 
-use tracer::job::RenderJob;
-use tracer::render::{Image, Rendered};
+use tracer::render::Image;
 use tracer::scene::Settings;
+
+use validation::tradeoff::render::render;
 
 use super::{jobs, truth, Provenance, Renders, Setup, TradeoffArgs};
 use crate::error::{self, ErrorKind};
@@ -137,20 +138,4 @@ fn time_points(
         }
     }
     Ok(timed)
-}
-
-/// Renders `job`'s scene (read from `file`) with `settings`.
-pub(crate) fn render(
-    job: &RenderJob,
-    file: &Path,
-    settings: Settings,
-    threads: Option<usize>,
-) -> error::Result<Rendered> {
-    let job = RenderJob::with_settings(job.scene().clone(), settings).map_err(|error| {
-        ErrorKind::Scene {
-            file: file.to_owned(),
-            error,
-        }
-    })?;
-    Ok(job.render(threads, &|_| {})?)
 }

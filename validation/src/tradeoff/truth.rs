@@ -12,9 +12,10 @@ use tracer::output::read_pfm;
 use tracer::render::Image;
 use tracer::scene::Settings;
 
+use super::error::TradeoffError;
 use super::measure::{Mask, Truth};
+use super::render::render;
 use super::sweep;
-use crate::error::{self, ErrorKind};
 
 /// What the sweep's JSON says of its truth.
 #[derive(Clone, Debug, Serialize, Deserialize)]
@@ -70,10 +71,10 @@ pub struct Cache {
 
 impl Cache {
     /// The cache entry of `job`'s truth as `request` asks for it.
-    pub fn new(job: &RenderJob, request: &Request<'_>) -> error::Result<Self> {
+    pub fn new(job: &RenderJob, request: &Request<'_>) -> Result<Self, TradeoffError> {
         let half = sweep::truth_settings(job, (request.spp / 2).max(1));
         let scene_bytes = std::fs::read(request.scene_file).unwrap_or_default();
-        let settings_json = serde_json::to_value(half).map_err(ErrorKind::Encode)?;
+        let settings_json = serde_json::to_value(half).map_err(TradeoffError::Encode)?;
         let key = format!(
             "{:016x}",
             fnv1a(&[
@@ -114,7 +115,7 @@ impl Cache {
         b: Image,
         seconds: f64,
         mask: &Mask,
-    ) -> error::Result<(Truth, TruthRecord)> {
+    ) -> Result<(Truth, TruthRecord), TradeoffError> {
         let truth = Truth::from_renders(&[a, b], mask);
         let record = TruthRecord {
             settings: self.settings_json,
@@ -127,13 +128,13 @@ impl Cache {
             key: self.key,
             file: self.image_path.display().to_string(),
         };
-        let meta = serde_json::to_string_pretty(&record).map_err(ErrorKind::Encode)? + "\n";
+        let meta = serde_json::to_string_pretty(&record).map_err(TradeoffError::Encode)? + "\n";
         let pfm = tracer::output::pfm_bytes(&truth.image);
         write_all_atomically(&[
             (self.image_path.as_path(), pfm.as_slice()),
             (self.meta_path.as_path(), meta.as_bytes()),
         ])
-        .map_err(|error| ErrorKind::Output(error.into()))?;
+        .map_err(|error| TradeoffError::Output(error.into()))?;
         Ok((truth, record))
     }
 }
@@ -145,7 +146,7 @@ pub fn obtain(
     request: &Request<'_>,
     mask: &Mask,
     threads: Option<usize>,
-) -> error::Result<(Truth, TruthRecord)> {
+) -> Result<(Truth, TruthRecord), TradeoffError> {
     let cache = Cache::new(job, request)?;
     if !request.fresh {
         if let Some(found) = cached(&cache.image_path, &cache.meta_path, &cache.key, mask, job) {
@@ -153,12 +154,12 @@ pub fn obtain(
         }
     }
     let half = cache.half;
-    let a = super::render(job, request.scene_file, half, threads)?;
+    let a = render(job, request.scene_file, half, threads)?;
     let second = Settings {
         seed: half.seed.wrapping_add(1),
         ..half
     };
-    let b = super::render(job, request.scene_file, second, threads)?;
+    let b = render(job, request.scene_file, second, threads)?;
     let seconds = (a.elapsed + b.elapsed).as_secs_f64();
     cache.store(a.image, b.image, seconds, mask)
 }

@@ -5,15 +5,15 @@
 
 use std::path::Path;
 
+use super::budget::{Pilot, Rays};
+use super::error::TradeoffError;
+use super::measure::Mask;
+use super::render::render;
+use super::sweep;
 use serde::Serialize;
 use tracer::job::RenderJob;
 use tracer::render::Rendered;
 use tracer::scene::{FresnelModel, IntegratorKind, PixelFilter, RenderSpec, Settings};
-use validation::tradeoff::budget::{Pilot, Rays};
-use validation::tradeoff::measure::Mask;
-
-use crate::error;
-use crate::tradeoff::sweep;
 
 /// The bounce limits a candidate may take, up to the truth's.
 const DEPTHS: [u32; 6] = [1, 2, 4, 8, 16, 32];
@@ -155,17 +155,16 @@ pub fn run(
     (truth, candidates): (&Settings, &[Candidate]),
     (half_spp, mask, keep): (u32, &Mask, bool),
     threads: Option<usize>,
-) -> error::Result<Pass> {
+) -> Result<Pass, TradeoffError> {
     let mut rays = 0;
-    let mut halves = |settings: &Settings, samples: bool| -> error::Result<[Rendered; 2]> {
+    let mut halves = |settings: &Settings, samples: bool| -> Result<[Rendered; 2], TradeoffError> {
         let at = |seed: u64| Settings {
             spp: if samples { half_spp } else { settings.spp },
             seed,
             ..*settings
         };
-        let first = crate::tradeoff::render(job, file, at(settings.seed), threads)?;
-        let second =
-            crate::tradeoff::render(job, file, at(settings.seed.wrapping_add(1)), threads)?;
+        let first = render(job, file, at(settings.seed), threads)?;
+        let second = render(job, file, at(settings.seed.wrapping_add(1)), threads)?;
         rays += first.rays.total() + second.rays.total();
         Ok([first, second])
     };
