@@ -30,6 +30,9 @@ pub mod harness;
 #[cfg(feature = "harness")]
 pub mod jobs;
 pub mod render;
+mod usage;
+
+pub(crate) use usage::{usage_argument, usage_text};
 
 /// The outcome of a step that can fail with one of the suite's own errors.
 pub type Result<T, E = Error> = std::result::Result<T, E>;
@@ -243,16 +246,6 @@ impl Error {
     pub fn field(&self) -> Option<String> {
         self.kind.field()
     }
-
-    /// The error as JSON: `{"kind": …, "field": …, "message": …}`, the
-    /// message in `lang`, the field `null` when unknown.
-    pub fn to_json(&self, lang: crate::Lang) -> serde_json::Value {
-        serde_json::json!({
-            "kind": self.kind.name(),
-            "field": self.field(),
-            "message": crate::lang::error_message(self, lang),
-        })
-    }
 }
 
 impl From<ErrorKind> for Error {
@@ -405,32 +398,6 @@ impl ErrorKind {
             ErrorKind::Jobs(error) => error.field(),
         }
     }
-}
-
-/// The argument a command-line error names (`--eta <ETA>`), if it names one.
-pub(crate) fn usage_argument(error: &clap::Error) -> Option<String> {
-    use clap::error::{ContextKind, ContextValue};
-    match error.get(ContextKind::InvalidArg)? {
-        ContextValue::String(arg) => Some(arg.clone()),
-        ContextValue::Strings(args) => Some(args.join(", ")),
-        _ => None,
-    }
-}
-
-/// The argument parser's message without its `error: ` and the usage and
-/// help hints that follow it, on one line.
-pub(crate) fn usage_text(error: &clap::Error) -> String {
-    let text = error.to_string();
-    let message: Vec<&str> = text
-        .lines()
-        .take_while(|line| !line.trim().is_empty())
-        .map(str::trim)
-        .collect();
-    let message = message.join(" ");
-    message
-        .strip_prefix("error: ")
-        .unwrap_or(&message)
-        .to_owned()
 }
 
 impl fmt::Display for Error {

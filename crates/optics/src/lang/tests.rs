@@ -4,6 +4,7 @@
 use super::*;
 use crate::error::usage_text;
 use clap::Parser;
+use radiometry::domain::{self, DomainError, Expected};
 use std::collections::BTreeSet;
 
 #[cfg(feature = "harness")]
