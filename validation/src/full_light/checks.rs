@@ -6,9 +6,9 @@ use super::reference::{decode, DecodedLight, FullLight};
 use super::statistics::{share, RegionMean};
 use super::{Estimate, Region, ALPHA, FINDING_RELATIVE, POWER, TOLERANCE_RELATIVE};
 use crate::check::Check;
+use crate::context::{Context, Samples};
 use crate::reference::ReferenceError;
 use crate::renders::{path_statistics_with, sample_statistics, tracer_render, Renderer};
-use crate::suite::{Context, Samples};
 use tracer::scene::{IntegratorKind, PixelFilter};
 
 /// A tracer render as the checks read it: per-pixel mean and unbiased

@@ -57,7 +57,7 @@ pub const POWER: f64 = 0.8;
 /// Relative difference of a region's mean that a tracer render may show
 /// against Mitsuba's at the same pixel positions without failing, whatever
 /// the samples: float32 differences of intersections and ray offsets, as
-/// the per-pixel render comparison allows ([`crate::renders::TOLERANCE_RELATIVE`]).
+/// the per-pixel render comparison allows ([`crate::compare::TOLERANCE_RELATIVE`]).
 /// Against the box-filtered estimates the allowance adds what the filter
 /// moves that region's mean, measured per scene, region and channel as
 /// `|path − path_centres|` (up to 3 % on `gold_spheres`, whose gold

@@ -4,13 +4,10 @@
 
 use super::figure::triptych;
 use super::image_mean;
-use super::{
-    pixel_label, summarise_failures, tolerance, Compared, Decoded, PathImages, ALPHA,
-    TOLERANCE_ABSOLUTE, TOLERANCE_RELATIVE,
-};
+use super::{pixel_label, summarise_failures, tolerance, Compared, Decoded, PathImages, ALPHA};
 use crate::check::Check;
 use crate::compare::welch::{guarded_variance, pixel_tests_guarded};
-use crate::compare::Estimate;
+use crate::compare::{Estimate, TOLERANCE_ABSOLUTE, TOLERANCE_RELATIVE};
 use crate::statistics::{self, Sample, Welch};
 
 /// Both sides of a path comparison, per pixel-channel: the means, the
