@@ -34,13 +34,15 @@
 mod checks;
 mod reference;
 mod statistics;
+mod tracer_checks;
 
 pub use checks::{
     box_filter_shift, check_all_the_light, check_all_the_light_in, check_independent,
-    check_missing_share, check_same_missing_light, FullLightChecks, TracerRender,
+    check_missing_share, check_same_missing_light, TracerRender,
 };
 pub use reference::{decode, DecodedLight, EstimateRender, FullLight, RegionMask, SceneLight};
 pub use statistics::{share, RegionMean, Share};
+pub use tracer_checks::FullLightChecks;
 
 /// The reference file.
 pub const FILE: &str = "mitsuba_full_light.json";
