@@ -32,6 +32,7 @@ pub mod check;
 pub mod checkout;
 pub mod colorimetry;
 pub mod compare;
+pub mod context;
 pub mod exchange;
 pub mod flip;
 pub mod full_light;

@@ -169,9 +169,13 @@ pub enum ErrorKind {
         /// Row, from 0 at the top.
         y: u32,
     },
-    /// No usable checkout of the suite (`--checkout`, `OPTICS_CHECKOUT`).
+    /// No usable checkout of the suite, for a command without `--checkout`
+    /// (`OPTICS_CHECKOUT`, or the working directory's).
     #[cfg(feature = "harness")]
     Checkout(validation::checkout::CheckoutError),
+    /// No usable checkout, for a command that takes `--checkout`.
+    #[cfg(feature = "harness")]
+    CheckoutWithFlag(validation::checkout::CheckoutError),
     /// The harness could not run to the end.
     #[cfg(feature = "harness")]
     Pipeline(validation::pipeline::PipelineError),
@@ -331,7 +335,9 @@ impl ErrorKind {
             ErrorKind::Threads(_) => "threads",
             ErrorKind::RadianceNotFinite { .. } => "render.not_finite",
             #[cfg(feature = "harness")]
-            ErrorKind::Checkout(error) => harness::checkout_name(error),
+            ErrorKind::Checkout(error) | ErrorKind::CheckoutWithFlag(error) => {
+                harness::checkout_name(error)
+            }
             #[cfg(feature = "harness")]
             ErrorKind::Pipeline(error) => harness::pipeline_name(error),
             #[cfg(feature = "harness")]
@@ -379,7 +385,11 @@ impl ErrorKind {
             ErrorKind::Scene { error, .. } => Some(error.field().to_owned()),
             ErrorKind::Output(_) => Some("--output".to_owned()),
             #[cfg(feature = "harness")]
-            ErrorKind::Checkout(error) => Some(harness::checkout_field(error).to_owned()),
+            ErrorKind::Checkout(error) => Some(harness::checkout_field(error, None).to_owned()),
+            #[cfg(feature = "harness")]
+            ErrorKind::CheckoutWithFlag(error) => {
+                Some(harness::checkout_field(error, Some(harness::CHECKOUT_FLAG)).to_owned())
+            }
             #[cfg(feature = "harness")]
             ErrorKind::Pipeline(error) => harness::pipeline_field(error),
             #[cfg(feature = "harness")]

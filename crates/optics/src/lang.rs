@@ -102,7 +102,11 @@ fn hungarian(kind: &ErrorKind) -> String {
         ErrorKind::Threads(error) => format!("a renderelés szálai nem indíthatók: {error}"),
         ErrorKind::RadianceNotFinite { x, y } => render::not_finite_hu(*x, *y),
         #[cfg(feature = "harness")]
-        ErrorKind::Checkout(error) => harness::checkout_hu(error),
+        ErrorKind::Checkout(error) => harness::checkout_hu(error, None),
+        #[cfg(feature = "harness")]
+        ErrorKind::CheckoutWithFlag(error) => {
+            harness::checkout_hu(error, Some(crate::error::harness::CHECKOUT_FLAG))
+        }
         #[cfg(feature = "harness")]
         ErrorKind::Pipeline(error) => harness::pipeline_hu(error),
         #[cfg(feature = "harness")]

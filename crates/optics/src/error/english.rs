@@ -84,7 +84,11 @@ impl fmt::Display for ErrorKind {
                  exceeds f32 there; nothing was written"
             ),
             #[cfg(feature = "harness")]
-            ErrorKind::Checkout(error) => write!(f, "{error}"),
+            ErrorKind::Checkout(error) => f.write_str(&harness::checkout_en(error, None)),
+            #[cfg(feature = "harness")]
+            ErrorKind::CheckoutWithFlag(error) => {
+                f.write_str(&harness::checkout_en(error, Some(harness::CHECKOUT_FLAG)))
+            }
             #[cfg(feature = "harness")]
             ErrorKind::Pipeline(error) => match harness::pipeline_lead(error) {
                 Some(lead) => write!(f, "{}: {error}", lead.en),

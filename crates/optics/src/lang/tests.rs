@@ -211,7 +211,7 @@ fn slot(kind: &ErrorKind) -> usize {
         ErrorKind::Threads(_) => CALCULATOR + render_kinds::THREADS,
         ErrorKind::RadianceNotFinite { .. } => CALCULATOR + render_kinds::NOT_FINITE,
         #[cfg(feature = "harness")]
-        ErrorKind::Checkout(error) => {
+        ErrorKind::Checkout(error) | ErrorKind::CheckoutWithFlag(error) => {
             CALCULATOR + render_kinds::SLOTS + harness_kinds::checkout_slot(error)
         }
         #[cfg(feature = "harness")]
