@@ -4,8 +4,8 @@
 
 use std::path::{Path, PathBuf};
 
-use tracer::job::RenderJob;
 use safe_io::check_destination;
+use tracer::job::RenderJob;
 use tracer::output::write_png;
 use tracer::scene::IntegratorKind;
 
