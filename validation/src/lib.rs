@@ -50,6 +50,7 @@ pub mod statistics;
 pub mod suite;
 pub mod techniques;
 pub mod tradeoff;
+pub mod user_render;
 
 pub use check::{Check, Metric};
 

@@ -395,7 +395,7 @@ impl ErrorKind {
             #[cfg(feature = "harness")]
             ErrorKind::ChecksFailed { .. } => None,
             #[cfg(feature = "harness")]
-            ErrorKind::Compare(error) => error.field(),
+            ErrorKind::Compare(error) => compare::field(error),
             #[cfg(feature = "harness")]
             ErrorKind::TruthIsBlack { .. } => Some("SCENE".to_owned()),
             #[cfg(feature = "harness")]

@@ -8,7 +8,7 @@ use std::fmt;
 use validation::tradeoff::budget::Need;
 
 #[cfg(feature = "harness")]
-use super::harness;
+use super::{compare, harness};
 use super::{usage_text, ErrorKind};
 
 impl fmt::Display for ErrorKind {
@@ -99,7 +99,7 @@ impl fmt::Display for ErrorKind {
                 write!(f, "{failed} of {checks} checks failed")
             }
             #[cfg(feature = "harness")]
-            ErrorKind::Compare(error) => write!(f, "{error}"),
+            ErrorKind::Compare(error) => compare::english(error, f),
             #[cfg(feature = "harness")]
             ErrorKind::TruthIsBlack { file } => write!(
                 f,
