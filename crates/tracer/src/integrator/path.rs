@@ -17,10 +17,12 @@
 
 use glam::Vec3;
 
+use super::counts::{Bounce, RayCounts};
+use super::hemisphere::cosine_sample;
 use super::pending::{roulette, Pending};
 use super::photon::Pass;
-use super::scatter::{Bounce, Lobe, Surface};
-use super::{cosine_sample, RayCounts, Tracer};
+use super::scatter::{Lobe, Surface};
+use super::tracer::Tracer;
 use crate::geometry::{Hit, Ray};
 use crate::sampler::{Sample, Slot1d};
 use crate::scene::Material;

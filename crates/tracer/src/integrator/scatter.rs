@@ -12,23 +12,13 @@ use glam::Vec3;
 use radiometry::snell::Incidence;
 use radiometry::{course, fresnel, radiance, specular, Real};
 
-use super::Tracer;
+use super::counts::Bounce;
+use super::tracer::Tracer;
 use crate::geometry::{Hit, Ray};
 use crate::scene::faults::Fault;
 use crate::scene::{FresnelModel, Material};
 use crate::spawn;
 use crate::tier::Vector;
-
-/// What kind of secondary ray leaves a surface.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Bounce {
-    /// A sampled direction off a rough surface (the path tracer's).
-    Diffuse,
-    /// The mirror direction.
-    Reflection,
-    /// Through a dielectric interface.
-    Refraction,
-}
 
 /// What a surface does with the light that reaches it.
 #[derive(Clone, Copy, Debug, PartialEq)]
