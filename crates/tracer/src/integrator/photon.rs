@@ -134,7 +134,8 @@ impl Tracer<'_> {
         }
         let (mut ray, mut flux) = (emitted.ray, emitted.flux);
         let start = flux.max_element();
-        let stored_before_any_mirror = self.fault == Some(Fault::PhotonsStoredBeforeAnyMirror);
+        let stored_before_any_mirror =
+            matches!(self.fault, Some(Fault::PhotonsStoredBeforeAnyMirror));
         for bounces in 0..=self.settings.max_depth {
             counts.photon += 1;
             let hit = self.intersect(&ray)?;
@@ -160,7 +161,7 @@ impl Tracer<'_> {
                         Some((refracted, r)) if rng.next_f32() >= r => (refracted, 1.0 - r),
                         Some((_, r)) => (lobes.reflection, r),
                     };
-                    if self.fault != Some(Fault::PhotonsUnweightedAtMirrors) {
+                    if !matches!(self.fault, Some(Fault::PhotonsUnweightedAtMirrors)) {
                         flux *= lobe.power / chance;
                     }
                     ray = lobe.ray;

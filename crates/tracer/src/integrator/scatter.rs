@@ -177,7 +177,7 @@ impl<V: Vector> Tracer<'_, V> {
     /// `T/η²` (`radiance::across_interface`); `T` alone with that law
     /// planted out (`Fault::RadianceNotScaledAcrossInterfaces`).
     fn across_interface(&self, transmitted: V::Scalar, eta_path: V::Scalar) -> V::Scalar {
-        if self.fault == Some(Fault::RadianceNotScaledAcrossInterfaces) {
+        if matches!(self.fault, Some(Fault::RadianceNotScaledAcrossInterfaces)) {
             return transmitted;
         }
         radiance::across_interface(transmitted, eta_path)
