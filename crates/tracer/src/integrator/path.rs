@@ -20,7 +20,7 @@ use glam::Vec3;
 use super::counts::{Bounce, RayCounts};
 use super::hemisphere::cosine_sample;
 use super::pending::{roulette, Pending};
-use super::photon::Pass;
+use super::photon::maps::Pass;
 use super::scatter::{Lobe, Surface};
 use super::tracer::Tracer;
 use crate::geometry::{Hit, Ray};

@@ -40,7 +40,7 @@ use crate::scene::IntegratorKind;
 mod emit;
 mod grid;
 mod landed;
-mod maps;
+pub(super) mod maps;
 
 pub use grid::Grid;
 pub use landed::Photon;

@@ -6,7 +6,7 @@ use glam::Vec3;
 use radiometry::Real;
 
 use super::machinery::Machinery;
-use super::photon::Caustics;
+use super::photon::maps::Caustics;
 use crate::geometry::{Hit, Object, Ray};
 use crate::scene::faults::{self, Fault};
 use crate::scene::model::World;
