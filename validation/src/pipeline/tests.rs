@@ -2,6 +2,7 @@
 //! refused before any check runs, the report's pair never split.
 
 use super::*;
+use crate::checkout::Checkout;
 use safe_io::WriteError;
 
 #[test]

@@ -1,0 +1,30 @@
+//! The steps of a run, as progress hears of them.
+
+use crate::python::SetUp;
+
+/// A step of the run, for progress messages.
+#[derive(Clone, Copy, Debug)]
+pub enum Step<'a> {
+    /// Setting the Python environment up.
+    Python(SetUp<'a>),
+    /// Regenerating the references with the pinned tools.
+    Regenerating,
+    /// About to run kind `index` of `total` kinds of check.
+    Checks {
+        /// Which kind, from 0.
+        index: usize,
+        /// How many kinds.
+        total: usize,
+        /// Its name.
+        name: &'a str,
+    },
+    /// Every kind of check has run.
+    ChecksDone,
+    /// Having Mitsuba evaluate `cases` random cases.
+    RandomCases {
+        /// How many, all laws together.
+        cases: usize,
+    },
+    /// Drawing the figures.
+    DrawingFigures,
+}
