@@ -9,7 +9,7 @@
 use glam::Vec3;
 use tracer::render::Image;
 
-use super::Verdicts;
+use super::verdicts::Verdicts;
 
 /// The scale in words, for the reports beside the map.
 pub const LEGEND: &str =

@@ -6,7 +6,7 @@
 
 use serde::Serialize;
 
-use super::Verdicts;
+use super::verdicts::Verdicts;
 
 /// One region's summary. A pixel disagrees when any of its channels does.
 #[derive(Clone, Debug, PartialEq, Serialize)]

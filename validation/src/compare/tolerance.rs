@@ -20,7 +20,9 @@
 
 use tracer::output::to_srgb8;
 
-use super::{masked, Estimate, Tolerance, Verdicts};
+use super::estimate::Estimate;
+use super::tolerance_bounds::Tolerance;
+use super::verdicts::{masked, Verdicts};
 use crate::statistics::student_t_critical;
 
 /// `z` of the reference's noise and what it allows at each pixel-channel:

@@ -10,7 +10,9 @@
 //! The score is `min(ln p / ln(α/m), |Δ| / tolerance)`: above 1 exactly
 //! when both conditions hold.
 
-use super::{masked, Estimate, Tolerance, Verdicts};
+use super::estimate::Estimate;
+use super::tolerance_bounds::Tolerance;
+use super::verdicts::{masked, Verdicts};
 use crate::statistics::{self, Sample};
 
 /// The t-tests made: how many, and the per-test threshold `α/m`.

@@ -4,7 +4,7 @@
 
 use glam::DVec3;
 
-use super::{CasesFile, LawCase, LawResult, ResultsFile};
+use super::cases::{CasesFile, LawCase, LawResult, ResultsFile};
 use crate::check::{ulps_f32, Check};
 use crate::laws::directions::{max_abs, vec3};
 use crate::laws::{

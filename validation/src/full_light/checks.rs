@@ -2,9 +2,10 @@
 //! each other, the missing share per scene, and a tracer render against the
 //! estimate it claims to match.
 
+use super::estimates::{Estimate, Region};
 use super::reference::DecodedLight;
 use super::statistics::{share, RegionMean};
-use super::{Estimate, Region, ALPHA, FINDING_RELATIVE, POWER, TOLERANCE_RELATIVE};
+use super::thresholds::{ALPHA, FINDING_RELATIVE, POWER, TOLERANCE_RELATIVE};
 use crate::check::Check;
 
 /// A tracer render as the checks read it: per-pixel mean and unbiased

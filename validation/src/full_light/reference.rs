@@ -9,9 +9,14 @@ use base64::Engine as _;
 use serde::Deserialize;
 use tracer::scene::Scene;
 
-use super::{Estimate, Region, FILE, SCHEMA};
+use super::estimates::{Estimate, Region};
 use crate::reference::ReferenceError;
 use crate::renders::Tool;
+
+/// The reference file.
+pub const FILE: &str = "mitsuba_full_light.json";
+/// Its schema.
+pub const SCHEMA: &str = "mitsuba-full-light/1";
 
 /// `mitsuba_full_light.json`.
 #[derive(Clone, Debug, Deserialize)]

@@ -6,8 +6,8 @@ use super::checks::{
     check_all_the_light_in, check_independent, check_missing_share, check_same_missing_light,
     has_delta_surface, TracerRender,
 };
-use super::reference::{decode, DecodedLight, FullLight};
-use super::{Estimate, Region};
+use super::estimates::{Estimate, Region};
+use super::reference::{decode, DecodedLight, FullLight, FILE};
 use crate::check::Check;
 use crate::context::{Context, Samples};
 use crate::reference::ReferenceError;
@@ -51,7 +51,7 @@ impl FullLightChecks {
         context: &Context,
         checks: &mut Vec<Check>,
     ) -> Result<(), ReferenceError> {
-        let file = context.reference_dir.join(super::FILE);
+        let file = context.reference_dir.join(FILE);
         for (index, s) in reference.scenes.iter().enumerate() {
             let decoded = decode(&file, index, s)?;
             checks.extend(check_independent(&s.name, &decoded));

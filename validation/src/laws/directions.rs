@@ -3,7 +3,9 @@
 
 use glam::Vec3;
 
-use super::{DirectionCase, Laws, MitsubaLaws, Verdict, DIRECTION_ABS, GROSS_ABS, MITSUBA_ABS};
+use super::reference::{DirectionCase, MitsubaLaws};
+use super::under_test::Laws;
+use super::verdict::{Verdict, DIRECTION_ABS, GROSS_ABS, MITSUBA_ABS};
 use crate::check::Check;
 
 /// The extra allowance for a refracted direction near the critical angle,

@@ -2,7 +2,9 @@
 //! exact values: each reflectance compared three ways (module docs of
 //! [`crate::laws`]).
 
-use super::{Laws, MitsubaLaws, Verdict, GROSS_ABS, MITSUBA_ABS, OURS_ULPS};
+use super::reference::MitsubaLaws;
+use super::under_test::Laws;
+use super::verdict::{Verdict, GROSS_ABS, MITSUBA_ABS, OURS_ULPS};
 use crate::check::{ulps_f32, Check};
 
 fn power(amplitude: [f64; 2]) -> f64 {

@@ -3,7 +3,10 @@
 
 use serde::Deserialize;
 
-use super::{FILE, SCHEMA};
+/// The file name of the reference.
+pub const FILE: &str = "mitsuba_laws.json";
+/// Its schema.
+pub const SCHEMA: &str = "mitsuba-laws/1";
 
 /// `mitsuba_laws.json`.
 #[derive(Clone, Debug, Deserialize)]

@@ -1,9 +1,12 @@
 //! The angle laws of `snell` (Snell's law for angles, the critical and
 //! Brewster angles) against the 50-digit values in both tiers.
 
-use super::{compare, measure, FresnelMpmath, Laws64, BOUND_ULPS};
+use super::bounds::BOUND_ULPS;
+use super::measure::{compare, measure};
+use super::reference::FresnelMpmath;
 use crate::check::Check;
 use crate::laws::Laws;
+use crate::laws::Laws64;
 
 /// The bound on `transmitted_angle`, in ulps of the tier:
 /// [`BOUND_ULPS`] + (8/π) `cond_theta`.

@@ -1,12 +1,14 @@
 //! The exact Fresnel laws, dielectric and conductor, against the 50-digit
 //! values in both tiers.
 
-use super::{
-    compare_within, dielectric_bound_ulps, FresnelMpmath, Laws64, BOUND_ULPS, CONDUCTOR_BOUND_ULPS,
-    DIELECTRIC_F64_BOUND_ULPS,
+use super::bounds::{
+    dielectric_bound_ulps, BOUND_ULPS, CONDUCTOR_BOUND_ULPS, DIELECTRIC_F64_BOUND_ULPS,
 };
+use super::measure::compare_within;
+use super::reference::FresnelMpmath;
 use crate::check::Check;
 use crate::laws::Laws;
+use crate::laws::Laws64;
 use radiometry::fresnel::DielectricFresnel;
 
 fn widen(f: DielectricFresnel<f32>) -> [f64; 4] {

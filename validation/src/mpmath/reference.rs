@@ -5,6 +5,11 @@
 use radiometry::Real;
 use serde::Deserialize;
 
+/// The file name of the reference.
+pub const FILE: &str = "fresnel_mpmath.json";
+/// Its schema.
+pub const SCHEMA: &str = "fresnel-reference/1";
+
 /// A value carried as the unevaluated sum `hi + lo` of two doubles.
 #[derive(Clone, Copy, Debug, Deserialize)]
 pub struct Exact(pub f64, pub f64);
@@ -104,7 +109,7 @@ pub struct ConductorCase {
 impl FresnelMpmath {
     /// Loads the reference from `dir`.
     pub fn load(dir: &std::path::Path) -> Result<Self, crate::reference::ReferenceError> {
-        crate::reference::load(dir, super::FILE, super::SCHEMA)
+        crate::reference::load(dir, FILE, SCHEMA)
     }
 }
 

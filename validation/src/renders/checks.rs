@@ -7,11 +7,12 @@ use std::path::Path;
 use tracer::render::Image;
 use tracer::scene::{IntegratorKind, PixelFilter, RayOffset};
 
+use super::common::{Compared, MITSUBA_RAY_EPSILON};
 use super::figure::RenderFigure;
-use super::{
-    compare_path, compare_whitted, decode, path_statistics, path_statistics_with, tracer_render,
-    Compared, MitsubaRenders, Renderer, SceneRenders, MITSUBA_RAY_EPSILON,
-};
+use super::path::compare_path;
+use super::reference::{decode, MitsubaRenders, SceneRenders, FILE};
+use super::runner::{path_statistics, path_statistics_with, tracer_render, Renderer};
+use super::whitted::compare_whitted;
 use crate::check::Check;
 use crate::context::{Context, Samples};
 use crate::reference::ReferenceError;
@@ -47,7 +48,7 @@ impl RenderChecks {
         checks: &mut Vec<Check>,
         figures: &mut Vec<RenderFigure>,
     ) -> Result<(), ReferenceError> {
-        let file = context.reference_dir.join(super::FILE);
+        let file = context.reference_dir.join(FILE);
         for (index, s) in reference.scenes.iter().enumerate() {
             let decoded = decode(&file, index, s)?;
             let stale = stale_scene(&context.checkout, s, &reference.regenerate);

@@ -12,7 +12,7 @@
 //! render under Mitsuba's offset rule is held to the same test, and passing
 //! it the difference is a finding about the reference.
 
-use super::tolerance;
+use super::common::tolerance;
 use crate::check::Check;
 use crate::statistics::{self, Sample, Welch};
 

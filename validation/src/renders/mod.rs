@@ -32,6 +32,7 @@
 //! can be shown to be caught. Radiance is in W/(sr·m²) per channel.
 
 mod checks;
+mod common;
 mod figure;
 mod image_mean;
 mod path;
@@ -40,73 +41,14 @@ mod runner;
 mod whitted;
 
 pub use checks::RenderChecks;
+pub use common::{Compared, ALPHA, MITSUBA_RAY_EPSILON};
 pub use figure::{RenderFigure, TRIPTYCH_GAP};
 pub use path::compare_path;
 pub use reference::{
     decode, Decoded, MitsubaRenders, PathImages, PathRender, SceneRenders, Tool, WhittedRender,
+    FILE, SCHEMA,
 };
 pub use runner::{
     path_statistics, path_statistics_with, sample_statistics, tracer_render, Renderer,
 };
 pub use whitted::compare_whitted;
-
-use tracer::render::Image;
-
-use crate::check::Check;
-
-/// The reference file.
-pub const FILE: &str = "mitsuba_renders.json";
-/// Its schema.
-pub const SCHEMA: &str = "mitsuba-renders/2";
-
-/// Mitsuba 3's `RayEpsilon` in `float32`, `1500 · 2⁻²⁴`: its secondary rays
-/// start `RayEpsilon (1 + max |p_i|)` off the surface along the normal
-/// (`Interaction::spawn_ray`), which the tracer reproduces as
-/// `RayOffset::Scaled(MITSUBA_RAY_EPSILON)`.
-pub const MITSUBA_RAY_EPSILON: f64 = 1500.0 / 16_777_216.0;
-
-/// Family-wise false-alarm rate of a path comparison: one correct render in
-/// a hundred may fail by chance.
-pub const ALPHA: f64 = 0.01;
-
-/// Outcome of one scene's comparison.
-pub struct Compared {
-    /// The check.
-    pub check: Check,
-    /// Its figure.
-    pub figure: RenderFigure,
-}
-
-fn tolerance(mitsuba: f64) -> f64 {
-    crate::compare::Tolerance::RENDERS.at(mitsuba)
-}
-
-fn pixel_label(width: u32, i: usize) -> String {
-    const CHANNEL: [&str; 3] = ["R", "G", "B"];
-    let pixel = i / 3;
-    format!(
-        "pixel ({}, {}) {}",
-        pixel as u32 % width,
-        pixel as u32 / width,
-        CHANNEL[i % 3]
-    )
-}
-
-/// Keeps the first failures and counts the rest.
-fn summarise_failures(check: &mut Check) {
-    const SHOWN: usize = 10;
-    if check.failures.len() > SHOWN {
-        let rest = check.failures.len() - SHOWN;
-        check.failures.truncate(SHOWN);
-        check.failures.push(format!("… and {rest} more"));
-    }
-}
-
-fn flatten(image: &Image) -> Vec<f64> {
-    image
-        .pixels
-        .iter()
-        .flat_map(|p| p.to_array())
-        .map(f64::from)
-        .collect()
-}

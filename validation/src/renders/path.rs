@@ -6,9 +6,10 @@ mod judge;
 mod measures;
 mod sides;
 
+use super::common::{summarise_failures, Compared, ALPHA, MITSUBA_RAY_EPSILON};
 use super::figure::triptych;
 use super::image_mean;
-use super::{summarise_failures, Compared, Decoded, ALPHA};
+use super::reference::Decoded;
 use crate::check::Check;
 use crate::compare::{TOLERANCE_ABSOLUTE, TOLERANCE_RELATIVE};
 use judge::{judge_deterministic, judge_tests};
@@ -16,7 +17,7 @@ use measures::{record_metrics, record_power};
 use sides::{split, Moved, Sides, Split, Verdicts};
 
 /// The tracer's per-pixel mean and per-sample variance with its secondary
-/// rays started by Mitsuba's rule ([`super::MITSUBA_RAY_EPSILON`]); asked
+/// rays started by Mitsuba's rule ([`MITSUBA_RAY_EPSILON`]); asked
 /// for only when a rejection is left that the measured offset sensitivity
 /// does not explain.
 pub type UnderMitsubaOffsets<'a> = &'a dyn Fn() -> Result<(Vec<f64>, Vec<f64>), String>;
@@ -128,7 +129,7 @@ fn record_findings(check: &mut Check, name: &str, verdicts: &Verdicts) {
              when the tracer starts its secondary rays as Mitsuba does, {:.3e} (1 + max |p_i|) off the \
              surface: Mitsuba's offsets move this light; e.g. {example}",
             verdicts.rule_findings,
-            super::MITSUBA_RAY_EPSILON
+            MITSUBA_RAY_EPSILON
         ));
     }
     check.sum_up(|c| {

@@ -8,8 +8,12 @@ use base64::Engine as _;
 use serde::Deserialize;
 use tracer::scene::{PixelFilter, Scene};
 
-use super::{FILE, SCHEMA};
 use crate::reference::ReferenceError;
+
+/// The reference file.
+pub const FILE: &str = "mitsuba_renders.json";
+/// Its schema.
+pub const SCHEMA: &str = "mitsuba-renders/2";
 
 /// `mitsuba_renders.json`.
 #[derive(Clone, Debug, Deserialize)]

@@ -5,7 +5,7 @@ use tracer::job::RenderJob;
 use tracer::render::Image;
 use tracer::scene::{IntegratorKind, PixelFilter, RayOffset, RenderSpec, Scene, Settings};
 
-use super::flatten;
+use super::common::flatten;
 
 /// Renders a scene with settings; the tracer, or a deliberately broken one.
 pub type Renderer = fn(&Scene, &Settings) -> Result<Image, String>;

@@ -3,8 +3,9 @@
 
 use tracer::render::Image;
 
+use super::common::{flatten, pixel_label, summarise_failures, Compared, ALPHA};
 use super::figure::triptych;
-use super::{flatten, pixel_label, summarise_failures, Compared, Decoded, ALPHA};
+use super::reference::Decoded;
 use crate::check::Check;
 use crate::compare::{tolerance, Tolerance, TOLERANCE_ABSOLUTE, TOLERANCE_RELATIVE};
 

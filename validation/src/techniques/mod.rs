@@ -10,6 +10,7 @@
 //! report's numbers for the techniques, their pictures its figures.
 
 mod bump_render;
+mod curves;
 pub mod dispersion;
 mod envmap;
 pub mod envmap_vs_traced;
@@ -22,7 +23,6 @@ pub mod planar_shadow;
 mod shadow;
 mod shortcuts;
 
-use serde::Serialize;
 use techniques::dispersion::Sellmeier;
 use techniques::planar;
 
@@ -30,6 +30,7 @@ use crate::check::Check;
 use crate::renders::RenderFigure;
 pub use bump_render::render as render_with_hits;
 pub use bump_render::{bump_scene, check_bump_render, CHANGED_SHARE};
+pub use curves::{FitCurve, RefractionCurve, TechniqueCurves};
 pub use envmap::{check_envmap, sphere_round_trip, ENVMAP_ROUND_TRIP};
 pub use glass::{
     check_dispersion_render, check_prism, check_sellmeier, DATA_SHEET_ABS, FLAT_SPECTRUM_RELATIVE,
@@ -44,52 +45,6 @@ pub use planar_reflection::{check_planar_reflection, floor_matrix, mirror_scene}
 pub use planar_shadow::{check_planar_shadow, shadow_scene};
 pub use shadow::check_projected_shadow;
 pub use shortcuts::{check_cheap_refraction, check_empirical_fresnel};
-
-/// The techniques' curves, for the report's figure (`techniques.png`):
-/// what their checks measured, one value per degree.
-#[derive(Clone, Debug, Default, Serialize)]
-pub struct TechniqueCurves {
-    /// The cheap refraction's angle from Snell's law, per medium and
-    /// constant.
-    pub refraction: Vec<RefractionCurve>,
-    /// The fitted empirical Fresnel form beside the exact law and Schlick.
-    pub fresnel_fits: Vec<FitCurve>,
-    /// The environment-mapped mirror's error against the traced one as
-    /// its surroundings move away.
-    pub envmap_distance: Vec<DistanceCurve>,
-}
-
-/// One medium and constant of the cheap refraction.
-#[derive(Clone, Debug, Serialize)]
-pub struct RefractionCurve {
-    /// Medium and constant, in words.
-    pub label: String,
-    /// Angle of incidence, degrees.
-    pub angle_deg: Vec<f64>,
-    /// The angle between the cheap and the exact ray, degrees.
-    pub error_deg: Vec<f64>,
-}
-
-/// One interface's reflectance by the exact law, the fitted form and
-/// Schlick.
-#[derive(Clone, Debug, Serialize)]
-pub struct FitCurve {
-    /// The interface.
-    pub label: String,
-    /// Angle of incidence, degrees.
-    pub angle_deg: Vec<f64>,
-    /// The exact law.
-    pub exact: Vec<f64>,
-    /// The fitted form, clamped as the slide clamps it.
-    pub fitted: Vec<f64>,
-    /// Schlick's approximation.
-    pub schlick: Vec<f64>,
-    /// The fitted parameters `(bias, scale, power)`.
-    pub form: [f64; 3],
-}
-
-/// The interfaces whose fits the figure draws.
-const DRAWN_FITS: [&str; 3] = ["glass", "water", "gold G"];
 
 /// The sizes of the planar scenes' renders, pixels.
 pub const PLANAR_SIZE: (u32, u32) = (160, 120);

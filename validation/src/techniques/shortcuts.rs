@@ -6,7 +6,7 @@ use radiometry::course::EmpiricalFresnel;
 use techniques::empirical_fresnel::{self, AngleGrid, Interface, SUITE};
 use techniques::refraction::{self, Constant, Side};
 
-use super::{FitCurve, RefractionCurve, DRAWN_FITS};
+use super::curves::{FitCurve, RefractionCurve, DRAWN_FITS};
 use crate::check::Check;
 
 /// The slides' cheap refraction `t = normalize(−c n + i)` against Snell's

@@ -39,11 +39,12 @@ pub mod regions;
 
 pub use reference::{CaseSet, FresnelRandom, Law, Sampling, Tier, FILE, SCHEMA};
 
-use super::{
-    dielectric_bound_ulps, transmitted_angle_bound_ulps, Laws64, BOUND_ULPS, CONDUCTOR_BOUND_ULPS,
-    DIELECTRIC_F64_BOUND_ULPS,
+use super::angles::transmitted_angle_bound_ulps;
+use super::bounds::{
+    dielectric_bound_ulps, BOUND_ULPS, CONDUCTOR_BOUND_ULPS, DIELECTRIC_F64_BOUND_ULPS,
 };
 use crate::check::Check;
+use crate::laws::Laws64;
 use crate::laws::{Laws, Tier as Precision};
 
 /// The most average bits of error a set may show. The worst average

@@ -5,7 +5,7 @@
 use super::sides::{Sides, Verdicts};
 use crate::check::Check;
 use crate::compare::welch::guarded_variance;
-use crate::renders::{pixel_label, tolerance, ALPHA};
+use crate::renders::common::{pixel_label, tolerance, ALPHA};
 use crate::statistics::{self, Sample, Welch};
 
 /// Judges every t-test at the Bonferroni threshold: a rejection is a

@@ -3,7 +3,7 @@
 
 use super::sides::{Sides, Verdicts};
 use crate::check::Check;
-use crate::renders::{pixel_label, tolerance};
+use crate::renders::common::{pixel_label, tolerance};
 use crate::statistics::{self, Welch};
 
 /// The test's power: the relative shift of a pixel-channel's mean at which

@@ -5,7 +5,8 @@
 use crate::check::Check;
 use crate::compare::welch::{guarded_variance, pixel_tests_guarded};
 use crate::compare::Estimate;
-use crate::renders::{pixel_label, PathImages};
+use crate::renders::common::pixel_label;
+use crate::renders::reference::PathImages;
 use crate::statistics::Welch;
 
 /// Both sides of a path comparison, per pixel-channel: the means, the

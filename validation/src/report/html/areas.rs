@@ -2,7 +2,7 @@
 //! checks and figures each claims.
 
 use crate::check::Check;
-use crate::report::Report;
+use crate::report::document::Report;
 
 /// The areas of the report, in the order of its first screen: a title, the
 /// check ids it gathers (by prefix; the first area that claims a check

@@ -1,6 +1,7 @@
 //! `report.html`: the report for people, section by section.
 
 mod areas;
+mod figures;
 mod format;
 mod renders;
 mod tables;
@@ -8,15 +9,13 @@ mod tradeoff;
 
 use std::fmt::Write as _;
 
-use super::Report;
+use super::document::Report;
 use crate::check::{Check, Metric};
 use areas::{gather, Gathered};
+use figures::{figure, REGENERATE};
 use format::{escape, number, quote, readable, readable_at, status};
 use renders::render_gallery;
 use tables::{every_check, metal_colours, references, speed};
-
-/// The command that writes the report and every figure in it.
-const REGENERATE: &str = "cargo run --release -p optics -- validate";
 
 /// `report.html`: the verdict and one card per area first, each area's
 /// section with its figures beside its numbers, every check in detail, and
@@ -290,35 +289,6 @@ fn area_section(h: &mut String, a: &Gathered) {
 /// `mitsuba.shadow.path`.
 fn short_id(id: &str) -> &str {
     id.split_once('.').map_or(id, |(_, rest)| rest)
-}
-
-/// A figure, named by its file and the command that regenerates it.
-fn figure(h: &mut String, file: &str) {
-    let pixels = if file.contains("render_") {
-        " class=pixels"
-    } else {
-        ""
-    };
-    let _ = writeln!(
-        h,
-        "<figure><img{pixels} src=\"{0}\" alt=\"{0}\"><figcaption>{0}: <code>{1}</code></figcaption></figure>",
-        escape(file),
-        regenerates(file)
-    );
-}
-
-/// The command that draws `file`: the trade-off's plots come with its
-/// records (`docs/tradeoffs/make`), every other figure with the report.
-fn regenerates(file: &str) -> &'static str {
-    if file
-        .rsplit('/')
-        .next()
-        .is_some_and(|name| name.starts_with("tradeoff_"))
-    {
-        crate::tradeoff::checks::REGENERATE
-    } else {
-        REGENERATE
-    }
 }
 
 #[cfg(test)]

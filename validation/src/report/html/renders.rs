@@ -4,12 +4,12 @@ use std::fmt::Write as _;
 
 use radiometry::colour::srgb_encode;
 
-use super::figure;
+use super::figures::figure;
 use super::format::escape;
 use crate::compare::map::{heat_colour, LEGEND};
 use crate::flip;
 use crate::renders::TRIPTYCH_GAP;
-use crate::report::Report;
+use crate::report::document::Report;
 
 /// Each render compared: ours, flipping to Mitsuba's under the pointer or
 /// the keyboard's focus (the figure's first two panels, so the two are

@@ -4,7 +4,7 @@
 use std::fmt::Write as _;
 
 use super::format::{escape, number, readable, status, swatch};
-use crate::report::Report;
+use crate::report::document::Report;
 
 /// The metal shortcuts' worst CIEDE2000, with swatches.
 pub(super) fn metal_colours(h: &mut String, report: &Report) {

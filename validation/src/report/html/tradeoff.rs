@@ -4,9 +4,9 @@
 
 use std::fmt::Write as _;
 
-use super::figure;
+use super::figures::figure;
 use super::format::{escape, inline_code, number, readable};
-use crate::report::Report;
+use crate::report::document::Report;
 use crate::tradeoff::checks::REGENERATE;
 use crate::tradeoff::record::{Point, Record};
 
