@@ -93,6 +93,13 @@ pub fn jobs_hu(error: &JobError) -> String {
             "{at}: a(z) {field} nem az, amit a terv a(z) {job}. feladatnak ad: a sort \
              átírták, vagy az optics egy másik változata tervezte; újra kell tervezni"
         ),
+        _ => plan_hu(error),
+    }
+}
+
+/// A sweep's results refused against their plan, or a file unwritten.
+fn plan_hu(error: &JobError) -> String {
+    match error {
         JobError::SceneChanged { scene, at } => format!(
             "a(z) {} jelenetfájl megváltozott a tervezés óta ({at}); újra kell tervezni",
             scene.display()
@@ -137,5 +144,11 @@ pub fn jobs_hu(error: &JobError) -> String {
             lines.saturating_sub(1)
         ),
         JobError::Write { input, error } => format!("{}: {}", flag(*input), output_hu(error)),
+        JobError::Read { .. }
+        | JobError::Line { .. }
+        | JobError::Schema { .. }
+        | JobError::Version { .. }
+        | JobError::NoSuchJob { .. }
+        | JobError::NotPlanned { .. } => jobs_hu(error),
     }
 }
