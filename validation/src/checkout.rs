@@ -2,10 +2,11 @@
 //! references, the scene files they were rendered from, and the Python
 //! generators that write them all live there, not in the installed binary.
 //!
-//! Three ways name it, first match wins: an explicit directory (the
-//! command's `--checkout`), the [`ENV`] environment variable, and a search
-//! upward from the working directory. A directory is a checkout when it
-//! holds both [`MARKERS`].
+//! Three ways name it, first match wins: an explicit directory (given by
+//! the caller), the [`ENV`] environment variable, and a search upward from
+//! the working directory. A directory is a checkout when it holds both
+//! [`MARKERS`]. The errors say what was wrong with which directory; a front
+//! end adds the flag that named it and the advice its command accepts.
 
 use std::ffi::OsString;
 use std::path::{Path, PathBuf};
@@ -20,7 +21,7 @@ pub const MARKERS: [&str; 2] = ["validation/reference", "python-checks/requireme
 /// How the checkout was named.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Via {
-    /// An explicit directory (`--checkout DIR`).
+    /// An explicit directory, given by the caller.
     Explicit,
     /// The [`ENV`] environment variable.
     Environment,
@@ -45,8 +46,9 @@ pub enum CheckoutError {
     },
     /// None was named and none contains the working directory.
     #[error(
-        "no checkout of the suite found: pass --checkout DIR, set {ENV}=DIR, or run from inside \
-         a checkout (none contains {})", .start.display()
+        "no checkout of the suite found: none was named, {ENV} is unset or empty, and neither {} nor a \
+         directory above it holds both {} and {}",
+        .start.display(), MARKERS[0], MARKERS[1]
     )]
     NotFound {
         /// Where the upward search started.
@@ -56,7 +58,7 @@ pub enum CheckoutError {
 
 fn via_name(via: Via) -> &'static str {
     match via {
-        Via::Explicit => "--checkout",
+        Via::Explicit => "the directory named",
         Via::Environment => ENV,
         Via::Search => "the working directory",
         Via::BuildTime => "this build's checkout",
@@ -168,7 +170,7 @@ mod tests {
     }
 
     #[test]
-    fn the_flag_wins_over_the_variable_and_the_variable_over_the_search() {
+    fn the_explicit_directory_wins_over_the_variable_and_the_variable_over_the_search() {
         let (top, root, _) = fake_checkout();
         let elsewhere = top.path().to_owned();
         let env = Some(OsString::from(&root));
@@ -193,14 +195,25 @@ mod tests {
     }
 
     #[test]
-    fn no_checkout_names_the_three_ways() {
+    fn no_checkout_names_the_places_searched_and_no_flag() {
         let top = tempfile::tempdir().unwrap();
         let message = Checkout::locate(None, None, top.path())
             .unwrap_err()
             .to_string();
-        for way in ["--checkout DIR", ENV, "from inside a checkout"] {
-            assert!(message.contains(way), "{message}");
+        let start = top.path().display().to_string();
+        for place in [ENV, &start, MARKERS[0], MARKERS[1]] {
+            assert!(message.contains(place), "{message}");
         }
+        assert!(!message.contains("--"), "{message}");
+    }
+
+    #[test]
+    fn an_explicit_directory_that_is_not_a_checkout_is_named_by_no_flag() {
+        let (top, _, _) = fake_checkout();
+        let error = Checkout::locate(Some(top.path()), None, top.path()).unwrap_err();
+        let message = error.to_string();
+        assert!(message.starts_with("the directory named "), "{message}");
+        assert!(!message.contains("--"), "{message}");
     }
 
     #[test]

@@ -125,7 +125,7 @@ pub struct DeltaECase {
 
 impl Colorimetry {
     /// Loads the reference from `dir`.
-    pub fn load(dir: &std::path::Path) -> Result<Self, crate::ReferenceError> {
+    pub fn load(dir: &std::path::Path) -> Result<Self, crate::reference::ReferenceError> {
         crate::reference::load(dir, FILE, SCHEMA)
     }
 }

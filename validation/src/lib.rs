@@ -32,6 +32,7 @@ pub mod check;
 pub mod checkout;
 pub mod colorimetry;
 pub mod compare;
+pub mod context;
 pub mod exchange;
 pub mod flip;
 pub mod full_light;
@@ -49,6 +50,7 @@ pub mod statistics;
 pub mod suite;
 pub mod techniques;
 pub mod tradeoff;
+pub mod user_render;
 
 pub use check::{Check, Metric};
 

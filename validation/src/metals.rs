@@ -96,7 +96,7 @@ pub struct MetalAngle {
 
 impl MetalsReference {
     /// Loads the reference from `dir`.
-    pub fn load(dir: &std::path::Path) -> Result<Self, crate::ReferenceError> {
+    pub fn load(dir: &std::path::Path) -> Result<Self, crate::reference::ReferenceError> {
         crate::reference::load(dir, FILE, SCHEMA)
     }
 }

@@ -6,10 +6,9 @@
 //! takes for the progress display. Adding a kind (the renders against
 //! Mitsuba, say) is one more implementation in [`standard_kinds`].
 
-use std::path::PathBuf;
-
 use crate::check::Check;
 use crate::colorimetry::{self, Colorimetry, ColourLaws};
+pub use crate::context::{Context, Samples};
 use crate::flip;
 use crate::full_light::{self, FullLight, FullLightChecks};
 use crate::laws::{self, Laws, Laws64, MitsubaLaws};
@@ -21,38 +20,6 @@ use crate::report::{FresnelCurve, MetalSpectrum, Report, WorstDeltaE};
 use crate::speed;
 use crate::tradeoff;
 use radiometry::spectrum::{self, SAMPLES};
-
-/// What the checks run against, and how much of them.
-#[derive(Clone, Debug)]
-pub struct Context {
-    /// The directory holding the reference JSON files.
-    pub reference_dir: PathBuf,
-    /// The suite's checkout, where the scene files that the references name
-    /// are read (to tell a reference made from an older scene).
-    pub checkout: PathBuf,
-    /// The reduced set: fewer timing iterations and fewer samples.
-    pub quick: bool,
-}
-
-/// A count of samples (or renders) for the full run and for `--quick`.
-#[derive(Clone, Copy, Debug)]
-pub struct Samples {
-    /// With `--quick`.
-    pub quick: u32,
-    /// Without.
-    pub full: u32,
-}
-
-impl Context {
-    /// The count of `samples` for this run.
-    pub fn samples(&self, samples: Samples) -> u32 {
-        if self.quick {
-            samples.quick
-        } else {
-            samples.full
-        }
-    }
-}
 
 /// One kind of check.
 pub trait CheckKind {

@@ -157,3 +157,27 @@ impl fmt::Display for Offender {
         }
     }
 }
+
+impl Offender {
+    /// The offence without the numbers that move when code around it
+    /// changes (line numbers, lengths): `rule: place`, one line, stable
+    /// while the offence stands. What `known_offenders.txt` lists.
+    pub fn identity(&self) -> String {
+        let place = match &self.place {
+            Place::File { path, .. } => path.display().to_string(),
+            Place::Function { path, name, .. } => format!("{}: fn {name}", path.display()),
+            Place::Circle { files } => files
+                .iter()
+                .map(|f| f.display().to_string())
+                .collect::<Vec<_>>()
+                .join(" "),
+            Place::Import { from, to, .. } => format!("{} -> {}", from.display(), to.display()),
+            Place::Text {
+                path, owner, flag, ..
+            } => {
+                format!("{}: {owner} names {flag}", path.display())
+            }
+        };
+        format!("{}: {place}", self.rule)
+    }
+}

@@ -18,7 +18,7 @@
 use std::path::{Path, PathBuf};
 
 use image::ImageEncoder;
-use serde_json::json;
+use serde_json::{json, Map, Value};
 use tracer::output::srgb8;
 use tracer::render::Image;
 use validation::techniques::envmap_vs_traced::{
@@ -43,8 +43,28 @@ fn main() {
             .nth(1)
             .unwrap_or_else(|| "docs/images".into()),
     );
+    let (rows, slopes) = distance_sweep(&out);
+    let pairs = self_reflection(&out);
+    let record = json!({
+        "schema": "optics.envmap_vs_traced",
+        "version": 1,
+        "command": "cargo run --release -p optics --example envmap_vs_traced -- docs/images",
+        "resolution": RESOLUTION,
+        "sweep": rows,
+        "fitted_exponents": slopes,
+        "self_reflection": pairs,
+    });
+    let path = out.join("envmap_vs_traced.json");
+    std::fs::write(&path, serde_json::to_string_pretty(&record).unwrap() + "\n").unwrap();
+    println!("wrote {}", path.display());
+}
+
+/// One mirror sphere as its surroundings move away: a table row and a
+/// JSON row per distance, the pictures of three of them, and the fitted
+/// exponents of each kind of surroundings.
+fn distance_sweep(out: &Path) -> (Vec<Value>, Map<String, Value>) {
     let mut rows = Vec::new();
-    let mut slopes = serde_json::Map::new();
+    let mut slopes = Map::new();
     println!("| surroundings | d (radii) | rel. RMSE | mean ΔE2000 | p99 ΔE2000 | mean ꟻLIP |");
     println!("|---|---|---|---|---|---|");
     for (kind, distances, name) in [
@@ -90,6 +110,12 @@ fn main() {
         println!("\n{name}: fitted exponents {fitted}\n");
         slopes.insert(name.into(), fitted);
     }
+    (rows, slopes)
+}
+
+/// One mirror and two side by side at `SELF_REFLECTION_D`: a table row
+/// each, and where two show each other, the error split there.
+fn self_reflection(out: &Path) -> Vec<Value> {
     let mut pairs = Vec::new();
     println!("| mirrors | surroundings at d = {SELF_REFLECTION_D} | rel. RMSE | mean ΔE2000 | p99 ΔE2000 | mean ꟻLIP |");
     println!("|---|---|---|---|---|---|");
@@ -128,18 +154,7 @@ fn main() {
             }));
         }
     }
-    let record = json!({
-        "schema": "optics.envmap_vs_traced",
-        "version": 1,
-        "command": "cargo run --release -p optics --example envmap_vs_traced -- docs/images",
-        "resolution": RESOLUTION,
-        "sweep": rows,
-        "fitted_exponents": slopes,
-        "self_reflection": pairs,
-    });
-    let path = out.join("envmap_vs_traced.json");
-    std::fs::write(&path, serde_json::to_string_pretty(&record).unwrap() + "\n").unwrap();
-    println!("wrote {}", path.display());
+    pairs
 }
 
 /// The traced render, the mapped one and four times their absolute

@@ -73,18 +73,7 @@ const VARIATIONS: [Variation; 7] = [
 ];
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
-    let mut args = std::env::args().skip(1);
-    let mut next = |name: &str, default: u64| -> Result<u64, String> {
-        args.next().map_or(Ok(default), |a| {
-            a.parse().map_err(|e| format!("{name}: {a:?}: {e}"))
-        })
-    };
-    let spp = u32::try_from(next("SPP", 32)?).map_err(|e| format!("SPP: {e}"))?;
-    let renders = next("RENDERS", 4)?;
-    let threads = usize::try_from(next("THREADS", 2)?).map_err(|e| format!("THREADS: {e}"))?;
-    if spp == 0 || renders < 2 {
-        return Err("SPP must be at least 1 and RENDERS at least 2".into());
-    }
+    let (spp, renders, threads) = arguments()?;
     let file = Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("../tracer/scenes/{SCENE}.json"));
     let sized = RenderJob::load(
         &file,
@@ -114,7 +103,6 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             .map(|p| p.iter().sum())
             .collect()
     };
-    let estimates = [Estimate::Ptracer, Estimate::Area, Estimate::Path];
     let interior = interior(&reference);
     let edge: Vec<bool> = reference
         .mask
@@ -122,56 +110,118 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         .zip(&interior)
         .map(|(&m, &i)| m && !i)
         .collect();
-
-    println!(
-        "{SCENE}, 160×120 Lambert, {renders} renders of {spp} spp (seeds 0 to {}); `diffuse` at {}×{}: {} pixels ({} interior); \
-         Mitsuba {} passes of {} spp, max_depth {}",
-        renders - 1,
-        reference.width,
-        reference.height,
-        reference.mask.iter().filter(|&&m| m).count(),
-        interior.iter().filter(|&&m| m).count(),
-        reference.passes.len(),
-        reference.spp,
-        reference.max_depth,
-    );
-    println!();
-    println!(
-        "Mitsuba's estimates against its ptracer (share ± standard error of both estimates' passes):"
-    );
-    for estimate in [Estimate::Area, Estimate::Path] {
-        let theirs = RegionMean::from_passes(passes(estimate));
-        let (share, se) = light_share(theirs.0.mean, &passes(Estimate::Ptracer));
-        let own = share * theirs.standard_error() / theirs.0.mean;
-        println!("- {}: {share:.4} ± {:.4}", estimate.name(), se.hypot(own));
-    }
-    println!();
-    println!(
-        "Each cell: the mean over the renders ± the standard error of their spread and, \
-         against an estimate's passes, of Mitsuba's passes too."
-    );
-    println!();
-    println!("| setting | seconds | vs ptracer | vs area | vs path | vs ptracer mean, interior | vs ptracer mean, edge |");
-    println!("|---|---:|---:|---:|---:|---:|---:|");
+    let rows = Rows {
+        job: &job,
+        truth,
+        renders,
+        threads,
+        reference: &reference,
+        masks: [&interior, &edge],
+        passes: &passes,
+    };
+    rows.header(spp);
     for (name, vary) in VARIATIONS {
+        rows.print(name, vary)?;
+    }
+    Ok(())
+}
+
+/// `SPP`, `RENDERS` and `THREADS` from the command line, or their defaults.
+fn arguments() -> Result<(u32, u64, usize), Box<dyn std::error::Error>> {
+    let mut args = std::env::args().skip(1);
+    let mut next = |name: &str, default: u64| -> Result<u64, String> {
+        args.next().map_or(Ok(default), |a| {
+            a.parse().map_err(|e| format!("{name}: {a:?}: {e}"))
+        })
+    };
+    let spp = u32::try_from(next("SPP", 32)?).map_err(|e| format!("SPP: {e}"))?;
+    let renders = next("RENDERS", 4)?;
+    let threads = usize::try_from(next("THREADS", 2)?).map_err(|e| format!("THREADS: {e}"))?;
+    if spp == 0 || renders < 2 {
+        return Err("SPP must be at least 1 and RENDERS at least 2".into());
+    }
+    Ok((spp, renders, threads))
+}
+
+/// Mitsuba's estimates the renders are held against, in the table's order.
+const ESTIMATES: [Estimate; 3] = [Estimate::Ptracer, Estimate::Area, Estimate::Path];
+
+/// What every row of the table is rendered and held against.
+struct Rows<'a> {
+    job: &'a RenderJob,
+    truth: Settings,
+    renders: u64,
+    threads: usize,
+    reference: &'a Reference,
+    /// The region's interior and its edge.
+    masks: [&'a [bool]; 2],
+    /// The sums of an estimate's passes over the region.
+    passes: &'a dyn Fn(Estimate) -> Vec<f64>,
+}
+
+impl Rows<'_> {
+    /// The scene, the region and Mitsuba's own spread, then the table's
+    /// head.
+    fn header(&self, spp: u32) {
+        let (reference, renders, passes) = (self.reference, self.renders, self.passes);
+        println!(
+            "{SCENE}, 160×120 Lambert, {renders} renders of {spp} spp (seeds 0 to {}); `diffuse` at {}×{}: {} pixels ({} interior); \
+             Mitsuba {} passes of {} spp, max_depth {}",
+            renders - 1,
+            reference.width,
+            reference.height,
+            reference.mask.iter().filter(|&&m| m).count(),
+            self.masks[0].iter().filter(|&&m| m).count(),
+            reference.passes.len(),
+            reference.spp,
+            reference.max_depth,
+        );
+        println!();
+        println!(
+            "Mitsuba's estimates against its ptracer (share ± standard error of both estimates' passes):"
+        );
+        for estimate in [Estimate::Area, Estimate::Path] {
+            let theirs = RegionMean::from_passes(passes(estimate));
+            let (share, se) = light_share(theirs.0.mean, &passes(Estimate::Ptracer));
+            let own = share * theirs.standard_error() / theirs.0.mean;
+            println!("- {}: {share:.4} ± {:.4}", estimate.name(), se.hypot(own));
+        }
+        println!();
+        println!(
+            "Each cell: the mean over the renders ± the standard error of their spread and, \
+             against an estimate's passes, of Mitsuba's passes too."
+        );
+        println!();
+        println!("| setting | seconds | vs ptracer | vs area | vs path | vs ptracer mean, interior | vs ptracer mean, edge |");
+        println!("|---|---:|---:|---:|---:|---:|---:|");
+    }
+
+    /// One row: the truth's settings varied by `vary`, rendered with each
+    /// seed, and each column's mean with its standard error.
+    fn print(
+        &self,
+        name: &str,
+        vary: fn(Settings) -> Settings,
+    ) -> Result<(), Box<dyn std::error::Error>> {
+        let (reference, passes) = (self.reference, self.passes);
         let mut seconds = 0.0;
         let mut rows = Vec::new();
-        for seed in 0..renders {
+        for seed in 0..self.renders {
             let settings = Settings {
                 seed,
-                ..vary(truth)
+                ..vary(self.truth)
             };
-            let rendered = RenderJob::with_settings(job.scene().clone(), settings)?
-                .render(Some(threads), &|_| {})?;
+            let rendered = RenderJob::with_settings(self.job.scene().clone(), settings)?
+                .render(Some(self.threads), &|_| {})?;
             seconds += rendered.elapsed.as_secs_f64();
             let small = box_downsample(&rendered.image, reference.factor);
             let ours = region_light(&small, &reference.mask);
-            let mut row: Vec<f64> = estimates
+            let mut row: Vec<f64> = ESTIMATES
                 .iter()
                 .map(|&e| light_share(ours, &passes(e)).0)
                 .collect();
             row.extend(
-                [&interior, &edge]
+                self.masks
                     .map(|mask| region_light(&small, mask) / region_light(&reference.mean, mask)),
             );
             rows.push(row);
@@ -179,7 +229,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         let cells: Vec<String> = (0..rows[0].len())
             .map(|k| {
                 let column = RegionMean::from_passes(rows.iter().map(|r| r[k]));
-                let theirs = estimates.get(k).map_or(0.0, |&e| {
+                let theirs = ESTIMATES.get(k).map_or(0.0, |&e| {
                     let (share, se) = light_share(column.0.mean, &passes(e));
                     se / share * column.0.mean
                 });
@@ -188,8 +238,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             })
             .collect();
         println!("| {name} | {seconds:.1} | {} |", cells.join(" | "));
+        Ok(())
     }
-    Ok(())
 }
 
 /// The region's pixels whose eight neighbours are in the region too.

@@ -1,36 +1,20 @@
 //! `optics compare`: a user's own render of a scene held against the
-//! suite's reference render of it, by the harness's own machinery
-//! ([`validation::compare`]): which test fits the image, the verdict, the
-//! regions that disagree and by how much, and a difference map.
-//!
-//! | image | test |
-//! |---|---|
-//! | PNG (8-bit sRGB) | its codes within those of the reference's tolerance interval, one code more either side |
-//! | PFM (linear radiance) | per pixel-channel `\|Δ\| ≤ 1e-5 + 1e-3 · \|reference\|`, plus the reference's own noise |
-//! | PFM with `--variance` and `--samples` | Welch's t per pixel-channel, Bonferroni-corrected, and beyond that tolerance |
-
-mod reference;
-mod report;
-pub(crate) mod user_image;
+//! suite's reference render of it. The comparison is the library's
+//! ([`validation::user_render`]); this module settles the flags into its
+//! request, makes the one call and prints the record, adding the flags'
+//! names to what the library says.
 
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-use safe_io::check_destination;
+use record::{say, Record};
 use serde::Serialize;
-use tracer::output::{to_srgb8, write_png};
 use tracer::scene::IntegratorKind;
-use validation::compare::map::difference_map;
-use validation::compare::regions::{summarise, Summary};
-use validation::compare::welch::{welch, Tests};
-use validation::compare::{tolerance, Estimate, Tolerance, Verdicts};
-use validation::renders::ALPHA;
+use validation::user_render::{self, Comparison, Names, Request};
 
-use crate::error::compare::CompareError;
+use crate::error::compare::{IMAGE, VARIANCE};
 use crate::error::{self, ErrorKind};
 use crate::ui::Ui;
-use reference::Reference;
-pub(crate) use user_image::UserImage;
 
 #[derive(clap::Args, Debug, Serialize)]
 #[command(after_help = "Examples:
@@ -71,173 +55,80 @@ pub struct CompareArgs {
     pub reference_samples: u32,
 }
 
-/// What the comparison found.
-pub(crate) struct Outcome {
-    /// Per pixel-channel.
-    pub verdicts: Verdicts,
-    /// Per region.
-    pub summary: Summary,
-    /// The t-tests, where Welch's test was used.
-    pub tests: Option<Tests>,
-}
-
 /// Compares; the exit status says whether the image agrees (with
 /// `--json` the record is the whole answer, without it a disagreement is
 /// also reported as an error).
 pub fn run(args: &CompareArgs, ui: &Ui) -> error::Result<ExitCode> {
-    let bytes = user_image::read_bytes("IMAGE", &args.image)?;
-    let (image, job) = admit(&args.image, &bytes, &args.scene, args.integrator)?;
-    let (width, height) = image.size();
-    let variance = match &args.variance {
-        Some(path) => Some(read_variance(path, &image)?),
-        None => None,
+    let request = Request {
+        image: &args.image,
+        scene: &args.scene,
+        variance: args.variance.as_deref().zip(args.samples),
+        diff: args.diff.as_deref(),
+        integrator: args.integrator,
+        reference_samples: args.reference_samples,
+        names: NAMES,
     };
-    if let Some(diff) = &args.diff {
-        let mut inputs = vec![args.image.as_path(), args.scene.as_path()];
-        inputs.extend(args.variance.as_deref());
-        check_destination(diff, &inputs)
-            .map_err(|e| ErrorKind::Compare(CompareError::Diff(e.into())))?;
-    }
-    crate::render::warn_if_long(&job, ui.lang);
-    let reference = reference::render(job, args.reference_samples)?;
-    let outcome = judge(&image, variance.as_deref(), args.samples, &reference);
-    if let Some(diff) = &args.diff {
-        write_png(diff, &difference_map(&outcome.verdicts, width, height))
-            .map_err(|e| ErrorKind::Compare(CompareError::Diff(e)))?;
-    }
-    ui.show_steps(&report::record(args, &reference, &outcome, ui.lang))?;
-    let summary = &outcome.summary;
-    match (summary.agrees(), ui.json) {
-        (true, _) => Ok(ExitCode::SUCCESS),
-        (false, true) => Ok(ExitCode::FAILURE),
-        (false, false) => Err(ErrorKind::Compare(CompareError::Disagrees {
-            disagreeing: summary.disagreeing,
-            pixels: summary.pixels,
-        })
-        .into()),
+    let comparison = user_render::compare(&request, |job| {
+        crate::render::warn_if_long(job, ui.lang);
+    })
+    .map_err(failure)?;
+    ui.show_steps(&record(args, &comparison, ui))?;
+    match (comparison.verdict(), ui.json) {
+        (Ok(()), _) => Ok(ExitCode::SUCCESS),
+        (Err(_), true) => Ok(ExitCode::FAILURE),
+        (Err(disagrees), false) => Err(ErrorKind::Compare(disagrees).into()),
     }
 }
 
-/// The image as [`run`] admits it before rendering: decoded, every value
-/// finite, and its size one the scene can be rendered at, with the job
-/// that renders the reference.
+/// The library's error as this command's: a scene refused as `optics
+/// render` refuses it, a render stopped as a render's, an image's kind as
+/// one of compare's.
+fn failure(error: user_render::Error) -> error::Error {
+    use user_render::Error as Failure;
+    match error {
+        Failure::Scene { file, error } => ErrorKind::Scene { file, error }.into(),
+        Failure::Render(error) => error.into(),
+        Failure::Compare(error) => ErrorKind::Compare(error).into(),
+    }
+}
+
+/// The images as the errors name them: the argument and the flag.
+const NAMES: Names = Names {
+    image: IMAGE,
+    variance: VARIANCE,
+};
+
+/// The library's record with the flags as given, and the advice to give
+/// an image's own noise where the image was held to the reference's alone.
+fn record(args: &CompareArgs, comparison: &Comparison, ui: &Ui) -> Record {
+    let lang = ui.lang;
+    let mut record = user_render::record(comparison, lang);
+    record.inputs_from(args);
+    if comparison.held_to_reference_noise_alone() {
+        record.step(|| say!(
+            lang,
+            "the reference is Monte Carlo and the image is held to its noise alone: an image with noise of its own needs --variance and --samples",
+            "a referencia Monte Carlo-becslés, a képet csak a referencia zajához méri: saját zajjal bíró képhez a --variance és a --samples kell"
+        ));
+    }
+    record
+}
+
+/// The image as [`run`] admits it before rendering (the fuzz target's
+/// entry point): decoded, every value finite, and its size one the scene
+/// can be rendered at, with the job that renders the reference.
+#[cfg(test)]
 pub(crate) fn admit(
     path: &std::path::Path,
     bytes: &[u8],
     scene: &std::path::Path,
     integrator: Option<IntegratorKind>,
-) -> error::Result<(UserImage, tracer::job::RenderJob)> {
-    let image = user_image::decode("IMAGE", path, bytes)?;
-    if let UserImage::Linear { width, values, .. } = &image {
-        user_image::check_values("IMAGE", *width, values, false)?;
-    }
-    let job = reference::job(scene, image.size(), integrator)?;
-    Ok((image, job))
+) -> error::Result<(user_render::UserImage, tracer::job::RenderJob)> {
+    user_render::admit(IMAGE, path, bytes, scene, integrator).map_err(failure)
 }
 
-/// The variance image: a PFM of IMAGE's size, every value finite and ≥ 0.
-fn read_variance(path: &std::path::Path, image: &UserImage) -> error::Result<Vec<f64>> {
-    let fault = |e: CompareError| error::Error::from(ErrorKind::Compare(e));
-    if matches!(image, UserImage::Codes { .. }) {
-        return Err(fault(CompareError::VarianceNeedsPfm { field: "IMAGE" }));
-    }
-    match user_image::read("--variance", path).map_err(fault)? {
-        UserImage::Codes { .. } => Err(fault(CompareError::VarianceNeedsPfm {
-            field: "--variance",
-        })),
-        UserImage::Linear {
-            width,
-            height,
-            values,
-        } => {
-            if (width, height) != image.size() {
-                return Err(fault(CompareError::SizeMismatch {
-                    got: (width, height),
-                    expected: image.size(),
-                }));
-            }
-            user_image::check_values("--variance", width, &values, true).map_err(fault)?;
-            Ok(values)
-        }
-    }
-}
-
-/// The test that fits the image, made against the reference away from
-/// its silhouettes, and its summary by region.
-fn judge(
-    image: &UserImage,
-    variance: Option<&[f64]>,
-    samples: Option<u32>,
-    reference: &Reference,
-) -> Outcome {
-    let mask = Some(reference.silhouettes.as_slice());
-    let noise = reference
-        .noise
-        .as_ref()
-        .map(|(variance, samples)| Estimate {
-            mean: &reference.mean,
-            variance,
-            samples: *samples,
-        });
-    let (verdicts, tests, in_unit) = match (image, variance) {
-        (UserImage::Codes { codes, .. }, _) => {
-            let v = tolerance::codes(
-                codes,
-                &reference.mean,
-                noise.as_ref(),
-                Tolerance::RENDERS,
-                ALPHA,
-                mask,
-            );
-            let codes = reference
-                .mean
-                .iter()
-                .map(|&r| f64::from(to_srgb8(r as f32)))
-                .collect();
-            (v, None, codes)
-        }
-        (UserImage::Linear { values, .. }, None) => {
-            let v = tolerance::radiance(
-                values,
-                &reference.mean,
-                noise.as_ref(),
-                Tolerance::RENDERS,
-                ALPHA,
-                mask,
-            );
-            (v, None, reference.mean.clone())
-        }
-        (UserImage::Linear { values, .. }, Some(variance)) => {
-            let zeros = vec![0.0; reference.mean.len()];
-            // A deterministic reference: no variance, and two samples so
-            // that Welch's degrees of freedom come from the image alone.
-            let fixed = Estimate {
-                mean: &reference.mean,
-                variance: &zeros,
-                samples: 2,
-            };
-            let image = Estimate {
-                mean: values,
-                variance,
-                samples: samples.unwrap_or(2),
-            };
-            let (v, tests) = welch(
-                &image,
-                noise.as_ref().unwrap_or(&fixed),
-                reference.job.scene().width,
-                Tolerance::RENDERS,
-                ALPHA,
-                mask,
-            );
-            (v, Some(tests), reference.mean.clone())
-        }
-    };
-    let regions = reference.job.scene().objects.len() + 1;
-    let width = reference.job.scene().width;
-    let summary = summarise(&verdicts, &reference.labels, regions, width, &in_unit);
-    Outcome {
-        verdicts,
-        summary,
-        tests,
-    }
+/// The image reader's fault switch, where the fuzz target finds it.
+#[cfg(test)]
+pub(crate) mod user_image {
+    pub(crate) use validation::user_render::LENGTH_UNCHECKED;
 }

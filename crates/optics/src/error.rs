@@ -30,6 +30,9 @@ pub mod harness;
 #[cfg(feature = "harness")]
 pub mod jobs;
 pub mod render;
+mod usage;
+
+pub(crate) use usage::{usage_argument, usage_text};
 
 /// The outcome of a step that can fail with one of the suite's own errors.
 pub type Result<T, E = Error> = std::result::Result<T, E>;
@@ -166,9 +169,13 @@ pub enum ErrorKind {
         /// Row, from 0 at the top.
         y: u32,
     },
-    /// No usable checkout of the suite (`--checkout`, `OPTICS_CHECKOUT`).
+    /// No usable checkout of the suite, for a command without `--checkout`
+    /// (`OPTICS_CHECKOUT`, or the working directory's).
     #[cfg(feature = "harness")]
     Checkout(validation::checkout::CheckoutError),
+    /// No usable checkout, for a command that takes `--checkout`.
+    #[cfg(feature = "harness")]
+    CheckoutWithFlag(validation::checkout::CheckoutError),
     /// The harness could not run to the end.
     #[cfg(feature = "harness")]
     Pipeline(validation::pipeline::PipelineError),
@@ -242,16 +249,6 @@ impl Error {
     /// it, when known.
     pub fn field(&self) -> Option<String> {
         self.kind.field()
-    }
-
-    /// The error as JSON: `{"kind": …, "field": …, "message": …}`, the
-    /// message in `lang`, the field `null` when unknown.
-    pub fn to_json(&self, lang: crate::Lang) -> serde_json::Value {
-        serde_json::json!({
-            "kind": self.kind.name(),
-            "field": self.field(),
-            "message": crate::lang::error_message(self, lang),
-        })
     }
 }
 
@@ -338,7 +335,9 @@ impl ErrorKind {
             ErrorKind::Threads(_) => "threads",
             ErrorKind::RadianceNotFinite { .. } => "render.not_finite",
             #[cfg(feature = "harness")]
-            ErrorKind::Checkout(error) => harness::checkout_name(error),
+            ErrorKind::Checkout(error) | ErrorKind::CheckoutWithFlag(error) => {
+                harness::checkout_name(error)
+            }
             #[cfg(feature = "harness")]
             ErrorKind::Pipeline(error) => harness::pipeline_name(error),
             #[cfg(feature = "harness")]
@@ -386,13 +385,17 @@ impl ErrorKind {
             ErrorKind::Scene { error, .. } => Some(error.field().to_owned()),
             ErrorKind::Output(_) => Some("--output".to_owned()),
             #[cfg(feature = "harness")]
-            ErrorKind::Checkout(error) => Some(harness::checkout_field(error).to_owned()),
+            ErrorKind::Checkout(error) => Some(harness::checkout_field(error, None).to_owned()),
+            #[cfg(feature = "harness")]
+            ErrorKind::CheckoutWithFlag(error) => {
+                Some(harness::checkout_field(error, Some(harness::CHECKOUT_FLAG)).to_owned())
+            }
             #[cfg(feature = "harness")]
             ErrorKind::Pipeline(error) => harness::pipeline_field(error),
             #[cfg(feature = "harness")]
             ErrorKind::ChecksFailed { .. } => None,
             #[cfg(feature = "harness")]
-            ErrorKind::Compare(error) => error.field(),
+            ErrorKind::Compare(error) => compare::field(error),
             #[cfg(feature = "harness")]
             ErrorKind::TruthIsBlack { .. } => Some("SCENE".to_owned()),
             #[cfg(feature = "harness")]
@@ -405,32 +408,6 @@ impl ErrorKind {
             ErrorKind::Jobs(error) => error.field(jobs::flag),
         }
     }
-}
-
-/// The argument a command-line error names (`--eta <ETA>`), if it names one.
-pub(crate) fn usage_argument(error: &clap::Error) -> Option<String> {
-    use clap::error::{ContextKind, ContextValue};
-    match error.get(ContextKind::InvalidArg)? {
-        ContextValue::String(arg) => Some(arg.clone()),
-        ContextValue::Strings(args) => Some(args.join(", ")),
-        _ => None,
-    }
-}
-
-/// The argument parser's message without its `error: ` and the usage and
-/// help hints that follow it, on one line.
-pub(crate) fn usage_text(error: &clap::Error) -> String {
-    let text = error.to_string();
-    let message: Vec<&str> = text
-        .lines()
-        .take_while(|line| !line.trim().is_empty())
-        .map(str::trim)
-        .collect();
-    let message = message.join(" ");
-    message
-        .strip_prefix("error: ")
-        .unwrap_or(&message)
-        .to_owned()
 }
 
 impl fmt::Display for Error {

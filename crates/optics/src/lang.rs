@@ -2,17 +2,31 @@
 //! each kind's `Display`, Hungarian an exhaustive `match` over the kinds here.
 
 use crate::error::{Error, ErrorKind};
-use radiometry::domain::{self, DomainError, Expected};
 use record::Lang;
 
 #[cfg(feature = "harness")]
 mod compare;
+mod domain;
 #[cfg(feature = "harness")]
 mod harness;
 #[cfg(feature = "harness")]
 mod jobs;
 pub mod needs;
 mod render;
+
+pub use domain::{domain_hu, expected_hu};
+
+impl Error {
+    /// The error as JSON: `{"kind": …, "field": …, "message": …}`, the
+    /// message in `lang`, the field `null` when unknown.
+    pub fn to_json(&self, lang: Lang) -> serde_json::Value {
+        serde_json::json!({
+            "kind": self.kind().name(),
+            "field": self.field(),
+            "message": error_message(self, lang),
+        })
+    }
+}
 
 /// An error's message in `lang`: the English is the kind's `Display`, the
 /// Hungarian an exhaustive `match` over the kinds.
@@ -88,7 +102,11 @@ fn hungarian(kind: &ErrorKind) -> String {
         ErrorKind::Threads(error) => format!("a renderelés szálai nem indíthatók: {error}"),
         ErrorKind::RadianceNotFinite { x, y } => render::not_finite_hu(*x, *y),
         #[cfg(feature = "harness")]
-        ErrorKind::Checkout(error) => harness::checkout_hu(error),
+        ErrorKind::Checkout(error) => harness::checkout_hu(error, None),
+        #[cfg(feature = "harness")]
+        ErrorKind::CheckoutWithFlag(error) => {
+            harness::checkout_hu(error, Some(crate::error::harness::CHECKOUT_FLAG))
+        }
         #[cfg(feature = "harness")]
         ErrorKind::Pipeline(error) => harness::pipeline_hu(error),
         #[cfg(feature = "harness")]
@@ -149,60 +167,6 @@ fn usage_hu(error: &clap::Error) -> String {
     match crate::error::usage_argument(error) {
         Some(arg) => format!("hibás parancssori argumentum ({arg}): {message}"),
         None => format!("hibás parancssor: {message}"),
-    }
-}
-
-/// A domain error of the laws: the input's name, what it should have been,
-/// the value given.
-pub fn domain_hu(error: &DomainError) -> String {
-    match error {
-        DomainError::NotFinite { name, value } => {
-            format!("{name}: véges számnak kell lennie, kapott érték: {value}")
-        }
-        DomainError::OutOfRange {
-            name,
-            value,
-            expected,
-        } => format!(
-            "{name}: {}, kapott érték: {}",
-            expected_hu(*expected),
-            domain::shown(*value)
-        ),
-        DomainError::ZeroVector { name, x, y, z } => {
-            format!("{name}: nem nulla hosszú iránynak kell lennie, kapott: ({x}, {y}, {z})")
-        }
-    }
-}
-
-/// What an input should have been, as the rest of a Hungarian sentence
-/// that names the input.
-pub fn expected_hu(expected: Expected) -> String {
-    let (low, high) = expected
-        .index_range()
-        .map(domain::IndexRange::ends_text)
-        .unwrap_or_default();
-    let f32_tier = "(az f32 törvények tartománya)";
-    match expected {
-        Expected::Cosine => "a [-1, 1] tartományba kell esnie".to_owned(),
-        Expected::Fraction => "a [0, 1] tartományba kell esnie".to_owned(),
-        Expected::NonNegative => "nemnegatívnak kell lennie".to_owned(),
-        Expected::IncidenceAngle => "a [0, π/2] rad tartományba eső szögnek kell lennie".to_owned(),
-        Expected::PositiveIndex => "pozitív törésmutatónak kell lennie".to_owned(),
-        Expected::NonNegativeExtinction => "nemnegatív kioltási tényezőnek kell lennie".to_owned(),
-        Expected::IndexInRange => format!("{low} és {high} közötti törésmutatónak kell lennie"),
-        Expected::ExtinctionInRange => {
-            format!("0 vagy {low} és {high} közötti kioltási tényezőnek kell lennie")
-        }
-        Expected::IndexInRangeF32 => {
-            format!("{low} és {high} közötti törésmutatónak kell lennie {f32_tier}")
-        }
-        Expected::ExtinctionInRangeF32 => {
-            format!("0 vagy {low} és {high} közötti kioltási tényezőnek kell lennie {f32_tier}")
-        }
-        Expected::WithinF32 => {
-            "az f32 ábrázolási tartományán belül kell lennie (|x| < 3.4e38)".to_owned()
-        }
-        Expected::PositiveF32 => "pozitívnak (és f32-ben ábrázolhatónak) kell lennie".to_owned(),
     }
 }
 

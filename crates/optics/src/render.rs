@@ -266,7 +266,7 @@ pub(crate) fn steps(
     needs: &Needs,
     machinery: &Machinery,
     settings: &Settings,
-    lang: crate::Lang,
+    lang: Lang,
 ) -> Vec<String> {
     let mut steps = Vec::new();
     if !machinery.shadow_rays {

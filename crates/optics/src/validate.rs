@@ -66,7 +66,8 @@ pub struct ValidateArgs {
 impl ValidateArgs {
     /// The pipeline's options: the checkout found, the flags as they are.
     fn options(&self) -> error::Result<Options> {
-        let checkout = Checkout::find(self.checkout.as_deref()).map_err(ErrorKind::Checkout)?;
+        let checkout =
+            Checkout::find(self.checkout.as_deref()).map_err(ErrorKind::CheckoutWithFlag)?;
         // The command as typed, by the program's name rather than its build path.
         let command = std::iter::once("optics".to_owned())
             .chain(std::env::args().skip(1))

@@ -155,7 +155,6 @@ impl Real for f64 {
         // about one ulp, without the library call of `hypot`.
         let (a, b) = (self.abs(), other.abs());
         let larger = a.max(b);
-        use crate::compensated::power_of_two;
         let (scale, unscale) = if larger > power_of_two(500) {
             (power_of_two(-600), power_of_two(600))
         } else if larger < power_of_two(-500) {
@@ -252,6 +251,12 @@ macro_rules! impl_vector3 {
 
 impl_vector3!(glam::Vec3, f32);
 impl_vector3!(glam::DVec3, f64);
+
+/// `2^k` for a normal double's exponent, from the bits: a constant where
+/// `powi` is a call that blocks a loop's vectorisation.
+pub(crate) const fn power_of_two(k: i32) -> f64 {
+    f64::from_bits(((1023 + k) as u64) << 52)
+}
 
 #[cfg(test)]
 mod tests {

@@ -17,7 +17,7 @@
 //! which gives it to its record ([`Record::with_steps`]); each step is a
 //! closure, so a record whose working is skipped never formats it.
 
-use crate::Lang;
+use crate::lang::Lang;
 use serde::ser::SerializeMap;
 use serde::{Serialize, Serializer};
 use serde_json::{Map, Value};

@@ -5,7 +5,9 @@
 use std::path::{Path, PathBuf};
 use std::time::SystemTime;
 
-use crate::{Error, Section};
+use crate::document::{settle, workspace_root};
+use crate::error::Error;
+use crate::section::Section;
 
 /// A bench's `main`, in place of `criterion_main!`: runs `benches` (a
 /// `criterion_group!`), prints criterion's summary, and when the bench
@@ -21,7 +23,7 @@ pub fn main(benches: fn(), record: fn(&Run) -> Result<Section, Error>) {
         .configure_from_args()
         .final_summary();
     if let Some(run) = run {
-        if let Err(e) = record(&run).and_then(|section| crate::settle(&section)) {
+        if let Err(e) = record(&run).and_then(|section| settle(&section)) {
             eprintln!("docs/results.md not updated: {e}");
         }
     }
@@ -87,7 +89,7 @@ pub fn output_dir() -> PathBuf {
     }
     std::env::var_os("CARGO_TARGET_DIR")
         .map(PathBuf::from)
-        .unwrap_or_else(|| crate::workspace_root().join("target"))
+        .unwrap_or_else(|| workspace_root().join("target"))
         .join("criterion")
 }
 

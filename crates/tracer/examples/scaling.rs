@@ -184,76 +184,45 @@ fn seconds(job: &RenderJob) -> f64 {
         .as_secs_f64()
 }
 
-fn main() {
-    let mut body = String::from(
-        "One thread; each value rendered three times in rounds; the exponent b of t ∝ x^b \
-         is the least-squares slope of ln t on ln x over every render, ± its 95 % interval.\n\n\
-         | what | parameter | values | median seconds at each | exponent b |\n|---|---|---|---|---|\n",
-    );
-    let mut per_object = None;
-    for sweep in sweeps() {
-        // One untimed render, then rounds.
-        seconds(&sweep.jobs[0].1);
-        let mut times = vec![Vec::new(); sweep.jobs.len()];
-        for _ in 0..REPEATS {
-            for (i, (_, job)) in sweep.jobs.iter().enumerate() {
-                times[i].push(seconds(job));
-            }
+/// Each of `sweep`'s jobs timed `REPEATS` times, in rounds after one
+/// untimed render.
+fn measure(sweep: &Sweep) -> Vec<Vec<f64>> {
+    seconds(&sweep.jobs[0].1);
+    let mut times = vec![Vec::new(); sweep.jobs.len()];
+    for _ in 0..REPEATS {
+        for (i, (_, job)) in sweep.jobs.iter().enumerate() {
+            times[i].push(seconds(job));
         }
-        let points: Vec<(f64, f64)> = sweep
-            .jobs
-            .iter()
-            .zip(&times)
-            .flat_map(|((x, _), ts)| ts.iter().map(move |&t| (*x, t)))
-            .collect();
-        let (b, half) = exponent(&points);
-        let medians: Vec<String> = times
-            .iter()
-            .map(|ts| {
-                let mut ts = ts.clone();
-                ts.sort_by(f64::total_cmp);
-                format!("{:.4}", ts[ts.len() / 2])
-            })
-            .collect();
-        let values: Vec<String> = sweep.jobs.iter().map(|(x, _)| format!("{x}")).collect();
-        if sweep.parameter == "objects" {
-            // The cost of one more object: the slope of t against n over
-            // the two largest counts, per primary ray.
-            let last = times.len() - 1;
-            let median = |i: usize| {
-                let mut ts = times[i].clone();
-                ts.sort_by(f64::total_cmp);
-                ts[ts.len() / 2]
-            };
-            let (n0, n1) = (sweep.jobs[last - 1].0, sweep.jobs[last].0);
-            let (t0, t1) = (median(last - 1), median(last));
-            per_object = Some((
-                (t1 - t0) / (n1 - n0),
-                (t1 / t0).ln() / (n1 / n0).ln(),
-                n0,
-                n1,
-                b,
-            ));
-        }
-        writeln!(
-            body,
-            "| {} | {} | {} | {} | {:.2} ± {:.2} |",
-            sweep.what,
-            sweep.parameter,
-            values.join(", "),
-            medians.join(", "),
-            b,
-            half
-        )
-        .unwrap();
-        eprintln!(
-            "{}: {} exponent {b:.2} ± {half:.2}",
-            sweep.what, sweep.parameter
-        );
     }
+    times
+}
 
-    // Memory against spp: the peak after a 1-spp render, then after a
-    // 64-spp one of the same image (the peak only grows).
+/// The median of `ts` (the upper one of an even count).
+fn median(ts: &[f64]) -> f64 {
+    let mut ts = ts.to_vec();
+    ts.sort_by(f64::total_cmp);
+    ts[ts.len() / 2]
+}
+
+/// The cost of one more object: the slope of t against n over the two
+/// largest counts, per primary ray, and the local exponent there, with
+/// those counts and the exponent `all` over every count.
+fn object_cost(sweep: &Sweep, times: &[Vec<f64>], all: f64) -> (f64, f64, f64, f64, f64) {
+    let last = times.len() - 1;
+    let (n0, n1) = (sweep.jobs[last - 1].0, sweep.jobs[last].0);
+    let (t0, t1) = (median(&times[last - 1]), median(&times[last]));
+    (
+        (t1 - t0) / (n1 - n0),
+        (t1 / t0).ln() / (n1 / n0).ln(),
+        n0,
+        n1,
+        all,
+    )
+}
+
+/// Memory against spp: the peak after a 1-spp render, then after a
+/// 64-spp one of the same image (the peak only grows).
+fn memory_note(body: &mut String) {
     let scene = course("kaleidoscope_lit").resized(320, 240);
     job(&scene, IntegratorKind::Path, 1, 11)
         .render(Some(1), &|_| {})
@@ -274,26 +243,74 @@ fn main() {
         )
         .unwrap();
     }
-    if let Some((cost, local, n0, n1, all)) = per_object {
-        // A bounding-volume hierarchy visits about 2 log2 n boxes and a few
-        // primitives per ray; with a box test costing about a sphere test,
-        // it beats testing all n objects once n > 2 log2 n + 4.
-        let crossover = (2..).find(|&n: &u32| f64::from(n) > 2.0 * f64::from(n).log2() + 4.0);
+}
+
+/// What the object sweep says about an acceleration structure.
+fn objects_note(body: &mut String, (cost, local, n0, n1, all): (f64, f64, f64, f64, f64)) {
+    // A bounding-volume hierarchy visits about 2 log2 n boxes and a few
+    // primitives per ray; with a box test costing about a sphere test,
+    // it beats testing all n objects once n > 2 log2 n + 4.
+    let crossover = (2..).find(|&n: &u32| f64::from(n) > 2.0 * f64::from(n).log2() + 4.0);
+    writeln!(
+        body,
+        "\nThe tracer tests every object for every ray (no acceleration structure), so time \
+         tends to grow linearly in the object count once the objects' cost outweighs the \
+         per-pixel cost: the exponent over all counts is {all:.2}, between {n0} and {n1} \
+         objects it is {:.2}, and one more sphere there costs {:.3} ms per 160 × 120 whitted \
+         render. A bounding-volume hierarchy visits about 2 log₂ n boxes and a few objects \
+         per ray; counting a box test as a sphere test, it pays from about {} objects. The \
+         course scenes have at most 8. The depth's exponent says little: past 8 bounces the \
+         kaleidoscope's rays have left the tube, and the time stops growing.",
+        local,
+        cost * 1e3,
+        crossover.unwrap_or(0)
+    )
+    .unwrap();
+}
+
+fn main() {
+    let mut body = String::from(
+        "One thread; each value rendered three times in rounds; the exponent b of t ∝ x^b \
+         is the least-squares slope of ln t on ln x over every render, ± its 95 % interval.\n\n\
+         | what | parameter | values | median seconds at each | exponent b |\n|---|---|---|---|---|\n",
+    );
+    let mut per_object = None;
+    for sweep in sweeps() {
+        let times = measure(&sweep);
+        let points: Vec<(f64, f64)> = sweep
+            .jobs
+            .iter()
+            .zip(&times)
+            .flat_map(|((x, _), ts)| ts.iter().map(move |&t| (*x, t)))
+            .collect();
+        let (b, half) = exponent(&points);
+        let medians: Vec<String> = times
+            .iter()
+            .map(|ts| format!("{:.4}", median(ts)))
+            .collect();
+        let values: Vec<String> = sweep.jobs.iter().map(|(x, _)| format!("{x}")).collect();
+        if sweep.parameter == "objects" {
+            per_object = Some(object_cost(&sweep, &times, b));
+        }
         writeln!(
             body,
-            "\nThe tracer tests every object for every ray (no acceleration structure), so time \
-             tends to grow linearly in the object count once the objects' cost outweighs the \
-             per-pixel cost: the exponent over all counts is {all:.2}, between {n0} and {n1} \
-             objects it is {:.2}, and one more sphere there costs {:.3} ms per 160 × 120 whitted \
-             render. A bounding-volume hierarchy visits about 2 log₂ n boxes and a few objects \
-             per ray; counting a box test as a sphere test, it pays from about {} objects. The \
-             course scenes have at most 8. The depth's exponent says little: past 8 bounces the \
-             kaleidoscope's rays have left the tube, and the time stops growing.",
-            local,
-            cost * 1e3,
-            crossover.unwrap_or(0)
+            "| {} | {} | {} | {} | {:.2} ± {:.2} |",
+            sweep.what,
+            sweep.parameter,
+            values.join(", "),
+            medians.join(", "),
+            b,
+            half
         )
         .unwrap();
+        eprintln!(
+            "{}: {} exponent {b:.2} ± {half:.2}",
+            sweep.what, sweep.parameter
+        );
+    }
+    memory_note(&mut body);
+    if let Some(cost) = per_object {
+        objects_note(&mut body, cost);
     }
     let section = results::Section::measured(
         "scaling",

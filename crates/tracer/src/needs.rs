@@ -142,33 +142,7 @@ pub fn analyse(scene: &Scene, settings: &Settings) -> Needs {
     } else {
         ReflectionDepth::UpToMaxDepth(settings.max_depth)
     };
-    let enclosing = enclosing_tube(scene);
-    let lights: Vec<LightUse> = scene
-        .lights
-        .iter()
-        .enumerate()
-        .map(|(index, light)| {
-            let (kind, power) = match *light {
-                Light::Directional { irradiance, .. } => (LightKind::Directional, irradiance),
-                Light::Point { intensity, .. } => (LightKind::Point, intensity),
-            };
-            let reason = if power.max_element() <= 0.0 {
-                Some(Unused::EmitsNothing)
-            } else if !rough {
-                Some(Unused::NothingShaded)
-            } else if enclosing.is_some_and(|tube| !reaches_inside(tube, light)) {
-                Some(Unused::OutsideClosedTube)
-            } else {
-                None
-            };
-            LightUse {
-                index,
-                kind,
-                used: reason.is_none(),
-                reason,
-            }
-        })
-        .collect();
+    let lights = light_uses(scene, rough);
     let lit = lights.iter().any(|l| l.used);
     // A single convex object cannot block the light to its own lit side:
     // cos θ > 0 there, and the segment towards the light leaves it.
@@ -197,6 +171,38 @@ pub fn analyse(scene: &Scene, settings: &Settings) -> Needs {
         deterministic,
         trap,
     }
+}
+
+/// What each of `scene`'s lights delivers, and why it is left out where
+/// it delivers nothing (`rough`: whether any surface is shaded from lights).
+fn light_uses(scene: &Scene, rough: bool) -> Vec<LightUse> {
+    let enclosing = enclosing_tube(scene);
+    scene
+        .lights
+        .iter()
+        .enumerate()
+        .map(|(index, light)| {
+            let (kind, power) = match *light {
+                Light::Directional { irradiance, .. } => (LightKind::Directional, irradiance),
+                Light::Point { intensity, .. } => (LightKind::Point, intensity),
+            };
+            let reason = if power.max_element() <= 0.0 {
+                Some(Unused::EmitsNothing)
+            } else if !rough {
+                Some(Unused::NothingShaded)
+            } else if enclosing.is_some_and(|tube| !reaches_inside(tube, light)) {
+                Some(Unused::OutsideClosedTube)
+            } else {
+                None
+            };
+            LightUse {
+                index,
+                kind,
+                used: reason.is_none(),
+                reason,
+            }
+        })
+        .collect()
 }
 
 /// A mirror tube that contains every primary ray's origin. Infinite along

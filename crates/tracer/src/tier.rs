@@ -180,6 +180,11 @@ impl_vector!(
     |v: DVec3| v
 );
 
+/// A colour from a function of its channel index.
+pub(crate) fn rgb<V: Vector>(f: impl Fn(usize) -> V::Scalar) -> V {
+    V::new(f(0), f(1), f(2))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -34,13 +34,15 @@
 mod checks;
 mod reference;
 mod statistics;
+mod tracer_checks;
 
 pub use checks::{
     box_filter_shift, check_all_the_light, check_all_the_light_in, check_independent,
-    check_missing_share, check_same_missing_light, FullLightChecks, TracerRender,
+    check_missing_share, check_same_missing_light, TracerRender,
 };
 pub use reference::{decode, DecodedLight, EstimateRender, FullLight, RegionMask, SceneLight};
 pub use statistics::{share, RegionMean, Share};
+pub use tracer_checks::FullLightChecks;
 
 /// The reference file.
 pub const FILE: &str = "mitsuba_full_light.json";
@@ -57,7 +59,7 @@ pub const POWER: f64 = 0.8;
 /// Relative difference of a region's mean that a tracer render may show
 /// against Mitsuba's at the same pixel positions without failing, whatever
 /// the samples: float32 differences of intersections and ray offsets, as
-/// the per-pixel render comparison allows ([`crate::renders::TOLERANCE_RELATIVE`]).
+/// the per-pixel render comparison allows ([`crate::compare::TOLERANCE_RELATIVE`]).
 /// Against the box-filtered estimates the allowance adds what the filter
 /// moves that region's mean, measured per scene, region and channel as
 /// `|path − path_centres|` (up to 3 % on `gold_spheres`, whose gold

@@ -103,7 +103,7 @@ pub struct ConductorCase {
 
 impl FresnelMpmath {
     /// Loads the reference from `dir`.
-    pub fn load(dir: &std::path::Path) -> Result<Self, crate::ReferenceError> {
+    pub fn load(dir: &std::path::Path) -> Result<Self, crate::reference::ReferenceError> {
         crate::reference::load(dir, super::FILE, super::SCHEMA)
     }
 }

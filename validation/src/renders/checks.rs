@@ -13,8 +13,8 @@ use super::{
     Compared, MitsubaRenders, Renderer, SceneRenders, MITSUBA_RAY_EPSILON,
 };
 use crate::check::Check;
+use crate::context::{Context, Samples};
 use crate::reference::ReferenceError;
-use crate::suite::{Context, Samples};
 
 /// The renders against Mitsuba, by a renderer under test.
 pub struct RenderChecks {

@@ -4,12 +4,9 @@
 use tracer::render::Image;
 
 use super::figure::triptych;
-use super::{
-    flatten, pixel_label, summarise_failures, Compared, Decoded, ALPHA, TOLERANCE_ABSOLUTE,
-    TOLERANCE_RELATIVE,
-};
+use super::{flatten, pixel_label, summarise_failures, Compared, Decoded, ALPHA};
 use crate::check::Check;
-use crate::compare::{tolerance, Tolerance};
+use crate::compare::{tolerance, Tolerance, TOLERANCE_ABSOLUTE, TOLERANCE_RELATIVE};
 
 /// Whitted against Whitted, per pixel away from edges.
 pub fn compare_whitted(name: &str, reference: &Decoded, ours: &Image) -> Compared {

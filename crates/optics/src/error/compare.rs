@@ -1,246 +1,74 @@
-//! The errors of `optics compare`: an image that cannot be read or does
-//! not fit the scene, a difference map that cannot be written, and an
-//! image that disagrees with the reference. Each kind's stable name, the
-//! argument it concerns, and its English text (its Hungarian is in
+//! The errors of `optics compare` as its user reads them: the library's
+//! kinds ([`validation::user_render::CompareError`]) with the argument
+//! each concerns and the flags' names in the English (the Hungarian is in
 //! `crate::lang::compare`).
 
 use std::fmt;
-use std::path::PathBuf;
 
-use tracer::output::OutputError;
-use tracer::scene::SceneError;
+pub use validation::user_render::{CompareError, PfmProblem};
 
-/// What is wrong in a PFM file.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum PfmProblem {
-    /// The header is not `PF` or `Pf`, a width, a height and a scale,
-    /// separated by white space.
-    Header,
-    /// The scale is zero or not a finite number (its sign gives the byte order).
-    Scale,
-    /// The pixel data is not `width × height × channels` floats.
-    Length {
-        /// Bytes the header calls for.
-        expected: u64,
-        /// Bytes present.
-        got: u64,
-    },
+/// The image's name: the positional argument.
+pub const IMAGE: &str = "IMAGE";
+
+/// The variance's name: its flag.
+pub const VARIANCE: &str = "--variance";
+
+/// The argument an error concerns.
+pub fn field(error: &CompareError) -> Option<String> {
+    let field = match error {
+        CompareError::Read { field, .. }
+        | CompareError::UnknownFormat { field, .. }
+        | CompareError::Png { field, .. }
+        | CompareError::PngPixels { field, .. }
+        | CompareError::Pfm { field, .. }
+        | CompareError::BadValue { field, .. }
+        | CompareError::VarianceNeedsPfm { field } => field,
+        CompareError::Size { .. } => IMAGE,
+        CompareError::SizeMismatch { .. } => VARIANCE,
+        CompareError::CourseReference => "--integrator",
+        CompareError::Diff(_) => "--diff",
+        CompareError::Reference { .. } | CompareError::Disagrees { .. } => return None,
+    };
+    Some(field.to_owned())
 }
 
-/// Why `optics compare` could not compare, or what it found.
-#[derive(Debug)]
-pub enum CompareError {
-    /// An input image could not be read; the operating system's message.
-    Read {
-        /// `IMAGE` or `--variance`.
-        field: &'static str,
-        /// The file.
-        path: PathBuf,
-        /// The reason.
-        source: std::io::Error,
-    },
-    /// A file that is neither a PNG nor a PFM, by its first bytes.
-    UnknownFormat {
-        /// `IMAGE` or `--variance`.
-        field: &'static str,
-        /// The file.
-        path: PathBuf,
-    },
-    /// A PNG the decoder refused; its message.
-    Png {
-        /// `IMAGE`.
-        field: &'static str,
-        /// The file.
-        path: PathBuf,
-        /// The decoder's message.
-        message: String,
-    },
-    /// A PNG whose pixels are not 8-bit RGB or RGBA.
-    PngPixels {
-        /// `IMAGE`.
-        field: &'static str,
-        /// The file.
-        path: PathBuf,
-        /// The decoder's name of its pixel format.
-        format: String,
-    },
-    /// A malformed PFM.
-    Pfm {
-        /// `IMAGE` or `--variance`.
-        field: &'static str,
-        /// The file.
-        path: PathBuf,
-        /// What is wrong.
-        problem: PfmProblem,
-    },
-    /// A value that is not finite (or, in a variance, negative).
-    BadValue {
-        /// `IMAGE` or `--variance`.
-        field: &'static str,
-        /// Column, from 0 at the left.
-        x: u32,
-        /// Row, from 0 at the top.
-        y: u32,
-        /// `R`, `G` or `B`.
-        channel: char,
-        /// The value.
-        value: f32,
-    },
-    /// A variance image that is a PNG, or a variance given for a PNG.
-    VarianceNeedsPfm {
-        /// `--variance` (a PNG given as the variance) or `IMAGE` (a PNG
-        /// given with a variance).
-        field: &'static str,
-    },
-    /// The image's size is one the scene cannot be rendered at.
-    Size {
-        /// The image's width, pixels.
-        width: u32,
-        /// Its height.
-        height: u32,
-        /// The tracer's refusal.
-        error: SceneError,
-    },
-    /// The variance image's size is not the image's.
-    SizeMismatch {
-        /// The variance image's width and height.
-        got: (u32, u32),
-        /// The image's.
-        expected: (u32, u32),
-    },
-    /// The reference would be the course shader, which is not physical.
-    CourseReference,
-    /// The reference render failed; the tracer's message.
-    Reference {
-        /// The message.
-        message: String,
-    },
-    /// The difference map could not be written.
-    Diff(OutputError),
-    /// The image disagrees with the reference.
-    Disagrees {
-        /// Pixels that disagree.
-        disagreeing: usize,
-        /// Pixels compared.
-        pixels: usize,
-    },
-}
-
-impl CompareError {
-    /// The kind's stable name.
-    pub fn name(&self) -> &'static str {
-        match self {
-            CompareError::Read { .. } => "compare.read",
-            CompareError::UnknownFormat { .. } => "compare.unknown_format",
-            CompareError::Png { .. } => "compare.png",
-            CompareError::PngPixels { .. } => "compare.png_pixels",
-            CompareError::Pfm { .. } => "compare.pfm",
-            CompareError::BadValue { .. } => "compare.bad_value",
-            CompareError::VarianceNeedsPfm { .. } => "compare.variance_needs_pfm",
-            CompareError::Size { .. } => "compare.size",
-            CompareError::SizeMismatch { .. } => "compare.size_mismatch",
-            CompareError::CourseReference => "compare.course_reference",
-            CompareError::Reference { .. } => "compare.reference",
-            CompareError::Diff(_) => "compare.diff",
-            CompareError::Disagrees { .. } => "compare.disagrees",
-        }
-    }
-
-    /// The argument it concerns.
-    pub fn field(&self) -> Option<String> {
-        let field = match self {
-            CompareError::Read { field, .. }
-            | CompareError::UnknownFormat { field, .. }
-            | CompareError::Png { field, .. }
-            | CompareError::PngPixels { field, .. }
-            | CompareError::Pfm { field, .. }
-            | CompareError::BadValue { field, .. }
-            | CompareError::VarianceNeedsPfm { field } => field,
-            CompareError::Size { .. } => "IMAGE",
-            CompareError::SizeMismatch { .. } => "--variance",
-            CompareError::CourseReference => "--integrator",
-            CompareError::Diff(_) => "--diff",
-            CompareError::Reference { .. } | CompareError::Disagrees { .. } => return None,
-        };
-        Some((*field).to_owned())
-    }
-}
-
-impl fmt::Display for PfmProblem {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            PfmProblem::Header => write!(
-                f,
-                "the header is not PF or Pf, a width, a height and a scale separated by white space"
-            ),
-            PfmProblem::Scale => write!(
-                f,
-                "the scale is zero or not a finite number (its sign gives the byte order)"
-            ),
-            PfmProblem::Length { expected, got } => write!(
-                f,
-                "the header calls for {expected} bytes of pixels, the file has {got}"
-            ),
-        }
-    }
-}
-
-impl fmt::Display for CompareError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            CompareError::Read { field, path, source } => {
-                write!(f, "{field} {}: cannot read it: {source}", path.display())
-            }
-            CompareError::UnknownFormat { field, path } => write!(
-                f,
-                "{field} {}: neither a PNG nor a PFM (by its first bytes)",
-                path.display()
-            ),
-            CompareError::Png { field, path, message } => {
-                write!(f, "{field} {}: not a readable PNG: {message}", path.display())
-            }
-            CompareError::PngPixels { field, path, format } => write!(
-                f,
-                "{field} {}: a PNG of {format} pixels; compare reads 8-bit sRGB (RGB or RGBA)",
-                path.display()
-            ),
-            CompareError::Pfm { field, path, problem } => {
-                write!(f, "{field} {}: not a readable PFM: {problem}", path.display())
-            }
-            CompareError::BadValue { field, x, y, channel, value } => write!(
-                f,
-                "{field}: pixel ({x}, {y}) {channel} is {value}, not a finite number{}",
-                if *field == "--variance" { " ≥ 0" } else { "" }
-            ),
-            CompareError::VarianceNeedsPfm { field: "--variance" } => write!(
-                f,
-                "--variance: give the variance as a PFM of linear values, not a PNG"
-            ),
-            CompareError::VarianceNeedsPfm { field } => write!(
-                f,
-                "{field}: a PNG holds 8-bit codes, not radiance; a variance goes with a PFM of the mean"
-            ),
-            CompareError::Size { width, height, error } => write!(
-                f,
-                "IMAGE is {width} × {height} pixels, a size the scene cannot be rendered at: {error}"
-            ),
-            CompareError::SizeMismatch { got, expected } => write!(
-                f,
-                "--variance is {} × {} pixels, IMAGE {} × {}: they must be the same size",
-                got.0, got.1, expected.0, expected.1
-            ),
-            CompareError::CourseReference => write!(
-                f,
-                "--integrator: the reference is physical; give whitted, path, photon or local, not course"
-            ),
-            CompareError::Reference { message } => {
-                write!(f, "the reference render failed: {message}")
-            }
-            CompareError::Diff(error) => write!(f, "--diff: {error}"),
-            CompareError::Disagrees { disagreeing, pixels } => write!(
-                f,
-                "the image disagrees with the reference at {disagreeing} of {pixels} pixels"
-            ),
-        }
+/// The English, naming the flag each error came from; the library's own
+/// where it already names the input by the name this command gave it.
+pub fn english(error: &CompareError, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+    match error {
+        CompareError::BadValue { field, x, y, channel, value } => write!(
+            f,
+            "{field}: pixel ({x}, {y}) {channel} is {value}, not a finite number{}",
+            if *field == VARIANCE { " ≥ 0" } else { "" }
+        ),
+        CompareError::VarianceNeedsPfm { field: VARIANCE } => write!(
+            f,
+            "{VARIANCE}: give the variance as a PFM of linear values, not a PNG"
+        ),
+        CompareError::VarianceNeedsPfm { field } => write!(
+            f,
+            "{field}: a PNG holds 8-bit codes, not radiance; a variance goes with a PFM of the mean"
+        ),
+        CompareError::Size { width, height, error } => write!(
+            f,
+            "{IMAGE} is {width} × {height} pixels, a size the scene cannot be rendered at: {error}"
+        ),
+        CompareError::SizeMismatch { got, expected } => write!(
+            f,
+            "{VARIANCE} is {} × {} pixels, {IMAGE} {} × {}: they must be the same size",
+            got.0, got.1, expected.0, expected.1
+        ),
+        CompareError::CourseReference => write!(
+            f,
+            "--integrator: the reference is physical; give whitted, path, photon or local, not course"
+        ),
+        CompareError::Diff(error) => write!(f, "--diff: {error}"),
+        CompareError::Read { .. }
+        | CompareError::UnknownFormat { .. }
+        | CompareError::Png { .. }
+        | CompareError::PngPixels { .. }
+        | CompareError::Pfm { .. }
+        | CompareError::Reference { .. }
+        | CompareError::Disagrees { .. } => write!(f, "{error}"),
     }
 }

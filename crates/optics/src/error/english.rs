@@ -8,7 +8,7 @@ use std::fmt;
 use validation::tradeoff::budget::Need;
 
 #[cfg(feature = "harness")]
-use super::harness;
+use super::{compare, harness};
 use super::{usage_text, ErrorKind};
 
 impl fmt::Display for ErrorKind {
@@ -84,7 +84,11 @@ impl fmt::Display for ErrorKind {
                  exceeds f32 there; nothing was written"
             ),
             #[cfg(feature = "harness")]
-            ErrorKind::Checkout(error) => write!(f, "{error}"),
+            ErrorKind::Checkout(error) => f.write_str(&harness::checkout_en(error, None)),
+            #[cfg(feature = "harness")]
+            ErrorKind::CheckoutWithFlag(error) => {
+                f.write_str(&harness::checkout_en(error, Some(harness::CHECKOUT_FLAG)))
+            }
             #[cfg(feature = "harness")]
             ErrorKind::Pipeline(error) => match harness::pipeline_lead(error) {
                 Some(lead) => write!(f, "{}: {error}", lead.en),
@@ -95,7 +99,7 @@ impl fmt::Display for ErrorKind {
                 write!(f, "{failed} of {checks} checks failed")
             }
             #[cfg(feature = "harness")]
-            ErrorKind::Compare(error) => write!(f, "{error}"),
+            ErrorKind::Compare(error) => compare::english(error, f),
             #[cfg(feature = "harness")]
             ErrorKind::TruthIsBlack { file } => write!(
                 f,

@@ -1,5 +1,6 @@
 //! The harness's errors as `optics validate` reports them: each kind's
-//! stable name, and the flag (or variable) that sets what it concerns.
+//! stable name, the flag (or variable) that sets what it concerns, and the
+//! advice about a missing checkout that the reporting command accepts.
 
 use validation::checkout::{CheckoutError, Via, ENV};
 use validation::pipeline::PipelineError;
@@ -17,6 +18,37 @@ pub struct Lead {
     pub hu: &'static str,
 }
 
+/// The flag `optics validate` names the checkout with; the other commands
+/// that need a checkout have none.
+pub const CHECKOUT_FLAG: &str = "--checkout";
+
+/// A checkout error in English, for a command whose checkout flag is
+/// `flag` (`None`: the command has none): the flag leads the message of a
+/// directory it named, and the advice after a missing checkout names only
+/// what the command accepts.
+pub fn checkout_en(error: &CheckoutError, flag: Option<&str>) -> String {
+    match (error, flag) {
+        (
+            CheckoutError::NotACheckout {
+                via: Via::Explicit,
+                path,
+                marker,
+            },
+            Some(flag),
+        ) => format!(
+            "{flag} {}: not a checkout of the suite (it has no {marker})",
+            path.display()
+        ),
+        (CheckoutError::NotACheckout { .. }, _) => error.to_string(),
+        (CheckoutError::NotFound { .. }, Some(flag)) => {
+            format!("{error}; pass {flag} DIR, set {ENV}=DIR, or run from inside a checkout")
+        }
+        (CheckoutError::NotFound { .. }, None) => {
+            format!("{error}; set {ENV}=DIR, or run from inside a checkout")
+        }
+    }
+}
+
 /// The name of a checkout error's kind.
 pub fn checkout_name(error: &CheckoutError) -> &'static str {
     match error {
@@ -25,8 +57,9 @@ pub fn checkout_name(error: &CheckoutError) -> &'static str {
     }
 }
 
-/// What named the checkout: `--checkout`, or the environment variable.
-pub fn checkout_field(error: &CheckoutError) -> &'static str {
+/// What named the checkout, or would name it: the command's `flag`
+/// where it has one, else the environment variable.
+pub fn checkout_field(error: &CheckoutError, flag: Option<&'static str>) -> &'static str {
     match error {
         CheckoutError::NotACheckout {
             via: Via::Environment,
@@ -36,7 +69,7 @@ pub fn checkout_field(error: &CheckoutError) -> &'static str {
             via: Via::Explicit | Via::Search | Via::BuildTime,
             ..
         }
-        | CheckoutError::NotFound { .. } => "--checkout",
+        | CheckoutError::NotFound { .. } => flag.unwrap_or(ENV),
     }
 }
 
@@ -107,5 +140,40 @@ pub fn pipeline_lead(error: &PipelineError) -> Option<Lead> {
         | PipelineError::Reference(_)
         | PipelineError::Tool(ToolError::Failed { .. })
         | PipelineError::Regenerate(_) => None,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn not_found() -> CheckoutError {
+        CheckoutError::NotFound {
+            start: "/tmp/work".into(),
+        }
+    }
+
+    #[test]
+    fn a_command_without_the_flag_is_not_advised_to_pass_it() {
+        let message = checkout_en(&not_found(), None);
+        assert!(!message.contains("--"), "{message}");
+        assert!(message.contains(&format!("set {ENV}=DIR")), "{message}");
+        assert_eq!(checkout_field(&not_found(), None), ENV);
+    }
+
+    #[test]
+    fn a_command_with_the_flag_is_advised_to_pass_it() {
+        let message = checkout_en(&not_found(), Some(CHECKOUT_FLAG));
+        for way in [
+            "--checkout DIR",
+            &format!("{ENV}=DIR"),
+            "from inside a checkout",
+        ] {
+            assert!(message.contains(way), "{message}");
+        }
+        assert_eq!(
+            checkout_field(&not_found(), Some(CHECKOUT_FLAG)),
+            CHECKOUT_FLAG
+        );
     }
 }

@@ -68,14 +68,7 @@ pub fn compare_hu(error: &CompareError) -> String {
             y,
             channel,
             value,
-        } => format!(
-            "{field}: a(z) ({x}, {y}) képpont {channel} csatornája {value}, nem véges szám{}",
-            if *field == "--variance" {
-                ", ≥ 0"
-            } else {
-                ""
-            }
-        ),
+        } => bad_value_hu(field, (*x, *y), *channel, *value),
         CompareError::VarianceNeedsPfm { field } => variance_hu(field),
         CompareError::Size {
             width,
@@ -118,4 +111,12 @@ fn variance_hu(field: &str) -> String {
              PFM-je mellé adható meg"
         ),
     }
+}
+
+/// A value that is not finite, or a negative variance.
+fn bad_value_hu(field: &str, (x, y): (u32, u32), channel: char, value: f32) -> String {
+    format!(
+        "{field}: a(z) ({x}, {y}) képpont {channel} csatornája {value}, nem véges szám{}",
+        if field == "--variance" { ", ≥ 0" } else { "" }
+    )
 }

@@ -2,7 +2,7 @@
 //! not run to the end. Each is an exhaustive `match` over the harness's
 //! kinds.
 
-use validation::checkout::{CheckoutError, Via, ENV};
+use validation::checkout::{CheckoutError, Via, ENV, MARKERS};
 use validation::pipeline::PipelineError;
 use validation::python::{Task, ToolError};
 use validation::reference::ReferenceError;
@@ -10,29 +10,45 @@ use validation::regenerate::RegenerateError;
 
 use super::render::output_hu;
 
-/// No usable checkout: what named the directory, and what it lacks.
-pub fn checkout_hu(error: &CheckoutError) -> String {
+/// No usable checkout: what named the directory and what it lacks, or
+/// where none was found and the advice that a command whose checkout flag
+/// is `flag` accepts ([`crate::error::harness::checkout_en`]).
+pub fn checkout_hu(error: &CheckoutError, flag: Option<&str>) -> String {
     match error {
         CheckoutError::NotACheckout { via, path, marker } => format!(
             "{} {}: nem a programcsomag munkapéldánya (nincs benne {marker})",
-            via_hu(*via),
+            via_hu(*via, flag),
             path.display()
         ),
-        CheckoutError::NotFound { start } => format!(
-            "nem található a programcsomag munkapéldánya: adja meg a --checkout DIR \
-             kapcsolót, állítsa be az {ENV}=DIR változót, vagy futtassa egy munkapéldányon \
-             belülről (egyik sem tartalmazza ezt: {})",
-            start.display()
-        ),
+        CheckoutError::NotFound { start } => {
+            let advice = match flag {
+                Some(flag) => format!(
+                    "adja meg a {flag} DIR kapcsolót, állítsa be az {ENV}=DIR változót, \
+                     vagy futtassa egy munkapéldányon belülről"
+                ),
+                None => format!(
+                    "állítsa be az {ENV}=DIR változót, vagy futtassa egy munkapéldányon belülről"
+                ),
+            };
+            format!(
+                "nem található a programcsomag munkapéldánya: nem neveztek meg egyet sem, az \
+                 {ENV} változó üres vagy nincs beállítva, és sem {}, sem egy fölötte lévő \
+                 könyvtár nem tartalmazza egyszerre ezeket: {}, {}; {advice}",
+                start.display(),
+                MARKERS[0],
+                MARKERS[1]
+            )
+        }
     }
 }
 
-fn via_hu(via: Via) -> &'static str {
-    match via {
-        Via::Explicit => "--checkout",
-        Via::Environment => ENV,
-        Via::Search => "a munkakönyvtár",
-        Via::BuildTime => "e fordítás munkapéldánya",
+fn via_hu(via: Via, flag: Option<&str>) -> &str {
+    match (via, flag) {
+        (Via::Explicit, Some(flag)) => flag,
+        (Via::Explicit, None) => "a megnevezett könyvtár",
+        (Via::Environment, _) => ENV,
+        (Via::Search, _) => "a munkakönyvtár",
+        (Via::BuildTime, _) => "e fordítás munkapéldánya",
     }
 }
 

@@ -9,7 +9,7 @@ use tracer::output::OutputError;
 use tracer::scene::error::{ImageProblem, JsonType, SizeRule};
 use tracer::scene::{ErrorKind as Scene, SceneError, MAX_PIXELS, SCHEMA_VERSION};
 
-use super::domain_hu;
+use super::domain::domain_hu;
 
 /// A refused scene: the file, the JSON path (where the message does not
 /// name its subject itself), and what is wrong.

@@ -4,6 +4,7 @@
 use super::*;
 use crate::error::usage_text;
 use clap::Parser;
+use radiometry::domain::{self, DomainError, Expected};
 use std::collections::BTreeSet;
 
 #[cfg(feature = "harness")]
@@ -210,7 +211,7 @@ fn slot(kind: &ErrorKind) -> usize {
         ErrorKind::Threads(_) => CALCULATOR + render_kinds::THREADS,
         ErrorKind::RadianceNotFinite { .. } => CALCULATOR + render_kinds::NOT_FINITE,
         #[cfg(feature = "harness")]
-        ErrorKind::Checkout(error) => {
+        ErrorKind::Checkout(error) | ErrorKind::CheckoutWithFlag(error) => {
             CALCULATOR + render_kinds::SLOTS + harness_kinds::checkout_slot(error)
         }
         #[cfg(feature = "harness")]

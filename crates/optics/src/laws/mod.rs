@@ -8,30 +8,13 @@
 //! a law decided, and each law is evaluated at most once per request.
 
 mod fresnel;
+mod normalized;
 mod reflect;
 pub(crate) mod refract;
 mod shade;
 
 pub use fresnel::{FresnelArgs, FresnelModel};
+pub use normalized::note_normalized;
 pub use reflect::ReflectArgs;
 pub use refract::RefractArgs;
 pub use shade::{ShadeArgs, ShadeModel, Shading};
-
-use radiometry::domain::Direction;
-use record::{number, vector, Record};
-use record::{say, Lang};
-
-/// Says in the working when a direction was not unit length.
-pub fn note_normalized(record: &mut Record, lang: Lang, field: &str, d: &Direction) {
-    if d.was_normalized() {
-        record.step(|| {
-            say!(
-                lang,
-                "{field} has length {}: normalised to {}",
-                "{field} hossza {}: normalizálva {}",
-                number(d.given_length),
-                vector(d.unit.to_array())
-            )
-        });
-    }
-}

@@ -1,6 +1,6 @@
 //! `optics reflect`: the mirror direction, by the law of reflection.
 
-use super::note_normalized;
+use super::normalized::note_normalized;
 use crate::error::Result;
 use crate::input::{Vec3Arg, Via};
 use radiometry::specular::reflect;

@@ -1,6 +1,6 @@
 //! `optics refract`: the refracted direction, by Snell's law in vector form.
 
-use super::note_normalized;
+use super::normalized::note_normalized;
 use crate::error::Result;
 use crate::input::{Vec3Arg, Via};
 use glam::DVec3;

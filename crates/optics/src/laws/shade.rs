@@ -1,7 +1,7 @@
 //! `optics shade`: radiance reflected towards a viewer from a directional
 //! light, by one of the course's BRDFs.
 
-use super::note_normalized;
+use super::normalized::note_normalized;
 use crate::error::{ErrorKind, Result};
 use crate::input::{Vec3Arg, Via};
 use glam::DVec3;
@@ -123,16 +123,8 @@ impl ShadeArgs {
             "W/(sr m^2)",
         )
         .with_steps(steps);
-        record
-            .input("model", model.name())
-            .input("normal", self.normal.0)
-            .input("light_dir", self.light_dir.0)
-            .input("view_dir", self.view_dir.0)
-            .input("radiance", l_in);
-        match model {
-            ShadeModel::Lambert | ShadeModel::CourseLambert => record.input("kd", kd),
-            _ => record.input("kd", kd).input("ks", ks).input("shine", shine),
-        };
+        let coefficients = Coefficients { kd, ks, shine };
+        self.record_inputs(&mut record, l_in, coefficients);
         note_normalized(&mut record, lang, "normal", &n);
         note_normalized(&mut record, lang, "light_dir", &l);
         note_normalized(&mut record, lang, "view_dir", &v);
@@ -141,32 +133,7 @@ impl ShadeArgs {
         let cos_in = n.dot(l);
         record.step(|| format!("cos θin = N · L = {}", number(cos_in)));
         let side = hemisphere(n, l, v);
-        let f = match side {
-            Hemisphere::Above { .. } | Hemisphere::Undefined => {
-                model.evaluate(&mut record, Coefficients { kd, ks, shine }, n, l, v)
-            }
-            Hemisphere::LightBelow => {
-                record.step(|| {
-                    say!(
-                        lang,
-                        "f_r = 0: the light is at or below the surface (N · L ≤ 0)",
-                        "f_r = 0: a fényforrás a felület síkjában vagy alatta van (N · L ≤ 0)"
-                    )
-                });
-                0.0
-            }
-            Hemisphere::ViewerBelow => {
-                record.step(|| {
-                    say!(
-                        lang,
-                        "f_r = 0: the viewer is at or below the surface (N · V = {} ≤ 0)",
-                        "f_r = 0: a néző a felület síkjában vagy alatta van (N · V = {} ≤ 0)",
-                        number(n.dot(v))
-                    )
-                });
-                0.0
-            }
-        };
+        let f = model.on_side(&mut record, lang, coefficients, side, (n, l, v));
         let f = model.finite("f_r", f, via, &[])?;
         let e = directional_irradiance(l_in, n, l);
         record.step(|| {
@@ -196,6 +163,61 @@ impl ShadeArgs {
         record.answer = Answer::Number(radiance);
         record.detail("brdf", f).detail("irradiance", e);
         Ok(Shading { record, radiance })
+    }
+
+    /// The inputs as the record lists them: the coefficients this model
+    /// takes.
+    fn record_inputs(&self, record: &mut Record, l_in: f64, c: Coefficients) {
+        let Coefficients { kd, ks, shine } = c;
+        record
+            .input("model", self.model.name())
+            .input("normal", self.normal.0)
+            .input("light_dir", self.light_dir.0)
+            .input("view_dir", self.view_dir.0)
+            .input("radiance", l_in);
+        match self.model {
+            ShadeModel::Lambert | ShadeModel::CourseLambert => record.input("kd", kd),
+            _ => record.input("kd", kd).input("ks", ks).input("shine", shine),
+        };
+    }
+}
+
+impl ShadeModel {
+    /// `f_r` on the `side` [`hemisphere`] decided: the model's, narrated,
+    /// where it has a lobe (or NaN), and 0 with the reason where the light
+    /// or the viewer is at or below the surface.
+    fn on_side(
+        self,
+        record: &mut Record,
+        lang: Lang,
+        c: Coefficients,
+        side: Hemisphere<f64>,
+        (n, l, v): (DVec3, DVec3, DVec3),
+    ) -> f64 {
+        match side {
+            Hemisphere::Above { .. } | Hemisphere::Undefined => self.evaluate(record, c, n, l, v),
+            Hemisphere::LightBelow => {
+                record.step(|| {
+                    say!(
+                        lang,
+                        "f_r = 0: the light is at or below the surface (N · L ≤ 0)",
+                        "f_r = 0: a fényforrás a felület síkjában vagy alatta van (N · L ≤ 0)"
+                    )
+                });
+                0.0
+            }
+            Hemisphere::ViewerBelow => {
+                record.step(|| {
+                    say!(
+                        lang,
+                        "f_r = 0: the viewer is at or below the surface (N · V = {} ≤ 0)",
+                        "f_r = 0: a néző a felület síkjában vagy alatta van (N · V = {} ≤ 0)",
+                        number(n.dot(v))
+                    )
+                });
+                0.0
+            }
+        }
     }
 }
 

@@ -1,10 +1,10 @@
 //! `optics shadow-matrix`: the slides' shadow matrix of a point light on
 //! a plane, its special case `y = 0`, and where it puts one vertex.
 
-use super::{
-    clean, cleaned, cleaned_product, finite_matrix, inline, matrix_answer, narrate_plane, vector4,
-    PlaneArgs,
+use super::matrix::{
+    clean, cleaned, cleaned_product, finite_matrix, inline, matrix_answer, matrix_detail, vector4,
 };
+use super::plane::{narrate_plane, PlaneArgs};
 use crate::error::{ErrorKind, Result};
 use crate::input::{Vec3Arg, Via};
 use glam::{DMat4, DVec3, DVec4};
@@ -85,7 +85,7 @@ impl ShadowMatrixArgs {
                     inline(&cleaned(slides))
                 )
             });
-            record.detail("slides_y0", super::matrix_detail(&cleaned(slides)));
+            record.detail("slides_y0", matrix_detail(&cleaned(slides)));
         }
         matrix_answer(&mut record, &m);
         if let Some(v) = vertex {

@@ -1,7 +1,10 @@
 //! The error-free transformations and the short sums, against the fused
 //! multiply-add and the full compensated sums.
 
+use super::dielectric::*;
+use super::error_free::*;
 use super::*;
+use crate::Real;
 
 /// A xorshift generator of 64-bit words from `state`: reproducible
 /// random operands.

@@ -6,7 +6,7 @@ use num_complex::Complex;
 #[allow(unused_imports)]
 use num_traits::{Float, FloatConst, One, Zero};
 
-use super::{fraction, sqr};
+use super::algebra::{fraction, sqr};
 use crate::compensated::{self, TwoPart};
 use crate::snell::clamp_unit;
 use crate::Real;

@@ -33,7 +33,7 @@
 #[allow(unused_imports)]
 use num_traits::{Float, FloatConst, One, Zero};
 
-use super::{fraction, sqr};
+use super::algebra::{fraction, sqr};
 use crate::compensated;
 use crate::snell::Incidence;
 use crate::specular::{refract_resolved, Refraction};

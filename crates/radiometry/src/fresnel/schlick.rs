@@ -5,7 +5,7 @@
 #[allow(unused_imports)]
 use num_traits::{Float, FloatConst, One, Zero};
 
-use super::f0;
+use super::normal_incidence::f0;
 use crate::snell::{clamp_unit, Incidence};
 use crate::specular::{refract_resolved, Refraction};
 use crate::{Real, Vector3};

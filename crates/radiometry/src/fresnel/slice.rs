@@ -113,7 +113,7 @@ pub fn dielectric_slice_on<T: Real>(lanes: Lanes, cos_i: &[T], eta: T, out: &mut
 ///
 /// If the two slices differ in length.
 pub fn conductor_slice_on<T: Real>(lanes: Lanes, cos_i: &[T], n: T, kappa: T, out: &mut [T]) {
-    match super::Conductor::new(n, kappa) {
+    match super::conductor::Conductor::new(n, kappa) {
         // The material's constants once per slice, as for a surface.
         Some(metal) => dispatch(lanes, cos_i, out, &metal),
         None => dispatch(lanes, cos_i, out, &Undefined),
@@ -137,7 +137,7 @@ impl<T: Real> AtCosine<T> for Dielectric<T> {
     }
 }
 
-impl<T: Real> AtCosine<T> for super::Conductor<T> {
+impl<T: Real> AtCosine<T> for super::conductor::Conductor<T> {
     #[inline(always)]
     fn at<const FUSED: bool>(&self, cos_i: T) -> T {
         self.polarized_on::<FUSED>(cos_i).reflectance()

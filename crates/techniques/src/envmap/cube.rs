@@ -30,7 +30,8 @@
 
 use glam::DVec3;
 
-use super::{unit_square, Direction, TexelError};
+use super::direction::Direction;
+use super::texel::{unit_square, TexelError};
 
 /// A face of the cube, named by the axis direction it is centred on.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]

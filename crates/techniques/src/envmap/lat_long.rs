@@ -28,7 +28,8 @@
 
 use std::f64::consts::{PI, TAU};
 
-use super::{unit_square, Direction, TexelError};
+use super::direction::Direction;
+use super::texel::{unit_square, TexelError};
 
 /// A texel of the latitude–longitude map, with the angles it came from.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -42,87 +42,13 @@
 //! ```
 
 pub mod cube;
+mod direction;
 pub mod lat_long;
 pub mod sphere;
+mod texel;
 
-use glam::DVec3;
-use radiometry::domain::{self, DomainError};
-
-/// A unit direction, finite and normalised once, where it entered.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Direction(DVec3);
-
-/// Why a vector is not a direction.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum DirectionError {
-    /// Every component is zero: the vector points nowhere.
-    Zero,
-    /// A component is NaN or infinite.
-    NotFinite,
-}
-
-impl Direction {
-    /// The direction of `v`, of any finite non-zero length (normalised by
-    /// [`radiometry::domain::direction`], which scales first, so that
-    /// `(1e-300, 0, 0)` and `(1e300, 1e300, 0)` have one too).
-    pub fn new(v: DVec3) -> Result<Self, DirectionError> {
-        match domain::direction("direction", v) {
-            Ok(d) => Ok(Self(d.unit)),
-            Err(DomainError::ZeroVector { .. }) => Err(DirectionError::Zero),
-            Err(DomainError::NotFinite { .. } | DomainError::OutOfRange { .. }) => {
-                Err(DirectionError::NotFinite)
-            }
-        }
-    }
-
-    /// The unit vector.
-    pub fn get(self) -> DVec3 {
-        self.0
-    }
-
-    /// A direction a map built on its way back: a vector whose largest
-    /// component is near 1 (a point on a cube face, a reflected unit
-    /// vector), so plain normalisation neither underflows nor overflows.
-    fn from_built(v: DVec3) -> Self {
-        Self(v.normalize())
-    }
-}
-
-impl From<radiometry::domain::Direction> for Direction {
-    /// The direction the radiometry crate validated where it entered (an
-    /// `optics` flag): its unit vector, not checked again.
-    fn from(d: radiometry::domain::Direction) -> Self {
-        Self(d.unit)
-    }
-}
-
-/// Why a texel given back is not one of a map's.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum TexelError {
-    /// `u` is not a finite number in `[0, 1]`; the value given.
-    U(f64),
-    /// `v` is not a finite number in `[0, 1]`; the value given.
-    V(f64),
-    /// `(u, v)` lies outside the sphere map's disc
-    /// `(2u − 1)² + (2v − 1)² ≤ 1`.
-    OutsideDisc {
-        /// `u` given.
-        u: f64,
-        /// `v` given.
-        v: f64,
-    },
-}
-
-/// `(u, v)` checked to lie in the unit square, once, for every map.
-fn unit_square(u: f64, v: f64) -> Result<(f64, f64), TexelError> {
-    if !(0.0..=1.0).contains(&u) {
-        return Err(TexelError::U(u));
-    }
-    if !(0.0..=1.0).contains(&v) {
-        return Err(TexelError::V(v));
-    }
-    Ok((u, v))
-}
+pub use direction::{Direction, DirectionError};
+pub use texel::TexelError;
 
 #[cfg(test)]
 mod tests;

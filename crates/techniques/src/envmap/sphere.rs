@@ -33,7 +33,8 @@ use glam::DVec3;
 use radiometry::domain;
 use radiometry::specular::reflect;
 
-use super::{unit_square, Direction, TexelError};
+use super::direction::Direction;
+use super::texel::{unit_square, TexelError};
 
 /// The direction towards the viewer, `e = (0, 0, 1)`.
 pub const TOWARDS_VIEWER: DVec3 = DVec3::Z;

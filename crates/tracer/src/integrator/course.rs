@@ -7,9 +7,11 @@
 use glam::Vec3;
 use radiometry::{course, fresnel, radiance, specular};
 
-use super::{rgb, RayCounts, Tracer};
+use super::counts::{Bounce, RayCounts};
+use super::tracer::Tracer;
 use crate::geometry::{Hit, Object, Ray};
 use crate::scene::{Light, Material};
+use crate::tier::rgb;
 
 /// How far the course moves a secondary ray's origin along the normal, m.
 const EPSILON: f32 = 0.001;
@@ -52,7 +54,7 @@ impl Tracer<'_> {
                     let f0 = fresnel::f0_rgb(eta, kappa);
                     let cos = (-ray.direction).dot(n);
                     weight *= rgb::<Vec3>(|c| course::fresnel_000_glsl(f0[c], cos));
-                    counts.bounce(super::Bounce::Reflection, bounce + 1);
+                    counts.bounce(Bounce::Reflection, bounce + 1);
                     ray = Ray::new(
                         hit.point + n * EPSILON,
                         specular::reflect(-ray.direction, n),

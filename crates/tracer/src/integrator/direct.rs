@@ -4,11 +4,12 @@
 use radiometry::brdf::{BlinnPhong, Brdf, Lambert};
 use radiometry::{radiance, Real};
 
-use super::{rgb, RayCounts, Tracer};
+use super::counts::RayCounts;
+use super::tracer::Tracer;
 use crate::geometry::{Hit, Ray};
 use crate::scene::{Light, Material};
 use crate::spawn;
-use crate::tier::Vector;
+use crate::tier::{rgb, Vector};
 
 impl<V: Vector> Material<V> {
     /// The BRDF of a rough material per channel, 1/sr (zero for the others,

@@ -2,8 +2,9 @@
 //! the lights' direct light at the first surface hit; a mirror or glass is
 //! not followed and shows black.
 
+use super::counts::RayCounts;
 use super::scatter::Surface;
-use super::{RayCounts, Tracer};
+use super::tracer::Tracer;
 use crate::geometry::Ray;
 use crate::tier::Vector;
 

@@ -17,10 +17,12 @@
 
 use glam::Vec3;
 
+use super::counts::{Bounce, RayCounts};
+use super::hemisphere::cosine_sample;
 use super::pending::{roulette, Pending};
-use super::photon::Pass;
-use super::scatter::{Bounce, Lobe, Surface};
-use super::{cosine_sample, RayCounts, Tracer};
+use super::photon::maps::Pass;
+use super::scatter::{Lobe, Surface};
+use super::tracer::Tracer;
 use crate::geometry::{Hit, Ray};
 use crate::sampler::{Sample, Slot1d};
 use crate::scene::Material;
@@ -40,23 +42,19 @@ impl Tracer<'_> {
         let mut depth = 0;
         // Conductor bounces are weighed where `beta` is next used.
         let mut pending = Pending::new();
+        let trap = self.machinery.trap.as_ref();
         loop {
             let Some(hit) = self.intersect(&ray) else {
-                let Some(beta) = pending.settle(self, beta) else {
-                    return sum;
-                };
-                return sum + beta * self.scene.escaped(ray.direction);
+                let escaped = |beta: Vec3| sum + beta * self.scene.escaped(ray.direction);
+                return pending.settle(self, beta).map_or(sum, escaped);
             };
             let material = &self.scene.materials[hit.material as usize];
             let wo = -ray.direction;
             let n = hit.shading_normal(ray.direction);
-            let mut conductor = None;
-            let next = match material.surface(&hit) {
+            let (next, bounce, conductor) = match material.surface(&hit) {
                 Surface::Shows(radiance) => {
-                    let Some(beta) = pending.settle(self, beta) else {
-                        return sum;
-                    };
-                    return sum + beta * radiance;
+                    let shown = |beta: Vec3| sum + beta * radiance;
+                    return pending.settle(self, beta).map_or(sum, shown);
                 }
                 Surface::Rough => {
                     let Some(settled) = pending.settle(self, beta) else {
@@ -65,29 +63,15 @@ impl Tracer<'_> {
                     beta = settled;
                     sum += beta * self.direct(&hit, n, wo, material, counts);
                     if let Some(pass) = caustics {
-                        let bounces = self.settings.max_depth.saturating_sub(depth);
-                        sum += beta * pass.radiance(&hit, n, wo, material, bounces);
+                        sum += beta * self.caustic(pass, &hit, n, wo, material, depth);
                     }
                     if depth >= self.settings.max_depth {
                         return sum;
                     }
-                    // Cosine-weighted hemisphere sampling: pdf = cos θ / π,
-                    // so the weight f_r cos θ / pdf is π f_r.
-                    let [u1, u2] = sample.next_2d();
-                    let wi = cosine_sample(n, u1, u2);
-                    // About a bump map's bent normal the hemisphere may dip
-                    // below the surface: that light is lost, as a bump map
-                    // loses it (without one, `wi · n > 0` always).
-                    let side = hit.facing_normal(ray.direction);
-                    if !(wi.dot(side) > 0.0) {
-                        return sum;
+                    match self.diffuse_bounce(&hit, n, wo, material, sample, &mut beta) {
+                        Some(ray) => (ray, Bounce::Diffuse, None),
+                        None => return sum,
                     }
-                    let f = material.brdf(n, wi, wo);
-                    beta *= f * std::f32::consts::PI;
-                    (
-                        Ray::new(spawn::origin(&hit, side, self.settings.ray_offset), wi),
-                        Bounce::Diffuse,
-                    )
                 }
                 Surface::Smooth => {
                     if depth >= self.settings.max_depth {
@@ -95,44 +79,98 @@ impl Tracer<'_> {
                     }
                     let u = sample.take_1d();
                     if let Some((ray, cos_i)) = self.conductor_mirror(&hit, n, wo, material) {
-                        conductor = Some((cos_i, material));
-                        (ray, Bounce::Reflection)
+                        (ray, Bounce::Reflection, Some((cos_i, material)))
                     } else {
                         let Some(settled) = pending.settle(self, beta) else {
                             return sum;
                         };
                         beta = settled;
                         let lobe = self.one_lobe(&hit, n, wo, material, u, &mut beta);
-                        (lobe.ray, lobe.bounce)
+                        (lobe.ray, lobe.bounce, None)
                     }
                 }
             };
             // A ray the mirror tube holds meets nothing else again: the
             // rest of the path adds nothing to `sum` (`crate::trap`).
-            if self
-                .machinery
-                .trap
-                .as_ref()
-                .is_some_and(|t| t.holds(&next.0))
-            {
+            if trap.is_some_and(|t| t.holds(&next)) {
                 return sum;
             }
             depth += 1;
-            counts.bounce(next.1, depth);
+            counts.bounce(bounce, depth);
             // Taken whether or not the roulette is played, so that the next
             // vertex's slots are the same for every sample; its number is
             // worked out only where it is played.
             let number = sample.take_1d();
-            let played = match conductor {
-                Some((cos_i, material)) => pending.push(self, (cos_i, material, number), beta),
-                None => roulette(beta, number, self.settings.throughput_cutoff),
-            };
-            let Some(played) = played else {
+            let Some(played) = self.carry_on(&mut pending, conductor, number, beta) else {
                 return sum;
             };
             beta = played;
-            ray = next.0;
+            ray = next;
         }
+    }
+
+    /// The radiance of the caustic map's `pass` leaving `hit` towards `wo`
+    /// at a rough vertex after `depth` bounces: its photons that met at
+    /// most the bounces the camera path has left.
+    fn caustic(
+        &self,
+        pass: &Pass,
+        hit: &Hit,
+        n: Vec3,
+        wo: Vec3,
+        material: &Material,
+        depth: u32,
+    ) -> Vec3 {
+        let bounces = self.settings.max_depth.saturating_sub(depth);
+        pass.radiance(hit, n, wo, material, bounces)
+    }
+
+    /// The throughput after a bounce, its roulette played on `number`: a
+    /// conductor's bounce held in `pending` until `beta` is next used, any
+    /// other played at once; `None` where the roulette ended the path.
+    fn carry_on<'m>(
+        &self,
+        pending: &mut Pending<'m>,
+        conductor: Option<(f32, &'m Material)>,
+        number: Slot1d,
+        beta: Vec3,
+    ) -> Option<Vec3> {
+        match conductor {
+            Some((cos_i, material)) => pending.push(self, (cos_i, material, number), beta),
+            None => roulette(beta, number, self.settings.throughput_cutoff),
+        }
+    }
+
+    /// The rough surface's bounce off `hit` (shading normal `n`, towards
+    /// `wo`), its weight folded into `beta`: a cosine-weighted direction
+    /// drawn from `sample`'s pair, or `None` where it dips below the surface.
+    fn diffuse_bounce(
+        &self,
+        hit: &Hit,
+        n: Vec3,
+        wo: Vec3,
+        material: &Material,
+        sample: &mut Sample,
+        beta: &mut Vec3,
+    ) -> Option<Ray> {
+        // Cosine-weighted hemisphere sampling: pdf = cos θ / π,
+        // so the weight f_r cos θ / pdf is π f_r.
+        let [u1, u2] = sample.next_2d();
+        let wi = cosine_sample(n, u1, u2);
+        // About a bump map's bent normal the hemisphere may dip
+        // below the surface: that light is lost, as a bump map
+        // loses it (without one, `wi · n > 0` always). `-wo` is the
+        // ray's direction, bit for bit.
+        let side = hit.facing_normal(-wo);
+        if !(wi.dot(side) > 0.0) {
+            return None;
+        }
+        let f = material.brdf(n, wi, wo);
+        *beta *= f * std::f32::consts::PI;
+        Some(Ray::new(
+            spawn::origin(hit, side, self.settings.ray_offset),
+            wi,
+        ))
     }
 
     /// One lobe of a smooth surface, its weight folded into `beta`. With a

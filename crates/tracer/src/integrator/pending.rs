@@ -15,7 +15,7 @@
 
 use glam::Vec3;
 
-use super::Tracer;
+use super::tracer::Tracer;
 use crate::sampler::Slot1d;
 use crate::scene::Material;
 

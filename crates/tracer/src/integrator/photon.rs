@@ -28,68 +28,23 @@
 use glam::Vec3;
 use rayon::prelude::*;
 
+use super::counts::RayCounts;
 use super::scatter::Surface;
-use super::{RayCounts, Tracer};
-use crate::geometry::{Hit, Ray};
+use super::tracer::Tracer;
+use crate::geometry::Ray;
 use crate::rng::Pcg32;
 use crate::sampler::Sample;
 use crate::scene::faults::Fault;
-use crate::scene::Material;
+use crate::scene::IntegratorKind;
 
 mod emit;
 mod grid;
+mod landed;
+pub(super) mod maps;
 
 pub use grid::Grid;
-
-/// Knaus and Zwicker's `α`: the fraction of the photons a pass's radius
-/// keeps from the last (2/3 is their and Hachisuka and Jensen's choice).
-pub const ALPHA: f64 = 2.0 / 3.0;
-
-/// A photon at rest on a rough surface after at least one specular bounce.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Photon {
-    /// Where it landed, m.
-    pub point: Vec3,
-    /// The unit direction it came from.
-    pub towards_source: Vec3,
-    /// Its flux, W per channel.
-    pub flux: Vec3,
-    /// The object it landed on.
-    pub object: u32,
-    /// The mirrors and glass it met on its way, at least 1.
-    pub bounces: u32,
-}
-
-/// One pass's caustic map and its gather radius.
-#[derive(Clone, Debug)]
-pub struct Pass {
-    /// The photons.
-    pub map: Grid,
-    /// The gather radius, m.
-    pub radius: f32,
-}
-
-/// The caustic maps of one render, one per pass, and what they cost.
-#[derive(Clone, Debug)]
-pub struct Caustics {
-    /// The passes, in order.
-    pub passes: Vec<Pass>,
-    /// Rays the photons cast.
-    pub rays: RayCounts,
-}
-
-/// The radius of each of `passes` passes from `first`: `r²_{k+1} = r²_k (k
-/// + α) / (k + 1)`, computed in `f64`.
-pub fn radii(first: f32, passes: u32) -> Vec<f32> {
-    let mut r2 = (first as f64).powi(2);
-    (1..=passes)
-        .map(|k| {
-            let r = r2.sqrt() as f32;
-            r2 *= (k as f64 + ALPHA) / (k as f64 + 1.0);
-            r
-        })
-        .collect()
-}
+pub use landed::Photon;
+pub use maps::{radii, Caustics, Pass, ALPHA};
 
 impl Caustics {
     /// The maps of `tracer`'s settings: every pass's photons traced in
@@ -131,30 +86,15 @@ impl Caustics {
     }
 }
 
-impl Pass {
-    /// The caustic radiance leaving `hit` (shading normal `n`) towards
-    /// `wo`, by `material`'s BRDF: the photons on the same object within
-    /// the radius that met at most `bounces` mirrors or glass, `Σ f_r Φ /
-    /// (π r²)`.
-    pub fn radiance(
-        &self,
-        hit: &Hit,
-        n: Vec3,
-        wo: Vec3,
-        material: &Material,
-        bounces: u32,
-    ) -> Vec3 {
-        let mut flux = Vec3::ZERO;
-        self.map.within(hit.point, self.radius, |p| {
-            if p.object == hit.object && p.bounces <= bounces {
-                flux += material.brdf(n, p.towards_source, wo) * p.flux;
-            }
-        });
-        flux / (std::f32::consts::PI * self.radius * self.radius)
-    }
-}
-
 impl Tracer<'_> {
+    /// This tracer with its caustic maps built, where its integrator has them.
+    pub fn with_caustics(mut self) -> Self {
+        if self.settings.integrator == IntegratorKind::Photon {
+            self.caustics = Some(Caustics::build(&self));
+        }
+        self
+    }
+
     /// The `photon` integrator: a camera path that looks up one pass's
     /// caustic map, drawn uniformly, at its rough vertices.
     pub(super) fn photon(
@@ -194,7 +134,8 @@ impl Tracer<'_> {
         }
         let (mut ray, mut flux) = (emitted.ray, emitted.flux);
         let start = flux.max_element();
-        let stored_before_any_mirror = self.fault == Some(Fault::PhotonsStoredBeforeAnyMirror);
+        let stored_before_any_mirror =
+            matches!(self.fault, Some(Fault::PhotonsStoredBeforeAnyMirror));
         for bounces in 0..=self.settings.max_depth {
             counts.photon += 1;
             let hit = self.intersect(&ray)?;
@@ -220,7 +161,7 @@ impl Tracer<'_> {
                         Some((refracted, r)) if rng.next_f32() >= r => (refracted, 1.0 - r),
                         Some((_, r)) => (lobes.reflection, r),
                     };
-                    if self.fault != Some(Fault::PhotonsUnweightedAtMirrors) {
+                    if !matches!(self.fault, Some(Fault::PhotonsUnweightedAtMirrors)) {
                         flux *= lobe.power / chance;
                     }
                     ray = lobe.ray;

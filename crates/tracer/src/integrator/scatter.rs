@@ -12,23 +12,13 @@ use glam::Vec3;
 use radiometry::snell::Incidence;
 use radiometry::{course, fresnel, radiance, specular, Real};
 
-use super::Tracer;
+use super::counts::Bounce;
+use super::tracer::Tracer;
 use crate::geometry::{Hit, Ray};
 use crate::scene::faults::Fault;
 use crate::scene::{FresnelModel, Material};
 use crate::spawn;
 use crate::tier::Vector;
-
-/// What kind of secondary ray leaves a surface.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Bounce {
-    /// A sampled direction off a rough surface (the path tracer's).
-    Diffuse,
-    /// The mirror direction.
-    Reflection,
-    /// Through a dielectric interface.
-    Refraction,
-}
 
 /// What a surface does with the light that reaches it.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -187,7 +177,7 @@ impl<V: Vector> Tracer<'_, V> {
     /// `T/η²` (`radiance::across_interface`); `T` alone with that law
     /// planted out (`Fault::RadianceNotScaledAcrossInterfaces`).
     fn across_interface(&self, transmitted: V::Scalar, eta_path: V::Scalar) -> V::Scalar {
-        if self.fault == Some(Fault::RadianceNotScaledAcrossInterfaces) {
+        if matches!(self.fault, Some(Fault::RadianceNotScaledAcrossInterfaces)) {
             return transmitted;
         }
         radiance::across_interface(transmitted, eta_path)

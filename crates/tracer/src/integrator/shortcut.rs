@@ -11,7 +11,7 @@ use radiometry::snell::Incidence;
 use radiometry::Real;
 use techniques::empirical_fresnel;
 
-use super::Tracer;
+use super::tracer::Tracer;
 use crate::scene::GlassShortcut;
 use crate::tier::Vector;
 

@@ -3,8 +3,9 @@
 //! Fresnel-weighted, to `max_depth`, a branch cut once its throughput falls
 //! below `throughput_cutoff`.
 
+use super::counts::RayCounts;
 use super::scatter::Surface;
-use super::{RayCounts, Tracer};
+use super::tracer::Tracer;
 use crate::geometry::Ray;
 use crate::tier::{Tier, Vector};
 

@@ -1,5 +1,6 @@
 //! `report.html`: the report for people, section by section.
 
+mod areas;
 mod format;
 mod renders;
 mod tables;
@@ -9,89 +10,10 @@ use std::fmt::Write as _;
 
 use super::Report;
 use crate::check::{Check, Metric};
+use areas::{gather, Gathered};
 use format::{escape, number, quote, readable, readable_at, status};
 use renders::render_gallery;
 use tables::{every_check, metal_colours, references, speed};
-
-/// The areas of the report, in the order of its first screen: a title, the
-/// check ids it gathers (by prefix; the first area that claims a check
-/// keeps it), and the figures that say it best (file-name prefixes).
-const AREAS: [Area; 9] = [
-    Area {
-        key: "mpmath",
-        title: "Laws against 50-digit mpmath",
-        checks: &["laws.mpmath."],
-        figures: &["fresnel_errors"],
-        headline: None,
-    },
-    Area {
-        key: "mitsuba-laws",
-        title: "Laws against Mitsuba 3",
-        checks: &["laws.mitsuba."],
-        figures: &["fresnel_curves"],
-        headline: None,
-    },
-    Area {
-        key: "metals",
-        title: "Metals: spectra and colour",
-        checks: &["colour.colour-science.metals"],
-        figures: &["metal_swatches", "metal_delta_e", "metal_spectra"],
-        headline: Some("reflectance: max |ours − exact|"),
-    },
-    Area {
-        key: "colour",
-        title: "Colour against colour-science",
-        checks: &["colour."],
-        figures: &[],
-        headline: Some("CIELAB: max |ours − colour-science|"),
-    },
-    Area {
-        key: "renders",
-        title: "Renders against Mitsuba 3",
-        checks: &["renders."],
-        figures: &["render_kaleidoscope_lit_path", "render_"],
-        headline: Some("|ours − Mitsuba| / tolerance"),
-    },
-    Area {
-        key: "images",
-        title: "ꟻLIP against NVIDIA's evaluator",
-        checks: &["images."],
-        figures: &[],
-        headline: Some("mean: |ours − NVIDIA|"),
-    },
-    Area {
-        key: "full-light",
-        title: "All the light",
-        checks: &["full_light."],
-        figures: &[],
-        headline: Some("Mitsuba path's missing share, surface"),
-    },
-    Area {
-        key: "techniques",
-        title: "The slides' techniques against the exact answers",
-        checks: &["techniques."],
-        figures: &["techniques"],
-        headline: Some("into water, c = 1: angle from Snell's law (°)"),
-    },
-    Area {
-        key: "tradeoff",
-        title: "The speed/accuracy trade, whole renders",
-        checks: &["tradeoff."],
-        figures: &["tradeoff_kaleidoscope_lit", "tradeoff_"],
-        headline: Some("the scene's own settings: relative RMSE from all the light"),
-    },
-];
-
-/// One area of the report.
-struct Area {
-    key: &'static str,
-    title: &'static str,
-    checks: &'static [&'static str],
-    figures: &'static [&'static str],
-    /// The quantity whose worst value heads the card; `None`: the worst
-    /// Fresnel error in ulps.
-    headline: Option<&'static str>,
-}
 
 /// The command that writes the report and every figure in it.
 const REGENERATE: &str = "cargo run --release -p optics -- validate";
@@ -130,61 +52,6 @@ pub fn to_html(report: &Report, figures: &[String]) -> String {
     every_check(&mut h, report);
     references(&mut h, report);
     h
-}
-
-/// An area with the checks and figures it claimed.
-struct Gathered<'a> {
-    area: &'static Area,
-    /// Each check with its index in [`Report::checks`].
-    checks: Vec<(usize, &'a Check)>,
-    figures: Vec<&'a String>,
-}
-
-fn gather<'a>(report: &'a Report, figures: &'a [String]) -> Vec<Gathered<'a>> {
-    let mut areas: Vec<Gathered> = AREAS
-        .iter()
-        .map(|area| Gathered {
-            area,
-            checks: Vec::new(),
-            figures: Vec::new(),
-        })
-        .collect();
-    let mut other = Vec::new();
-    for check in report.checks.iter().enumerate() {
-        match areas
-            .iter_mut()
-            .find(|a| a.area.checks.iter().any(|p| check.1.id.starts_with(p)))
-        {
-            Some(area) => area.checks.push(check),
-            None => other.push(check),
-        }
-    }
-    for area in &mut areas {
-        for prefix in area.area.figures {
-            let file = |f: &&String| f.rsplit('/').next().unwrap_or(f).starts_with(prefix);
-            for f in figures.iter().filter(file) {
-                if !area.figures.contains(&f) {
-                    area.figures.push(f);
-                }
-            }
-        }
-    }
-    areas.retain(|a| !a.checks.is_empty());
-    if !other.is_empty() {
-        static OTHER: Area = Area {
-            key: "other",
-            title: "Other checks",
-            checks: &[],
-            figures: &[],
-            headline: None,
-        };
-        areas.push(Gathered {
-            area: &OTHER,
-            checks: other,
-            figures: Vec::new(),
-        });
-    }
-    areas
 }
 
 /// The page head, the style and the verdict.

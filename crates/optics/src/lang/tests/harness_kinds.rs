@@ -88,7 +88,34 @@ pub fn examples() -> Vec<(ErrorKind, Vec<String>)> {
             ErrorKind::Checkout(CheckoutError::NotFound {
                 start: "/tmp/work".into(),
             }),
-            named(&["--checkout DIR", "OPTICS_CHECKOUT=DIR", "/tmp/work"]),
+            named(&[
+                "OPTICS_CHECKOUT=DIR",
+                "OPTICS_CHECKOUT",
+                "/tmp/work",
+                MARKERS[0],
+                MARKERS[1],
+            ]),
+        ),
+        (
+            ErrorKind::CheckoutWithFlag(CheckoutError::NotFound {
+                start: "/tmp/work".into(),
+            }),
+            named(&[
+                "--checkout DIR",
+                "OPTICS_CHECKOUT=DIR",
+                "OPTICS_CHECKOUT",
+                "/tmp/work",
+                MARKERS[0],
+                MARKERS[1],
+            ]),
+        ),
+        (
+            ErrorKind::CheckoutWithFlag(CheckoutError::NotACheckout {
+                via: Via::Explicit,
+                path: "/srv/elsewhere".into(),
+                marker: MARKERS[0],
+            }),
+            named(&["--checkout /srv/elsewhere", MARKERS[0]]),
         ),
         pipeline(
             PipelineError::OutNotADirectory {

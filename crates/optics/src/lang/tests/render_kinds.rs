@@ -217,7 +217,17 @@ pub fn examples() -> Vec<(ErrorKind, Vec<String>)> {
         scene(
             "materials.glass",
             Scene::CourseHasNoRefraction,
-            &["--integrator", "whitted", "path"],
+            // The flag, the commands that take it and the scene field are
+            // names, the same in both languages.
+            &[
+                "--integrator",
+                "render.integrator",
+                "render",
+                "inspect",
+                "compare",
+                "whitted",
+                "path",
+            ],
         ),
         scene(
             "overrides.precision",
@@ -314,7 +324,13 @@ pub fn examples() -> Vec<(ErrorKind, Vec<String>)> {
         scene(
             ".",
             Scene::TooExpensive { rays: 1e13 },
-            &["--allow-expensive", "max_depth", "throughput_cutoff"],
+            &[
+                "--allow-expensive",
+                "max_depth",
+                "throughput_cutoff",
+                "optics render",
+                "inspect",
+            ],
         ),
         (ErrorKind::RadianceNotFinite { x: 3, y: 4 }, vec![]),
     ]

@@ -16,7 +16,7 @@
 use glam::Vec3;
 
 use crate::geometry::{Object, Ray};
-use crate::integrator::Tracer;
+use crate::integrator::tracer::Tracer;
 use crate::rng::Pcg32;
 use crate::scene::Light;
 

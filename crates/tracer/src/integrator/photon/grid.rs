@@ -7,7 +7,7 @@
 
 use glam::{IVec3, Vec3};
 
-use super::Photon;
+use super::landed::Photon;
 
 /// The photons of one pass, bucketed by cell.
 #[derive(Clone, Debug)]

@@ -12,7 +12,7 @@ use std::path::Path;
 
 use image::ImageDecoder;
 
-use crate::error::compare::{CompareError, PfmProblem};
+use super::error::{CompareError, PfmProblem};
 
 /// A decoded image: rows top to bottom, three channels a pixel.
 #[derive(Clone, Debug, PartialEq)]
@@ -185,19 +185,20 @@ fn decode_pfm(bytes: &[u8]) -> Result<UserImage, PfmProblem> {
     })
 }
 
-#[cfg(test)]
+#[cfg(any(test, feature = "faults"))]
 thread_local! {
-    /// A test-only switch that reverts the PFM length check, for the
-    /// compare-images fuzz target to find.
-    pub(crate) static LENGTH_UNCHECKED: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+    /// A test-only switch that reverts the PFM length check on this
+    /// thread, for the compare-images fuzz target (in the command line's
+    /// tests) to find; compiled only with the `faults` feature.
+    pub static LENGTH_UNCHECKED: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
 }
 
-#[cfg(test)]
+#[cfg(any(test, feature = "faults"))]
 fn length_unchecked() -> bool {
     LENGTH_UNCHECKED.get()
 }
 
-#[cfg(not(test))]
+#[cfg(not(any(test, feature = "faults")))]
 fn length_unchecked() -> bool {
     false
 }

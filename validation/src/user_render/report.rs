@@ -1,32 +1,34 @@
-//! The comparison's record: the verdict as the answer, a line for the
-//! reference, the test and each region, and every number in the details.
+//! The comparison's record, in English or Hungarian: the verdict as the
+//! answer, a line for the reference, the test and each region, and every
+//! number in the details. The inputs are the caller's to fill in, as its
+//! user gave them.
 
+use record::{number, percent, say, Answer, Lang, Record};
 use serde_json::{json, Value};
-use validation::compare::map::LEGEND;
-use validation::compare::regions::Region;
-use validation::compare::Tolerance;
-use validation::renders::ALPHA;
+use tracer::geometry::Object;
+use tracer::job::RenderJob;
 
-use super::reference::{self, Reference, FIRST_SEED};
-use super::{CompareArgs, Outcome};
-use record::{number, percent, Answer, Record};
-use record::{say, Lang};
+use super::judge::Outcome;
+use super::reference::{Reference, FIRST_SEED};
+use super::request::Comparison;
+use crate::compare::map::LEGEND;
+use crate::compare::regions::Region;
+use crate::compare::Tolerance;
+use crate::renders::ALPHA;
 
-/// The record of one comparison.
-pub(crate) fn record(
-    args: &CompareArgs,
-    reference: &Reference,
-    outcome: &Outcome,
-    lang: Lang,
-) -> Record {
+/// The record of one comparison, without its inputs.
+pub fn record(comparison: &Comparison, lang: Lang) -> Record {
+    let Comparison {
+        reference,
+        outcome,
+        diff,
+    } = comparison;
     let (summary, verdicts) = (&outcome.summary, &outcome.verdicts);
     let job = &reference.job;
-    let names = reference::region_names(job, lang);
+    let names = region_names(job, lang);
     let unit = verdicts.unit;
     let mut record = Record::new("compare", String::new(), unit);
-    record
-        .inputs_from(args)
-        .set_answer(Answer::Verdict(summary.agrees()), None);
+    record.set_answer(Answer::Verdict(summary.agrees()), None);
     record.step(|| match summary.agrees() {
         true => say!(
             lang,
@@ -57,7 +59,7 @@ pub(crate) fn record(
     for region in &summary.regions {
         record.step(|| region_line(&names[region.region], region, unit, lang));
     }
-    if let Some(diff) = &args.diff {
+    if let Some(diff) = diff {
         record.step(|| say!(
             lang,
             "difference map: {} (black 0, red to yellow at the test's limit, magenta beyond, dark blue not compared)",
@@ -65,30 +67,22 @@ pub(crate) fn record(
             diff.display()
         ));
     }
-    if reference.noise.is_some() && outcome.tests.is_none() {
-        record.step(|| say!(
-            lang,
-            "the reference is Monte Carlo and the image is held to its noise alone: an image with noise of its own needs --variance and --samples",
-            "a referencia Monte Carlo-becslés, a képet csak a referencia zajához méri: saját zajjal bíró képhez a --variance és a --samples kell"
-        ));
-    }
-    details(&mut record, args, reference, outcome, masked);
+    details(&mut record, comparison, masked);
     record
 }
 
 /// Every number of the comparison, for scripts.
-fn details(
-    record: &mut Record,
-    args: &CompareArgs,
-    reference: &Reference,
-    outcome: &Outcome,
-    masked: usize,
-) {
+fn details(record: &mut Record, comparison: &Comparison, masked: usize) {
+    let Comparison {
+        reference,
+        outcome,
+        diff,
+    } = comparison;
     let (summary, verdicts) = (&outcome.summary, &outcome.verdicts);
     let job = &reference.job;
     let scene = job.scene();
     let unit = verdicts.unit;
-    let names_en = reference::region_names(job, Lang::En);
+    let names_en = region_names(job, Lang::En);
     let regions: Vec<Value> = summary
         .regions
         .iter()
@@ -122,7 +116,7 @@ fn details(
             json!({ "count": tests.count, "threshold": tests.threshold }),
         );
     }
-    if let Some(diff) = &args.diff {
+    if let Some(diff) = diff {
         record.detail(
             "difference_map",
             json!({ "path": diff.display().to_string(), "legend": LEGEND }),
@@ -218,13 +212,47 @@ fn region_line(name: &str, r: &Region, unit: &str, lang: Lang) -> String {
     )
 }
 
-fn region_json(job: &tracer::job::RenderJob, names: &[String], r: &Region) -> Value {
+fn region_json(job: &RenderJob, names: &[String], r: &Region) -> Value {
     let scene = job.scene();
     let object = scene.objects.get(r.region);
     let mut value = serde_json::to_value(r).unwrap_or_default();
     value["name"] = json!(names[r.region]);
     value["object"] = json!(object.map(|_| r.region));
-    value["shape"] = json!(object.map(|o| reference::shape(o).0));
+    value["shape"] = json!(object.map(|o| shape(o).0));
     value["material"] = json!(object.map(|o| &scene.material_names[o.material() as usize]));
     value
+}
+
+/// The name of each region in `lang`, by label: `object 2 (sphere, gold)`,
+/// then the background.
+pub fn region_names(job: &RenderJob, lang: Lang) -> Vec<String> {
+    let scene = job.scene();
+    let mut names: Vec<String> = scene
+        .objects
+        .iter()
+        .enumerate()
+        .map(|(i, object)| {
+            let material = &scene.material_names[object.material() as usize];
+            let (en, hu) = shape(object);
+            say!(
+                lang,
+                "object {} ({}, {})",
+                "{}. objektum ({}, {})",
+                i,
+                lang.pick(en, hu),
+                material
+            )
+        })
+        .collect();
+    names.push(lang.pick("background", "háttér").to_owned());
+    names
+}
+
+/// An object's shape as the scene file names it, and in Hungarian.
+pub fn shape(object: &Object) -> (&'static str, &'static str) {
+    match object {
+        Object::Sphere(_) => ("sphere", "gömb"),
+        Object::Plane(_) => ("plane", "sík"),
+        Object::Tube(_) => ("mirror_tube", "tükörcső"),
+    }
 }

@@ -5,15 +5,12 @@
 
 use std::path::Path;
 
-use tracer::geometry::Object;
 use tracer::job::{Overrides, RenderJob};
 use tracer::scene::{ErrorKind as SceneKind, IntegratorKind, RenderSpec};
-use validation::compare::regions::silhouettes;
-use validation::renders::{sample_statistics, tracer_render};
 
-use crate::error::compare::CompareError;
-use crate::error::{self, ErrorKind};
-use record::{say, Lang};
+use super::error::{CompareError, Error};
+use crate::compare::regions::silhouettes;
+use crate::renders::{sample_statistics, tracer_render};
 
 /// The first seed of a path-traced reference's renders: a user's renders
 /// with seeds below 2³² share no random stream with it.
@@ -40,7 +37,7 @@ pub fn job(
     scene: &Path,
     (width, height): (u32, u32),
     integrator: Option<IntegratorKind>,
-) -> error::Result<RenderJob> {
+) -> Result<RenderJob, Error> {
     let overrides = Overrides {
         render: RenderSpec {
             integrator,
@@ -55,19 +52,19 @@ pub fn job(
             || error.field().starts_with("overrides.height")
             || matches!(error.kind(), SceneKind::TooManyPixels { .. });
         match size {
-            true => ErrorKind::Compare(CompareError::Size {
+            true => Error::Compare(CompareError::Size {
                 width,
                 height,
                 error,
             }),
-            false => ErrorKind::Scene {
+            false => Error::Scene {
                 file: scene.to_owned(),
                 error,
             },
         }
     })?;
     if job.settings().integrator == IntegratorKind::Course {
-        return Err(ErrorKind::Compare(CompareError::CourseReference).into());
+        return Err(CompareError::CourseReference.into());
     }
     Ok(job)
 }
@@ -75,7 +72,7 @@ pub fn job(
 /// Renders the reference: one render of a deterministic integrator, or
 /// `samples` renders at one sample per pixel with seeds from
 /// [`FIRST_SEED`] for the sampling integrators (`path`, `photon`) where their paths vary.
-pub fn render(job: RenderJob, samples: u32) -> error::Result<Reference> {
+pub fn render(job: RenderJob, samples: u32) -> Result<Reference, Error> {
     let settings = *job.settings();
     let scene = job.scene();
     let mut probe = settings;
@@ -85,7 +82,7 @@ pub fn render(job: RenderJob, samples: u32) -> error::Result<Reference> {
     let (mean, noise) = if varies {
         let seeds = FIRST_SEED..FIRST_SEED + u64::from(samples);
         let (mean, variance) = sample_statistics(tracer_render, scene, settings, seeds)
-            .map_err(|message| ErrorKind::Compare(CompareError::Reference { message }))?;
+            .map_err(|message| CompareError::Reference { message })?;
         (mean, Some((variance, samples)))
     } else {
         let image = job.render(None, &|_| {})?.image;
@@ -111,38 +108,4 @@ pub fn render(job: RenderJob, samples: u32) -> error::Result<Reference> {
         labels,
         silhouettes,
     })
-}
-
-/// The name of each region in `lang`, by label: `object 2 (sphere, gold)`,
-/// then the background.
-pub fn region_names(job: &RenderJob, lang: Lang) -> Vec<String> {
-    let scene = job.scene();
-    let mut names: Vec<String> = scene
-        .objects
-        .iter()
-        .enumerate()
-        .map(|(i, object)| {
-            let material = &scene.material_names[object.material() as usize];
-            let (en, hu) = shape(object);
-            say!(
-                lang,
-                "object {} ({}, {})",
-                "{}. objektum ({}, {})",
-                i,
-                lang.pick(en, hu),
-                material
-            )
-        })
-        .collect();
-    names.push(lang.pick("background", "háttér").to_owned());
-    names
-}
-
-/// An object's shape as the scene file names it, and in Hungarian.
-pub fn shape(object: &Object) -> (&'static str, &'static str) {
-    match object {
-        Object::Sphere(_) => ("sphere", "gömb"),
-        Object::Plane(_) => ("plane", "sík"),
-        Object::Tube(_) => ("mirror_tube", "tükörcső"),
-    }
 }

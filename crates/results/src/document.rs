@@ -1,0 +1,57 @@
+//! `docs/results.md` of this checkout: where it is, and settling a section
+//! against it.
+
+use std::path::{Path, PathBuf};
+use std::sync::Mutex;
+
+use crate::error::{Error, WRITE_VAR};
+use crate::section::{compare, replace, Section};
+
+/// The workspace root, where `docs/results.md` lives.
+pub(crate) fn workspace_root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
+}
+
+/// `docs/results.md` of this checkout.
+pub fn document_path() -> PathBuf {
+    workspace_root().join("docs/results.md")
+}
+
+/// Whether `RESULTS_WRITE=1` asks for the sections to be rewritten.
+pub fn write_requested() -> bool {
+    std::env::var_os(WRITE_VAR).is_some_and(|v| v == "1")
+}
+
+/// Serialises rewrites of the document by the tests of one process.
+static DOCUMENT: Mutex<()> = Mutex::new(());
+
+/// Settles `section` against `docs/results.md`: a deterministic section is
+/// compared (rewritten under `RESULTS_WRITE=1`), a measured one written.
+pub fn settle(section: &Section) -> Result<(), Error> {
+    let path = document_path();
+    let _guard = DOCUMENT.lock().unwrap_or_else(|e| e.into_inner());
+    let document = match std::fs::read_to_string(&path) {
+        Ok(text) => text,
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => String::new(),
+        Err(e) => return Err(Error::io(&path, e)),
+    };
+    if section.deterministic && !write_requested() {
+        return compare(&document, section);
+    }
+    let updated = replace(&document, section);
+    if updated != document {
+        let tmp = path.with_extension("md.tmp");
+        std::fs::write(&tmp, updated).map_err(|e| Error::io(&tmp, e))?;
+        std::fs::rename(&tmp, &path).map_err(|e| Error::io(&path, e))?;
+    }
+    Ok(())
+}
+
+/// [`settle`], panicking with its message (the diff) when it fails: for
+/// tests, where a stale table is a failure like any other assertion.
+#[track_caller]
+pub fn assert_settled(section: &Section) {
+    if let Err(e) = settle(section) {
+        panic!("{e}");
+    }
+}
