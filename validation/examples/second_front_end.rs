@@ -8,12 +8,16 @@
 //! against a converged truth ([`truth::obtain`], cached in a temporary
 //! directory) and marks the Pareto front of time against relative RMSE;
 //! the budget pilots its candidates ([`pilot::run`]) and chooses the
-//! cheapest predicted within a tolerance ([`budget::choose`]).
+//! cheapest predicted within a tolerance ([`budget::choose`]). The same
+//! sweep spread over machines is planned as job lines ([`jobs::Planned`]);
+//! one job is read back, checked against the plan, rendered, and its
+//! result line read back and decoded as a collector reads it.
 
 use std::error::Error;
 use std::path::Path;
 
 use tracer::job::{Overrides, RenderJob};
+use validation::tradeoff::jobs::{self, Job, JobResult, LineKind, Place};
 use validation::tradeoff::render::render;
 use validation::tradeoff::{budget, measure, pareto, pilot, sweep, truth};
 
@@ -34,6 +38,7 @@ fn main() -> Result<(), Box<dyn Error>> {
     let mask = measure::Mask::from_hits(&job.first_hits());
     sweep_summary(&job, file, &mask)?;
     budget_summary(&job, file, &mask)?;
+    jobs_summary(&job, file)?;
     Ok(())
 }
 
@@ -102,5 +107,57 @@ fn budget_summary(
         ),
         None => println!("budget: no candidates"),
     }
+    Ok(())
+}
+
+/// Plans the sweep as jobs, runs the first point's job and reads its
+/// result back as a collector does.
+fn jobs_summary(job: &RenderJob, file: &Path) -> Result<(), Box<dyn Error>> {
+    let key = jobs::PlanKey {
+        scene: file.display().to_string(),
+        scene_fnv1a: jobs::scene_fnv1a(&std::fs::read(file)?),
+        lambert: false,
+        width: 32,
+        height: 24,
+        spp: 4,
+        truth_spp: 16,
+        repeats: 1,
+        min_seconds: 0.0,
+    };
+    let planned = jobs::Planned::new(&key, job, &sweep::plan(job, key.spp));
+    let at = Place {
+        path: "jobs.jsonl".into(),
+        line: jobs::TRUTH_JOBS + 1,
+    };
+    let text = serde_json::to_string(&planned.jobs[jobs::TRUTH_JOBS])?;
+    let line: Job = jobs::read_line(&text, LineKind::Job, &at)?;
+    let index = planned.check(&line, &at)?;
+    let rendered = render(job, file, planned.settings[index], None)?;
+    let result = JobResult {
+        schema: LineKind::Result.schema().to_owned(),
+        version: jobs::VERSION,
+        plan: key.id(),
+        planned_as: format!("plan of {}", key.scene),
+        scene_fnv1a: key.scene_fnv1a.clone(),
+        job: index,
+        jobs: planned.jobs.len(),
+        label: line.label.clone(),
+        seconds: vec![rendered.elapsed.as_secs_f64()],
+        rays: rendered.rays.total() as f64,
+        machine: "here".to_owned(),
+        date: "today".to_owned(),
+        load: None,
+        images: vec![jobs::encode(&rendered.image)],
+    };
+    let text = serde_json::to_string(&result)?;
+    let back: JobResult = jobs::read_line(&text, LineKind::Result, &at)?;
+    let images = back.images(&at, planned.kept(index, 1), (key.width, key.height))?;
+    println!(
+        "jobs: {} planned (plan {}); job {index} ({}) rendered, {} image read back",
+        planned.jobs.len(),
+        key.id(),
+        back.label,
+        images.len()
+    );
     Ok(())
 }

@@ -405,7 +405,7 @@ impl ErrorKind {
             #[cfg(feature = "harness")]
             ErrorKind::BudgetEnergyGain { .. } => Some("--lambert".to_owned()),
             #[cfg(feature = "harness")]
-            ErrorKind::Jobs(error) => error.field(),
+            ErrorKind::Jobs(error) => error.field(jobs::flag),
         }
     }
 }

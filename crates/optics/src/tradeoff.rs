@@ -15,7 +15,7 @@
 //! end in the same measures and the same record.
 
 pub(crate) mod distribute;
-pub mod jobs;
+pub use validation::tradeoff::jobs;
 mod metals;
 mod mitsuba;
 mod report;

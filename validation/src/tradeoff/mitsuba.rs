@@ -102,7 +102,8 @@ impl std::fmt::Display for NoReference {
             ),
             NoReference::NotLambert => write!(
                 f,
-                "Mitsuba measured course_rough as Lambert: --lambert measures the scene so"
+                "Mitsuba measured course_rough as Lambert, and the scene's course_rough is not \
+                 the Lambert stand-in"
             ),
             NoReference::SceneDiffers {
                 backgrounds: Some((ours, theirs)),

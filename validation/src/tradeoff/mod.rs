@@ -12,6 +12,7 @@ pub mod budget;
 pub mod checks;
 pub mod error;
 pub mod findings;
+pub mod jobs;
 pub mod measure;
 pub mod mitsuba;
 pub mod pareto;
@@ -29,10 +30,7 @@ pub const SCHEMA: &str = "optics.tradeoff";
 /// The version of [`SCHEMA`]: raised when a field changes meaning or goes.
 pub const SCHEMA_VERSION: u32 = 1;
 
-/// The version of the two line schemas of a sweep spread over machines,
-/// its jobs (`optics.tradeoff-job`) and their results
-/// (`optics.tradeoff-result`): raised when a field changes meaning or goes.
-pub const JOB_VERSION: u32 = 1;
+pub use jobs::VERSION as JOB_VERSION;
 
 /// The fixed error measures, by their names in the record.
 pub const MEASURES: [&str; 4] = ["rel_rmse", "delta_e_mean", "delta_e_p99", "flip_mean"];

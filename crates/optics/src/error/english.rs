@@ -151,7 +151,7 @@ impl fmt::Display for ErrorKind {
                 "--lambert: material \"{material}\" reflects {gain:.2} times the light it receives (course_rough's albedo π kd), so its light grows with every bounce, no ground truth converges and no error can be bounded; give --lambert to budget the scene with the stand-in `optics tradeoff --lambert` uses"
             ),
             #[cfg(feature = "harness")]
-            ErrorKind::Jobs(error) => write!(f, "{error}"),
+            ErrorKind::Jobs(error) => write!(f, "{}", error.named(super::jobs::flag)),
         }
     }
 }

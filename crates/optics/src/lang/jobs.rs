@@ -1,7 +1,7 @@
 //! The errors of a sweep spread over machines in Hungarian: an exhaustive
 //! `match` over their kinds.
 
-use crate::error::jobs::{listed, ImageProblem, JobError, LineKind};
+use crate::error::jobs::{flag, listed, ImageProblem, Input, JobError, LineKind};
 
 use super::render::output_hu;
 
@@ -36,10 +36,14 @@ fn image_hu(problem: &ImageProblem) -> String {
 pub fn jobs_hu(error: &JobError) -> String {
     match error {
         JobError::Read {
-            field,
+            input,
             path,
             source,
-        } => format!("{field} {}: nem olvasható: {source}", path.display()),
+        } => format!(
+            "{} {}: nem olvasható: {source}",
+            flag(*input),
+            path.display()
+        ),
         JobError::Line {
             kind,
             at,
@@ -65,21 +69,23 @@ pub fn jobs_hu(error: &JobError) -> String {
             validation::tradeoff::JOB_VERSION
         ),
         JobError::NoSuchJob {
-            field,
+            input,
             at,
             index,
             jobs: 0,
         } => format!(
-            "{field} {index}: a(z) {} terv nem tartalmaz feladatot (üres)",
+            "{} {index}: a(z) {} terv nem tartalmaz feladatot (üres)",
+            flag(*input),
             at.path.display()
         ),
         JobError::NoSuchJob {
-            field,
+            input,
             at,
             index,
             jobs,
         } => format!(
-            "{field} {index}: a(z) {} terv {jobs} feladatból áll (0–{})",
+            "{} {index}: a(z) {} terv {jobs} feladatból áll (0–{})",
+            flag(*input),
             at.path.display(),
             jobs.saturating_sub(1)
         ),
@@ -87,6 +93,13 @@ pub fn jobs_hu(error: &JobError) -> String {
             "{at}: a(z) {field} nem az, amit a terv a(z) {job}. feladatnak ad: a sort \
              átírták, vagy az optics egy másik változata tervezte; újra kell tervezni"
         ),
+        _ => plan_hu(error),
+    }
+}
+
+/// A sweep's results refused against their plan, or a file unwritten.
+fn plan_hu(error: &JobError) -> String {
+    match error {
         JobError::SceneChanged { scene, at } => format!(
             "a(z) {} jelenetfájl megváltozott a tervezés óta ({at}); újra kell tervezni",
             scene.display()
@@ -98,7 +111,9 @@ pub fn jobs_hu(error: &JobError) -> String {
             expected,
         } => format!(
             "{at}: a(z) {found} terv (`{planned_as}`) eredménye, ez a mérés a(z) {expected} \
-             terv: a --collect ugyanazt a jelenetet és kapcsolókat kapja, mint a --plan"
+             terv: a {} ugyanazt a jelenetet és kapcsolókat kapja, mint a {}",
+            flag(Input::Collect),
+            flag(Input::Plan)
         ),
         JobError::Duplicate { job, first, second } => {
             format!("a(z) {job}. feladatnak két eredménye van: {first} és {second}")
@@ -113,18 +128,27 @@ pub fn jobs_hu(error: &JobError) -> String {
              renderelésnyi"
         ),
         JobError::NoResults { path } => format!(
-            "--collect {}: nincs benne eredményfájl (*.json, *.jsonl)",
+            "{} {}: nincs benne eredményfájl (*.json, *.jsonl)",
+            flag(Input::Collect),
             path.display()
         ),
         JobError::IndexNeeded { path, lines: 0 } => format!(
-            "JOBS: a(z) {} nem tartalmaz feladatot (üres): nincs mit futtatni",
+            "{}: a(z) {} nem tartalmaz feladatot (üres): nincs mit futtatni",
+            flag(Input::Jobs),
             path.display()
         ),
         JobError::IndexNeeded { path, lines } => format!(
-            "INDEX: a(z) {} {lines} sort tartalmaz; meg kell adni a feladat sorszámát (0–{})",
+            "{}: a(z) {} {lines} sort tartalmaz; meg kell adni a feladat sorszámát (0–{})",
+            flag(Input::Index),
             path.display(),
             lines.saturating_sub(1)
         ),
-        JobError::Write { field, error } => format!("{field}: {}", output_hu(error)),
+        JobError::Write { input, error } => format!("{}: {}", flag(*input), output_hu(error)),
+        JobError::Read { .. }
+        | JobError::Line { .. }
+        | JobError::Schema { .. }
+        | JobError::Version { .. }
+        | JobError::NoSuchJob { .. }
+        | JobError::NotPlanned { .. } => jobs_hu(error),
     }
 }

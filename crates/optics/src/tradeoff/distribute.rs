@@ -15,7 +15,7 @@ use serde::Serialize;
 use super::jobs::{self, JobResult, Planned, TRUTH_JOBS};
 use super::truth;
 use super::{Provenance, Renders, Setup, Timed, TradeoffArgs};
-use crate::error::jobs::{JobError, LineKind, Place};
+use crate::error::jobs::{Input, JobError, LineKind, Place};
 use crate::error::{self, ErrorKind};
 use crate::ui::Ui;
 use record::say;
@@ -38,7 +38,7 @@ pub struct Collected {
 pub fn plan(setup: &Setup, args: &TradeoffArgs, path: &Path, ui: &Ui) -> error::Result<()> {
     let refused = |error: safe_io::WriteError| {
         ErrorKind::Jobs(JobError::Write {
-            field: "--plan",
+            input: Input::Plan,
             error: error.into(),
         })
     };
@@ -106,7 +106,7 @@ pub fn collect(
     let mut slots: Vec<Option<(Place, JobResult)>> = vec![None; planned.jobs.len()];
     for file in result_files(results)? {
         let text = std::fs::read_to_string(&file).map_err(|source| JobError::Read {
-            field: "--collect",
+            input: Input::Collect,
             path: file.clone(),
             source,
         })?;
@@ -196,7 +196,7 @@ pub(crate) fn accept(
     }
     let Some(job) = planned.jobs.get(result.job) else {
         return Err(JobError::NoSuchJob {
-            field: "job",
+            input: Input::Job,
             at: at.clone(),
             index: result.job,
             jobs: planned.jobs.len(),
@@ -226,7 +226,7 @@ fn result_files(paths: &[PathBuf]) -> Result<Vec<PathBuf>, JobError> {
             continue;
         }
         let read_error = |source| JobError::Read {
-            field: "--collect",
+            input: Input::Collect,
             path: path.clone(),
             source,
         };

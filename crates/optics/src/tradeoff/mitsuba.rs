@@ -62,7 +62,7 @@ impl Second {
     /// reason kept typed for the table's words.
     pub fn finish(self, truth: &Image) -> (MitsubaTruth, Option<NoReference>) {
         match self.reference {
-            Err(why) => (MitsubaTruth::NoReference(why.to_string()), Some(why)),
+            Err(why) => (MitsubaTruth::NoReference(english(&why)), Some(why)),
             Ok(reference) => {
                 let truth = box_downsample(truth, reference.factor);
                 let points = self
@@ -76,6 +76,17 @@ impl Second {
                 )
             }
         }
+    }
+}
+
+/// A reason in English, as the record keeps it, with the flag that
+/// measures a scene as Mitsuba did.
+fn english(why: &NoReference) -> String {
+    match why {
+        NoReference::NotLambert => {
+            "Mitsuba measured course_rough as Lambert: --lambert measures the scene so".to_owned()
+        }
+        _ => why.to_string(),
     }
 }
 

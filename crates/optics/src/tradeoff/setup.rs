@@ -10,7 +10,7 @@ use validation::tradeoff::findings::GRAZING_COS;
 
 use super::measure::Mask;
 use super::{jobs, sweep, truth, TradeoffArgs};
-use crate::error::jobs::JobError;
+use crate::error::jobs::{Input, JobError};
 use crate::error::{self, ErrorKind};
 
 /// The scene as the sweep and the budget measure it: with `--lambert`,
@@ -175,7 +175,7 @@ impl Files {
         for file in [&self.json, &self.markdown, &self.plot] {
             safe_io::check_destination(file, &[scene]).map_err(|error| {
                 ErrorKind::Jobs(JobError::Write {
-                    field: "--out",
+                    input: Input::Out,
                     error: error.into(),
                 })
             })?;

@@ -11,7 +11,7 @@ use tracer::scene::Settings;
 
 use super::jobs::{self, Job, JobResult, Planned};
 use super::{median, render, renders_wanted, Setup, TradeoffArgs, MAX_RENDERS};
-use crate::error::jobs::{JobError, LineKind, Place};
+use crate::error::jobs::{Input, JobError, LineKind, Place};
 use crate::error::{self, ErrorKind};
 use crate::ui::Ui;
 use record::say;
@@ -82,7 +82,7 @@ pub fn run_job(args: &TradeoffJobArgs, ui: &Ui) -> error::Result<()> {
             source,
         };
         JobError::Write {
-            field: "--out",
+            input: Input::Out,
             error: error.into(),
         }
     })?;
@@ -91,7 +91,7 @@ pub fn run_job(args: &TradeoffJobArgs, ui: &Ui) -> error::Result<()> {
     let file = args.out.join(format!("job-{index:04}.json"));
     let json = serde_json::to_string(&result).map_err(ErrorKind::Encode)? + "\n";
     safe_io::write_atomically(&file, json.as_bytes()).map_err(|error| JobError::Write {
-        field: "--out",
+        input: Input::Out,
         error: error.into(),
     })?;
 
@@ -125,7 +125,7 @@ pub fn run_job(args: &TradeoffJobArgs, ui: &Ui) -> error::Result<()> {
 /// The job's line: line `index` of `jobs` (stdin for `-`), or its only one.
 fn job_line(jobs: &Path, index: Option<usize>) -> Result<(String, Place), JobError> {
     let read_error = |source| JobError::Read {
-        field: "JOBS",
+        input: Input::Jobs,
         path: jobs.to_owned(),
         source,
     };
@@ -156,7 +156,7 @@ fn job_line(jobs: &Path, index: Option<usize>) -> Result<(String, Place), JobErr
     };
     let Some(line) = lines.get(index) else {
         return Err(JobError::NoSuchJob {
-            field: "INDEX",
+            input: Input::Index,
             at,
             index,
             jobs: lines.len(),

@@ -2,7 +2,7 @@
 //! machines (`--plan`, `tradeoff-job`, `--collect`).
 
 use super::{named, os_error};
-use crate::error::jobs::{ImageProblem, JobError, LineKind, Place};
+use crate::error::jobs::{ImageProblem, Input, JobError, LineKind, Place};
 use crate::error::ErrorKind;
 use safe_io::WriteError;
 use tracer::output::OutputError;
@@ -52,7 +52,7 @@ pub fn examples() -> Vec<(ErrorKind, Vec<String>)> {
     vec![
         jobs(
             JobError::Read {
-                field: "JOBS",
+                input: Input::Jobs,
                 path: "jobs.jsonl".into(),
                 source: os_error(),
             },
@@ -95,7 +95,7 @@ pub fn examples() -> Vec<(ErrorKind, Vec<String>)> {
         ),
         jobs(
             JobError::NoSuchJob {
-                field: "INDEX",
+                input: Input::Index,
                 at: at(40),
                 index: 40,
                 jobs: 27,
@@ -193,7 +193,7 @@ pub fn examples() -> Vec<(ErrorKind, Vec<String>)> {
         ),
         jobs(
             JobError::Write {
-                field: "--plan",
+                input: Input::Plan,
                 error: OutputError::Write(WriteError::Io {
                     path: "jobs.jsonl".into(),
                     source: os_error(),

@@ -14,21 +14,24 @@
 //! Jobs 0 and 1 are the two halves of the ground truth; jobs 2 onwards
 //! the sweep's points in the sweep's order, the scene's own first.
 
+mod english;
+pub mod error;
+mod line;
 mod result;
+#[cfg(test)]
+mod tests;
 
+pub use english::{listed, Named};
+pub use error::{ImageProblem, Input, JobError, LineKind, Place, VERSION};
+pub use line::read_line;
 pub use result::{encode, JobResult, RESULT_FIELDS};
 
-use safe_io::json::UniqueKeys;
 use serde::{Deserialize, Serialize};
-use serde_json::error::Category;
 use serde_json::Value;
 use tracer::job::RenderJob;
 use tracer::scene::Settings;
 
 use super::{sweep, truth};
-use crate::error::jobs::{JobError, LineKind, Place};
-
-pub use validation::tradeoff::JOB_VERSION as VERSION;
 
 /// Jobs before the sweep's points: the truth's two halves.
 pub const TRUTH_JOBS: usize = 2;
@@ -217,7 +220,7 @@ impl Planned {
     pub fn check(&self, line: &Job, at: &Place) -> Result<usize, JobError> {
         if line.job >= self.jobs.len() && !index_unchecked() {
             return Err(JobError::NoSuchJob {
-                field: "job",
+                input: Input::Job,
                 at: at.clone(),
                 index: line.job,
                 jobs: self.jobs.len(),
@@ -283,7 +286,7 @@ fn to_fields(job: &Job) -> serde_json::Map<String, Value> {
 
 /// Whether two JSON values are the same, numbers to 4 units in the last
 /// place: serde_json reads a float back within one of what was written.
-fn same(a: &Value, b: &Value) -> bool {
+pub(crate) fn same(a: &Value, b: &Value) -> bool {
     match (a, b) {
         (Value::Number(x), Value::Number(y)) => match (x.as_f64(), y.as_f64()) {
             (Some(x), Some(y)) => (x - y).abs() <= 4.0 * f64::EPSILON * x.abs().max(y.abs()),
@@ -299,179 +302,19 @@ fn same(a: &Value, b: &Value) -> bool {
     }
 }
 
-/// A line read as `kind`: JSON of the line's fields (none unknown, none
-/// given twice, none missing), then its schema and version; each refusal
-/// names the line and the field.
-pub fn read_line<T: serde::de::DeserializeOwned>(
-    text: &str,
-    kind: LineKind,
-    at: &Place,
-) -> Result<T, JobError> {
-    let line_error = |field: Option<String>, message: String| JobError::Line {
-        kind,
-        at: at.clone(),
-        field,
-        message,
-    };
-    let json = &mut serde_json::Deserializer::from_str(text);
-    let UniqueKeys(value) = serde_path_to_error::deserialize(&mut *json).map_err(|e| {
-        // A key given twice is named; a syntax error has no field.
-        let field = (e.inner().classify() == Category::Data).then(|| e.path().to_string());
-        line_error(field, e.into_inner().to_string())
-    })?;
-    json.end().map_err(|e| line_error(None, e.to_string()))?;
-    if !value.is_object() {
-        return Err(line_error(
-            None,
-            format!("a line is a JSON object of the job's fields, not {value}"),
-        ));
-    }
-    // The schema and version first: a line of another version is refused
-    // as that, not by the first field the versions disagree on.
-    if let Some(found) = value.get("schema") {
-        if found.as_str() != Some(kind.schema()) {
-            let found = found
-                .as_str()
-                .map_or_else(|| found.to_string(), str::to_owned);
-            return Err(JobError::Schema {
-                kind,
-                at: at.clone(),
-                found,
-            });
-        }
-    }
-    if let Some(found) = value.get("version").and_then(Value::as_u64) {
-        if found != u64::from(VERSION) {
-            return Err(JobError::Version {
-                kind,
-                at: at.clone(),
-                found: u32::try_from(found).unwrap_or(u32::MAX),
-            });
-        }
-    }
-    let mut track = serde_path_to_error::Track::new();
-    let fields = serde_path_to_error::Deserializer::new(value, &mut track);
-    T::deserialize(fields).map_err(|e| {
-        let path = track.path().to_string();
-        let field = (path != ".").then_some(path).or_else(|| unknown_field(&e));
-        line_error(field, e.to_string())
-    })
-}
-
-/// The field serde names in an unknown-field or missing-field message.
-fn unknown_field(error: &serde_json::Error) -> Option<String> {
-    let text = error.to_string();
-    let start = text.find('`')? + 1;
-    let end = start + text[start..].find('`')?;
-    Some(text[start..end].to_owned())
-}
-
-#[cfg(test)]
+#[cfg(any(test, feature = "faults"))]
 thread_local! {
     /// A test-only switch that reverts the check of a job line's index
     /// against its plan, for the tradeoff-jobs fuzz target to find.
-    pub(crate) static INDEX_UNCHECKED: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+    pub static INDEX_UNCHECKED: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
 }
 
-#[cfg(test)]
+#[cfg(any(test, feature = "faults"))]
 fn index_unchecked() -> bool {
     INDEX_UNCHECKED.get()
 }
 
-#[cfg(not(test))]
+#[cfg(not(any(test, feature = "faults")))]
 fn index_unchecked() -> bool {
     false
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn keys(value: impl Serialize) -> Vec<String> {
-        match serde_json::to_value(value) {
-            Ok(Value::Object(map)) => map.keys().cloned().collect(),
-            _ => Vec::new(),
-        }
-    }
-
-    fn sorted(fields: &[&str]) -> Vec<String> {
-        let mut fields: Vec<String> = fields.iter().map(|&f| f.to_owned()).collect();
-        fields.sort();
-        fields
-    }
-
-    fn job() -> Job {
-        Job {
-            schema: LineKind::Job.schema().into(),
-            version: VERSION,
-            plan: "0".into(),
-            job: 0,
-            jobs: 1,
-            scene: "s.json".into(),
-            scene_fnv1a: "0".into(),
-            lambert: false,
-            width: 1,
-            height: 1,
-            spp: 1,
-            truth_spp: 2,
-            repeats: 1,
-            min_seconds: 0.0,
-            axis: "truth".into(),
-            label: "truth, half 1 of 2".into(),
-            settings: Value::Null,
-        }
-    }
-
-    /// The lists the checks and the fuzz target name fields by are the
-    /// lines' own fields, every one.
-    #[test]
-    fn the_field_lists_are_the_lines_fields() {
-        assert_eq!(keys(job()), sorted(&JOB_FIELDS));
-        let result = JobResult {
-            schema: LineKind::Result.schema().into(),
-            version: VERSION,
-            plan: "0".into(),
-            planned_as: "optics tradeoff s.json".into(),
-            scene_fnv1a: "0".into(),
-            job: 0,
-            jobs: 1,
-            label: "l".into(),
-            seconds: vec![0.0],
-            rays: 0.0,
-            machine: "m".into(),
-            date: "d".into(),
-            load: None,
-            images: Vec::new(),
-        };
-        assert_eq!(keys(result), sorted(&RESULT_FIELDS));
-    }
-
-    /// `--min-seconds` 0.1 read back one unit in the last place off is the
-    /// same plan; 0.1 against 0.2 is not.
-    #[test]
-    fn a_plan_id_survives_a_float_read_back_one_ulp_off() {
-        let key = job().key();
-        let nudged = PlanKey {
-            min_seconds: f64::from_bits(0.1_f64.to_bits() + 1),
-            ..PlanKey {
-                min_seconds: 0.1,
-                ..key.clone()
-            }
-        };
-        let exact = PlanKey {
-            min_seconds: 0.1,
-            ..key.clone()
-        };
-        assert_eq!(nudged.id(), exact.id());
-        let other = PlanKey {
-            min_seconds: 0.2,
-            ..key
-        };
-        assert_ne!(other.id(), exact.id());
-        assert!(same(
-            &serde_json::json!(0.1),
-            &serde_json::json!(nudged.min_seconds)
-        ));
-        assert!(!same(&serde_json::json!(0.1), &serde_json::json!(0.2)));
-    }
 }

@@ -6,7 +6,7 @@ use serde::{Deserialize, Serialize};
 use tracer::output::{pfm_bytes, read_pfm};
 use tracer::render::Image;
 
-use crate::error::jobs::{ImageProblem, JobError, Place};
+use super::error::{ImageProblem, JobError, Place};
 
 /// The fields of a result line, by name, in the order [`JobResult`]
 /// declares them.
