@@ -36,7 +36,7 @@ pub fn dielectric_bound_ulps(tier: &str) -> f64 {
 /// `κ = 6.646724002409787` and `R_s` 10.8 ulps at
 /// `cos θi = 0.6754425507263279`, `n = 0.18348744872677603`,
 /// `κ = 4.060512106629868` (the grid's "worst … found" cases, the worst of
-/// 1.9·10⁵ random doubles); the random cases of [`random`] reach 10.5. 14
+/// 1.9·10⁵ random doubles); the random cases of [`crate::mpmath::random`] reach 10.5. 14
 /// is a sixth above the worst found, and a regression costing one digit
 /// still fails it.
 pub const CONDUCTOR_BOUND_ULPS: f64 = 14.0;

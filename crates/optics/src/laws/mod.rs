@@ -2,7 +2,7 @@
 //!
 //! Each takes its inputs either as flags or as a JSON request (the same
 //! struct serves both), checks them, calls the radiometry crate for every
-//! number, and returns a [`Record`] with the working. The working narrates
+//! number, and returns a [`record::Record`] with the working. The working narrates
 //! what the laws returned (the side and indices of the `Incidence`, the
 //! transmitted cosine, the cosine Schlick took); it never decides again what
 //! a law decided, and each law is evaluated at most once per request.

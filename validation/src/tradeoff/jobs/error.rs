@@ -2,7 +2,7 @@
 //! cannot be read, one of another schema, plan or scene, a job that is not
 //! in the plan, results missing or given twice. Each kind's stable name
 //! and its English text, with the inputs it concerns named by the caller
-//! ([`Named`]): a front end gives the names its user typed (a flag, an
+//! ([`Named`](super::english::Named)): a front end gives the names its user typed (a flag, an
 //! argument), the library's own `Display` plain nouns ([`Input::noun`]).
 
 use std::fmt;
