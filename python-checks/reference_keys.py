@@ -70,6 +70,22 @@ GENERATORS = [
     ("flip_reference.py", ["flip.json"], [], "flip"),
 ]
 
+# The reference of each kind that every CI run regenerates from scratch and
+# requires to reproduce the committed file (python-checks/reproduce.py's
+# rule): the quickest of its kind. The others are trusted by their key and
+# their recorded SHA-256, and ``--regenerate --all`` remakes every one. Each
+# generator's time from scratch on two cores (``pytest --durations`` before
+# the references were keyed): fresnel_mpmath 1.7 s, fresnel_random 16.5 s,
+# mitsuba_laws 0.07 s, colorimetry 0.15 s, metals 0.22 s, mitsuba_render
+# 108 s, mitsuba_full_light 215 s, flip_reference 0.01 s.
+FROM_SCRATCH = {
+    "mpmath": "fresnel_mpmath.py",
+    "mitsuba-laws": "mitsuba_laws.py",
+    "colour-science": "colorimetry.py",
+    "mitsuba-render": "mitsuba_render.py",
+    "flip": "flip_reference.py",
+}
+
 IMPORT = re.compile(r"^\s*(?:import|from)\s+([A-Za-z_][A-Za-z0-9_]*)", re.M)
 
 

@@ -3,7 +3,6 @@ import base64
 import math
 import os
 import struct
-import subprocess
 import sys
 
 import pytest
@@ -87,12 +86,3 @@ def test_committed_values_are_mpmaths_correctly_rounded(committed):
                 got = values[key][i]
                 assert (math.isnan(v) and math.isnan(got)) or v == got, (law, tier, i, key)
 
-
-def test_committed_reference_is_up_to_date(tmp_path):
-    """The whole file regenerates byte for byte (in its own process, as
-    ``optics validate`` runs it)."""
-    fresh = tmp_path / "fresnel_random.json"
-    script = os.path.join(os.path.dirname(os.path.abspath(__file__)), "fresnel_random.py")
-    subprocess.run([sys.executable, script, str(fresh)], check=True)
-    with open(fr.DEFAULT_PATH, "rb") as a, open(fresh, "rb") as b:
-        assert a.read() == b.read()

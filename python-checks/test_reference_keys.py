@@ -7,6 +7,7 @@ import shutil
 import pytest
 
 import reference_keys as rk
+import reproduce
 
 
 def test_every_committed_reference_is_current_by_its_key():
@@ -15,6 +16,29 @@ def test_every_committed_reference_is_current_by_its_key():
     stale = {script: why for script in recorded
              if (why := rk.state(script, recorded, rk.key(script)))}
     assert not stale, f"{stale}; regenerate with: {rk.REGENERATE}"
+
+
+def test_each_kind_of_reference_has_one_regenerated_from_scratch():
+    kinds = {kind for _, _, _, kind in rk.GENERATORS}
+    assert set(rk.FROM_SCRATCH) == kinds
+    for kind, script in rk.FROM_SCRATCH.items():
+        assert rk.generator(script)[3] == kind, script
+
+
+@pytest.mark.parametrize("kind", sorted(rk.FROM_SCRATCH))
+def test_a_reference_of_each_kind_reproduces_from_scratch(kind, tmp_path):
+    """The generator runs in its own process, as ``optics validate`` runs it,
+    and each file it writes must reproduce the committed one by
+    ``reproduce.py``'s rule for that file (byte for byte unless the rule
+    allows a stated tolerance)."""
+    script = rk.FROM_SCRATCH[kind]
+    rk.run_generator(script, str(tmp_path))
+    for name in rk.generator(script)[1]:
+        committed = rk.committed_path(name)
+        tolerance, f32 = reproduce.rule_for(committed)
+        with open(committed, "rb") as a, open(tmp_path / name, "rb") as b:
+            found = reproduce.differences(a.read(), b.read(), tolerance, f32_tolerances=f32)
+        assert not found, f"{name}: {found}; regenerate with: {rk.REGENERATE}"
 
 
 def test_the_scene_list_input_is_the_one_mitsuba_render_reads():
