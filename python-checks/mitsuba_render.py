@@ -125,6 +125,7 @@ is an edge when one of its eight neighbours follows a different Whitted
 path: another object at any vertex of the specular chain, or another light
 blocked at a rough vertex.
 """
+import argparse
 import base64
 import json
 import math
@@ -722,10 +723,17 @@ def render_scene(name, width=WIDTH, height=HEIGHT, samples=PATH_SAMPLES):
     return entry
 
 
-def build():
+def build(only=None):
+    """The whole document; with ``only``, the same document holding that one
+    scene's entry (``select`` of the whole), which is what the proof of
+    reproducibility regenerates from scratch on every CI run."""
     names = course_scenes()
+    if only is not None and only not in names:
+        raise SceneError(f"--only {only}: not a course scene (one of {', '.join(names)})")
     excluded, compared = {}, []
     for name in names:
+        if only is not None and name != only:
+            continue
         reason = why_excluded(json.loads(scene_text(name)[1]))
         if reason:
             excluded[name] = reason
@@ -751,14 +759,31 @@ def build():
     }
 
 
+def select(document, name):
+    """``document`` with the entries of scene ``name`` only, as ``build(name)``
+    writes it."""
+    return dict(document,
+                excluded={k: v for k, v in document["excluded"].items() if k == name},
+                scenes=[entry for entry in document["scenes"] if entry["name"] == name])
+
+
+def to_text(document):
+    """The file's text: what ``write`` writes."""
+    return json.dumps(document, indent=1, sort_keys=False) + "\n"
+
+
 def write(document, path):
-    write_text(path, json.dumps(document, indent=1, sort_keys=False) + "\n")
+    write_text(path, to_text(document))
 
 
 def main(argv):
-    path = argv[1] if len(argv) > 1 else DEFAULT_PATH
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("path", nargs="?", default=DEFAULT_PATH)
+    parser.add_argument("--only", metavar="SCENE", help="one course scene's entry, as select() keeps it")
+    args = parser.parse_args(argv[1:])
+    path = args.path
     try:
-        document = build()
+        document = build(args.only)
     except SceneError as error:
         print(f"mitsuba_render.py: {error}", file=sys.stderr)
         return 1

@@ -72,18 +72,20 @@ GENERATORS = [
 
 # The reference of each kind that every CI run regenerates from scratch and
 # requires to reproduce the committed file (python-checks/reproduce.py's
-# rule): the quickest of its kind. The others are trusted by their key and
-# their recorded SHA-256, and ``--regenerate --all`` remakes every one. Each
-# generator's time from scratch on two cores (``pytest --durations`` before
-# the references were keyed): fresnel_mpmath 1.7 s, fresnel_random 16.5 s,
-# mitsuba_laws 0.07 s, colorimetry 0.15 s, metals 0.22 s, mitsuba_render
-# 108 s, mitsuba_full_light 215 s, flip_reference 0.01 s.
+# rule): the quickest of its kind, and of Mitsuba's renders one scene's entry
+# (the generator's ``--only``; each scene renders alone, in its own process).
+# The others are trusted by their key and their recorded SHA-256, and
+# ``--regenerate --all`` remakes every one. Each generator's time from
+# scratch on two cores (``pytest --durations`` before the references were
+# keyed): fresnel_mpmath 1.7 s, fresnel_random 16.5 s, mitsuba_laws 0.07 s,
+# colorimetry 0.15 s, metals 0.22 s, mitsuba_render 108 s (``shadow`` alone:
+# 6.6 s), mitsuba_full_light 215 s, flip_reference 0.01 s.
 FROM_SCRATCH = {
-    "mpmath": "fresnel_mpmath.py",
-    "mitsuba-laws": "mitsuba_laws.py",
-    "colour-science": "colorimetry.py",
-    "mitsuba-render": "mitsuba_render.py",
-    "flip": "flip_reference.py",
+    "mpmath": ("fresnel_mpmath.py", None),
+    "mitsuba-laws": ("mitsuba_laws.py", None),
+    "colour-science": ("colorimetry.py", None),
+    "mitsuba-render": ("mitsuba_render.py", "shadow"),
+    "flip": ("flip_reference.py", None),
 }
 
 IMPORT = re.compile(r"^\s*(?:import|from)\s+([A-Za-z_][A-Za-z0-9_]*)", re.M)
@@ -217,12 +219,15 @@ def record_keys(path=KEYS_PATH):
     write_json(path, keys_document(entries))
 
 
-def run_generator(script, destination, python=sys.executable):
-    """Runs ``script`` writing its outputs into ``destination``."""
+def run_generator(script, destination, python=sys.executable, only=None):
+    """Runs ``script`` writing its outputs into ``destination``; with
+    ``only``, just that part of them (``--only``)."""
     _, outputs, _, _ = generator(script)
     os.makedirs(destination, exist_ok=True)
     command = [python, "-W", "ignore", os.path.join(HERE, script)]
     command += [os.path.join(destination, name) for name in outputs]
+    if only is not None:
+        command += ["--only", only]
     subprocess.run(command, check=True, cwd=ROOT)
 
 

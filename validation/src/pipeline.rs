@@ -28,6 +28,7 @@ use tracer::output::OutputError;
 use crate::regenerate::regenerate;
 use crate::report::Report;
 use crate::report::{to_html, to_json};
+use crate::suite::schedule::Merge;
 use crate::suite::{self, Context};
 
 use files::{create_dir, write};
@@ -99,22 +100,23 @@ pub fn run(options: &Options, mut progress: impl FnMut(Step)) -> Result<Outcome,
             scope.spawn(move || random_cases(python, scripts, out, options.seed, count))
         });
         let mut drawing = None;
-        for (index, kind) in kinds.iter().enumerate() {
-            progress(Step::Checks {
-                index,
-                total,
-                name: kind.name(),
-            });
-            kind.run(&context, &mut report)?;
-            if let (Some(python), Some(true)) = (&python, figures_after.map(|i| i == index)) {
-                progress(Step::DrawingFigures);
-                let exchange = out.join("exchange");
-                create_dir(&exchange)?;
-                write(&exchange, "report.json", to_json(&report).as_bytes())?;
-                let (scripts, out) = (&scripts, &out);
-                drawing = Some(scope.spawn(move || draw_figures(python, scripts, out)));
+        suite::schedule::run_merged(&kinds, &context, &mut report, |step| {
+            match step {
+                Merge::Awaiting { index, name } => progress(Step::Checks { index, total, name }),
+                Merge::Merged { index, report } => {
+                    if let (Some(python), Some(true)) = (&python, figures_after.map(|i| i == index))
+                    {
+                        progress(Step::DrawingFigures);
+                        let exchange = out.join("exchange");
+                        create_dir(&exchange)?;
+                        write(&exchange, "report.json", to_json(report).as_bytes())?;
+                        let (scripts, out) = (&scripts, &out);
+                        drawing = Some(scope.spawn(move || draw_figures(python, scripts, out)));
+                    }
+                }
             }
-        }
+            Ok::<(), PipelineError>(())
+        })?;
         progress(Step::ChecksDone);
         // Neither thread panics: their errors are values.
         let random = random.map(|h| h.join().expect("the random cases' thread"));

@@ -1,5 +1,6 @@
-//! The harness: every kind of check, run in order against one directory of
-//! references, gathered into one [`Report`].
+//! The harness: every kind of check, run beside one another against one
+//! directory of references, gathered into one [`Report`] in their order
+//! ([`schedule`]).
 //!
 //! A kind of check ([`CheckKind`]) reads the references it needs, appends its
 //! [`Check`]s and its figure data to the report, and says how many steps it
@@ -22,7 +23,7 @@ use crate::tradeoff;
 use radiometry::spectrum::{self, SAMPLES};
 
 /// One kind of check.
-pub trait CheckKind {
+pub trait CheckKind: Sync {
     /// A stable name, used in progress messages (`laws`, `colorimetry`).
     fn name(&self) -> &'static str;
     /// Runs the checks, appending them and their data to `report`.
@@ -30,6 +31,11 @@ pub trait CheckKind {
     /// Whether the report's figures (`python-checks/plot_report.py`) draw
     /// data this kind writes: the figures start after the last that does.
     fn feeds_figures(&self) -> bool {
+        false
+    }
+    /// Whether it times something with the wall clock, and so runs alone,
+    /// after the other kinds have finished ([`schedule::run_merged`]).
+    fn measures_time(&self) -> bool {
         false
     }
 }
@@ -134,6 +140,10 @@ impl CheckKind for MetalChecks {
 
     fn feeds_figures(&self) -> bool {
         true // the metals' swatches, spectra and ΔE table
+    }
+
+    fn measures_time(&self) -> bool {
+        true // the spectral colour against the three-wavelength one
     }
 
     fn run(&self, context: &Context, report: &mut Report) -> Result<(), ReferenceError> {
@@ -311,8 +321,8 @@ pub fn standard_kinds() -> Vec<Box<dyn CheckKind>> {
     ]
 }
 
-/// Runs `kinds` in order, calling `progress(i, name)` before each, and
-/// returns the summarised report.
+/// Runs `kinds` ([`schedule::run_merged`]), calling `progress(i, name)`
+/// in their order as each is awaited, and returns the summarised report.
 pub fn run(
     kinds: &[Box<dyn CheckKind>],
     context: &Context,
@@ -320,10 +330,15 @@ pub fn run(
     mut progress: impl FnMut(usize, &str),
 ) -> Result<Report, ReferenceError> {
     let mut report = Report::new(context.quick, command);
-    for (i, kind) in kinds.iter().enumerate() {
-        progress(i, kind.name());
-        kind.run(context, &mut report)?;
-    }
+    schedule::run_merged(kinds, context, &mut report, |step| {
+        if let Merge::Awaiting { index, name } = step {
+            progress(index, name);
+        }
+        Ok::<(), ReferenceError>(())
+    })?;
     report.summarise();
     Ok(report)
 }
+
+pub mod schedule;
+use schedule::Merge;

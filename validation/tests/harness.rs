@@ -231,3 +231,90 @@ fn results_that_do_not_match_the_cases_fail() {
         exchange::check_random(&Laws::radiometry(), &Laws64::radiometry(), &cases, &results);
     assert!(!check.passed() && check.failures[0].contains("30 cases but 29 results"));
 }
+
+/// A kind of check that starts `delay` late: a way to make the kinds
+/// finish in another order than theirs.
+struct Late(Box<dyn CheckKind>, std::time::Duration);
+
+impl CheckKind for Late {
+    fn name(&self) -> &'static str {
+        self.0.name()
+    }
+    fn run(&self, context: &suite::Context, report: &mut Report) -> Result<(), ReferenceError> {
+        std::thread::sleep(self.1);
+        self.0.run(context, report)
+    }
+    fn feeds_figures(&self) -> bool {
+        self.0.feeds_figures()
+    }
+    fn measures_time(&self) -> bool {
+        self.0.measures_time()
+    }
+}
+
+/// A render figure's file name and pixels.
+type Figure = (String, Vec<[f32; 3]>);
+
+/// The report as JSON without the wall-clock timings, with the render
+/// figures' names and pixels (which `report.json` leaves out).
+fn deterministic_part(report: &Report) -> (serde_json::Value, Vec<Figure>) {
+    let mut json: serde_json::Value = serde_json::from_str(&to_json(report)).unwrap();
+    json.as_object_mut().unwrap().remove("speed");
+    let figures = report
+        .render_figures
+        .iter()
+        .map(|f| {
+            (
+                f.file.clone(),
+                f.image.pixels.iter().map(|p| p.to_array()).collect(),
+            )
+        })
+        .collect();
+    (json, figures)
+}
+
+/// The standard kinds but the two that render: each render is the same
+/// image on any number of threads (`image_is_identical_for_any_thread_count`
+/// in `crates/tracer/tests/integrators.rs`, and the photon map's
+/// `photon_render_is_identical_on_one_and_several_threads`), and they take
+/// most of a quick run's time.
+fn kinds_that_do_not_render() -> Vec<Box<dyn CheckKind>> {
+    let renders = [
+        "renders against Mitsuba 3",
+        "all the light against Mitsuba 3",
+    ];
+    let kinds: Vec<_> = suite::standard_kinds()
+        .into_iter()
+        .filter(|kind| !renders.contains(&kind.name()))
+        .collect();
+    assert_eq!(kinds.len(), suite::standard_kinds().len() - renders.len());
+    kinds
+}
+
+/// The kinds run beside one another and their results are merged in the
+/// kinds' order: with the first kinds made to finish last, the report is
+/// the one running each kind in turn into one report writes, check for
+/// check and number for number (all but the wall-clock timings).
+#[test]
+fn the_report_is_the_same_whichever_kind_finishes_first() {
+    let context = context(&committed_dir());
+    let mut in_turn = Report::new(true, "test");
+    for kind in kinds_that_do_not_render() {
+        kind.run(&context, &mut in_turn).unwrap();
+    }
+    in_turn.summarise();
+    let kinds = kinds_that_do_not_render();
+    let count = kinds.len() as u64;
+    let reversed: Vec<Box<dyn CheckKind>> = kinds
+        .into_iter()
+        .zip((0..count).rev())
+        .map(|(kind, late)| {
+            let delay = std::time::Duration::from_millis(200 * late);
+            Box::new(Late(kind, delay)) as Box<dyn CheckKind>
+        })
+        .collect();
+    let beside = suite::run(&reversed, &context, "test", |_, _| {}).unwrap();
+    assert!(beside.checks.len() > 20, "{} checks", beside.checks.len());
+    assert_eq!(beside.speed.len(), in_turn.speed.len());
+    assert!(deterministic_part(&beside) == deterministic_part(&in_turn));
+}

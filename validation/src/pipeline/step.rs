@@ -9,7 +9,8 @@ pub enum Step<'a> {
     Python(SetUp<'a>),
     /// Regenerating the references with the pinned tools.
     Regenerating,
-    /// About to run kind `index` of `total` kinds of check.
+    /// Kind `index` of `total` kinds of check is awaited next (the kinds
+    /// run beside one another; their results are taken in order).
     Checks {
         /// Which kind, from 0.
         index: usize,

@@ -164,6 +164,41 @@ impl Report {
         Ok(())
     }
 
+    /// Appends `part`, a report of the same run holding one kind of check's
+    /// results, after what this one holds: what running that kind into
+    /// this report would have appended.
+    pub fn absorb(&mut self, part: Report) {
+        // Every field named, so that a new one cannot be left out.
+        let Report {
+            schema: _,
+            quick: _,
+            command: _,
+            summary: _,
+            references,
+            checks,
+            fresnel_curves,
+            metal_spectra,
+            metal_colours,
+            metal_delta_e,
+            speed,
+            technique_curves,
+            tradeoffs,
+            tradeoff_words,
+            render_figures,
+        } = part;
+        self.references.extend(references);
+        self.checks.extend(checks);
+        self.fresnel_curves.extend(fresnel_curves);
+        self.metal_spectra.extend(metal_spectra);
+        self.metal_colours.extend(metal_colours);
+        self.metal_delta_e.extend(metal_delta_e);
+        self.speed.extend(speed);
+        self.technique_curves.absorb(technique_curves);
+        self.tradeoffs.extend(tradeoffs);
+        self.tradeoff_words.extend(tradeoff_words);
+        self.render_figures.extend(render_figures);
+    }
+
     /// Words each trade-off record's findings into
     /// [`Report::tradeoff_words`] in the report's language, English
     /// ([`crate::tradeoff::prose::sentences`]), one paragraph a record: the

@@ -18,6 +18,20 @@ pub struct TechniqueCurves {
     pub envmap_distance: Vec<DistanceCurve>,
 }
 
+impl TechniqueCurves {
+    /// Appends `part`'s curves after these.
+    pub fn absorb(&mut self, part: TechniqueCurves) {
+        let TechniqueCurves {
+            refraction,
+            fresnel_fits,
+            envmap_distance,
+        } = part;
+        self.refraction.extend(refraction);
+        self.fresnel_fits.extend(fresnel_fits);
+        self.envmap_distance.extend(envmap_distance);
+    }
+}
+
 /// One medium and constant of the cheap refraction.
 #[derive(Clone, Debug, Serialize)]
 pub struct RefractionCurve {
