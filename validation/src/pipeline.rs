@@ -31,10 +31,10 @@ use crate::report::{to_html, to_json};
 use crate::suite::schedule::Merge;
 use crate::suite::{self, Context};
 
-use files::{create_dir, write};
+use files::create_dir;
 use python_side::{
-    copy_tradeoff_plots, draw_figures, figures_or_report, random_cases, set_up_python,
-    write_render_figures,
+    copy_tradeoff_plots, draw_figures, exchange_report, figures_or_report, random_cases,
+    set_up_python, write_render_figures,
 };
 
 /// What a run produced.
@@ -107,9 +107,7 @@ pub fn run(options: &Options, mut progress: impl FnMut(Step)) -> Result<Outcome,
                     if let (Some(python), Some(true)) = (&python, figures_after.map(|i| i == index))
                     {
                         progress(Step::DrawingFigures);
-                        let exchange = out.join("exchange");
-                        create_dir(&exchange)?;
-                        write(&exchange, "report.json", to_json(report).as_bytes())?;
+                        exchange_report(&out, report)?;
                         let (scripts, out) = (&scripts, &out);
                         drawing = Some(scope.spawn(move || draw_figures(python, scripts, out)));
                     }

@@ -22,24 +22,6 @@ use crate::speed;
 use crate::tradeoff;
 use radiometry::spectrum::{self, SAMPLES};
 
-/// One kind of check.
-pub trait CheckKind: Sync {
-    /// A stable name, used in progress messages (`laws`, `colorimetry`).
-    fn name(&self) -> &'static str;
-    /// Runs the checks, appending them and their data to `report`.
-    fn run(&self, context: &Context, report: &mut Report) -> Result<(), ReferenceError>;
-    /// Whether the report's figures (`python-checks/plot_report.py`) draw
-    /// data this kind writes: the figures start after the last that does.
-    fn feeds_figures(&self) -> bool {
-        false
-    }
-    /// Whether it times something with the wall clock, and so runs alone,
-    /// after the other kinds have finished ([`schedule::run_merged`]).
-    fn measures_time(&self) -> bool {
-        false
-    }
-}
-
 /// The laws against the 50-digit references, Mitsuba and the exact values:
 /// the `f32` laws and the `f64` ones.
 pub struct LawChecks(pub Laws, pub Laws64);
@@ -340,5 +322,8 @@ pub fn run(
     Ok(report)
 }
 
+mod kind;
 pub mod schedule;
+
+pub use kind::CheckKind;
 use schedule::Merge;

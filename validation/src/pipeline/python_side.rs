@@ -94,6 +94,19 @@ pub(super) fn figures_or_report(
     }
 }
 
+/// Writes the report so far to `out/exchange/report.json`, for the figure
+/// script.
+pub(super) fn exchange_report(out: &Path, report: &Report) -> Result<(), PipelineError> {
+    let exchange = out.join("exchange");
+    create_dir(&exchange)?;
+    write(
+        &exchange,
+        "report.json",
+        crate::report::to_json(report).as_bytes(),
+    )?;
+    Ok(())
+}
+
 /// Runs the figure script on `out/exchange/report.json`; the figure file
 /// names, relative to `out`.
 pub(super) fn draw_figures(

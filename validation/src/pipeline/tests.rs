@@ -1,6 +1,7 @@
 //! The pipeline's own promises: files replaced whole, destinations
 //! refused before any check runs, the report's pair never split.
 
+use super::files::write;
 use super::*;
 use crate::checkout::Checkout;
 use safe_io::WriteError;

@@ -4,7 +4,8 @@
 
 use std::thread::{self, ScopedJoinHandle};
 
-use super::{CheckKind, Context};
+use super::kind::CheckKind;
+use crate::context::Context;
 use crate::reference::ReferenceError;
 use crate::report::Report;
 
