@@ -91,7 +91,6 @@ pub fn run(options: &Options, mut progress: impl FnMut(Step)) -> Result<Outcome,
     // The Python side runs beside the checks: Mitsuba's evaluation of the
     // random cases needs none of them, and the figures only the data of the
     // kinds that feed them, so each starts as soon as it can.
-    let figures_after = kinds.iter().rposition(|k| k.feeds_figures());
     let (random, drawn) = std::thread::scope(|scope| -> Result<_, PipelineError> {
         let random = python.as_ref().map(|python| {
             let count = RANDOM_CASES[usize::from(!options.quick)];
@@ -103,9 +102,8 @@ pub fn run(options: &Options, mut progress: impl FnMut(Step)) -> Result<Outcome,
         suite::schedule::run_merged(&kinds, &context, &mut report, |step| {
             match step {
                 Merge::Awaiting { index, name } => progress(Step::Checks { index, total, name }),
-                Merge::Merged { index, report } => {
-                    if let (Some(python), Some(true)) = (&python, figures_after.map(|i| i == index))
-                    {
+                Merge::FigureData { report } => {
+                    if let Some(python) = &python {
                         progress(Step::DrawingFigures);
                         exchange_report(&out, report)?;
                         let (scripts, out) = (&scripts, &out);

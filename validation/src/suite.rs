@@ -124,10 +124,6 @@ impl CheckKind for MetalChecks {
         true // the metals' swatches, spectra and ΔE table
     }
 
-    fn measures_time(&self) -> bool {
-        true // the spectral colour against the three-wavelength one
-    }
-
     fn run(&self, context: &Context, report: &mut Report) -> Result<(), ReferenceError> {
         let reference = MetalsReference::load(&context.reference_dir)?;
         report.note_reference(&context.reference_dir, metals::FILE)?;
@@ -146,6 +142,25 @@ impl CheckKind for MetalChecks {
             .collect();
         report.metal_colours = rows;
         report.metal_spectra = metal_spectra(&self.0, &reference);
+        Ok(())
+    }
+}
+
+/// The cost of gold's spectral colour against its three-wavelength one,
+/// timed with the wall clock: alone, after every other kind.
+pub struct SpeedChecks(pub MetalLaws);
+
+impl CheckKind for SpeedChecks {
+    fn name(&self) -> &'static str {
+        "the cost of a spectral colour"
+    }
+
+    fn measures_time(&self) -> bool {
+        true
+    }
+
+    fn run(&self, context: &Context, report: &mut Report) -> Result<(), ReferenceError> {
+        let reference = MetalsReference::load(&context.reference_dir)?;
         let iterations = if context.quick { 20_000 } else { 200_000 };
         if let Some(gold) = reference.metals.iter().find(|m| m.name == "gold") {
             report.speed.extend(
@@ -300,6 +315,7 @@ pub fn standard_kinds() -> Vec<Box<dyn CheckKind>> {
         Box::new(FullLightChecks::tracer()),
         Box::new(TechniqueChecks(techniques::dispersion::SELLMEIER_N_BK7)),
         Box::new(TradeoffChecks),
+        Box::new(SpeedChecks(MetalLaws::radiometry())),
     ]
 }
 

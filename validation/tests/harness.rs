@@ -53,7 +53,7 @@ fn every_check_passes_against_the_committed_references() {
         |i, name| seen.push((i, name.to_owned())),
     )
     .expect("committed references load");
-    assert_eq!(seen.len(), 8, "one progress call per kind: {seen:?}");
+    assert_eq!(seen.len(), 9, "one progress call per kind: {seen:?}");
     assert!(report.passed(), "{:#?}", report.checks);
     assert_eq!(report.summary.failed, 0);
     assert_eq!(report.summary.checks, report.checks.len());

@@ -54,11 +54,20 @@ pub fn to_srgb8(radiance: f32) -> u8 {
 
 /// The image as 8-bit sRGB bytes, rows top to bottom.
 pub fn srgb8(image: &Image) -> Vec<u8> {
-    image
-        .pixels
-        .iter()
-        .flat_map(|p| p.to_array().map(to_srgb8))
-        .collect()
+    // A pixel bit for bit the one before it (an enlarged figure repeats each
+    // pixel) takes that one's bytes: the encoding's powers are the cost.
+    let mut out = Vec::with_capacity(3 * image.pixels.len());
+    let mut last: Option<([u32; 3], [u8; 3])> = None;
+    for pixel in &image.pixels {
+        let bits = pixel.to_array().map(f32::to_bits);
+        let bytes = match last {
+            Some((before, bytes)) if before == bits => bytes,
+            _ => pixel.to_array().map(to_srgb8),
+        };
+        last = Some((bits, bytes));
+        out.extend_from_slice(&bytes);
+    }
+    out
 }
 
 /// The image as a PFM file: `PF`, size, `-1` (little-endian), then rows
@@ -196,6 +205,34 @@ pub fn read_pfm(bytes: &[u8]) -> Option<Image> {
 mod tests {
     use super::*;
     use glam::Vec3;
+
+    /// Runs of equal pixels take the first one's bytes: the result is each
+    /// pixel encoded alone, also where a pixel differs from the one before
+    /// in one channel only, or in the sign of a zero, or is NaN.
+    #[test]
+    fn srgb_bytes_are_each_pixel_encoded_alone() {
+        let pixels = [
+            Vec3::new(0.2, 0.5, 0.9),
+            Vec3::new(0.2, 0.5, 0.9),
+            Vec3::new(0.2, 0.6, 0.9),
+            Vec3::new(0.2, 0.6, 0.91),
+            Vec3::new(0.0, 0.0, 0.0),
+            Vec3::new(-0.0, 0.0, 0.0),
+            Vec3::splat(f32::NAN),
+            Vec3::splat(f32::NAN),
+            Vec3::new(1.5, 0.5, 0.0),
+        ];
+        let image = Image {
+            width: pixels.len() as u32,
+            height: 1,
+            pixels: pixels.to_vec(),
+        };
+        let alone: Vec<u8> = pixels
+            .iter()
+            .flat_map(|p| p.to_array().map(to_srgb8))
+            .collect();
+        assert_eq!(srgb8(&image), alone);
+    }
 
     #[test]
     fn srgb_encoding_matches_iec_61966_2_1() {

@@ -57,13 +57,21 @@ pub(super) fn triptych(
     let masked = |p: usize| heat[3 * p..3 * p + 3].iter().all(|s| s.is_nan());
     let any_masked = (0..(w * h) as usize).any(masked);
     let panels = if any_masked { 5 } else { 4 };
-    let panel = |k: u32, p: usize| match k {
-        0 => rgb(ours, p),
-        1 => rgb(mitsuba, p),
-        2 => flip::magma(flip_map[p]),
-        3 => heat_colour(&heat[3 * p..3 * p + 3]),
-        _ => Vec3::splat(if masked(p) { 1.0 } else { 0.0 }),
-    };
+    // Each panel's colours once per pixel, then enlarged.
+    let colours: Vec<Vec<Vec3>> = (0..panels)
+        .map(|k| {
+            (0..(w * h) as usize)
+                .map(|p| match k {
+                    0 => rgb(ours, p),
+                    1 => rgb(mitsuba, p),
+                    2 => flip::magma(flip_map[p]),
+                    3 => heat_colour(&heat[3 * p..3 * p + 3]),
+                    _ => Vec3::splat(if masked(p) { 1.0 } else { 0.0 }),
+                })
+                .collect()
+        })
+        .collect();
+    let panel = |k: u32, p: usize| colours[k as usize][p];
     let width = panels * w * SCALE + (panels - 1) * TRIPTYCH_GAP;
     let height = h * SCALE;
     let mut pixels = vec![Vec3::ONE; (width * height) as usize];

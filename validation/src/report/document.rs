@@ -164,6 +164,19 @@ impl Report {
         Ok(())
     }
 
+    /// A report of the same run holding only what the figures draw
+    /// (`python-checks/plot_report.py` reads these fields and no others).
+    pub fn figure_data(&self) -> Report {
+        Report {
+            fresnel_curves: self.fresnel_curves.clone(),
+            metal_spectra: self.metal_spectra.clone(),
+            metal_colours: self.metal_colours.clone(),
+            metal_delta_e: self.metal_delta_e.clone(),
+            technique_curves: self.technique_curves.clone(),
+            ..Report::new(self.quick, &self.command)
+        }
+    }
+
     /// Appends `part`, a report of the same run holding one kind of check's
     /// results, after what this one holds: what running that kind into
     /// this report would have appended.

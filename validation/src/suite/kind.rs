@@ -11,7 +11,8 @@ pub trait CheckKind: Sync {
     /// Runs the checks, appending them and their data to `report`.
     fn run(&self, context: &Context, report: &mut Report) -> Result<(), ReferenceError>;
     /// Whether the report's figures (`python-checks/plot_report.py`) draw
-    /// data this kind writes: the figures start after the last that does.
+    /// data this kind writes: the figures start once every kind that does
+    /// has finished.
     fn feeds_figures(&self) -> bool {
         false
     }

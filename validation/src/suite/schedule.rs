@@ -9,8 +9,8 @@ use crate::context::Context;
 use crate::reference::ReferenceError;
 use crate::report::Report;
 
-/// Where a run of [`run_merged`] is, for progress and for work that waits
-/// on the report so far.
+/// Where a run of [`run_merged`] is, for progress and for the work that
+/// waits on the figures' data.
 #[derive(Clone, Copy, Debug)]
 pub enum Merge<'a> {
     /// Kind `index` is what the run waits for next.
@@ -20,20 +20,20 @@ pub enum Merge<'a> {
         /// Its name.
         name: &'static str,
     },
-    /// Kind `index`'s results are in `report`, after those of every kind
-    /// before it.
-    Merged {
-        /// Which kind, from 0.
-        index: usize,
-        /// The report so far.
+    /// Every kind that [feeds the figures](CheckKind::feeds_figures) has
+    /// finished: `report` holds their [figure data](Report::figure_data),
+    /// merged in the kinds' order, whatever the others are still doing.
+    FigureData {
+        /// The figures' data.
         report: &'a Report,
     },
 }
 
 type Part = Result<Report, ReferenceError>;
 
-/// Runs `kinds` into `report`, calling `step` as each is awaited and as
-/// each is merged, in the kinds' order. Every kind starts at once on a
+/// Runs `kinds` into `report`, merging their results in the kinds' order
+/// and calling `step` with the figures' data as soon as it is whole, then
+/// as each kind is awaited. Every kind starts at once on a
 /// thread of its own, but one that [measures time](CheckKind::measures_time)
 /// runs alone when its turn comes, after every other kind has finished.
 /// The first error in the kinds' order is returned; a kind's panic is
@@ -58,6 +58,24 @@ pub fn run_merged<E: From<ReferenceError>>(
             })
             .collect();
         let mut finished: Vec<Option<Part>> = kinds.iter().map(|_| None).collect();
+        // The figures wait only for the kinds that feed them (those that
+        // run beside the others: one that measures time comes in its turn).
+        let feeding: Vec<usize> = (0..kinds.len())
+            .filter(|&i| kinds[i].feeds_figures() && running[i].is_some())
+            .collect();
+        let mut figures = Report::new(quick, &command);
+        let mut complete = !feeding.is_empty();
+        for &i in &feeding {
+            let part = joined(running[i].take().expect("each kind runs once"));
+            match &part {
+                Ok(part) => figures.absorb(part.figure_data()),
+                Err(_) => complete = false,
+            }
+            finished[i] = Some(part);
+        }
+        if complete {
+            step(Merge::FigureData { report: &figures })?;
+        }
         for (index, kind) in kinds.iter().enumerate() {
             step(Merge::Awaiting {
                 index,
@@ -77,7 +95,6 @@ pub fn run_merged<E: From<ReferenceError>>(
                 }
             };
             report.absorb(part?);
-            step(Merge::Merged { index, report })?;
         }
         Ok(())
     })
