@@ -5,6 +5,7 @@ use std::path::{Path, PathBuf};
 use std::sync::Mutex;
 
 use crate::error::{Error, WRITE_VAR};
+use crate::key::{self, Inputs};
 use crate::section::{compare, replace, Section};
 
 /// The workspace root, where `docs/results.md` lives.
@@ -52,6 +53,49 @@ pub fn settle(section: &Section) -> Result<(), Error> {
 #[track_caller]
 pub fn assert_settled(section: &Section) {
     if let Err(e) = settle(section) {
+        panic!("{e}");
+    }
+}
+
+/// Whether the keyed section `name` is committed and its key, recorded
+/// with it, is that of `inputs` now: then the committed table is what the
+/// program computes, unrun. Always `false` under `RESULTS_WRITE=1`, which
+/// computes and records.
+#[track_caller]
+pub fn key_is_current(name: &str, command: &str, inputs: &Inputs<'_>) -> bool {
+    if write_requested() {
+        return false;
+    }
+    let current = key::recorded(name).and_then(|recorded| Ok((recorded, inputs.key()?)));
+    match current {
+        Ok((Some(recorded), now)) if recorded == now => {
+            let document = std::fs::read_to_string(document_path()).unwrap_or_default();
+            crate::section::written_by(&document, name, command)
+        }
+        Ok(_) => false,
+        Err(e) => panic!("{e}"),
+    }
+}
+
+/// [`assert_settled`] for a keyed section: the table compared (or
+/// written), then its key recorded under `RESULTS_WRITE=1`, or required
+/// current otherwise ([`Error::KeyStale`]).
+#[track_caller]
+pub fn assert_settled_keyed(section: &Section, inputs: &Inputs<'_>) {
+    assert_settled(section);
+    let result = inputs.key().and_then(|now| {
+        if write_requested() {
+            return key::record(section.name(), &now);
+        }
+        match key::recorded(section.name())? {
+            Some(recorded) if recorded == now => Ok(()),
+            _ => Err(Error::KeyStale {
+                name: section.name().to_owned(),
+                command: section.command().to_owned(),
+            }),
+        }
+    });
+    if let Err(e) = result {
         panic!("{e}");
     }
 }

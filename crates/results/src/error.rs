@@ -29,6 +29,24 @@ pub enum Error {
         /// The command that computes it.
         command: String,
     },
+    /// A slow table whose inputs changed since its key was recorded: the
+    /// table may be the same, but only running it says so.
+    #[error("docs/results.md: section `{name}`'s inputs changed since it was written (docs/results.keys.json); run `{command}` (with {WRITE_VAR}=1 to record its key, and its table if that changed)")]
+    KeyStale {
+        /// The section's name.
+        name: String,
+        /// The command that computes it.
+        command: String,
+    },
+    /// The recorded keys, or `cargo metadata`'s list of the crates, could
+    /// not be read.
+    #[error("{}: {message}", path.display())]
+    Keys {
+        /// The file or command read.
+        path: PathBuf,
+        /// What was wrong with it.
+        message: String,
+    },
     /// A benchmark was not measured in this run.
     #[error("benchmark `{0}` was not measured in this run (filtered out?); the section is left as it was")]
     NotMeasured(String),

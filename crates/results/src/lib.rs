@@ -26,10 +26,13 @@ pub mod criterion;
 mod diff;
 mod document;
 mod error;
+pub mod key;
 mod section;
 mod stamp;
 
-pub use document::{assert_settled, document_path, settle, write_requested};
+pub use document::{
+    assert_settled, assert_settled_keyed, document_path, key_is_current, settle, write_requested,
+};
 pub use error::{Error, WRITE_VAR};
 pub use section::{compare, replace, Section};
 pub use stamp::{load, machine, today};
@@ -40,8 +43,43 @@ pub use stamp::{load, machine, today};
 ///
 /// `deterministic_example!("name", "the command that runs it", table)`,
 /// where `table: fn() -> String`.
+///
+/// A table slow to compute names the files it reads after `keyed_by`
+/// (`deterministic_example!("name", "command", table, keyed_by ["dir"])`):
+/// its test then computes it only when the key of its inputs ([`key`])
+/// differs from the one recorded with it, and fails if the key is stale
+/// even where the table came out the same, so that the next run is quick
+/// again once the key is recorded (`RESULTS_WRITE=1`).
 #[macro_export]
 macro_rules! deterministic_example {
+    ($name:literal, $command:literal, $table:path, keyed_by [$($data:literal),* $(,)?]) => {
+        /// The inputs the table is keyed by.
+        const KEYED_BY: $crate::key::Inputs<'static> = $crate::key::Inputs {
+            package: env!("CARGO_PKG_NAME"),
+            program: file!(),
+            data: &[$($data),*],
+        };
+
+        fn main() {
+            let table = $table();
+            println!("{table}");
+            $crate::assert_settled_keyed(
+                &$crate::Section::deterministic($name, $command, &table),
+                &KEYED_BY,
+            );
+        }
+
+        #[test]
+        fn committed_table_is_current() {
+            if $crate::key_is_current($name, $command, &KEYED_BY) {
+                return;
+            }
+            $crate::assert_settled_keyed(
+                &$crate::Section::deterministic($name, $command, &$table()),
+                &KEYED_BY,
+            );
+        }
+    };
     ($name:literal, $command:literal, $table:path) => {
         fn main() {
             let table = $table();

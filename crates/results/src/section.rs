@@ -20,8 +20,9 @@ impl Section {
     /// compared with the committed copy.
     pub fn deterministic(name: &str, command: &str, body: &str) -> Self {
         let lead = format!(
-            "Written by `{command}`, which fails when this copy differs \
-             (`{WRITE_VAR}=1` rewrites it)."
+            "{}, which fails when this copy differs \
+             (`{WRITE_VAR}=1` rewrites it).",
+            written_by_lead(command)
         );
         Self::new(name, command, &lead, body, true)
     }
@@ -52,10 +53,27 @@ impl Section {
         &self.name
     }
 
+    /// The command that computes it.
+    pub fn command(&self) -> &str {
+        &self.command
+    }
+
     /// The section's text between its markers.
     pub fn text(&self) -> &str {
         &self.text
     }
+}
+
+/// How a deterministic section's text opens: the command that wrote it.
+fn written_by_lead(command: &str) -> String {
+    format!("Written by `{command}`")
+}
+
+/// Whether `document` holds a deterministic section `name` written by
+/// `command`.
+pub(crate) fn written_by(document: &str, name: &str, command: &str) -> bool {
+    locate(document, name)
+        .is_some_and(|range| document[range].starts_with(&written_by_lead(command)))
 }
 
 fn begin(name: &str) -> String {

@@ -76,3 +76,71 @@ fn a_measured_section_names_its_command_machine_and_date() {
     assert!(section.text().contains(&today()));
     assert!(!section.deterministic);
 }
+
+/// A keyed table's key follows its inputs: a changed byte of a file it
+/// reads changes it, and a key recorded for other inputs is not current.
+mod keyed {
+    use crate::key::Inputs;
+
+    const PROGRAM: &str = "crates/tracer/examples/missing_light.rs";
+
+    fn inputs<'a>(data: &'a [&'a str]) -> Inputs<'a> {
+        Inputs {
+            package: "tracer",
+            program: PROGRAM,
+            data,
+        }
+    }
+
+    #[test]
+    fn a_changed_input_changes_the_key() {
+        let dir = tempfile_dir();
+        let file = dir.join("scene.json");
+        std::fs::write(&file, "{\"a\": 1}").unwrap();
+        let path = file.to_str().unwrap();
+        let before = inputs(&[path]).key().unwrap();
+        assert_eq!(
+            before,
+            inputs(&[path]).key().unwrap(),
+            "the key is a function of the inputs"
+        );
+        std::fs::write(&file, "{\"a\": 2}").unwrap();
+        let after = inputs(&[path]).key().unwrap();
+        assert_ne!(before, after);
+        let _ = std::fs::remove_dir_all(dir);
+    }
+
+    #[test]
+    fn the_recorded_key_of_other_inputs_is_not_current() {
+        let dir = tempfile_dir();
+        let file = dir.join("extra.json");
+        std::fs::write(&file, "{}").unwrap();
+        let other = [file.to_str().unwrap()];
+        assert!(!crate::key_is_current(
+            "missing-light",
+            "cargo run --release -p tracer --example missing_light",
+            &inputs(&other),
+        ));
+        let _ = std::fs::remove_dir_all(dir);
+    }
+
+    #[test]
+    fn an_input_that_is_not_there_is_an_error() {
+        let missing = inputs(&["crates/tracer/no-such-directory"]).key();
+        assert!(missing
+            .unwrap_err()
+            .to_string()
+            .contains("no-such-directory"));
+    }
+
+    /// A directory of this test's own under the system's temporary one.
+    fn tempfile_dir() -> std::path::PathBuf {
+        let dir = std::env::temp_dir().join(format!(
+            "results-key-{}-{:?}",
+            std::process::id(),
+            std::thread::current().id()
+        ));
+        std::fs::create_dir_all(&dir).unwrap();
+        dir
+    }
+}

@@ -19,8 +19,11 @@
 //! light tracer measured it.
 //!
 //! The table is the section `missing-light` of `docs/results.md`: the
-//! program (and `cargo test`, which builds it as a test) fails when the
-//! committed copy differs, and rewrites it under `RESULTS_WRITE=1`.
+//! program fails when the committed copy differs, and rewrites it under
+//! `RESULTS_WRITE=1`. It takes about 100 s in a test build, so `cargo
+//! test`, which builds it as a test, computes it only when its inputs
+//! changed: the tracer's source and the crates it links, the course
+//! scenes, the lock file and the compiler ([`results::key`]).
 
 use std::path::Path;
 
@@ -32,7 +35,8 @@ use tracer::scene::{self, IntegratorKind, RenderSpec};
 results::deterministic_example!(
     "missing-light",
     "cargo run --release -p tracer --example missing_light",
-    table
+    table,
+    keyed_by["crates/tracer/scenes"]
 );
 
 /// The scene file `name`, its course rough materials made Lambert of
