@@ -1,6 +1,6 @@
 //! Where the sweep's truth and Mitsuba's part on `kaleidoscope_lit`
 //! (`docs/tradeoffs.md`, "Mitsuba's renders are a second truth"): the
-//! truth's settings ([`optics::tradeoff::sweep::truth_settings`]) varied one
+//! truth's settings ([`validation::tradeoff::sweep::truth_settings`]) varied one
 //! at a time (the bounce limit, the caustic photon map's photons and
 //! radius, the map left out) and each render held, over the harness's
 //! `diffuse` region, against each of Mitsuba's estimates in the reference:
@@ -85,7 +85,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     )?;
     let scene = sized.scene().course_rough_as_lambert();
     let job = RenderJob::with_settings(scene.clone(), *sized.settings())?;
-    let truth = optics::tradeoff::sweep::truth_settings(&job, spp);
+    let truth = validation::tradeoff::sweep::truth_settings(&job, spp);
 
     let dir = Checkout::find(None)?.reference_dir();
     let full = FullLight::load(&dir)?;

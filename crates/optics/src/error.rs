@@ -276,6 +276,47 @@ impl From<validation::tradeoff::error::TradeoffError> for Error {
             TradeoffError::Render(error) => error.into(),
             TradeoffError::Output(error) => ErrorKind::Output(error).into(),
             TradeoffError::Encode(error) => ErrorKind::Encode(error).into(),
+            TradeoffError::Jobs(error) => ErrorKind::Jobs(error).into(),
+            TradeoffError::TruthIsBlack { file } => ErrorKind::TruthIsBlack { file }.into(),
+            TradeoffError::BudgetUnreachable {
+                metric,
+                tolerance,
+                best,
+                settings,
+                top_spp,
+                need,
+            } => ErrorKind::BudgetUnreachable {
+                metric,
+                tolerance,
+                best,
+                settings,
+                top_spp,
+                need,
+            }
+            .into(),
+            TradeoffError::BudgetPilotNoisy { pilot_spp } => {
+                ErrorKind::BudgetPilotNoisy { pilot_spp }.into()
+            }
+            TradeoffError::BudgetEnergyGain { material, gain } => {
+                ErrorKind::BudgetEnergyGain { material, gain }.into()
+            }
+            TradeoffError::Checkout(error) => ErrorKind::Checkout(error).into(),
+            TradeoffError::NoPython { python } => {
+                let error = validation::python::ToolError::Start {
+                    what: validation::python::Task::Script(
+                        validation::tradeoff::engine::PLOT_SCRIPT.into(),
+                    ),
+                    program: python.display().to_string(),
+                    source: std::io::Error::new(
+                        std::io::ErrorKind::NotFound,
+                        "no .venv: `optics validate` creates it once (or pass --no-plot)",
+                    ),
+                };
+                ErrorKind::Pipeline(validation::pipeline::PipelineError::Tool(error)).into()
+            }
+            TradeoffError::Plot(error) => {
+                ErrorKind::Pipeline(validation::pipeline::PipelineError::Tool(error)).into()
+            }
         }
     }
 }

@@ -158,7 +158,19 @@ impl JobArgs {
 pub fn run(args: &RenderArgs, ui: &Ui) -> error::Result<()> {
     #[cfg(feature = "harness")]
     if let Some(budget) = args.budget.settle() {
-        return crate::budget::run(args, budget, ui);
+        let lambert = args.budget.lambert;
+        let job = args.job.job_of(&args.scene, |scene| {
+            validation::tradeoff::engine::measured_scene(scene, lambert)
+        })?;
+        let asked = crate::budget::Asked {
+            inputs: args,
+            scene: &args.scene,
+            job: &job,
+            output: &args.output,
+            flags: &args.budget,
+            threads: args.threads.map(|t| t as usize),
+        };
+        return crate::budget::run(&asked, budget, ui);
     }
     let job = args.job.job(&args.scene)?;
     // Refuse an unwritable destination before spending the render on it.

@@ -5,8 +5,9 @@
 use std::path::{Path, PathBuf};
 use std::time::SystemTime;
 
-use crate::document::{settle, workspace_root};
+use crate::document::settle;
 use crate::error::Error;
+use crate::root::workspace_root;
 use crate::section::Section;
 
 /// A bench's `main`, in place of `criterion_main!`: runs `benches` (a

@@ -1,22 +1,12 @@
 //! `docs/results.md` of this checkout: where it is, and settling a section
 //! against it.
 
-use std::path::{Path, PathBuf};
 use std::sync::Mutex;
 
 use crate::error::{Error, WRITE_VAR};
 use crate::key::{self, Inputs};
+pub use crate::root::document_path;
 use crate::section::{compare, replace, Section};
-
-/// The workspace root, where `docs/results.md` lives.
-pub(crate) fn workspace_root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
-}
-
-/// `docs/results.md` of this checkout.
-pub fn document_path() -> PathBuf {
-    workspace_root().join("docs/results.md")
-}
 
 /// Whether `RESULTS_WRITE=1` asks for the sections to be rewritten.
 pub fn write_requested() -> bool {

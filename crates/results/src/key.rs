@@ -17,8 +17,8 @@ use std::process::Command;
 
 use serde_json::Value;
 
-use crate::document::workspace_root;
 use crate::error::Error;
+use crate::root::workspace_root;
 
 /// The file of the recorded keys, beside `docs/results.md`.
 pub fn keys_path() -> PathBuf {

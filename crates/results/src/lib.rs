@@ -27,6 +27,7 @@ mod diff;
 mod document;
 mod error;
 pub mod key;
+mod root;
 mod section;
 mod stamp;
 

@@ -10,6 +10,7 @@
 
 pub mod budget;
 pub mod checks;
+pub mod engine;
 pub mod error;
 pub mod findings;
 pub mod jobs;

@@ -6,19 +6,17 @@ use clap::ValueEnum;
 use tracer::output::Destination;
 use validation::tradeoff::budget::displayed::DRAWS;
 use validation::tradeoff::budget::{self, Bound, K};
+use validation::tradeoff::engine::{describe, Metric, Outcome, Predicted};
 use validation::tradeoff::measure::Errors;
 
-use super::predictor::Predicted;
-use super::{describe, Metric, Outcome};
 use crate::error;
-use crate::render::RenderArgs;
 use crate::ui::Ui;
 use record::{say, Lang};
 use record::{Answer, Record};
 
 /// Shows the budget's record.
 pub fn show(
-    args: &RenderArgs,
+    inputs: &impl serde::Serialize,
     destination: &Destination,
     outcome: &Outcome,
     ui: &Ui,
@@ -27,7 +25,7 @@ pub fn show(
     let (png, pfm) = (destination.png(), destination.pfm());
     let mut record = Record::new("render", String::new(), "");
     record
-        .inputs_from(args)
+        .inputs_from(inputs)
         .set_answer(
             Answer::List(vec![
                 png.display().to_string().into(),

@@ -12,23 +12,22 @@ use std::sync::OnceLock;
 
 use super::{edge_number, run_and_report, runner, Coverage};
 use crate::error::jobs::{JobError, LineKind, Place};
-use crate::tradeoff::distribute::accept;
-use crate::tradeoff::jobs::{
-    self, Job, JobResult, Planned, INDEX_UNCHECKED, JOB_FIELDS, RESULT_FIELDS,
-};
-use crate::tradeoff::{Setup, TradeoffArgs};
 use glam::Vec3;
 use proptest::prelude::*;
 use proptest::test_runner::TestCaseError;
 use serde_json::{json, Map, Value};
 use tracer::render::Image;
+use validation::tradeoff::engine::{accept, Setup, SweepRequest};
+use validation::tradeoff::jobs::{
+    self, Job, JobResult, Planned, INDEX_UNCHECKED, JOB_FIELDS, RESULT_FIELDS,
+};
 
 /// The plan of `shadow` at 8 × 6, made once.
 fn planned() -> &'static (Setup, Planned) {
     static PLAN: OnceLock<(Setup, Planned)> = OnceLock::new();
     PLAN.get_or_init(|| {
         let scene = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../tracer/scenes/shadow.json");
-        let args = TradeoffArgs {
+        let args = SweepRequest {
             scene,
             width: Some(8),
             height: Some(6),
@@ -39,10 +38,7 @@ fn planned() -> &'static (Setup, Planned) {
             out: PathBuf::from("unused"),
             lambert: true,
             fresh: false,
-            no_plot: true,
             threads: Some(1),
-            plan: None,
-            collect: Vec::new(),
         };
         let setup = Setup::new(&args).expect("the course's shadow scene loads");
         let planned = Planned::new(&setup.key, &setup.job, &setup.plan);

@@ -1,16 +1,16 @@
-//! A sweep as people read it: the terminal's table, the Markdown section
-//! of `docs/tradeoffs.md` with its verdicts, and the Pareto plot drawn by
-//! `python-checks/plot_tradeoff.py`.
+//! A sweep as people read it on the terminal: its plan, or its table,
+//! what its numbers say, the files written and what to mind; the files
+//! themselves are the library's ([`engine::write_sweep`]).
 
-use std::path::{Path, PathBuf};
-use std::process::Command;
+use std::path::Path;
 
-use validation::checkout::Checkout;
-use validation::pipeline::PipelineError;
-use validation::python::{run_tool, Task, ToolError};
+use validation::tradeoff::checks::UNCONVERGED;
+use validation::tradeoff::engine::{self, PlanWritten, Setup, Sweep};
+use validation::tradeoff::jobs::TRUTH_JOBS;
+use validation::tradeoff::prose;
 
-use super::{prose, Measured, Sweep, TradeoffArgs, Verdict, UNCONVERGED};
-use crate::error::{self, ErrorKind};
+use super::args::TradeoffArgs;
+use crate::error;
 use crate::ui::Ui;
 use record::{say, Lang};
 use record::{Answer, Record};
@@ -72,10 +72,10 @@ pub fn table(sweep: &Sweep, lang: Lang) -> Vec<String> {
             p.efficiency
                 .map_or_else(|| "-".to_owned(), |e| format!("{e:.3e}")),
             p.against_scene.delta_e_p99,
-            front_marks(p),
+            engine::front_marks(p),
         ));
     }
-    lines.extend(super::mitsuba::table(
+    lines.extend(engine::mitsuba_table(
         &sweep.mitsuba,
         sweep.mitsuba_missing.as_ref(),
         lang,
@@ -83,178 +83,20 @@ pub fn table(sweep: &Sweep, lang: Lang) -> Vec<String> {
     lines
 }
 
-/// `R` `A` `P` `F`: on the front of relative RMSE, mean ΔE, 99th-percentile
-/// ΔE, ꟻLIP.
-fn front_marks(p: &Measured) -> String {
-    [
-        ("rel_rmse", 'R'),
-        ("delta_e_mean", 'A'),
-        ("delta_e_p99", 'P'),
-        ("flip_mean", 'F'),
-    ]
-    .iter()
-    .map(|&(name, mark)| if p.pareto.contains(&name) { mark } else { '·' })
-    .collect()
-}
-
-/// The scene's section of `docs/tradeoffs.md`.
-pub fn markdown(sweep: &Sweep, stem: &str) -> String {
-    let mut out = format!("## `{stem}`\n\n");
-    out += &format!(
-        "`{}` — {}, {}{}.\n\n",
-        sweep.command,
-        sweep.machine,
-        sweep.date,
-        sweep
-            .load
-            .as_ref()
-            .map_or_else(String::new, |l| format!(", {l}"))
-    );
-    out += &format!(
-        "{}×{} pixels, {} of them surface pixels. Ground truth: {} spp of `{}` \
-         (box filter, max_depth {}), relative noise floor {:.1e}.\n\n",
-        sweep.width,
-        sweep.height,
-        sweep.surface_pixels,
-        sweep.truth.spp,
-        sweep.truth.settings["integrator"].as_str().unwrap_or("?"),
-        sweep.truth.settings["max_depth"],
-        sweep.truth.noise_relative,
-    );
-    if sweep.truth.noise_relative > super::UNCONVERGED {
-        out += &format!(
-            "**The truth is not converged here**: its own noise is {:.2} of its energy \
-             (fireflies), so every setting's error below is read through that noise.\n\n",
-            sweep.truth.noise_relative
-        );
-    }
-    out += "| setting | time (ms), median (range) | rays | rel. RMSE | ΔE mean | ΔE p99 | ꟻLIP | variance | bias² | efficiency | ΔE p99 vs own | front |\n";
-    out += "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|:-:|\n";
-    for p in &sweep.points {
-        let split = p.errors.split;
-        let spread = if p.seconds.len() > 1 {
-            let (lo, hi) = p
-                .seconds
-                .iter()
-                .fold((f64::INFINITY, 0.0_f64), |(lo, hi), &s| {
-                    (lo.min(s), hi.max(s))
-                });
-            format!(" ({:.3}–{:.3})", lo * 1e3, hi * 1e3)
-        } else {
-            String::new()
-        };
-        out += &format!(
-            "| {} | {:.3}{} | {:.3e} | {:.4} | {:.2} | {:.2} | {:.3} | {} | {} | {} | {:.2} | {} |\n",
-            p.point.label,
-            p.seconds_median * 1e3,
-            spread,
-            p.rays,
-            p.errors.rel_rmse,
-            p.errors.delta_e_mean,
-            p.errors.delta_e_p99,
-            p.errors.flip_mean,
-            split.map_or_else(|| "–".to_owned(), |s| format!("{:.2e}", s.variance)),
-            split.map_or_else(|| "–".to_owned(), |s| format!("{:.2e}", s.bias_squared)),
-            p.efficiency
-                .map_or_else(|| "–".to_owned(), |e| format!("{e:.3e}")),
-            p.against_scene.delta_e_p99,
-            front_marks(p),
-        );
-    }
-    if let Some(findings) = &sweep.findings {
-        out += "\n**What the numbers say.** ";
-        out += &prose::sentences(findings, Lang::En).join(" ");
-        out += "\n";
-    }
-    out += "\nAgainst the scene's own settings (time ratio; ΔE2000 p99 against their render):\n\n";
-    for line in verdicts(sweep) {
-        out += &format!("- {line}\n");
-    }
-    out += &super::mitsuba::markdown(&sweep.mitsuba);
-    if !sweep.skipped.is_empty() {
-        out += "\nNot swept here: ";
-        out += &sweep
-            .skipped
-            .iter()
-            .map(|s| format!("{} ({})", s.axis, s.why))
-            .collect::<Vec<_>>()
-            .join("; ");
-        out += ".\n";
-    }
-    out += &format!("\n![{stem}: time against each error](tradeoffs/{stem}-pareto.png)\n\n");
-    out
-}
-
-/// One line per axis: each setting's time against the scene's own and its
-/// ΔE p99 against the scene's own render, with its verdict; first the light
-/// the scene's settings leave out.
-pub fn verdicts(sweep: &Sweep) -> Vec<String> {
-    let Some(base) = sweep.points.first() else {
-        return Vec::new();
-    };
-    let mut lines = vec![format!(
-        "The scene's own settings ({}) are {:.3} relative RMSE from the truth, ΔE2000 {:.2} on average and {:.2} at the 99th percentile.",
-        base.point.label.trim_start_matches("scene: "),
-        base.errors.rel_rmse,
-        base.errors.delta_e_mean,
-        base.errors.delta_e_p99
-    )];
-    let mut axes: Vec<super::sweep::Axis> = Vec::new();
-    for p in &sweep.points[1..] {
-        if !axes.contains(&p.point.axis) {
-            axes.push(p.point.axis);
-        }
-    }
-    for axis in axes {
-        let points: Vec<&Measured> = sweep.points[1..]
-            .iter()
-            .filter(|p| p.point.axis == axis)
-            .collect();
-        let entries: Vec<String> = points
-            .iter()
-            .map(|p| {
-                format!(
-                    "`{}` {:.2}× the time, ΔE p99 {:.2}: {}",
-                    p.point.label,
-                    p.seconds_median / base.seconds_median.max(f64::MIN_POSITIVE),
-                    p.against_scene.delta_e_p99,
-                    p.verdict.map_or("", Verdict::words)
-                )
-            })
-            .collect();
-        lines.push(format!("{}.", entries.join("; ")));
-    }
-    lines
-}
-
 /// Writes the sweep's JSON, Markdown and plot, and prints its record.
 pub fn write_and_show(sweep: &Sweep, args: &TradeoffArgs, ui: &Ui) -> error::Result<()> {
     let lang = ui.lang;
     let files = &sweep.files;
-    let json = serde_json::to_string_pretty(sweep).map_err(ErrorKind::Encode)? + "\n";
-    let markdown = markdown(sweep, &sweep.stem);
-    safe_io::write_all_atomically(&[
-        (files.json.as_path(), json.as_bytes()),
-        (files.markdown.as_path(), markdown.as_bytes()),
-    ])
-    .map_err(|error| ErrorKind::Output(error.into()))?;
-    let plotted = if args.no_plot {
-        None
-    } else {
-        Some(plot(&files.json, &files.plot)?)
-    };
-
+    let written = engine::write_sweep(sweep, !args.no_plot)?;
+    let plotted = written.get(2);
     let mut record = Record::new("tradeoff", String::new(), "");
-    let mut written = vec![
-        files.json.display().to_string().into(),
-        files.markdown.display().to_string().into(),
-    ];
-    if plotted.is_some() {
-        written.push(files.plot.display().to_string().into());
-    }
+    let answer = written
+        .iter()
+        .map(|f| f.display().to_string().into())
+        .collect();
     record
         .inputs_from(args)
-        .set_answer(Answer::List(written), None);
+        .set_answer(Answer::List(answer), None);
     for line in table(sweep, lang) {
         record.step(|| line);
     }
@@ -313,29 +155,52 @@ pub fn write_and_show(sweep: &Sweep, args: &TradeoffArgs, ui: &Ui) -> error::Res
     Ok(())
 }
 
-/// Draws `json`'s Pareto plot into `png` with the checkout's
-/// `python-checks/plot_tradeoff.py` and its `.venv`.
-pub fn plot(json: &Path, png: &Path) -> error::Result<PathBuf> {
-    let checkout = Checkout::find(None).map_err(ErrorKind::Checkout)?;
-    let python = checkout.root().join(".venv/bin/python");
-    let script = "python-checks/plot_tradeoff.py";
-    if !python.is_file() {
-        let error = ToolError::Start {
-            what: Task::Script(script.into()),
-            program: python.display().to_string(),
-            source: std::io::Error::new(
-                std::io::ErrorKind::NotFound,
-                "no .venv: `optics validate` creates it once (or pass --no-plot)",
-            ),
-        };
-        return Err(ErrorKind::Pipeline(PipelineError::Tool(error)).into());
-    }
-    let mut command = Command::new(python);
-    command
-        .arg(checkout.python_checks().join("plot_tradeoff.py"))
-        .arg(json)
-        .arg(png);
-    run_tool(command, Task::Script(script.into()))
-        .map_err(|e| ErrorKind::Pipeline(PipelineError::Tool(e)))?;
-    Ok(png.to_owned())
+/// Prints what `--plan` wrote: how many jobs, how to run them and how to
+/// collect their results.
+pub fn show_plan(
+    setup: &Setup,
+    args: &TradeoffArgs,
+    (path, written): (&Path, PlanWritten),
+    ui: &Ui,
+) -> error::Result<()> {
+    let lang = ui.lang;
+    let count = written.jobs;
+    let mut record = Record::new("tradeoff", String::new(), "");
+    record
+        .inputs_from(args)
+        .set_answer(Answer::List(vec![path.display().to_string().into()]), None);
+    record.step(|| {
+        say!(
+            lang,
+            "planned {} jobs of {} ({}×{}, plan {}): jobs 0 and 1 the truth's two halves, 2 to {} the {} settings; written: {}",
+            "{} feladat tervezve: {} ({}×{}, terv: {}): a 0. és 1. a referencia két fele, a 2–{}. a {} beállítás; kiírva: {}",
+            count,
+            setup.key.scene,
+            setup.key.width,
+            setup.key.height,
+            setup.key.id(),
+            count - 1,
+            count - TRUTH_JOBS,
+            path.display()
+        )
+    });
+    record.step(|| {
+        say!(
+            lang,
+            "run each, anywhere the scene file is: optics tradeoff-job {} INDEX --out RESULTS (INDEX 0 to {})",
+            "mindegyik futtatása bárhol, ahol a jelenetfájl elérhető: optics tradeoff-job {} INDEX --out RESULTS (INDEX: 0–{})",
+            path.display(),
+            count - 1
+        )
+    });
+    record.step(|| {
+        say!(
+            lang,
+            "then merge them here: {} --collect RESULTS",
+            "majd az összesítés itt: {} --collect RESULTS",
+            args.request().command_line()
+        )
+    });
+    record.detail("plan", setup.key.id()).detail("jobs", count);
+    ui.show_steps(&record)
 }

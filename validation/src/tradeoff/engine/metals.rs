@@ -2,16 +2,16 @@
 //! spectral mode: each conductor's three-channel `n, κ` held to the
 //! measured spectrum of the metal of its name, by the harness's code and
 //! reference (`optics validate`'s `metals.*`,
-//! [`validation::metals::three_channel_delta_e`]).
+//! [`crate::metals::three_channel_delta_e`]).
 
+use crate::checkout::Checkout;
+use crate::metals::{three_channel_delta_e, MetalLaws, MetalsReference};
+use crate::tradeoff::findings::{MetalRgb, RgbOutcome};
 use tracer::scene::{Material, Scene};
-use validation::checkout::Checkout;
-use validation::metals::{three_channel_delta_e, MetalLaws, MetalsReference};
-use validation::tradeoff::findings::{MetalRgb, RgbOutcome};
 
 /// Each conductor of `scene`, in the scene's order, with its colour error
 /// or why there is none; nothing for a scene without metals.
-pub(crate) fn rgb_against_spectrum(scene: &Scene) -> Vec<MetalRgb> {
+pub fn rgb_against_spectrum(scene: &Scene) -> Vec<MetalRgb> {
     let conductors: Vec<(&str, [f32; 3], [f32; 3])> = scene
         .materials
         .iter()

@@ -1,51 +1,50 @@
 //! How a sweep in one run renders its points: in rounds, each point at
-//! least `--repeats` times and until its renders add up to
-//! `--min-seconds`; the rule a job of a planned sweep follows too.
+//! least `repeats` times and until its renders add up to `min_seconds`;
+//! the rule a job of a planned sweep follows too.
 
 use std::path::Path;
 
-use tracer::render::Image;
 use tracer::scene::Settings;
 
-use validation::tradeoff::render::render;
+use super::renders::{Provenance, Renders, Timed};
+use super::request::SweepRequest;
+use super::setup::Setup;
+use crate::tradeoff::error::TradeoffError;
+use crate::tradeoff::render::render;
+use crate::tradeoff::{jobs, truth};
 
-use super::{jobs, truth, Provenance, Renders, Setup, TradeoffArgs};
-use crate::error::{self, ErrorKind};
+/// How far a sweep rendered here has come: told before each step.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Progress<'a> {
+    /// The ground truth is being obtained (rendered, or read from its
+    /// cache).
+    Truth,
+    /// The first round reached the point of this label.
+    Point(&'a str),
+    /// Every point is rendered.
+    Done,
+}
 
 /// The sweep rendered here: the truth (from the cache when it holds it),
-/// then every point in rounds, with a progress bar on a terminal.
-pub(crate) fn render_here(
+/// then every point in rounds, each step told to `progress` (of
+/// `setup.plan.points.len() + 1` steps).
+pub fn render_here(
     setup: &Setup,
-    args: &TradeoffArgs,
+    args: &SweepRequest,
     request: &truth::Request<'_>,
-) -> error::Result<Renders> {
-    let threads = args.threads.map(|t| t as usize);
-    let bar = crate::render::progress_bar(setup.plan.points.len() as u64 + 1).inspect(|bar| {
-        bar.set_style(
-            indicatif::ProgressStyle::with_template(
-                "{bar:40} {pos}/{len} settings, {eta} left: {msg}",
-            )
-            .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
-        );
-        bar.set_message("ground truth");
-    });
-    let tick = |message: &str| {
-        if let Some(bar) = &bar {
-            bar.inc(1);
-            bar.set_message(message.to_owned());
-        }
-    };
+    progress: &dyn Fn(Progress<'_>),
+) -> Result<Renders, TradeoffError> {
+    let threads = args.threads;
+    progress(Progress::Truth);
     let (truth, record) = truth::obtain(&setup.job, request, &setup.mask, threads)?;
     if truth.is_black() {
-        return Err(ErrorKind::TruthIsBlack {
+        return Err(TradeoffError::TruthIsBlack {
             file: args.scene.clone(),
-        }
-        .into());
+        });
     }
+    let tick = |label: &str| progress(Progress::Point(label));
     let timed = time_points(setup, &args.scene, args, threads, &tick)?;
-    if let Some(bar) = &bar {
-        bar.finish_and_clear();
-    }
+    progress(Progress::Done);
     let provenance = Provenance {
         machine: results::machine(),
         date: results::today(),
@@ -55,24 +54,13 @@ pub(crate) fn render_here(
     Ok((truth, record, timed, provenance))
 }
 
-/// The most renders of one setting that `--min-seconds` asks for.
-pub(crate) const MAX_RENDERS: usize = 64;
-
-/// One point's renders: the images measured, the times.
-pub(crate) struct Timed {
-    /// One image for a deterministic setting; the first
-    /// [`jobs::MAX_KEPT`] seeds' for a Monte Carlo one.
-    pub images: Vec<Image>,
-    /// Every render's time, s.
-    pub seconds: Vec<f64>,
-    /// Rays over all the renders.
-    pub rays: f64,
-}
+/// The most renders of one setting that `min_seconds` asks for.
+pub const MAX_RENDERS: usize = 64;
 
 /// How many renders a point takes whose first took `first` seconds: at
-/// least `--repeats`, and enough to add up to `--min-seconds`, at most
+/// least `repeats`, and enough to add up to `min_seconds`, at most
 /// [`MAX_RENDERS`].
-pub(crate) fn renders_wanted(first: f64, repeats: u32, min_seconds: f64) -> usize {
+pub fn renders_wanted(first: f64, repeats: u32, min_seconds: f64) -> usize {
     let enough = (min_seconds / first.max(1e-6)).ceil() as usize;
     enough.clamp(repeats as usize, MAX_RENDERS)
 }
@@ -85,10 +73,10 @@ pub(crate) fn renders_wanted(first: f64, repeats: u32, min_seconds: f64) -> usiz
 fn time_points(
     setup: &Setup,
     file: &Path,
-    args: &TradeoffArgs,
+    args: &SweepRequest,
     threads: Option<usize>,
     tick: &dyn Fn(&str),
-) -> error::Result<Vec<Timed>> {
+) -> Result<Vec<Timed>, TradeoffError> {
     let (job, points) = (&setup.job, &setup.plan.points);
     if let Some(first) = points.first() {
         render(job, file, first.settings, threads)?;

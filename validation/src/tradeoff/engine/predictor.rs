@@ -1,17 +1,18 @@
 //! The budget's prediction in its metric: the relative RMSE from the
-//! pilot's sums ([`validation::tradeoff::budget`]), or a measure of the
+//! pilot's sums ([`crate::tradeoff::budget`]), or a measure of the
 //! displayed image from simulated renders
-//! ([`validation::tradeoff::budget::displayed`]); one choice for both.
+//! ([`crate::tradeoff::budget::displayed`]); one choice for both.
 
+use crate::tradeoff::budget::displayed::{self, Reference, Shown, Simulation};
+use crate::tradeoff::budget::{self, Bound, Choice, Need, Pilot, Prediction};
+use crate::tradeoff::measure::Mask;
 use serde::Serialize;
 use tracer::render::Image;
-use validation::tradeoff::budget::displayed::{self, Reference, Shown, Simulation};
-use validation::tradeoff::budget::{self, Bound, Choice, Need, Pilot, Prediction};
-use validation::tradeoff::measure::Mask;
 
 use tracer::scene::Settings;
 
-use super::MAX_BUDGET_SPP;
+/// The most samples per pixel the budget gives a candidate: 2^16.
+pub const MAX_BUDGET_SPP: u32 = 1 << 16;
 
 /// A candidate's prediction in the budget's metric.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -200,11 +201,11 @@ impl Predictor {
 /// The bias of each shortcut of the chosen candidate measured alone, from
 /// the candidates that take it alone, in the budget's metric.
 pub fn terms(
-    candidates: &[super::pilot::Candidate],
+    candidates: &[crate::tradeoff::pilot::Candidate],
     predictor: &Predictor,
     index: usize,
 ) -> Vec<(&'static str, f64)> {
-    use super::pilot::Shortcut;
+    use crate::tradeoff::pilot::Shortcut;
     let chosen = &candidates[index];
     let alone = |shortcut: Shortcut, keep: &dyn Fn(&Settings) -> bool| {
         candidates

@@ -2,25 +2,25 @@
 //! that `mitsuba_full_light.json` measured, at a size that maps onto the
 //! reference's exactly, each setting's renders are box-averaged down to
 //! the reference's size and held against Mitsuba's estimate of all the
-//! light ([`validation::tradeoff::mitsuba`], which says what is measured
+//! light ([`crate::tradeoff::mitsuba`], which says what is measured
 //! and why); elsewhere the record says why not.
 
 use std::path::Path;
 
-use glam::DVec3;
-use tracer::render::Image;
-use tracer::scene::Scene;
-use validation::checkout::Checkout;
-use validation::full_light::{FullLight, FILE};
-use validation::tradeoff::mitsuba::{
+use crate::checkout::Checkout;
+use crate::full_light::{FullLight, FILE};
+use crate::tradeoff::mitsuba::{
     against, box_downsample, measure, reference_for, AgainstMitsuba, MitsubaTruth, NoReference,
     Reference,
 };
+use glam::DVec3;
+use tracer::render::Image;
+use tracer::scene::Scene;
 
 use record::{say, Lang};
 
 /// Mitsuba's truth for one sweep, gathered as its points are measured.
-pub(crate) struct Second {
+pub struct Second {
     reference: Result<Reference, NoReference>,
     /// Each point's label and renders at the reference's size.
     points: Vec<(String, Vec<Vec<DVec3>>)>,

@@ -1,21 +1,22 @@
-//! What every mode of `optics tradeoff` settles before it renders: the
-//! scene at its size, the surface pixels, the sweep's points, the plan's
-//! key, and where the results go.
+//! What every mode of a sweep settles before it renders: the scene at its
+//! size, the surface pixels, the sweep's points, the plan's key, and where
+//! the results go.
 
 use std::path::{Path, PathBuf};
 
 use tracer::integrator::Tracer;
 use tracer::job::{Overrides, RenderJob};
-use validation::tradeoff::findings::GRAZING_COS;
 
-use super::measure::Mask;
-use super::{jobs, sweep, truth, TradeoffArgs};
-use crate::error::jobs::{Input, JobError};
-use crate::error::{self, ErrorKind};
+use super::request::SweepRequest;
+use crate::tradeoff::error::TradeoffError;
+use crate::tradeoff::findings::GRAZING_COS;
+use crate::tradeoff::jobs::{self, Input, JobError};
+use crate::tradeoff::measure::Mask;
+use crate::tradeoff::{sweep, truth};
 
-/// The scene as the sweep and the budget measure it: with `--lambert`,
-/// its course_rough materials made the suite's Lambert stand-in.
-pub(crate) fn measured(scene: tracer::scene::Scene, lambert: bool) -> tracer::scene::Scene {
+/// The scene as the sweep and the budget measure it: with `lambert`, its
+/// course_rough materials made the suite's Lambert stand-in.
+pub fn measured_scene(scene: tracer::scene::Scene, lambert: bool) -> tracer::scene::Scene {
     if lambert {
         scene.course_rough_as_lambert()
     } else {
@@ -25,7 +26,7 @@ pub(crate) fn measured(scene: tracer::scene::Scene, lambert: bool) -> tracer::sc
 
 /// What every mode knows before it renders: the scene, settled at its
 /// size, the surface pixels, the sweep's points and the plan's key.
-pub(crate) struct Setup {
+pub struct Setup {
     /// The scene with the size given, at its own settings.
     pub job: RenderJob,
     /// The course material's diffuse albedo where above 1, and its name.
@@ -47,18 +48,18 @@ pub(crate) struct Setup {
 
 impl Setup {
     /// Loads the scene `args` names and plans its sweep.
-    pub fn new(args: &TradeoffArgs) -> error::Result<Self> {
+    pub fn new(args: &SweepRequest) -> Result<Self, TradeoffError> {
         let overrides = Overrides {
             width: args.width,
             height: args.height,
             allow_expensive: true,
             ..Overrides::default()
         };
-        let scene_error = |error| ErrorKind::Scene {
+        let scene_error = |error| TradeoffError::Scene {
             file: args.scene.clone(),
             error,
         };
-        let scene = measured(
+        let scene = measured_scene(
             tracer::scene::load(&args.scene).map_err(scene_error)?,
             args.lambert,
         );
@@ -100,7 +101,7 @@ impl Setup {
     /// The truth's cache as `args` asks for it.
     pub fn truth_request<'a>(
         &'a self,
-        args: &'a TradeoffArgs,
+        args: &'a SweepRequest,
         dir: &'a Path,
     ) -> truth::Request<'a> {
         truth::Request {
@@ -135,13 +136,18 @@ fn grazing(job: &RenderJob) -> Mask {
 /// Where a sweep writes.
 #[derive(Debug)]
 pub struct Files {
+    /// The directory of all three, and of the truth's cache.
     dir: PathBuf,
+    /// The record, `STEM.json`.
     pub json: PathBuf,
+    /// The table, `STEM.md`.
     pub markdown: PathBuf,
+    /// The Pareto plot, `STEM-pareto.png`.
     pub plot: PathBuf,
 }
 
 impl Files {
+    /// The files of stem `stem` in `dir`.
     pub fn new(dir: &Path, stem: &str) -> Self {
         Files {
             dir: dir.to_owned(),
@@ -151,18 +157,19 @@ impl Files {
         }
     }
 
+    /// The truth's cache.
     pub fn truth_dir(&self) -> PathBuf {
         self.dir.join("truth")
     }
 
     /// Creates the directories and checks the files as `render` checks
     /// its own, before any render is spent: none may be the `scene` being
-    /// read (`--out` its directory would write the record over it) or
-    /// anything a rename must not replace.
-    pub fn prepare(&self, scene: &Path) -> error::Result<()> {
+    /// read (the output directory the scene's own would write the record
+    /// over it) or anything a rename must not replace.
+    pub fn prepare(&self, scene: &Path) -> Result<(), TradeoffError> {
         let create = |dir: &Path| {
             std::fs::create_dir_all(dir).map_err(|source| {
-                ErrorKind::Output(
+                TradeoffError::Output(
                     safe_io::WriteError::Io {
                         path: dir.display().to_string(),
                         source,
@@ -174,7 +181,7 @@ impl Files {
         create(&self.dir)?;
         for file in [&self.json, &self.markdown, &self.plot] {
             safe_io::check_destination(file, &[scene]).map_err(|error| {
-                ErrorKind::Jobs(JobError::Write {
+                TradeoffError::Jobs(JobError::Write {
                     input: Input::Out,
                     error: error.into(),
                 })

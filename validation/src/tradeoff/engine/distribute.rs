@@ -1,7 +1,7 @@
 //! A sweep spread over machines by a scheduler that is not ours:
-//! `--plan` writes its jobs ([`super::jobs`]), `optics tradeoff-job` runs
-//! one ([`super::worker`]), and `--collect` merges their results into the
-//! record a sweep in one run writes, measured here by the same fixed
+//! [`plan_jobs`] writes its jobs ([`crate::tradeoff::jobs`]),
+//! [`super::run_job`] runs one, and [`collect`] merges their results into
+//! the record a sweep in one run writes, measured by the same fixed
 //! measures against the truth the two halves' jobs rendered.
 //!
 //! Collecting refuses, naming the file, the line and the job: results
@@ -10,34 +10,30 @@
 
 use std::path::{Path, PathBuf};
 
-use serde::Serialize;
+use super::renders::{Collected, Provenance, Renders, Timed};
+use super::request::SweepRequest;
+use super::setup::Setup;
+use crate::tradeoff::error::TradeoffError;
+use crate::tradeoff::jobs::{
+    self, Input, JobError, JobResult, LineKind, Place, Planned, TRUTH_JOBS,
+};
+use crate::tradeoff::truth;
 
-use super::jobs::{self, JobResult, Planned, TRUTH_JOBS};
-use super::truth;
-use super::{Provenance, Renders, Setup, Timed, TradeoffArgs};
-use crate::error::jobs::{Input, JobError, LineKind, Place};
-use crate::error::{self, ErrorKind};
-use crate::ui::Ui;
-use record::say;
-use record::{Answer, Record};
-
-/// How a collected sweep was run: the record's `collected` (absent from
-/// a sweep rendered in one run).
-#[derive(Clone, Debug, Serialize)]
-pub struct Collected {
-    /// The plan's id.
-    pub plan: String,
-    /// How many jobs it ran as.
+/// A sweep's plan, written: how many jobs it holds.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct PlanWritten {
+    /// The jobs, one line each: the truth's two halves, then each point.
     pub jobs: usize,
-    /// The machines the jobs ran on, each once, in the jobs' order.
-    pub machines: Vec<String>,
 }
 
-/// `--plan JOBS`: writes the sweep's jobs, one line each, whole or not at
-/// all, and prints how to run and collect them.
-pub fn plan(setup: &Setup, args: &TradeoffArgs, path: &Path, ui: &Ui) -> error::Result<()> {
+/// Writes the sweep's jobs to `path`, one line each, whole or not at all.
+pub fn plan_jobs(
+    setup: &Setup,
+    args: &SweepRequest,
+    path: &Path,
+) -> Result<PlanWritten, TradeoffError> {
     let refused = |error: safe_io::WriteError| {
-        ErrorKind::Jobs(JobError::Write {
+        TradeoffError::Jobs(JobError::Write {
             input: Input::Plan,
             error: error.into(),
         })
@@ -45,63 +41,26 @@ pub fn plan(setup: &Setup, args: &TradeoffArgs, path: &Path, ui: &Ui) -> error::
     // The rename would replace a FIFO, device node, directory or link, or
     // the scene itself, with the plan.
     safe_io::check_destination(path, &[&args.scene]).map_err(refused)?;
-    let lang = ui.lang;
     let planned = Planned::new(&setup.key, &setup.job, &setup.plan);
     let mut text = String::new();
     for job in &planned.jobs {
-        text += &serde_json::to_string(job).map_err(ErrorKind::Encode)?;
+        text += &serde_json::to_string(job).map_err(TradeoffError::Encode)?;
         text += "\n";
     }
     safe_io::write_atomically(path, text.as_bytes()).map_err(refused)?;
-    let count = planned.jobs.len();
-    let mut record = Record::new("tradeoff", String::new(), "");
-    record
-        .inputs_from(args)
-        .set_answer(Answer::List(vec![path.display().to_string().into()]), None);
-    record.step(|| {
-        say!(
-            lang,
-            "planned {} jobs of {} ({}×{}, plan {}): jobs 0 and 1 the truth's two halves, 2 to {} the {} settings; written: {}",
-            "{} feladat tervezve: {} ({}×{}, terv: {}): a 0. és 1. a referencia két fele, a 2–{}. a {} beállítás; kiírva: {}",
-            count,
-            setup.key.scene,
-            setup.key.width,
-            setup.key.height,
-            setup.key.id(),
-            count - 1,
-            count - TRUTH_JOBS,
-            path.display()
-        )
-    });
-    record.step(|| {
-        say!(
-            lang,
-            "run each, anywhere the scene file is: optics tradeoff-job {} INDEX --out RESULTS (INDEX 0 to {})",
-            "mindegyik futtatása bárhol, ahol a jelenetfájl elérhető: optics tradeoff-job {} INDEX --out RESULTS (INDEX: 0–{})",
-            path.display(),
-            count - 1
-        )
-    });
-    record.step(|| {
-        say!(
-            lang,
-            "then merge them here: {} --collect RESULTS",
-            "majd az összesítés itt: {} --collect RESULTS",
-            super::command_line(args)
-        )
-    });
-    record.detail("plan", setup.key.id()).detail("jobs", count);
-    ui.show_steps(&record)
+    Ok(PlanWritten {
+        jobs: planned.jobs.len(),
+    })
 }
 
-/// `--collect RESULTS…`: every job's result, checked against this sweep's
-/// plan, merged; the truth's halves cached as a sweep in one run caches
-/// them.
+/// Every job's result in `results` (files, or directories of them),
+/// checked against this sweep's plan, merged; the truth's halves cached as
+/// a sweep in one run caches them.
 pub fn collect(
     setup: &Setup,
     request: &truth::Request<'_>,
     results: &[PathBuf],
-) -> error::Result<Renders> {
+) -> Result<Renders, TradeoffError> {
     let planned = Planned::new(&setup.key, &setup.job, &setup.plan);
     let mut slots: Vec<Option<(Place, JobResult)>> = vec![None; planned.jobs.len()];
     for file in result_files(results)? {
@@ -173,7 +132,7 @@ pub fn collect(
 }
 
 /// The job `result` is of, if it is one of this sweep's plan.
-pub(crate) fn accept(
+pub fn accept(
     planned: &Planned,
     setup: &Setup,
     result: &JobResult,
