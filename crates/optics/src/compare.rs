@@ -13,6 +13,7 @@ use tracer::scene::IntegratorKind;
 use validation::user_render::{self, Comparison, Names, Request};
 
 use crate::error::compare::{IMAGE, VARIANCE};
+use crate::error::HarnessKind;
 use crate::error::{self, ErrorKind};
 use crate::ui::Ui;
 
@@ -76,7 +77,7 @@ pub fn run(args: &CompareArgs, ui: &Ui) -> error::Result<ExitCode> {
     match (comparison.verdict(), ui.json) {
         (Ok(()), _) => Ok(ExitCode::SUCCESS),
         (Err(_), true) => Ok(ExitCode::FAILURE),
-        (Err(disagrees), false) => Err(ErrorKind::Compare(disagrees).into()),
+        (Err(disagrees), false) => Err(ErrorKind::Harness(HarnessKind::Compare(disagrees)).into()),
     }
 }
 
@@ -88,7 +89,7 @@ fn failure(error: user_render::Error) -> error::Error {
     match error {
         Failure::Scene { file, error } => ErrorKind::Scene { file, error }.into(),
         Failure::Render(error) => error.into(),
-        Failure::Compare(error) => ErrorKind::Compare(error).into(),
+        Failure::Compare(error) => ErrorKind::Harness(HarnessKind::Compare(error)).into(),
     }
 }
 

@@ -102,59 +102,7 @@ fn hungarian(kind: &ErrorKind) -> String {
         ErrorKind::Threads(error) => format!("a renderelés szálai nem indíthatók: {error}"),
         ErrorKind::RadianceNotFinite { x, y } => render::not_finite_hu(*x, *y),
         #[cfg(feature = "harness")]
-        ErrorKind::Checkout(error) => harness::checkout_hu(error, None),
-        #[cfg(feature = "harness")]
-        ErrorKind::CheckoutWithFlag(error) => {
-            harness::checkout_hu(error, Some(crate::error::harness::CHECKOUT_FLAG))
-        }
-        #[cfg(feature = "harness")]
-        ErrorKind::Pipeline(error) => harness::pipeline_hu(error),
-        #[cfg(feature = "harness")]
-        ErrorKind::ChecksFailed { failed, checks } => {
-            format!("{checks} ellenőrzésből {failed} sikertelen")
-        }
-        #[cfg(feature = "harness")]
-        ErrorKind::Compare(error) => compare::compare_hu(error),
-        #[cfg(feature = "harness")]
-        ErrorKind::TruthIsBlack { file } => format!(
-            "SCENE {}: fizikai képe fekete: semmi fény nem jut a kamerába (fényforrás nélküli jelenetben csak a kurzus ambiens tagja látszik), így nincs mit fényterjedésben elcserélni",
-            file.display()
-        ),
-        #[cfg(feature = "harness")]
-        ErrorKind::BudgetUnreachable {
-            metric,
-            tolerance,
-            best,
-            settings,
-            top_spp,
-            need,
-        } => {
-            let tolerance = validation::tradeoff::budget::written(*tolerance);
-            let need = match (need, top_spp) {
-                (validation::tradeoff::budget::Need::Samples { spp }, Some(top)) => format!(
-                    "2^{} = {spp} minta kellene pixelenként (kettőhatvány, ahogy a költségvetés renderel), több, mint a legtöbb, amennyivel renderel, {top}",
-                    spp.trailing_zeros()
-                ),
-                (validation::tradeoff::budget::Need::Capped { spp }, _) => format!(
-                    "több minta sem éri el: a zaja {spp} minta fölött már nem csökken, ott a kausztikus térkép fotonjai a legtöbbek"
-                ),
-                (validation::tradeoff::budget::Need::Floor, _) => "semennyi minta nem éri el: már az alsó határa, a torzítás a próba és a referencia zajával együtt, fölötte van (több --pilot-spp a próba részét csökkenti)".to_owned(),
-                _ => "semennyi minta nem éri el: már a torzítás maga fölötte van".to_owned(),
-            };
-            format!(
-                "--tolerance {tolerance}: a(z) {metric} {tolerance} nem érhető el; a legjobb {metric} ≤ {best:.4}, ezzel: {settings}; {need}"
-            )
-        }
-        #[cfg(feature = "harness")]
-        ErrorKind::BudgetPilotNoisy { pilot_spp } => format!(
-            "--pilot-spp {pilot_spp}: a próba nem tudja elválasztani a felületek fényét a zajától (energiája három szórásnyival lejjebb nem nagyobb 0-nál), így relatív hiba nem becsülhető; a jelenet lehet fekete, vagy fénye nőhet a mélységgel (a course_rough π kd albedója 1 fölött: a --lambert az `optics tradeoff --lambert` helyettesítőjével mér); próbálj több próbamintát"
-        ),
-        #[cfg(feature = "harness")]
-        ErrorKind::BudgetEnergyGain { material, gain } => format!(
-            "--lambert: a(z) \"{material}\" anyag {gain:.2}-szer annyi fényt ver vissza, mint amennyit kap (a course_rough π kd albedója), így fénye minden visszaverődéssel nő, nincs konvergáló referencia és a hiba nem korlátozható; a --lambert az `optics tradeoff --lambert` helyettesítőjével számol"
-        ),
-        #[cfg(feature = "harness")]
-        ErrorKind::Jobs(error) => jobs::jobs_hu(error),
+        ErrorKind::Harness(kind) => harness::harness_hu(kind),
     }
 }
 

@@ -7,7 +7,7 @@
 //!
 //! A sweep renders here, in one run, or as independent jobs that a
 //! scheduler spreads over machines: `--plan` writes them, `optics
-//! tradeoff-job` runs one ([`job`]), `--collect` merges their results;
+//! tradeoff-job` runs one, `--collect` merges their results;
 //! both end in the same measures and the same record.
 
 mod args;

@@ -11,7 +11,7 @@ use validation::checkout::Checkout;
 use validation::pipeline::{self, Options, Outcome, PythonOptions, Step};
 use validation::python::SetUp;
 
-use crate::error::{self, ErrorKind};
+use crate::error::{self, ErrorKind, HarnessKind};
 use crate::ui::Ui;
 use record::{say, Lang};
 use record::{Answer, Record};
@@ -67,7 +67,7 @@ impl ValidateArgs {
     /// The pipeline's options: the checkout found, the flags as they are.
     fn options(&self) -> error::Result<Options> {
         let checkout =
-            Checkout::find(self.checkout.as_deref()).map_err(ErrorKind::CheckoutWithFlag)?;
+            Checkout::find(self.checkout.as_deref()).map_err(HarnessKind::CheckoutWithFlag)?;
         // The command as typed, by the program's name rather than its build path.
         let command = std::iter::once("optics".to_owned())
             .chain(std::env::args().skip(1))
@@ -104,16 +104,16 @@ pub fn run(args: &ValidateArgs, ui: &Ui) -> error::Result<ExitCode> {
     if let Some(bar) = &bar {
         bar.finish_and_clear();
     }
-    let outcome = outcome.map_err(ErrorKind::Pipeline)?;
+    let outcome = outcome.map_err(HarnessKind::Pipeline)?;
     ui.show_steps(&record(args, &outcome, ui.lang))?;
     let s = &outcome.report.summary;
     match (outcome.passed(), ui.json) {
         (true, _) => Ok(ExitCode::SUCCESS),
         (false, true) => Ok(ExitCode::FAILURE),
-        (false, false) => Err(ErrorKind::ChecksFailed {
+        (false, false) => Err(ErrorKind::Harness(HarnessKind::ChecksFailed {
             failed: s.failed,
             checks: s.checks,
-        }
+        })
         .into()),
     }
 }

@@ -8,8 +8,11 @@ use std::fmt;
 use validation::tradeoff::budget::Need;
 
 #[cfg(feature = "harness")]
+use super::harness::HarnessKind;
+use super::kind::ErrorKind;
+use super::usage_text;
+#[cfg(feature = "harness")]
 use super::{compare, harness};
-use super::{usage_text, ErrorKind};
 
 impl fmt::Display for ErrorKind {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
@@ -84,30 +87,33 @@ impl fmt::Display for ErrorKind {
                  exceeds f32 there; nothing was written"
             ),
             #[cfg(feature = "harness")]
-            ErrorKind::Checkout(error) => f.write_str(&harness::checkout_en(error, None)),
-            #[cfg(feature = "harness")]
-            ErrorKind::CheckoutWithFlag(error) => {
+            ErrorKind::Harness(kind) => write!(f, "{kind}"),
+        }
+    }
+}
+
+#[cfg(feature = "harness")]
+impl fmt::Display for HarnessKind {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            HarnessKind::Checkout(error) => f.write_str(&harness::checkout_en(error, None)),
+            HarnessKind::CheckoutWithFlag(error) => {
                 f.write_str(&harness::checkout_en(error, Some(harness::CHECKOUT_FLAG)))
             }
-            #[cfg(feature = "harness")]
-            ErrorKind::Pipeline(error) => match harness::pipeline_lead(error) {
+            HarnessKind::Pipeline(error) => match harness::pipeline_lead(error) {
                 Some(lead) => write!(f, "{}: {error}", lead.en),
                 None => write!(f, "{error}"),
             },
-            #[cfg(feature = "harness")]
-            ErrorKind::ChecksFailed { failed, checks } => {
+            HarnessKind::ChecksFailed { failed, checks } => {
                 write!(f, "{failed} of {checks} checks failed")
             }
-            #[cfg(feature = "harness")]
-            ErrorKind::Compare(error) => compare::english(error, f),
-            #[cfg(feature = "harness")]
-            ErrorKind::TruthIsBlack { file } => write!(
+            HarnessKind::Compare(error) => compare::english(error, f),
+            HarnessKind::TruthIsBlack { file } => write!(
                 f,
                 "SCENE {}: its physical render is black: no light reaches the camera (a scene without lights shows only the course's ambient term), so there is no light transport to trade",
                 file.display()
             ),
-            #[cfg(feature = "harness")]
-            ErrorKind::BudgetUnreachable {
+            HarnessKind::BudgetUnreachable {
                 metric,
                 tolerance,
                 best,
@@ -140,18 +146,15 @@ impl fmt::Display for ErrorKind {
                     ),
                 }
             }
-            #[cfg(feature = "harness")]
-            ErrorKind::BudgetPilotNoisy { pilot_spp } => write!(
+            HarnessKind::BudgetPilotNoisy { pilot_spp } => write!(
                 f,
                 "--pilot-spp {pilot_spp}: the pilot cannot tell the light on the surfaces from its noise (its energy, three standard deviations down, is not above 0), so no relative error can be predicted; the scene may be black, or its light may grow with depth (course_rough's albedo π kd above 1: give --lambert to measure it with the stand-in `optics tradeoff --lambert` uses); try more pilot samples"
             ),
-            #[cfg(feature = "harness")]
-            ErrorKind::BudgetEnergyGain { material, gain } => write!(
+            HarnessKind::BudgetEnergyGain { material, gain } => write!(
                 f,
                 "--lambert: material \"{material}\" reflects {gain:.2} times the light it receives (course_rough's albedo π kd), so its light grows with every bounce, no ground truth converges and no error can be bounded; give --lambert to budget the scene with the stand-in `optics tradeoff --lambert` uses"
             ),
-            #[cfg(feature = "harness")]
-            ErrorKind::Jobs(error) => write!(f, "{}", error.named(super::jobs::flag)),
+            HarnessKind::Jobs(error) => write!(f, "{}", error.named(super::jobs::flag)),
         }
     }
 }

@@ -1,6 +1,9 @@
-//! The harness's errors as `optics validate` reports them: each kind's
-//! stable name, the flag (or variable) that sets what it concerns, and the
-//! advice about a missing checkout that the reporting command accepts.
+//! The harness's errors as the commands of the `harness` feature report
+//! them ([`HarnessKind`]): each kind's stable name, the flag (or variable)
+//! that sets what it concerns, and the advice about a missing checkout that
+//! the reporting command accepts.
+
+use std::path::PathBuf;
 
 use validation::checkout::{CheckoutError, Via, ENV};
 use validation::pipeline::PipelineError;
@@ -175,5 +178,107 @@ mod tests {
             checkout_field(&not_found(), Some(CHECKOUT_FLAG)),
             CHECKOUT_FLAG
         );
+    }
+}
+
+/// The failures of the commands the `harness` feature adds: the
+/// cross-check harness, `compare`, the trade-off sweep and its jobs, and
+/// the accuracy budget.
+#[derive(Debug)]
+pub enum HarnessKind {
+    /// No usable checkout of the suite, for a command without `--checkout`
+    /// (`OPTICS_CHECKOUT`, or the working directory's).
+    Checkout(validation::checkout::CheckoutError),
+    /// No usable checkout, for a command that takes `--checkout`.
+    CheckoutWithFlag(validation::checkout::CheckoutError),
+    /// The harness could not run to the end.
+    Pipeline(validation::pipeline::PipelineError),
+    /// The harness ran to the end and some of its checks failed.
+    ChecksFailed {
+        /// The checks that failed.
+        failed: usize,
+        /// All checks run.
+        checks: usize,
+    },
+    /// `optics compare` could not compare, or found the image different.
+    Compare(super::compare::CompareError),
+    /// `optics tradeoff` on a scene whose physical render is black (no
+    /// light reaches the camera): there is no light transport to trade.
+    TruthIsBlack {
+        /// The scene file, as given.
+        file: PathBuf,
+    },
+    /// `optics render --tolerance` that no candidate is predicted to reach.
+    BudgetUnreachable {
+        /// The metric's name.
+        metric: &'static str,
+        /// The tolerance asked for.
+        tolerance: f64,
+        /// The smallest bound any candidate reaches.
+        best: f64,
+        /// Its settings, in words, at the most samples the budget renders
+        /// it at.
+        settings: String,
+        /// Those samples per pixel (a power of two), `None` for a
+        /// deterministic candidate.
+        top_spp: Option<u32>,
+        /// What it would need to reach the tolerance.
+        need: validation::tradeoff::budget::Need,
+    },
+    /// `optics render --tolerance` whose pilot cannot bound the light the
+    /// truth carries above 0: black, or too noisy at its samples.
+    BudgetPilotNoisy {
+        /// The pilot's samples per pixel.
+        pilot_spp: u32,
+    },
+    /// `optics render --tolerance` of a scene whose rough material reflects
+    /// more light than it receives (the course's `π kd` above 1), without
+    /// `--lambert`: its light grows with depth, no truth converges and no
+    /// bound holds.
+    BudgetEnergyGain {
+        /// The material's name in the scene file.
+        material: String,
+        /// What it reflects for what it receives (its largest channel).
+        gain: f32,
+    },
+    /// A sweep spread over machines: a job or result line refused, a job
+    /// not in the plan, results missing or given twice.
+    Jobs(super::jobs::JobError),
+}
+
+impl HarnessKind {
+    /// The kind's stable name, the `kind` of the JSON error object.
+    pub fn name(&self) -> &'static str {
+        match self {
+            HarnessKind::Checkout(error) | HarnessKind::CheckoutWithFlag(error) => {
+                checkout_name(error)
+            }
+            HarnessKind::Pipeline(error) => pipeline_name(error),
+            HarnessKind::ChecksFailed { .. } => "harness.checks_failed",
+            HarnessKind::Compare(error) => error.name(),
+            HarnessKind::TruthIsBlack { .. } => "tradeoff.truth_is_black",
+            HarnessKind::BudgetUnreachable { .. } => "budget.unreachable",
+            HarnessKind::BudgetPilotNoisy { .. } => "budget.pilot_noisy",
+            HarnessKind::BudgetEnergyGain { .. } => "budget.energy_gain",
+            HarnessKind::Jobs(error) => error.name(),
+        }
+    }
+
+    /// The argument, flag or field the failure concerns.
+    pub(crate) fn field(&self) -> Option<String> {
+        match self {
+            HarnessKind::Checkout(error) => Some(checkout_field(error, None).to_owned()),
+            HarnessKind::CheckoutWithFlag(error) => {
+                Some(checkout_field(error, Some(CHECKOUT_FLAG)).to_owned())
+            }
+            HarnessKind::Pipeline(error) => pipeline_field(error),
+            HarnessKind::ChecksFailed { .. } => None,
+            HarnessKind::Compare(error) => super::compare::field(error),
+            HarnessKind::TruthIsBlack { .. } => Some("SCENE".to_owned()),
+            HarnessKind::BudgetUnreachable { .. } => Some("--tolerance".to_owned()),
+            HarnessKind::BudgetPilotNoisy { .. } => Some("--pilot-spp".to_owned()),
+            HarnessKind::BudgetEnergyGain { .. } => Some("--lambert".to_owned()),
+            HarnessKind::Jobs(error) => error.field(super::jobs::flag),
+        }
     }
 }

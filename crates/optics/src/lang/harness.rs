@@ -9,6 +9,7 @@ use validation::reference::ReferenceError;
 use validation::regenerate::RegenerateError;
 
 use super::render::output_hu;
+use crate::error::HarnessKind;
 
 /// No usable checkout: what named the directory and what it lacks, or
 /// where none was found and the advice that a command whose checkout flag
@@ -138,5 +139,55 @@ fn task_hu(task: &Task) -> String {
         }
         Task::CheckPins => "a telepített Python-csomagok ellenőrzése".to_owned(),
         Task::Script(script) => script.clone(),
+    }
+}
+
+/// A failure of the `harness` feature's commands in Hungarian.
+pub fn harness_hu(kind: &HarnessKind) -> String {
+    match kind {
+        HarnessKind::Checkout(error) => checkout_hu(error, None),
+        HarnessKind::CheckoutWithFlag(error) => {
+            checkout_hu(error, Some(crate::error::harness::CHECKOUT_FLAG))
+        }
+        HarnessKind::Pipeline(error) => pipeline_hu(error),
+        HarnessKind::ChecksFailed { failed, checks } => {
+            format!("{checks} ellenőrzésből {failed} sikertelen")
+        }
+        HarnessKind::Compare(error) => super::compare::compare_hu(error),
+        HarnessKind::TruthIsBlack { file } => format!(
+            "SCENE {}: fizikai képe fekete: semmi fény nem jut a kamerába (fényforrás nélküli jelenetben csak a kurzus ambiens tagja látszik), így nincs mit fényterjedésben elcserélni",
+            file.display()
+        ),
+        HarnessKind::BudgetUnreachable {
+            metric,
+            tolerance,
+            best,
+            settings,
+            top_spp,
+            need,
+        } => {
+            let tolerance = validation::tradeoff::budget::written(*tolerance);
+            let need = match (need, top_spp) {
+                (validation::tradeoff::budget::Need::Samples { spp }, Some(top)) => format!(
+                    "2^{} = {spp} minta kellene pixelenként (kettőhatvány, ahogy a költségvetés renderel), több, mint a legtöbb, amennyivel renderel, {top}",
+                    spp.trailing_zeros()
+                ),
+                (validation::tradeoff::budget::Need::Capped { spp }, _) => format!(
+                    "több minta sem éri el: a zaja {spp} minta fölött már nem csökken, ott a kausztikus térkép fotonjai a legtöbbek"
+                ),
+                (validation::tradeoff::budget::Need::Floor, _) => "semennyi minta nem éri el: már az alsó határa, a torzítás a próba és a referencia zajával együtt, fölötte van (több --pilot-spp a próba részét csökkenti)".to_owned(),
+                _ => "semennyi minta nem éri el: már a torzítás maga fölötte van".to_owned(),
+            };
+            format!(
+                "--tolerance {tolerance}: a(z) {metric} {tolerance} nem érhető el; a legjobb {metric} ≤ {best:.4}, ezzel: {settings}; {need}"
+            )
+        }
+        HarnessKind::BudgetPilotNoisy { pilot_spp } => format!(
+            "--pilot-spp {pilot_spp}: a próba nem tudja elválasztani a felületek fényét a zajától (energiája három szórásnyival lejjebb nem nagyobb 0-nál), így relatív hiba nem becsülhető; a jelenet lehet fekete, vagy fénye nőhet a mélységgel (a course_rough π kd albedója 1 fölött: a --lambert az `optics tradeoff --lambert` helyettesítőjével mér); próbálj több próbamintát"
+        ),
+        HarnessKind::BudgetEnergyGain { material, gain } => format!(
+            "--lambert: a(z) \"{material}\" anyag {gain:.2}-szer annyi fényt ver vissza, mint amennyit kap (a course_rough π kd albedója), így fénye minden visszaverődéssel nő, nincs konvergáló referencia és a hiba nem korlátozható; a --lambert az `optics tradeoff --lambert` helyettesítőjével számol"
+        ),
+        HarnessKind::Jobs(error) => super::jobs::jobs_hu(error),
     }
 }

@@ -3,6 +3,8 @@
 
 use super::*;
 use crate::error::usage_text;
+#[cfg(feature = "harness")]
+use crate::error::HarnessKind;
 use clap::Parser;
 use radiometry::domain::{self, DomainError, Expected};
 use std::collections::BTreeSet;
@@ -211,42 +213,43 @@ fn slot(kind: &ErrorKind) -> usize {
         ErrorKind::Threads(_) => CALCULATOR + render_kinds::THREADS,
         ErrorKind::RadianceNotFinite { .. } => CALCULATOR + render_kinds::NOT_FINITE,
         #[cfg(feature = "harness")]
-        ErrorKind::Checkout(error) | ErrorKind::CheckoutWithFlag(error) => {
+        ErrorKind::Harness(HarnessKind::Checkout(error))
+        | ErrorKind::Harness(HarnessKind::CheckoutWithFlag(error)) => {
             CALCULATOR + render_kinds::SLOTS + harness_kinds::checkout_slot(error)
         }
         #[cfg(feature = "harness")]
-        ErrorKind::Pipeline(error) => {
+        ErrorKind::Harness(HarnessKind::Pipeline(error)) => {
             CALCULATOR + render_kinds::SLOTS + harness_kinds::pipeline_slot(error)
         }
         #[cfg(feature = "harness")]
-        ErrorKind::ChecksFailed { .. } => {
+        ErrorKind::Harness(HarnessKind::ChecksFailed { .. }) => {
             CALCULATOR + render_kinds::SLOTS + harness_kinds::CHECKS_FAILED
         }
         #[cfg(feature = "harness")]
-        ErrorKind::TruthIsBlack { .. } => {
+        ErrorKind::Harness(HarnessKind::TruthIsBlack { .. }) => {
             CALCULATOR + render_kinds::SLOTS + harness_kinds::TRUTH_IS_BLACK
         }
         #[cfg(feature = "harness")]
-        ErrorKind::BudgetUnreachable { .. } => {
+        ErrorKind::Harness(HarnessKind::BudgetUnreachable { .. }) => {
             CALCULATOR + render_kinds::SLOTS + harness_kinds::BUDGET_UNREACHABLE
         }
         #[cfg(feature = "harness")]
-        ErrorKind::BudgetPilotNoisy { .. } => {
+        ErrorKind::Harness(HarnessKind::BudgetPilotNoisy { .. }) => {
             CALCULATOR + render_kinds::SLOTS + harness_kinds::BUDGET_PILOT_NOISY
         }
         #[cfg(feature = "harness")]
-        ErrorKind::BudgetEnergyGain { .. } => {
+        ErrorKind::Harness(HarnessKind::BudgetEnergyGain { .. }) => {
             CALCULATOR + render_kinds::SLOTS + harness_kinds::BUDGET_ENERGY_GAIN
         }
         #[cfg(feature = "harness")]
-        ErrorKind::Compare(error) => {
+        ErrorKind::Harness(HarnessKind::Compare(error)) => {
             CALCULATOR
                 + render_kinds::SLOTS
                 + harness_kinds::SLOTS
                 + compare_kinds::compare_slot(error)
         }
         #[cfg(feature = "harness")]
-        ErrorKind::Jobs(error) => {
+        ErrorKind::Harness(HarnessKind::Jobs(error)) => {
             CALCULATOR
                 + render_kinds::SLOTS
                 + harness_kinds::SLOTS

@@ -3,6 +3,7 @@
 use super::{named, os_error};
 use crate::error::compare::{CompareError, PfmProblem};
 use crate::error::ErrorKind;
+use crate::error::HarnessKind;
 use safe_io::WriteError;
 use tracer::output::OutputError;
 use tracer::scene::{ErrorKind as Scene, SceneError};
@@ -30,7 +31,10 @@ pub fn compare_slot(error: &CompareError) -> usize {
 pub const SLOTS: usize = 13;
 
 fn compare(error: CompareError, quoted: &[&str]) -> (ErrorKind, Vec<String>) {
-    (ErrorKind::Compare(error), named(quoted))
+    (
+        ErrorKind::Harness(HarnessKind::Compare(error)),
+        named(quoted),
+    )
 }
 
 /// One example of each kind (and of each PFM problem), with the text it

@@ -2,7 +2,7 @@
 //! pipeline that could not run to the end, failed checks.
 
 use super::{named, os_error};
-use crate::error::ErrorKind;
+use crate::error::{ErrorKind, HarnessKind};
 use safe_io::WriteError;
 use tracer::output::OutputError;
 use validation::checkout::{CheckoutError, Via, MARKERS};
@@ -67,7 +67,10 @@ fn exit_status() -> std::process::ExitStatus {
 }
 
 fn pipeline(error: PipelineError, quoted: &[&str]) -> (ErrorKind, Vec<String>) {
-    (ErrorKind::Pipeline(error), named(quoted))
+    (
+        ErrorKind::Harness(HarnessKind::Pipeline(error)),
+        named(quoted),
+    )
 }
 
 /// One example of each kind, with the text it quotes verbatim.
@@ -77,17 +80,17 @@ pub fn examples() -> Vec<(ErrorKind, Vec<String>)> {
     let reference = "validation/reference/metals.json";
     let mut kinds = vec![
         (
-            ErrorKind::Checkout(CheckoutError::NotACheckout {
+            ErrorKind::Harness(HarnessKind::Checkout(CheckoutError::NotACheckout {
                 via: Via::Environment,
                 path: "/srv/elsewhere".into(),
                 marker: MARKERS[1],
-            }),
+            })),
             named(&["OPTICS_CHECKOUT", "/srv/elsewhere", MARKERS[1]]),
         ),
         (
-            ErrorKind::Checkout(CheckoutError::NotFound {
+            ErrorKind::Harness(HarnessKind::Checkout(CheckoutError::NotFound {
                 start: "/tmp/work".into(),
-            }),
+            })),
             named(&[
                 "OPTICS_CHECKOUT=DIR",
                 "OPTICS_CHECKOUT",
@@ -97,9 +100,9 @@ pub fn examples() -> Vec<(ErrorKind, Vec<String>)> {
             ]),
         ),
         (
-            ErrorKind::CheckoutWithFlag(CheckoutError::NotFound {
+            ErrorKind::Harness(HarnessKind::CheckoutWithFlag(CheckoutError::NotFound {
                 start: "/tmp/work".into(),
-            }),
+            })),
             named(&[
                 "--checkout DIR",
                 "OPTICS_CHECKOUT=DIR",
@@ -110,11 +113,11 @@ pub fn examples() -> Vec<(ErrorKind, Vec<String>)> {
             ]),
         ),
         (
-            ErrorKind::CheckoutWithFlag(CheckoutError::NotACheckout {
+            ErrorKind::Harness(HarnessKind::CheckoutWithFlag(CheckoutError::NotACheckout {
                 via: Via::Explicit,
                 path: "/srv/elsewhere".into(),
                 marker: MARKERS[0],
-            }),
+            })),
             named(&["--checkout /srv/elsewhere", MARKERS[0]]),
         ),
         pipeline(
@@ -214,27 +217,27 @@ pub fn examples() -> Vec<(ErrorKind, Vec<String>)> {
             ],
         ),
         (
-            ErrorKind::ChecksFailed {
+            ErrorKind::Harness(HarnessKind::ChecksFailed {
                 failed: 2,
                 checks: 40,
-            },
+            }),
             vec![],
         ),
         (
-            ErrorKind::TruthIsBlack {
+            ErrorKind::Harness(HarnessKind::TruthIsBlack {
                 file: "scenes/kaleidoscope.json".into(),
-            },
+            }),
             named(&["SCENE", "scenes/kaleidoscope.json"]),
         ),
         (
-            ErrorKind::BudgetUnreachable {
+            ErrorKind::Harness(HarnessKind::BudgetUnreachable {
                 metric: "rel_rmse",
                 tolerance: 1e-7,
                 best: 0.0123,
                 settings: "path, 65536 spp, max_depth 64, fresnel exact".into(),
                 top_spp: Some(65536),
                 need: validation::tradeoff::budget::Need::Samples { spp: 1 << 20 },
-            },
+            }),
             named(&[
                 "--tolerance 1e-7",
                 "rel_rmse",
@@ -243,14 +246,14 @@ pub fn examples() -> Vec<(ErrorKind, Vec<String>)> {
             ]),
         ),
         (
-            ErrorKind::BudgetUnreachable {
+            ErrorKind::Harness(HarnessKind::BudgetUnreachable {
                 metric: "delta_e_p99",
                 tolerance: 0.5,
                 best: 14.6475,
                 settings: "path, 65536 spp, max_depth 1, fresnel exact".into(),
                 top_spp: Some(65536),
                 need: validation::tradeoff::budget::Need::Floor,
-            },
+            }),
             named(&[
                 "--tolerance 0.5",
                 "delta_e_p99",
@@ -259,14 +262,14 @@ pub fn examples() -> Vec<(ErrorKind, Vec<String>)> {
             ]),
         ),
         (
-            ErrorKind::BudgetUnreachable {
+            ErrorKind::Harness(HarnessKind::BudgetUnreachable {
                 metric: "rel_rmse",
                 tolerance: 1e-3,
                 best: 0.0612,
                 settings: "whitted, max_depth 64, fresnel exact".into(),
                 top_spp: None,
                 need: validation::tradeoff::budget::Need::Never,
-            },
+            }),
             named(&[
                 "--tolerance 1e-3",
                 "rel_rmse",
@@ -274,14 +277,14 @@ pub fn examples() -> Vec<(ErrorKind, Vec<String>)> {
             ]),
         ),
         (
-            ErrorKind::BudgetUnreachable {
+            ErrorKind::Harness(HarnessKind::BudgetUnreachable {
                 metric: "rel_rmse",
                 tolerance: 1e-3,
                 best: 0.0123,
                 settings: "photon, 4096 spp, max_depth 16, fresnel exact".into(),
                 top_spp: Some(4096),
                 need: validation::tradeoff::budget::Need::Capped { spp: 4096 },
-            },
+            }),
             named(&[
                 "--tolerance 1e-3",
                 "rel_rmse",
@@ -290,10 +293,10 @@ pub fn examples() -> Vec<(ErrorKind, Vec<String>)> {
             ]),
         ),
         (
-            ErrorKind::BudgetEnergyGain {
+            ErrorKind::Harness(HarnessKind::BudgetEnergyGain {
                 material: "green".to_owned(),
                 gain: 2.51,
-            },
+            }),
             named(&[
                 "`optics tradeoff --lambert`",
                 "--lambert",
@@ -303,7 +306,7 @@ pub fn examples() -> Vec<(ErrorKind, Vec<String>)> {
             ]),
         ),
         (
-            ErrorKind::BudgetPilotNoisy { pilot_spp: 8 },
+            ErrorKind::Harness(HarnessKind::BudgetPilotNoisy { pilot_spp: 8 }),
             named(&[
                 "--pilot-spp 8",
                 "course_rough",

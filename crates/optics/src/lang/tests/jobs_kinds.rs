@@ -4,6 +4,7 @@
 use super::{named, os_error};
 use crate::error::jobs::{ImageProblem, Input, JobError, LineKind, Place};
 use crate::error::ErrorKind;
+use crate::error::HarnessKind;
 use safe_io::WriteError;
 use tracer::output::OutputError;
 
@@ -33,7 +34,7 @@ pub fn jobs_slot(error: &JobError) -> usize {
 pub const SLOTS: usize = 15;
 
 fn jobs(error: JobError, quoted: &[&str]) -> (ErrorKind, Vec<String>) {
-    (ErrorKind::Jobs(error), named(quoted))
+    (ErrorKind::Harness(HarnessKind::Jobs(error)), named(quoted))
 }
 
 fn at(line: usize) -> Place {
