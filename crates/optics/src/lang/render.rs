@@ -86,18 +86,8 @@ pub(super) fn scene_kind_hu(kind: &Scene) -> String {
         Scene::UnknownMaterial { name, defined } => {
             format!("nincs {name:?} nevű anyag; a jelenet anyagai: {defined:?}")
         }
-        Scene::RadianceOverflow { bound } => format!(
-            "a jelenet számai együtt legfeljebb {bound:.3e} W/(sr·m²) sugársűrűséget adnak, \
-             ami kívül esik az f32 tartományán ({:.3e}): a fényeket vagy az együtthatókat \
-             kisebbre kell venni",
-            f32::MAX
-        ),
-        Scene::TooExpensive { rays } => format!(
-            "ez a kép legfeljebb {rays:.3e} sugarat indíthat, több a drága renderelés \
-             engedélye nélkül megengedett {:e}-nál: csökkentse a max_depth, az spp értékét \
-             vagy a méretet, vagy növelje a throughput_cutoff értékét",
-            tracer::needs::MAX_RAYS
-        ),
+        Scene::RadianceOverflow { bound } => radiance_overflow_hu(*bound),
+        Scene::TooExpensive { rays } => too_expensive_hu(*rays),
         Scene::DielectricWithoutInside => "a dielektrikumhoz belső térrel bíró zárt felület \
                                            kell: csak gömb lehet dielektrikum"
             .to_owned(),
@@ -112,16 +102,7 @@ pub(super) fn scene_kind_hu(kind: &Scene) -> String {
             "a(z) {integrator} integrátor nem számol {precision} pontossággal: az f64 \
              pontosság a local és a whitted integrátoré; a path, a photon és a course f32"
         ),
-        Scene::Bump(FieldError::NotFinite { value, .. }) => {
-            format!("véges számnak kell lennie, kapott érték: {value}")
-        }
-        Scene::Bump(FieldError::PeriodTooShort { period }) => format!(
-            "legalább {MIN_PERIOD} (16 véges differencia lépés) kell legyen, kapott érték: \
-             {period}"
-        ),
-        Scene::Bump(FieldError::TooSteep { slope, .. }) => {
-            format!("{slope:e} meredekséget ad, többet a megengedett {MAX_SLOPE:e} értéknél")
-        }
+        Scene::Bump(error) => bump_hu(error),
         Scene::BumpOnSmoothSurface => "a felületi egyenetlenség leképezése csak érdes és \
                                        megvilágítatlan anyagok árnyalását hajlítja, a \
                                        fémekét és a dielektrikumokét nem"
@@ -134,6 +115,42 @@ pub(super) fn scene_kind_hu(kind: &Scene) -> String {
                                              megadni"
             .to_owned(),
     }
+}
+
+/// A bump map's height field refused, in Hungarian.
+fn bump_hu(error: &FieldError) -> String {
+    match error {
+        FieldError::NotFinite { value, .. } => {
+            format!("véges számnak kell lennie, kapott érték: {value}")
+        }
+        FieldError::PeriodTooShort { period } => format!(
+            "legalább {MIN_PERIOD} (16 véges differencia lépés) kell legyen, kapott érték: \
+             {period}"
+        ),
+        FieldError::TooSteep { slope, .. } => {
+            format!("{slope:e} meredekséget ad, többet a megengedett {MAX_SLOPE:e} értéknél")
+        }
+    }
+}
+
+/// The scene's numbers bound a radiance past f32's range, in Hungarian.
+fn radiance_overflow_hu(bound: f64) -> String {
+    format!(
+        "a jelenet számai együtt legfeljebb {bound:.3e} W/(sr·m²) sugársűrűséget adnak, \
+         ami kívül esik az f32 tartományán ({:.3e}): a fényeket vagy az együtthatókat \
+         kisebbre kell venni",
+        f32::MAX
+    )
+}
+
+/// A render that may cast more rays than allowed unasked, in Hungarian.
+fn too_expensive_hu(rays: f64) -> String {
+    format!(
+        "ez a kép legfeljebb {rays:.3e} sugarat indíthat, több a drága renderelés \
+         engedélye nélkül megengedett {:e}-nál: csökkentse a max_depth, az spp értékét \
+         vagy a méretet, vagy növelje a throughput_cutoff értékét",
+        tracer::needs::MAX_RAYS
+    )
 }
 
 fn image_problem_hu(problem: &ImageProblem) -> String {
