@@ -8,7 +8,9 @@ use std::path::{Path, PathBuf};
 
 use super::findings::Findings;
 use super::record::{Point, Record};
-use super::{pareto, Verdict, MEASURES, SCHEMA, SCHEMA_VERSION};
+use super::pareto;
+use super::schema::{MEASURES, SCHEMA, SCHEMA_VERSION};
+use super::verdict::Verdict;
 use crate::check::Check;
 use crate::reference::{parse, ReferenceError};
 

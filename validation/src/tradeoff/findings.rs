@@ -9,7 +9,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::record::{Point, Record};
-use super::{Verdict, JUST_NOTICEABLE};
+use super::verdict::{Verdict, JUST_NOTICEABLE, WORTH_IT};
 use rows::{bounces, light_left_out, local_against_whitted, same_work, schlick};
 
 mod rows;
@@ -291,7 +291,7 @@ impl Findings {
         let mut worth_it = with(Verdict::WorthIt);
         worth_it.retain(|s| s.time_ratio < least);
         let mut no_gain = with(Verdict::Unseen);
-        no_gain.retain(|s| s.time_ratio > most.max(1.0 / super::WORTH_IT));
+        no_gain.retain(|s| s.time_ratio > most.max(1.0 / WORTH_IT));
         let mut upgrades: Vec<Upgrade> = rest
             .iter()
             .filter(|p| {

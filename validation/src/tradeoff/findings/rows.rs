@@ -6,7 +6,7 @@ use super::{
     Shortcut, NOISE_SIGMAS,
 };
 use crate::tradeoff::record::{Point, Record};
-use crate::tradeoff::JUST_NOTICEABLE;
+use crate::tradeoff::verdict::JUST_NOTICEABLE;
 
 /// Whether `p` does `base`'s work: as many rays, and a render that is
 /// theirs to the bit (no error against it at all).
