@@ -1,10 +1,11 @@
 //! The rows a finding reads: the scene's own point against the points of
 //! one axis, each reading what the record measured and nothing else.
 
-use super::{
+use super::field::{
     BounceStep, Bounces, GrazingCost, LeftOut, LightLeftOut, LocalAgainstWhitted, Schlick,
-    Shortcut, NOISE_SIGMAS,
+    Shortcut,
 };
+use super::thresholds::NOISE_SIGMAS;
 use crate::tradeoff::record::{Point, Record};
 use crate::tradeoff::verdict::JUST_NOTICEABLE;
 
