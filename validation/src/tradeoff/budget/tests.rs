@@ -3,7 +3,8 @@
 //! that the bound holds over seeds.
 
 use super::*;
-use crate::tradeoff::measure::{errors, Truth};
+use crate::tradeoff::measure::{errors, Mask, Truth};
+use tracer::render::Image;
 use glam::Vec3;
 
 fn image(pixels: Vec<Vec3>) -> Image {
