@@ -7,8 +7,8 @@
 use std::path::{Path, PathBuf};
 
 use super::findings::Findings;
-use super::record::{Point, Record};
 use super::pareto;
+use super::record::{Point, Record};
 use super::schema::{MEASURES, SCHEMA, SCHEMA_VERSION};
 use super::verdict::Verdict;
 use crate::check::Check;

@@ -4,8 +4,8 @@
 
 use super::*;
 use crate::tradeoff::measure::{errors, Mask, Truth};
-use tracer::render::Image;
 use glam::Vec3;
+use tracer::render::Image;
 
 fn image(pixels: Vec<Vec3>) -> Image {
     Image {

@@ -2,8 +2,7 @@
 //! one axis, each reading what the record measured and nothing else.
 
 use super::field::{
-    BounceStep, Bounces, GrazingCost, LeftOut, LightLeftOut, LocalAgainstWhitted, Schlick,
-    Shortcut,
+    BounceStep, Bounces, GrazingCost, LeftOut, LightLeftOut, LocalAgainstWhitted, Schlick, Shortcut,
 };
 use super::thresholds::NOISE_SIGMAS;
 use crate::tradeoff::record::{Point, Record};
