@@ -33,8 +33,33 @@ pub fn check_envmap() -> Check {
             "{ENVMAP_ROUND_TRIP:.2e} rad (lat-long, cube), 32 ε / m rad up to 4 √ε (sphere, m = |r + e|), the example to 4 ε"
         ),
     );
+    for v in directions() {
+        let Ok(r) = Direction::new(v) else {
+            check.fail(format!("{v}: refused as a direction"));
+            continue;
+        };
+        check.cases += 1;
+        let at = format!("{v}");
+        lat_long_and_cube_back(&mut check, r, &at);
+        sphere_back(&mut check, r, &at);
+    }
+    for map in ["lat-long", "cube"] {
+        if let Some(m) = check.worst(&format!("{map}: angle back (rad)")) {
+            if !(m.worst <= ENVMAP_ROUND_TRIP) {
+                check.fail(format!("{map}: {} comes back {:e} rad off", m.at, m.worst));
+            }
+        }
+    }
+    slides_example(&mut check);
+    check
+}
+
+/// The directions sent round the maps: 4096 spread evenly on the sphere
+/// (a golden-angle spiral), then the axes, the diagonals and the
+/// lat-long's seam.
+fn directions() -> impl Iterator<Item = DVec3> {
     let golden = std::f64::consts::PI * (3.0 - 5f64.sqrt());
-    let spread = (0..4096).map(|i| {
+    let spread = (0..4096).map(move |i| {
         let z = 1.0 - (f64::from(i) + 0.5) / 2048.0;
         let r = (1.0 - z * z).sqrt();
         let (sin, cos) = (golden * f64::from(i)).sin_cos();
@@ -54,58 +79,59 @@ pub fn check_envmap() -> Check {
         DVec3::new(1.0, -1e-300, 0.5),
         DVec3::new(1.0, 1.0, 0.0),
     ];
-    let angle = |a: Direction, b: Direction| refraction::angle_between(a.get(), b.get());
-    for v in spread.chain(special) {
-        let Ok(r) = Direction::new(v) else {
-            check.fail(format!("{v}: refused as a direction"));
-            continue;
-        };
-        check.cases += 1;
-        let at = format!("{v}");
-        let lat = LatLong::from_direction(r);
-        match LatLong::from_uv(lat.u(), lat.v()) {
-            Ok(back) => check.measure(
-                "lat-long: angle back (rad)",
-                angle(r, back.direction()),
-                &at,
-            ),
-            Err(e) => check.fail(format!("lat-long {at}: its own texel refused: {e:?}")),
-        }
-        let cube = CubeTexel::from_direction(r);
-        match CubeTexel::from_uv(cube.face(), cube.u(), cube.v()) {
-            Ok(back) => check.measure("cube: angle back (rad)", angle(r, back.direction()), &at),
-            Err(e) => check.fail(format!("cube {at}: its own texel refused: {e:?}")),
-        }
-        match SphereTexel::from_direction(r) {
-            SphereTexel::Disc(texel) => match SphereTexel::from_uv(texel.u(), texel.v()) {
-                Ok(back) => {
-                    let off = angle(r, back.direction());
-                    check.measure("sphere: angle back (rad)", off, &at);
-                    if !(off <= sphere_round_trip(texel.m())) {
-                        check.fail(format!(
-                            "sphere: {at} comes back {off:e} rad off (m = {})",
-                            texel.m()
-                        ));
-                    }
-                }
-                Err(e) => check.fail(format!("sphere {at}: its own texel refused: {e:?}")),
-            },
-            SphereTexel::Rim => {
-                if angle(r, SphereTexel::Rim.direction()) != 0.0 {
+    spread.chain(special)
+}
+
+/// The angle between two directions, radians.
+fn angle(a: Direction, b: Direction) -> f64 {
+    refraction::angle_between(a.get(), b.get())
+}
+
+/// `r` (written `at`) back from its lat-long and its cube texel: the
+/// angles measured, held to [`ENVMAP_ROUND_TRIP`] over all directions.
+fn lat_long_and_cube_back(check: &mut Check, r: Direction, at: &str) {
+    let lat = LatLong::from_direction(r);
+    match LatLong::from_uv(lat.u(), lat.v()) {
+        Ok(back) => check.measure("lat-long: angle back (rad)", angle(r, back.direction()), at),
+        Err(e) => check.fail(format!("lat-long {at}: its own texel refused: {e:?}")),
+    }
+    let cube = CubeTexel::from_direction(r);
+    match CubeTexel::from_uv(cube.face(), cube.u(), cube.v()) {
+        Ok(back) => check.measure("cube: angle back (rad)", angle(r, back.direction()), at),
+        Err(e) => check.fail(format!("cube {at}: its own texel refused: {e:?}")),
+    }
+}
+
+/// `r` (written `at`) back from its sphere-map texel, within
+/// [`sphere_round_trip`] of its stretch; on the rim, `(0, 0, −1)` alone.
+fn sphere_back(check: &mut Check, r: Direction, at: &str) {
+    match SphereTexel::from_direction(r) {
+        SphereTexel::Disc(texel) => match SphereTexel::from_uv(texel.u(), texel.v()) {
+            Ok(back) => {
+                let off = angle(r, back.direction());
+                check.measure("sphere: angle back (rad)", off, at);
+                if !(off <= sphere_round_trip(texel.m())) {
                     check.fail(format!(
-                        "sphere {at}: on the rim, which holds (0, 0, −1) alone"
+                        "sphere: {at} comes back {off:e} rad off (m = {})",
+                        texel.m()
                     ));
                 }
             }
-        }
-    }
-    for map in ["lat-long", "cube"] {
-        if let Some(m) = check.worst(&format!("{map}: angle back (rad)")) {
-            if !(m.worst <= ENVMAP_ROUND_TRIP) {
-                check.fail(format!("{map}: {} comes back {:e} rad off", m.at, m.worst));
+            Err(e) => check.fail(format!("sphere {at}: its own texel refused: {e:?}")),
+        },
+        SphereTexel::Rim => {
+            if angle(r, SphereTexel::Rim.direction()) != 0.0 {
+                check.fail(format!(
+                    "sphere {at}: on the rim, which holds (0, 0, −1) alone"
+                ));
             }
         }
     }
+}
+
+/// The slides' cube-map example: `(−3.2, 5.1, −8.4)` on the −Z face at
+/// `u = 29/42`, `v = 11/56`, worked by hand, to 4 ε.
+fn slides_example(check: &mut Check) {
     let example = CubeTexel::from_direction(
         Direction::new(DVec3::new(-3.2, 5.1, -8.4)).expect("a direction"),
     );
@@ -126,5 +152,4 @@ pub fn check_envmap() -> Check {
             example.v()
         ));
     }
-    check
 }

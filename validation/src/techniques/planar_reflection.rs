@@ -215,63 +215,18 @@ pub fn check_planar_reflection(
         &r.truth,
         2,
     ));
-    let (truth8, shortcut8) = (srgb8(&r.truth), srgb8(&r.shortcut));
     let mirror_pixels = r.on_mirror.iter().filter(|&&m| m).count();
     check.cases = r.truth.pixels.len();
-    let (mut off_geometry, mut fresnel, mut phantom, mut elsewhere) = (0usize, 0, 0, 0);
-    for p in 0..r.truth.pixels.len() {
-        let differs = disagree(&truth8, &shortcut8, p);
-        if !r.on_mirror[p] {
-            elsewhere += usize::from(differs);
-            continue;
-        }
-        if r.phantom[p] {
-            phantom += usize::from(differs);
-            continue;
-        }
-        let (t, f) = (
-            r.truth.pixels[p].as_dvec3(),
-            r.fresnel_weighted.pixels[p].as_dvec3(),
-        );
-        let relative = (t - f).abs().max_element() / t.max_element().max(1e-3);
-        check.measure_at(
-            "mirror, Fresnel-weighted: |pass − traced| / traced",
-            relative,
-            || format!("pixel {p}"),
-        );
-        off_geometry += usize::from(relative > GEOMETRY_RELATIVE);
-        fresnel += usize::from(differs);
-    }
-    let mask = Mask::from_hits(
-        &r.on_mirror
-            .iter()
-            .map(|&m| m.then_some(0))
-            .collect::<Vec<_>>(),
-    );
-    let e = errors(
-        std::slice::from_ref(&r.shortcut),
-        &Truth::new(r.truth.clone(), 0.0, &mask),
-        &mask,
-    );
+    let counts = Disagreements::count(&mut check, &r);
     let at = format!("{mirror_pixels} mirror pixels");
-    check.measure("mirror: relative RMSE", e.rel_rmse, &at);
-    check.measure("mirror: mean ΔE2000", e.delta_e_mean, &at);
-    check.measure(
-        "mirror, Fresnel-weighted: pixels beyond the rounding",
-        off_geometry as f64,
-        &at,
-    );
-    check.measure(
-        "pixels that disagree: the mirror's Fresnel",
-        fresnel as f64,
-        &at,
-    );
-    check.measure(
-        "pixels that disagree: the object behind the plane",
-        phantom as f64,
-        &at,
-    );
-    check.measure("pixels that disagree: off the mirror", elsewhere as f64, "");
+    mirror_errors(&mut check, &r, &at);
+    counts.measure(&mut check, &at);
+    let Disagreements {
+        off_geometry,
+        phantom,
+        elsewhere,
+        ..
+    } = counts;
     if off_geometry as f64 > GEOMETRY_EDGE_SHARE * mirror_pixels as f64 {
         check.fail(format!(
             "weighted by the exact law, {off_geometry} of {mirror_pixels} mirror pixels differ from the traced reflection"
@@ -286,6 +241,101 @@ pub fn check_planar_reflection(
         ));
     }
     check
+}
+
+/// The pixels where the shortcut disagrees with the truth, by their
+/// reason, and the mirror's pixels the Fresnel-weighted pass misses.
+struct Disagreements {
+    /// Mirror pixels whose Fresnel-weighted pass is beyond
+    /// [`GEOMETRY_RELATIVE`] of the traced reflection.
+    off_geometry: usize,
+    /// Mirror pixels that disagree, the object below the floor not in
+    /// them: the mirror's Fresnel.
+    fresnel: usize,
+    /// Mirror pixels that disagree where the object below the floor shows.
+    phantom: usize,
+    /// Pixels off the mirror that disagree.
+    elsewhere: usize,
+}
+
+impl Disagreements {
+    /// Counts them over every pixel of `r`, measuring each mirror pixel's
+    /// Fresnel-weighted pass against the traced reflection on the way.
+    fn count(check: &mut Check, r: &Reflections) -> Self {
+        let (truth8, shortcut8) = (srgb8(&r.truth), srgb8(&r.shortcut));
+        let (mut off_geometry, mut fresnel, mut phantom, mut elsewhere) = (0usize, 0, 0, 0);
+        for p in 0..r.truth.pixels.len() {
+            let differs = disagree(&truth8, &shortcut8, p);
+            if !r.on_mirror[p] {
+                elsewhere += usize::from(differs);
+                continue;
+            }
+            if r.phantom[p] {
+                phantom += usize::from(differs);
+                continue;
+            }
+            let (t, f) = (
+                r.truth.pixels[p].as_dvec3(),
+                r.fresnel_weighted.pixels[p].as_dvec3(),
+            );
+            let relative = (t - f).abs().max_element() / t.max_element().max(1e-3);
+            check.measure_at(
+                "mirror, Fresnel-weighted: |pass − traced| / traced",
+                relative,
+                || format!("pixel {p}"),
+            );
+            off_geometry += usize::from(relative > GEOMETRY_RELATIVE);
+            fresnel += usize::from(differs);
+        }
+        Disagreements {
+            off_geometry,
+            fresnel,
+            phantom,
+            elsewhere,
+        }
+    }
+
+    /// Measures each count, `at` naming the mirror's pixels.
+    fn measure(&self, check: &mut Check, at: &str) {
+        check.measure(
+            "mirror, Fresnel-weighted: pixels beyond the rounding",
+            self.off_geometry as f64,
+            at,
+        );
+        check.measure(
+            "pixels that disagree: the mirror's Fresnel",
+            self.fresnel as f64,
+            at,
+        );
+        check.measure(
+            "pixels that disagree: the object behind the plane",
+            self.phantom as f64,
+            at,
+        );
+        check.measure(
+            "pixels that disagree: off the mirror",
+            self.elsewhere as f64,
+            "",
+        );
+    }
+}
+
+/// The shortcut's relative RMSE and mean ΔE2000 against the truth over
+/// the mirror's pixels, by the sweep's measures; `at` names them.
+fn mirror_errors(check: &mut Check, r: &Reflections, at: &str) {
+    let mask = Mask::from_hits(
+        &r.on_mirror
+            .iter()
+            .map(|&m| m.then_some(0))
+            .collect::<Vec<_>>(),
+    );
+    let e = errors(
+        std::slice::from_ref(&r.shortcut),
+        &Truth::new(r.truth.clone(), 0.0, &mask),
+        &mask,
+    );
+    check.measure("mirror: relative RMSE", e.rel_rmse, at);
+    check.measure("mirror: mean ΔE2000", e.delta_e_mean, at);
 }
 
 /// The reflection matrix of [`mirror_scene`]'s floor.

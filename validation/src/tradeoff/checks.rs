@@ -7,8 +7,10 @@
 use std::path::{Path, PathBuf};
 
 use super::findings::Findings;
+use super::pareto;
 use super::record::{Point, Record};
-use super::{pareto, Verdict, MEASURES, SCHEMA, SCHEMA_VERSION};
+use super::schema::{MEASURES, SCHEMA, SCHEMA_VERSION};
+use super::verdict::Verdict;
 use crate::check::Check;
 use crate::reference::{parse, ReferenceError};
 
@@ -57,10 +59,39 @@ pub fn read(dir: &Path) -> Result<Vec<Read>, ReferenceError> {
 
 /// The check of one record, `file` named in it.
 pub fn check(file: &Path, record: &Result<Record, ReferenceError>) -> Check {
+    let mut check = announced(file);
+    let record = match record {
+        Ok(record) => record,
+        Err(e) => {
+            check.cases = 1;
+            check.fail(format!("{e}: regenerate with `{REGENERATE}`"));
+            return check;
+        }
+    };
+    check.cases = record.points.len();
+    current_and_converged(&mut check, record);
+    let Some(base) = record.points.first() else {
+        check.fail("no setting measured".into());
+        return check;
+    };
+    for point in &record.points {
+        physical(&mut check, point);
+    }
+    fronts(&mut check, &record.points);
+    verdicts(&mut check, base, &record.points[1..]);
+    against_mitsuba(&mut check, record);
+    findings(&mut check, record);
+    shortcuts(&mut check, base, &record.points[1..]);
+    check
+}
+
+/// The check of the record `file`, named and described, nothing yet
+/// found.
+fn announced(file: &Path) -> Check {
     let stem = file
         .file_stem()
         .map_or_else(String::new, |s| s.to_string_lossy().into_owned());
-    let mut check = Check::new(
+    Check::new(
         &format!("tradeoff.{stem}"),
         &format!("{stem}: the speed/accuracy trade of every shortcut the scene allows, as recorded"),
         &format!("{}, written by `{REGENERATE}`", file.display()),
@@ -71,16 +102,11 @@ pub fn check(file: &Path, record: &Result<Record, ReferenceError>) -> Check {
              every setting's light and relative RMSE finite and ≥ 0 and the ranking the one they give, \
              or a reason why there is no reference"
         ),
-    );
-    let record = match record {
-        Ok(record) => record,
-        Err(e) => {
-            check.cases = 1;
-            check.fail(format!("{e}: regenerate with `{REGENERATE}`"));
-            return check;
-        }
-    };
-    check.cases = record.points.len();
+    )
+}
+
+/// The record of this build's version, and its truth converged.
+fn current_and_converged(check: &mut Check, record: &Record) {
     if record.version != SCHEMA_VERSION {
         check.fail(format!(
             "written as version {}, this build reads {SCHEMA_VERSION}: regenerate with `{REGENERATE}`",
@@ -98,15 +124,11 @@ pub fn check(file: &Path, record: &Result<Record, ReferenceError>) -> Check {
         record.truth.noise_relative,
         "",
     );
-    let Some(base) = record.points.first() else {
-        check.fail("no setting measured".into());
-        return check;
-    };
-    for point in &record.points {
-        physical(&mut check, point);
-    }
-    fronts(&mut check, &record.points);
-    verdicts(&mut check, base, &record.points[1..]);
+}
+
+/// The record's Mitsuba truth held to what it must be, and its floor
+/// measured where there is one.
+fn against_mitsuba(check: &mut Check, record: &Record) {
     let labels: Vec<&str> = record.points.iter().map(|p| p.label.as_str()).collect();
     for failure in super::mitsuba::hold(record.mitsuba.as_ref(), &labels) {
         check.fail(failure);
@@ -123,6 +145,10 @@ pub fn check(file: &Path, record: &Result<Record, ReferenceError>) -> Check {
             &m.estimate,
         );
     }
+}
+
+/// The findings recorded against those the record's rows give.
+fn findings(check: &mut Check, record: &Record) {
     match &record.findings {
         Some(recorded) if *recorded == Findings::of(record) => {}
         Some(_) => {
@@ -132,19 +158,24 @@ pub fn check(file: &Path, record: &Result<Record, ReferenceError>) -> Check {
             "no findings: written before they were recorded; regenerate with `{REGENERATE}`"
         )),
     }
+}
+
+/// What the record says of the scene's own settings `base` and of the
+/// `shortcuts`, measured for the report.
+fn shortcuts(check: &mut Check, base: &Point, shortcuts: &[Point]) {
     check.measure(
         "the scene's own settings: relative RMSE from all the light",
         base.errors.rel_rmse,
         &base.label,
     );
-    for p in &record.points[1..] {
+    for p in shortcuts {
         check.measure(
             "a shortcut's ΔE p99 against the scene's own",
             p.against_scene.delta_e_p99,
             &p.label,
         );
     }
-    let worth = record.points[1..]
+    let worth = shortcuts
         .iter()
         .filter(|p| p.verdict == Some(Verdict::WorthIt))
         .count();
@@ -153,7 +184,6 @@ pub fn check(file: &Path, record: &Result<Record, ReferenceError>) -> Check {
         worth as f64,
         "",
     );
-    check
 }
 
 /// Every measure of `point` a value the measure can take.

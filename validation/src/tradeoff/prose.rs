@@ -9,7 +9,7 @@ use super::findings::{
     Findings, MetalRgb, RgbOutcome, Schlick, Shortcut, TimingNoise, GRAZING_COS,
 };
 use super::mitsuba::SecondTruth;
-use super::{Verdict, JUST_NOTICEABLE, WORTH_IT};
+use super::verdict::{Verdict, JUST_NOTICEABLE, WORTH_IT};
 use light::{bounces, light};
 
 use record::{say, Lang};

@@ -6,7 +6,7 @@ use serde::{Deserialize, Serialize};
 
 use super::findings::{Findings, MetalRgb};
 use super::mitsuba::MitsubaTruth;
-use super::Verdict;
+use super::verdict::Verdict;
 
 /// One scene's sweep.
 #[derive(Clone, Debug, Serialize, Deserialize)]

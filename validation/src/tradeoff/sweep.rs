@@ -5,7 +5,7 @@
 use serde::Serialize;
 use tracer::chains;
 use tracer::job::RenderJob;
-use tracer::needs::ReflectionDepth;
+use tracer::needs::{Needs, ReflectionDepth};
 use tracer::scene::{
     FresnelModel, IntegratorKind, PixelFilter, Precision, RayOffset, RenderSpec, Settings,
 };
@@ -77,92 +77,157 @@ pub struct Plan {
 /// integrator takes on the ladder when the scene's integrator is
 /// deterministic.
 pub fn plan(job: &RenderJob, spp: u32) -> Plan {
-    let base = *job.settings();
     let needs = job.needs();
-    let mut points = vec![Point {
-        axis: Axis::Scene,
-        label: format!("scene: {}", describe(&base)),
-        settings: base,
-    }];
-    let mut skipped = Vec::new();
-    let mut add = |axis: Axis, label: String, spec: RenderSpec| {
-        let Ok(settings) = base.settle("tradeoff", &spec) else {
+    let mut planner = Planner::new(job);
+    planner.integrators(!chains::find(job.scene(), needs).is_empty(), spp);
+    planner.depths(needs);
+    planner.fresnel(needs);
+    planner.samples(needs);
+    planner.ray_offsets(needs);
+    planner.precisions();
+    planner.skip(
+        "RGB against spectrum",
+        "in the image: the tracer has no spectral mode; what three channels cost the colour of the scene's metals, by the harness's measure (metals.*), is stated apart",
+        "a képen: a követőnek nincs spektrális módja; hogy mennyibe kerül a három csatorna a jelenet fémeinek színében, azt a mérőcsomag mércéje (metals.*) külön mondja",
+    );
+    Plan {
+        points: planner.points,
+        skipped: planner.skipped,
+    }
+}
+
+/// The plan as it grows, axis by axis, around one job's settings.
+struct Planner<'a> {
+    /// The job swept.
+    job: &'a RenderJob,
+    /// Its own settings, from which each point varies one.
+    base: Settings,
+    /// The points so far, the scene's own first.
+    points: Vec<Point>,
+    /// The axes left out so far.
+    skipped: Vec<Skipped>,
+}
+
+impl<'a> Planner<'a> {
+    /// The plan of `job` with its own settings alone.
+    fn new(job: &'a RenderJob) -> Self {
+        let base = *job.settings();
+        Planner {
+            job,
+            base,
+            points: vec![Point {
+                axis: Axis::Scene,
+                label: format!("scene: {}", describe(&base)),
+                settings: base,
+            }],
+            skipped: Vec::new(),
+        }
+    }
+
+    /// Adds the point of `axis` that `spec` makes of the scene's own
+    /// settings, where they settle, the scene renders with them, and no
+    /// point already settles alike.
+    fn add(&mut self, axis: Axis, label: String, spec: RenderSpec) {
+        let Ok(settings) = self.base.settle("tradeoff", &spec) else {
             return;
         };
-        let renderable = RenderJob::with_settings(job.scene().clone(), settings).is_ok();
-        if renderable && !points.iter().any(|p| p.settings == settings) {
-            points.push(Point {
+        let renderable = RenderJob::with_settings(self.job.scene().clone(), settings).is_ok();
+        if renderable && !self.points.iter().any(|p| p.settings == settings) {
+            self.points.push(Point {
                 axis,
                 label,
                 settings,
             });
         }
-    };
+    }
 
-    let caustics = !chains::find(job.scene(), needs).is_empty();
-    for integrator in [
-        IntegratorKind::Local,
-        IntegratorKind::Whitted,
-        IntegratorKind::Path,
-        IntegratorKind::Photon,
-        IntegratorKind::Course,
-    ] {
-        if integrator == IntegratorKind::Photon && !caustics {
-            continue;
+    /// Leaves `axis` out, for the reason `why` (`why_hu` in Hungarian).
+    fn skip(&mut self, axis: &'static str, why: &'static str, why_hu: &'static str) {
+        self.skipped.push(Skipped { axis, why, why_hu });
+    }
+
+    /// `003`'s ladder of integrators, photon only where the scene has
+    /// `caustics`; a sampling rung at `spp` where the scene's own
+    /// integrator is deterministic.
+    fn integrators(&mut self, caustics: bool, spp: u32) {
+        let base = self.base;
+        for integrator in [
+            IntegratorKind::Local,
+            IntegratorKind::Whitted,
+            IntegratorKind::Path,
+            IntegratorKind::Photon,
+            IntegratorKind::Course,
+        ] {
+            if integrator == IntegratorKind::Photon && !caustics {
+                continue;
+            }
+            let spp =
+                (integrator.samples() && !base.integrator.samples()).then_some(f64::from(spp));
+            let label = match spp {
+                Some(n) => format!("integrator {integrator}, {n} spp"),
+                None => format!("integrator {integrator}"),
+            };
+            // A rung the scene's tier does not serve is taken in f32.
+            let precision = (!base.precision.serves(integrator)).then_some(Precision::F32);
+            let spec = RenderSpec {
+                integrator: Some(integrator),
+                spp,
+                precision,
+                ..RenderSpec::default()
+            };
+            self.add(Axis::Integrator, label, spec);
         }
-        let spp = (integrator.samples() && !base.integrator.samples()).then_some(f64::from(spp));
-        let label = match spp {
-            Some(n) => format!("integrator {integrator}, {n} spp"),
-            None => format!("integrator {integrator}"),
-        };
-        // A rung the scene's tier does not serve is taken in f32.
-        let precision = (!base.precision.serves(integrator)).then_some(Precision::F32);
-        let spec = RenderSpec {
-            integrator: Some(integrator),
-            spp,
-            precision,
-            ..RenderSpec::default()
-        };
-        add(Axis::Integrator, label, spec);
-    }
-    if !caustics {
-        skipped.push(Skipped {
-            axis: "integrator photon",
-            why: "no delta light reaches a rough surface through mirrors or glass: photon renders what path does",
-            why_hu: "egyetlen pont- vagy irányfény sem ér érdes felületet tükrön vagy üvegen át: a photon ugyanazt rajzolja, mint a path",
-        });
+        if !caustics {
+            self.skip(
+                "integrator photon",
+                "no delta light reaches a rough surface through mirrors or glass: photon renders what path does",
+                "egyetlen pont- vagy irányfény sem ér érdes felületet tükrön vagy üvegen át: a photon ugyanazt rajzolja, mint a path",
+            );
+        }
     }
 
-    let recursive = matches!(needs.reflection_depth, ReflectionDepth::UpToMaxDepth(_))
-        || base.integrator.samples();
-    if recursive {
+    /// The bounce limit and the throughput cutoff, where depth binds.
+    fn depths(&mut self, needs: &Needs) {
+        let recursive = matches!(needs.reflection_depth, ReflectionDepth::UpToMaxDepth(_))
+            || self.base.integrator.samples();
+        if !recursive {
+            self.skip(
+                "max_depth, throughput_cutoff",
+                "no mirror or glass sees another or itself, and the integrator does not bounce diffusely: depth never binds",
+                "egyik tükör vagy üveg sem látja a másikat vagy önmagát, és az integrátor nem pattan diffúzan: a mélység sosem korlátoz",
+            );
+            return;
+        }
         for depth in [0, 1, 2, 3, 4, 6, 8, 10, 11, 16, 32, 64] {
             let spec = RenderSpec {
                 max_depth: Some(f64::from(depth)),
                 ..RenderSpec::default()
             };
-            add(Axis::MaxDepth, format!("max_depth {depth}"), spec);
+            self.add(Axis::MaxDepth, format!("max_depth {depth}"), spec);
         }
         for cutoff in [0.0, 1e-3, 1e-2, 1e-1] {
             let spec = RenderSpec {
                 throughput_cutoff: Some(cutoff),
                 ..RenderSpec::default()
             };
-            add(
+            self.add(
                 Axis::ThroughputCutoff,
                 format!("throughput_cutoff {cutoff}"),
                 spec,
             );
         }
-    } else {
-        skipped.push(Skipped {
-            axis: "max_depth, throughput_cutoff",
-            why: "no mirror or glass sees another or itself, and the integrator does not bounce diffusely: depth never binds",
-            why_hu: "egyik tükör vagy üveg sem látja a másikat vagy önmagát, és az integrátor nem pattan diffúzan: a mélység sosem korlátoz",
-        });
     }
 
-    if needs.conductors || needs.refraction {
+    /// The Fresnel laws, where the scene has a mirror or glass.
+    fn fresnel(&mut self, needs: &Needs) {
+        if !(needs.conductors || needs.refraction) {
+            self.skip(
+                "fresnel",
+                "no mirror or glass: no Fresnel law is evaluated",
+                "nincs tükör vagy üveg: egyetlen Fresnel-törvény sem értékelődik ki",
+            );
+            return;
+        }
         for model in [
             FresnelModel::Exact,
             FresnelModel::Schlick,
@@ -172,32 +237,30 @@ pub fn plan(job: &RenderJob, spp: u32) -> Plan {
                 fresnel: Some(model),
                 ..RenderSpec::default()
             };
-            add(Axis::Fresnel, format!("fresnel {model}"), spec);
+            self.add(Axis::Fresnel, format!("fresnel {model}"), spec);
         }
-    } else {
-        skipped.push(Skipped {
-            axis: "fresnel",
-            why: "no mirror or glass: no Fresnel law is evaluated",
-            why_hu: "nincs tükör vagy üveg: egyetlen Fresnel-törvény sem értékelődik ki",
-        });
     }
 
-    if base.integrator.samples() && !needs.deterministic {
-        for n in [1, 4, 16, 64, 256] {
-            let spec = RenderSpec {
-                spp: Some(f64::from(n)),
-                ..RenderSpec::default()
-            };
-            add(Axis::Spp, format!("spp {n}"), spec);
+    /// Samples per pixel for a Monte Carlo integrator that is not
+    /// deterministic here; the box filter's samples otherwise.
+    fn samples(&mut self, needs: &Needs) {
+        if self.base.integrator.samples() && !needs.deterministic {
+            for n in [1, 4, 16, 64, 256] {
+                let spec = RenderSpec {
+                    spp: Some(f64::from(n)),
+                    ..RenderSpec::default()
+                };
+                self.add(Axis::Spp, format!("spp {n}"), spec);
+            }
+            return;
         }
-    } else {
         for n in [4, 16] {
             let spec = RenderSpec {
                 pixel_filter: Some(PixelFilter::Box),
                 spp: Some(f64::from(n)),
                 ..RenderSpec::default()
             };
-            add(
+            self.add(
                 Axis::PixelFilter,
                 format!("pixel_filter box, {n} spp"),
                 spec,
@@ -205,7 +268,18 @@ pub fn plan(job: &RenderJob, spp: u32) -> Plan {
         }
     }
 
-    if needs.shadows || !matches!(needs.reflection_depth, ReflectionDepth::None) {
+    /// The ray offsets (robust, the course's, Mitsuba 3's), where a
+    /// secondary ray leaves a surface.
+    fn ray_offsets(&mut self, needs: &Needs) {
+        let secondary = needs.shadows || !matches!(needs.reflection_depth, ReflectionDepth::None);
+        if !secondary {
+            self.skip(
+                "ray_offset",
+                "no secondary ray leaves a surface: no shadow ray, no mirror or glass",
+                "egyetlen másodlagos sugár sem hagy el felületet: nincs árnyéksugár, tükör vagy üveg",
+            );
+            return;
+        }
         for (label, offset) in [
             ("ray_offset robust".to_owned(), RayOffset::Robust),
             (
@@ -221,37 +295,28 @@ pub fn plan(job: &RenderJob, spp: u32) -> Plan {
                 ray_offset: Some(offset),
                 ..RenderSpec::default()
             };
-            add(Axis::RayOffset, label, spec);
+            self.add(Axis::RayOffset, label, spec);
         }
-    } else {
-        skipped.push(Skipped {
-            axis: "ray_offset",
-            why: "no secondary ray leaves a surface: no shadow ray, no mirror or glass",
-            why_hu: "egyetlen másodlagos sugár sem hagy el felületet: nincs árnyéksugár, tükör vagy üveg",
-        });
     }
 
-    if Precision::F64.serves(base.integrator) {
+    /// f32 against f64, where the scene's integrator has an f64 tier.
+    fn precisions(&mut self) {
+        if !Precision::F64.serves(self.base.integrator) {
+            self.skip(
+                "f32 against f64",
+                "the scene's integrator computes in f32 only: the f64 tier is local's and whitted's (their rows on the ladder are f32)",
+                "a jelenet integrátora csak f32-ben számol: az f64-es szint a local és a whitted integrátoré (a létrán f32-ben szerepelnek)",
+            );
+            return;
+        }
         for precision in [Precision::F32, Precision::F64] {
             let spec = RenderSpec {
                 precision: Some(precision),
                 ..RenderSpec::default()
             };
-            add(Axis::Precision, format!("precision {precision}"), spec);
+            self.add(Axis::Precision, format!("precision {precision}"), spec);
         }
-    } else {
-        skipped.push(Skipped {
-            axis: "f32 against f64",
-            why: "the scene's integrator computes in f32 only: the f64 tier is local's and whitted's (their rows on the ladder are f32)",
-            why_hu: "a jelenet integrátora csak f32-ben számol: az f64-es szint a local és a whitted integrátoré (a létrán f32-ben szerepelnek)",
-        });
     }
-    skipped.push(Skipped {
-        axis: "RGB against spectrum",
-        why: "in the image: the tracer has no spectral mode; what three channels cost the colour of the scene's metals, by the harness's measure (metals.*), is stated apart",
-            why_hu: "a képen: a követőnek nincs spektrális módja; hogy mennyibe kerül a három csatorna a jelenet fémeinek színében, azt a mérőcsomag mércéje (metals.*) külön mondja",
-    });
-    Plan { points, skipped }
 }
 
 /// The settings in a few words: `whitted, max_depth 11, fresnel exact`;

@@ -63,7 +63,8 @@ use glam::{DVec3, Vec3};
 use serde::Serialize;
 use tracer::render::Image;
 
-use super::{ladder, Need, Pilot, K};
+use super::need::Need;
+use super::pilot::{ladder, Pilot, K};
 use crate::tradeoff::measure::{self, Errors, Mask, Truth};
 
 /// Simulated final renders per prediction.

@@ -3,8 +3,9 @@
 //! that the bound holds over seeds.
 
 use super::*;
-use crate::tradeoff::measure::{errors, Truth};
+use crate::tradeoff::measure::{errors, Mask, Truth};
 use glam::Vec3;
+use tracer::render::Image;
 
 fn image(pixels: Vec<Vec3>) -> Image {
     Image {

@@ -1,12 +1,12 @@
 //! The rows a finding reads: the scene's own point against the points of
 //! one axis, each reading what the record measured and nothing else.
 
-use super::{
-    BounceStep, Bounces, GrazingCost, LeftOut, LightLeftOut, LocalAgainstWhitted, Schlick,
-    Shortcut, NOISE_SIGMAS,
+use super::field::{
+    BounceStep, Bounces, GrazingCost, LeftOut, LightLeftOut, LocalAgainstWhitted, Schlick, Shortcut,
 };
+use super::thresholds::NOISE_SIGMAS;
 use crate::tradeoff::record::{Point, Record};
-use crate::tradeoff::JUST_NOTICEABLE;
+use crate::tradeoff::verdict::JUST_NOTICEABLE;
 
 /// Whether `p` does `base`'s work: as many rays, and a render that is
 /// theirs to the bit (no error against it at all).

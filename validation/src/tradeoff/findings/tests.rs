@@ -3,7 +3,8 @@
 //! decimals, so they hold to 1e-12; ΔE and verdicts are copied, exactly.
 
 use super::*;
-use crate::tradeoff::record::{Errors, Grazing, Settings, Truth};
+use crate::tradeoff::record::{Errors, Grazing, Point, Record, Settings, Truth};
+use crate::tradeoff::Verdict;
 
 const EXACT: f64 = 1e-12;
 

@@ -1,7 +1,7 @@
 //! The light a sweep's integrators and bounce limits leave out, in words.
 
 use crate::tradeoff::findings::{Bounces, LightLeftOut};
-use crate::tradeoff::JUST_NOTICEABLE;
+use crate::tradeoff::verdict::JUST_NOTICEABLE;
 use record::{say, Lang};
 
 /// A share as a percentage: two decimals, or two significant digits
