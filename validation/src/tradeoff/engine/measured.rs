@@ -14,7 +14,9 @@ use crate::tradeoff::findings::Findings;
 use crate::tradeoff::findings::MetalRgb;
 use crate::tradeoff::measure::{self, Errors};
 use crate::tradeoff::mitsuba::{MitsubaTruth, NoReference};
-use crate::tradeoff::{pareto, sweep, truth, Verdict, MEASURES, SCHEMA, SCHEMA_VERSION};
+use crate::tradeoff::schema::{MEASURES, SCHEMA, SCHEMA_VERSION};
+use crate::tradeoff::verdict::Verdict;
+use crate::tradeoff::{pareto, sweep, truth};
 
 /// One point of the sweep, measured.
 #[derive(Clone, Debug, Serialize)]

@@ -13,7 +13,8 @@ use crate::checkout::Checkout;
 use crate::python::{run_tool, Task};
 use crate::tradeoff::checks::UNCONVERGED;
 use crate::tradeoff::error::TradeoffError;
-use crate::tradeoff::{prose, sweep, Verdict};
+use crate::tradeoff::verdict::Verdict;
+use crate::tradeoff::{prose, sweep};
 
 /// Writes the sweep's JSON and Markdown, both or neither, and with
 /// `plot` its Pareto plot: the files written.
