@@ -1,163 +1,188 @@
-//! A second front end over the trade-off library: a small sweep and an
-//! accuracy budget on a tiny scene, through `validation` and `tracer`
-//! alone (no `optics`).
+//! A second front end over the trade-off library: a sweep, an accuracy
+//! budget and the same sweep spread over jobs, on a tiny scene, through
+//! `validation` and `tracer` alone (no `optics`; `cargo tree -p
+//! validation` shows none).
 //!
 //! `cargo run -p validation --example second_front_end`
 //!
-//! The sweep plans its points ([`sweep::plan`]), measures each render
-//! against a converged truth ([`truth::obtain`], cached in a temporary
-//! directory) and marks the Pareto front of time against relative RMSE;
-//! the budget pilots its candidates ([`pilot::run`]) and chooses the
-//! cheapest predicted within a tolerance ([`budget::choose`]). The same
-//! sweep spread over machines is planned as job lines ([`jobs::Planned`]);
-//! one job is read back, checked against the plan, rendered, and its
-//! result line read back and decoded as a collector reads it.
+//! The sweep is settled once ([`engine::Setup::new`]), rendered here
+//! ([`engine::render_here`], its progress told to a callback), measured
+//! against its converged truth ([`engine::measure_points`]) and written
+//! ([`engine::write_sweep`]). The budget renders the scene at the
+//! cheapest settings predicted within a relative RMSE of 0.5
+//! ([`engine::render_within`]). The jobs are planned
+//! ([`engine::plan_jobs`]), each run ([`engine::run_job`]) and their
+//! results collected ([`engine::collect`]) into a record whose every
+//! error is the sweep's in one run: rendering is deterministic per seed,
+//! wherever it runs. `cargo test` runs it and holds it to that.
 
+use std::cell::Cell;
 use std::error::Error;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
-use tracer::job::{Overrides, RenderJob};
-use validation::tradeoff::jobs::{self, Job, JobResult, LineKind, Place};
-use validation::tradeoff::render::render;
-use validation::tradeoff::{budget, measure, pareto, pilot, sweep, truth};
+use tracer::output::Destination;
+use validation::tradeoff::engine::{self, Budget, BudgetRequest, Metric, Setup, SweepRequest};
+use validation::tradeoff::jobs::Place;
 
 /// The scene, at a size that renders in a moment.
-const SCENE: &str = concat!(
-    env!("CARGO_MANIFEST_DIR"),
-    "/../crates/tracer/scenes/shadow.json"
-);
-
-fn main() -> Result<(), Box<dyn Error>> {
-    let file = Path::new(SCENE);
-    let overrides = Overrides {
-        width: Some(32),
-        height: Some(24),
-        ..Overrides::default()
-    };
-    let job = RenderJob::load(file, &overrides)?;
-    let mask = measure::Mask::from_hits(&job.first_hits());
-    sweep_summary(&job, file, &mask)?;
-    budget_summary(&job, file, &mask)?;
-    jobs_summary(&job, file)?;
-    Ok(())
+fn scene() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../crates/tracer/scenes/shadow.json")
 }
 
-/// Renders every point of the sweep once and prints its error and time.
-fn sweep_summary(job: &RenderJob, file: &Path, mask: &measure::Mask) -> Result<(), Box<dyn Error>> {
-    let plan = sweep::plan(job, 4);
-    let cache = tempfile::tempdir()?;
-    let request = truth::Request {
-        scene_file: file,
-        spp: 16,
-        lambert: false,
-        dir: cache.path(),
-        fresh: true,
-    };
-    let (truth, record) = truth::obtain(job, &request, mask, None)?;
-    println!(
-        "sweep: {} points, truth {} spp",
-        plan.points.len(),
-        record.spp
-    );
-    let mut xy = Vec::with_capacity(plan.points.len());
-    for point in &plan.points {
-        let rendered = render(job, file, point.settings, None)?;
-        let errors = measure::errors(std::slice::from_ref(&rendered.image), &truth, mask);
-        let seconds = rendered.elapsed.as_secs_f64();
-        println!("  {:<28} rel_rmse {:.4}", point.label, errors.rel_rmse);
-        xy.push((seconds, errors.rel_rmse));
-    }
-    let front: Vec<&str> = pareto::front(&xy)
-        .into_iter()
-        .map(|i| plan.points[i].label.as_str())
-        .collect();
-    println!(
-        "  on the front of time against rel_rmse: {}",
-        front.join(", ")
-    );
-    Ok(())
-}
-
-/// Pilots the budget's candidates and prints the cheapest within 10 %.
-fn budget_summary(
-    job: &RenderJob,
-    file: &Path,
-    mask: &measure::Mask,
-) -> Result<(), Box<dyn Error>> {
-    let half = 2;
-    let truth = pilot::truth_settings(job, half);
-    let candidates = pilot::candidates(job, &truth);
-    let pass = pilot::run(job, file, (&truth, &candidates), (half, mask, false), None)?;
-    let [a, b] = &pass.reference;
-    let Some(energy) = budget::energy([a, b], mask) else {
-        println!("budget: the pilot cannot bound the truth's light at {half} spp");
-        return Ok(());
-    };
-    let tolerance = 0.1;
-    match budget::choose(&pass.pilots, energy, tolerance, 1024) {
-        Some(budget::Choice::Chosen { index, prediction }) => println!(
-            "budget: {} candidates; within rel_rmse {tolerance}: {} at {:?} spp",
-            candidates.len(),
-            sweep::describe(&candidates[index].settings),
-            prediction.spp
-        ),
-        Some(budget::Choice::Unreachable { index, .. }) => println!(
-            "budget: no candidate within {tolerance}; nearest {}",
-            sweep::describe(&candidates[index].settings)
-        ),
-        None => println!("budget: no candidates"),
-    }
-    Ok(())
-}
-
-/// Plans the sweep as jobs, runs the first point's job and reads its
-/// result back as a collector does.
-fn jobs_summary(job: &RenderJob, file: &Path) -> Result<(), Box<dyn Error>> {
-    let key = jobs::PlanKey {
-        scene: file.display().to_string(),
-        scene_fnv1a: jobs::scene_fnv1a(&std::fs::read(file)?),
-        lambert: false,
-        width: 32,
-        height: 24,
+/// The sweep, as a front end would ask for it, writing into `out`.
+fn request(out: &Path) -> SweepRequest {
+    SweepRequest {
+        scene: scene(),
+        width: Some(16),
+        height: Some(12),
         spp: 4,
         truth_spp: 16,
-        repeats: 1,
+        repeats: 2,
         min_seconds: 0.0,
-    };
-    let planned = jobs::Planned::new(&key, job, &sweep::plan(job, key.spp));
-    let at = Place {
-        path: "jobs.jsonl".into(),
-        line: jobs::TRUTH_JOBS + 1,
-    };
-    let text = serde_json::to_string(&planned.jobs[jobs::TRUTH_JOBS])?;
-    let line: Job = jobs::read_line(&text, LineKind::Job, &at)?;
-    let index = planned.check(&line, &at)?;
-    let rendered = render(job, file, planned.settings[index], None)?;
-    let result = JobResult {
-        schema: LineKind::Result.schema().to_owned(),
-        version: jobs::VERSION,
-        plan: key.id(),
-        planned_as: format!("plan of {}", key.scene),
-        scene_fnv1a: key.scene_fnv1a.clone(),
-        job: index,
-        jobs: planned.jobs.len(),
-        label: line.label.clone(),
-        seconds: vec![rendered.elapsed.as_secs_f64()],
-        rays: rendered.rays.total() as f64,
-        machine: "here".to_owned(),
-        date: "today".to_owned(),
-        load: None,
-        images: vec![jobs::encode(&rendered.image)],
-    };
-    let text = serde_json::to_string(&result)?;
-    let back: JobResult = jobs::read_line(&text, LineKind::Result, &at)?;
-    let images = back.images(&at, planned.kept(index, 1), (key.width, key.height))?;
+        out: out.to_owned(),
+        lambert: true,
+        fresh: false,
+        threads: Some(2),
+    }
+}
+
+/// What the three features gave.
+struct Ran {
+    /// The sweep rendered here.
+    here: engine::Sweep,
+    /// The progress steps told.
+    steps: usize,
+    /// The budget's choice.
+    budget: engine::Outcome,
+    /// The same sweep, from its jobs.
+    collected: engine::Sweep,
+}
+
+fn run(dir: &Path) -> Result<Ran, Box<dyn Error>> {
+    let asked = request(&dir.join("here"));
+    let setup = Setup::new(&asked)?;
+    setup.files.prepare(&asked.scene)?;
+    let truth_dir = setup.files.truth_dir();
+    let truth = setup.truth_request(&asked, &truth_dir);
+    let steps = Cell::new(0);
+    let renders = engine::render_here(&setup, &asked, &truth, &|_| steps.set(steps.get() + 1))?;
+    let here = engine::measure_points(setup, &asked, renders)?;
+    engine::write_sweep(&here, false)?;
+
+    let job = Setup::new(&asked)?.job;
+    let png = dir.join("budget.png");
+    let destination = Destination::new(&png, &[&asked.scene])?;
+    let budget = engine::render_within(
+        &job,
+        &BudgetRequest {
+            scene: &asked.scene,
+            budget: Budget {
+                tolerance: 0.5,
+                metric: Metric::RelRmse,
+            },
+            pilot_spp: 8,
+            lambert: true,
+            truth_spp: asked.truth_spp,
+            verify: Some(&truth_dir),
+            threads: asked.threads,
+        },
+        &destination,
+    )?;
+
+    let collected = jobs(dir)?;
+    Ok(Ran {
+        here,
+        steps: steps.get(),
+        budget,
+        collected,
+    })
+}
+
+/// The sweep planned as jobs, each run, the results collected.
+fn jobs(dir: &Path) -> Result<engine::Sweep, Box<dyn Error>> {
+    let asked = request(&dir.join("collected"));
+    let setup = Setup::new(&asked)?;
+    let plan = dir.join("jobs.jsonl");
+    let written = engine::plan_jobs(&setup, &asked, &plan)?;
+    let text = std::fs::read_to_string(&plan)?;
+    let results = dir.join("results");
+    for index in 0..written.jobs {
+        let (line, at): (String, Place) = engine::job_line(&text, &plan, Some(index))?;
+        engine::run_job(&line, at, &results, asked.threads)?;
+    }
+    setup.files.prepare(&asked.scene)?;
+    let truth_dir = setup.files.truth_dir();
+    let truth = setup.truth_request(&asked, &truth_dir);
+    let renders = engine::collect(&setup, &truth, &[results])?;
+    Ok(engine::measure_points(setup, &asked, renders)?)
+}
+
+fn main() -> Result<(), Box<dyn Error>> {
+    let dir = tempfile::tempdir()?;
+    let ran = run(dir.path())?;
     println!(
-        "jobs: {} planned (plan {}); job {index} ({}) rendered, {} image read back",
-        planned.jobs.len(),
-        key.id(),
-        back.label,
-        images.len()
+        "sweep: {} points, truth {} spp, {} progress steps",
+        ran.here.points.len(),
+        ran.here.truth.spp,
+        ran.steps
+    );
+    for p in &ran.here.points {
+        println!(
+            "  {:<40} rel_rmse {:.4}  front {}",
+            p.point.label,
+            p.errors.rel_rmse,
+            engine::front_marks(p)
+        );
+    }
+    println!(
+        "budget: {} within rel_rmse {}",
+        engine::describe(&ran.budget.chosen),
+        ran.budget.tolerance
+    );
+    println!(
+        "jobs: {} points collected from {} jobs",
+        ran.collected.points.len(),
+        ran.collected.collected.as_ref().map_or(0, |c| c.jobs)
     );
     Ok(())
+}
+
+/// The sweep's points each once on the progress callback (and the truth
+/// and the end), the budget's render within its tolerance, and every
+/// point's errors the same whether rendered here or as jobs: the images
+/// are the same bits wherever a seed is rendered.
+#[test]
+fn a_sweep_a_budget_and_its_jobs_run_through_the_library_alone() {
+    let dir = tempfile::tempdir().unwrap();
+    let ran = run(dir.path()).unwrap();
+    assert!(
+        ran.here.points.len() > 2,
+        "{} points",
+        ran.here.points.len()
+    );
+    assert_eq!(ran.steps, ran.here.points.len() + 2);
+    let verified = ran.budget.verified.as_ref().expect("verified");
+    assert!(
+        verified.rel_rmse <= ran.budget.tolerance,
+        "{} over {}",
+        verified.rel_rmse,
+        ran.budget.tolerance
+    );
+    let labels = |s: &engine::Sweep| -> Vec<String> {
+        s.points.iter().map(|p| p.point.label.clone()).collect()
+    };
+    assert_eq!(labels(&ran.here), labels(&ran.collected));
+    for (a, b) in ran.here.points.iter().zip(&ran.collected.points) {
+        assert_eq!(
+            a.errors.rel_rmse.to_bits(),
+            b.errors.rel_rmse.to_bits(),
+            "{}",
+            a.point.label
+        );
+        assert_eq!(
+            a.errors.delta_e_p99.to_bits(),
+            b.errors.delta_e_p99.to_bits()
+        );
+    }
+    assert!(ran.collected.collected.is_some());
 }
