@@ -94,28 +94,7 @@ impl From<validation::tradeoff::error::TradeoffError> for Error {
             TradeoffError::TruthIsBlack { file } => {
                 ErrorKind::Harness(HarnessKind::TruthIsBlack { file }).into()
             }
-            TradeoffError::BudgetUnreachable {
-                metric,
-                tolerance,
-                best,
-                settings,
-                top_spp,
-                need,
-            } => ErrorKind::Harness(HarnessKind::BudgetUnreachable {
-                metric,
-                tolerance,
-                best,
-                settings,
-                top_spp,
-                need,
-            })
-            .into(),
-            TradeoffError::BudgetPilotNoisy { pilot_spp } => {
-                ErrorKind::Harness(HarnessKind::BudgetPilotNoisy { pilot_spp }).into()
-            }
-            TradeoffError::BudgetEnergyGain { material, gain } => {
-                ErrorKind::Harness(HarnessKind::BudgetEnergyGain { material, gain }).into()
-            }
+            TradeoffError::Budget(error) => ErrorKind::Harness(HarnessKind::Budget(error)).into(),
             TradeoffError::Checkout(error) => {
                 ErrorKind::Harness(HarnessKind::Checkout(error)).into()
             }

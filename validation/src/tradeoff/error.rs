@@ -44,11 +44,31 @@ pub enum TradeoffError {
         /// The scene file, as given.
         file: PathBuf,
     },
-    /// A budget that no candidate is predicted to reach.
+    /// A budget that cannot be met, or not even bounded.
+    #[error(transparent)]
+    Budget(#[from] BudgetError),
+    /// The Pareto plot cannot be drawn: no checkout to find its script in.
+    #[error(transparent)]
+    Checkout(CheckoutError),
+    /// The Pareto plot cannot be drawn: there is no Python environment.
+    #[error("no Python environment at {} (`optics validate` creates it once)", python.display())]
+    NoPython {
+        /// The interpreter looked for.
+        python: PathBuf,
+    },
+    /// The Pareto plot's script failed.
+    #[error(transparent)]
+    Plot(ToolError),
+}
+
+/// Why the accuracy budget cannot render within its tolerance.
+#[derive(Debug, thiserror::Error)]
+pub enum BudgetError {
+    /// No candidate is predicted to reach the tolerance.
     #[error(
         "cannot reach {metric} {tolerance}; the best is {metric} ≤ {best:.4}, with {settings}"
     )]
-    BudgetUnreachable {
+    Unreachable {
         /// The metric's name.
         metric: &'static str,
         /// The tolerance asked for.
@@ -64,33 +84,21 @@ pub enum TradeoffError {
         /// What it would need to reach the tolerance.
         need: Need,
     },
-    /// A budget whose pilot cannot bound the light the truth carries
+    /// The pilot cannot bound the light the truth carries
     /// above 0: black, or too noisy at its samples.
     #[error("a pilot of {pilot_spp} samples per pixel cannot tell the light on the surfaces from its noise")]
-    BudgetPilotNoisy {
+    PilotNoisy {
         /// The pilot's samples per pixel.
         pilot_spp: u32,
     },
-    /// A budget of a scene whose rough material reflects more light than
+    /// The scene's rough material reflects more light than
     /// it receives (the course's `π kd` above 1): its light grows with
     /// depth, no truth converges and no bound holds.
     #[error("material \"{material}\" reflects {gain:.2} times the light it receives, so no error can be bounded")]
-    BudgetEnergyGain {
+    EnergyGain {
         /// The material's name in the scene file.
         material: String,
         /// What it reflects for what it receives (its largest channel).
         gain: f32,
     },
-    /// The Pareto plot cannot be drawn: no checkout to find its script in.
-    #[error(transparent)]
-    Checkout(CheckoutError),
-    /// The Pareto plot cannot be drawn: there is no Python environment.
-    #[error("no Python environment at {} (`optics validate` creates it once)", python.display())]
-    NoPython {
-        /// The interpreter looked for.
-        python: PathBuf,
-    },
-    /// The Pareto plot's script failed.
-    #[error(transparent)]
-    Plot(ToolError),
 }

@@ -6,6 +6,8 @@ use std::fmt;
 
 #[cfg(feature = "harness")]
 use validation::tradeoff::budget::Need;
+#[cfg(feature = "harness")]
+use validation::tradeoff::error::BudgetError;
 
 #[cfg(feature = "harness")]
 use super::harness::HarnessKind;
@@ -113,14 +115,14 @@ impl fmt::Display for HarnessKind {
                 "SCENE {}: its physical render is black: no light reaches the camera (a scene without lights shows only the course's ambient term), so there is no light transport to trade",
                 file.display()
             ),
-            HarnessKind::BudgetUnreachable {
+            HarnessKind::Budget(BudgetError::Unreachable {
                 metric,
                 tolerance,
                 best,
                 settings,
                 top_spp,
                 need,
-            } => {
+            }) => {
                 let tolerance = validation::tradeoff::budget::written(*tolerance);
                 write!(
                     f,
@@ -146,11 +148,11 @@ impl fmt::Display for HarnessKind {
                     ),
                 }
             }
-            HarnessKind::BudgetPilotNoisy { pilot_spp } => write!(
+            HarnessKind::Budget(BudgetError::PilotNoisy { pilot_spp }) => write!(
                 f,
                 "--pilot-spp {pilot_spp}: the pilot cannot tell the light on the surfaces from its noise (its energy, three standard deviations down, is not above 0), so no relative error can be predicted; the scene may be black, or its light may grow with depth (course_rough's albedo π kd above 1: give --lambert to measure it with the stand-in `optics tradeoff --lambert` uses); try more pilot samples"
             ),
-            HarnessKind::BudgetEnergyGain { material, gain } => write!(
+            HarnessKind::Budget(BudgetError::EnergyGain { material, gain }) => write!(
                 f,
                 "--lambert: material \"{material}\" reflects {gain:.2} times the light it receives (course_rough's albedo π kd), so its light grows with every bounce, no ground truth converges and no error can be bounded; give --lambert to budget the scene with the stand-in `optics tradeoff --lambert` uses"
             ),

@@ -10,6 +10,7 @@ use validation::pipeline::PipelineError;
 use validation::python::ToolError;
 use validation::reference::ReferenceError;
 use validation::regenerate::RegenerateError;
+use validation::tradeoff::error::BudgetError;
 
 /// The flag an English and a Hungarian message start with, where the
 /// harness's own message does not say which flag sets what it concerns.
@@ -208,39 +209,10 @@ pub enum HarnessKind {
         /// The scene file, as given.
         file: PathBuf,
     },
-    /// `optics render --tolerance` that no candidate is predicted to reach.
-    BudgetUnreachable {
-        /// The metric's name.
-        metric: &'static str,
-        /// The tolerance asked for.
-        tolerance: f64,
-        /// The smallest bound any candidate reaches.
-        best: f64,
-        /// Its settings, in words, at the most samples the budget renders
-        /// it at.
-        settings: String,
-        /// Those samples per pixel (a power of two), `None` for a
-        /// deterministic candidate.
-        top_spp: Option<u32>,
-        /// What it would need to reach the tolerance.
-        need: validation::tradeoff::budget::Need,
-    },
-    /// `optics render --tolerance` whose pilot cannot bound the light the
-    /// truth carries above 0: black, or too noisy at its samples.
-    BudgetPilotNoisy {
-        /// The pilot's samples per pixel.
-        pilot_spp: u32,
-    },
-    /// `optics render --tolerance` of a scene whose rough material reflects
-    /// more light than it receives (the course's `π kd` above 1), without
-    /// `--lambert`: its light grows with depth, no truth converges and no
-    /// bound holds.
-    BudgetEnergyGain {
-        /// The material's name in the scene file.
-        material: String,
-        /// What it reflects for what it receives (its largest channel).
-        gain: f32,
-    },
+    /// `optics render --tolerance` that cannot render within its
+    /// tolerance: unreachable, a pilot too noisy, a material that gains
+    /// energy.
+    Budget(BudgetError),
     /// A sweep spread over machines: a job or result line refused, a job
     /// not in the plan, results missing or given twice.
     Jobs(super::jobs::JobError),
@@ -257,9 +229,9 @@ impl HarnessKind {
             HarnessKind::ChecksFailed { .. } => "harness.checks_failed",
             HarnessKind::Compare(error) => error.name(),
             HarnessKind::TruthIsBlack { .. } => "tradeoff.truth_is_black",
-            HarnessKind::BudgetUnreachable { .. } => "budget.unreachable",
-            HarnessKind::BudgetPilotNoisy { .. } => "budget.pilot_noisy",
-            HarnessKind::BudgetEnergyGain { .. } => "budget.energy_gain",
+            HarnessKind::Budget(BudgetError::Unreachable { .. }) => "budget.unreachable",
+            HarnessKind::Budget(BudgetError::PilotNoisy { .. }) => "budget.pilot_noisy",
+            HarnessKind::Budget(BudgetError::EnergyGain { .. }) => "budget.energy_gain",
             HarnessKind::Jobs(error) => error.name(),
         }
     }
@@ -275,9 +247,9 @@ impl HarnessKind {
             HarnessKind::ChecksFailed { .. } => None,
             HarnessKind::Compare(error) => super::compare::field(error),
             HarnessKind::TruthIsBlack { .. } => Some("SCENE".to_owned()),
-            HarnessKind::BudgetUnreachable { .. } => Some("--tolerance".to_owned()),
-            HarnessKind::BudgetPilotNoisy { .. } => Some("--pilot-spp".to_owned()),
-            HarnessKind::BudgetEnergyGain { .. } => Some("--lambert".to_owned()),
+            HarnessKind::Budget(BudgetError::Unreachable { .. }) => Some("--tolerance".to_owned()),
+            HarnessKind::Budget(BudgetError::PilotNoisy { .. }) => Some("--pilot-spp".to_owned()),
+            HarnessKind::Budget(BudgetError::EnergyGain { .. }) => Some("--lambert".to_owned()),
             HarnessKind::Jobs(error) => error.field(super::jobs::flag),
         }
     }

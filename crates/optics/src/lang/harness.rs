@@ -10,6 +10,7 @@ use validation::regenerate::RegenerateError;
 
 use super::render::output_hu;
 use crate::error::HarnessKind;
+use validation::tradeoff::error::BudgetError;
 
 /// No usable checkout: what named the directory and what it lacks, or
 /// where none was found and the advice that a command whose checkout flag
@@ -158,14 +159,14 @@ pub fn harness_hu(kind: &HarnessKind) -> String {
             "SCENE {}: fizikai képe fekete: semmi fény nem jut a kamerába (fényforrás nélküli jelenetben csak a kurzus ambiens tagja látszik), így nincs mit fényterjedésben elcserélni",
             file.display()
         ),
-        HarnessKind::BudgetUnreachable {
+        HarnessKind::Budget(BudgetError::Unreachable {
             metric,
             tolerance,
             best,
             settings,
             top_spp,
             need,
-        } => {
+        }) => {
             let tolerance = validation::tradeoff::budget::written(*tolerance);
             let need = match (need, top_spp) {
                 (validation::tradeoff::budget::Need::Samples { spp }, Some(top)) => format!(
@@ -182,10 +183,10 @@ pub fn harness_hu(kind: &HarnessKind) -> String {
                 "--tolerance {tolerance}: a(z) {metric} {tolerance} nem érhető el; a legjobb {metric} ≤ {best:.4}, ezzel: {settings}; {need}"
             )
         }
-        HarnessKind::BudgetPilotNoisy { pilot_spp } => format!(
+        HarnessKind::Budget(BudgetError::PilotNoisy { pilot_spp }) => format!(
             "--pilot-spp {pilot_spp}: a próba nem tudja elválasztani a felületek fényét a zajától (energiája három szórásnyival lejjebb nem nagyobb 0-nál), így relatív hiba nem becsülhető; a jelenet lehet fekete, vagy fénye nőhet a mélységgel (a course_rough π kd albedója 1 fölött: a --lambert az `optics tradeoff --lambert` helyettesítőjével mér); próbálj több próbamintát"
         ),
-        HarnessKind::BudgetEnergyGain { material, gain } => format!(
+        HarnessKind::Budget(BudgetError::EnergyGain { material, gain }) => format!(
             "--lambert: a(z) \"{material}\" anyag {gain:.2}-szer annyi fényt ver vissza, mint amennyit kap (a course_rough π kd albedója), így fénye minden visszaverődéssel nő, nincs konvergáló referencia és a hiba nem korlátozható; a --lambert az `optics tradeoff --lambert` helyettesítőjével számol"
         ),
         HarnessKind::Jobs(error) => super::jobs::jobs_hu(error),

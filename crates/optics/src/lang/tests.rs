@@ -8,6 +8,8 @@ use crate::error::HarnessKind;
 use clap::Parser;
 use radiometry::domain::{self, DomainError, Expected};
 use std::collections::BTreeSet;
+#[cfg(feature = "harness")]
+use validation::tradeoff::error::BudgetError;
 
 #[cfg(feature = "harness")]
 mod compare_kinds;
@@ -230,15 +232,15 @@ fn slot(kind: &ErrorKind) -> usize {
             CALCULATOR + render_kinds::SLOTS + harness_kinds::TRUTH_IS_BLACK
         }
         #[cfg(feature = "harness")]
-        ErrorKind::Harness(HarnessKind::BudgetUnreachable { .. }) => {
+        ErrorKind::Harness(HarnessKind::Budget(BudgetError::Unreachable { .. })) => {
             CALCULATOR + render_kinds::SLOTS + harness_kinds::BUDGET_UNREACHABLE
         }
         #[cfg(feature = "harness")]
-        ErrorKind::Harness(HarnessKind::BudgetPilotNoisy { .. }) => {
+        ErrorKind::Harness(HarnessKind::Budget(BudgetError::PilotNoisy { .. })) => {
             CALCULATOR + render_kinds::SLOTS + harness_kinds::BUDGET_PILOT_NOISY
         }
         #[cfg(feature = "harness")]
-        ErrorKind::Harness(HarnessKind::BudgetEnergyGain { .. }) => {
+        ErrorKind::Harness(HarnessKind::Budget(BudgetError::EnergyGain { .. })) => {
             CALCULATOR + render_kinds::SLOTS + harness_kinds::BUDGET_ENERGY_GAIN
         }
         #[cfg(feature = "harness")]

@@ -22,7 +22,7 @@ use tracer::scene::Settings;
 use super::predictor::{self, Predicted, Predictor};
 use crate::tradeoff::budget::displayed::Shown;
 use crate::tradeoff::budget::{self, Bound, Choice};
-use crate::tradeoff::error::TradeoffError;
+use crate::tradeoff::error::{BudgetError, TradeoffError};
 use crate::tradeoff::measure::{self, Mask};
 use crate::tradeoff::{pilot, sweep, truth};
 
@@ -149,10 +149,11 @@ pub fn render_within(
 ) -> Result<Outcome, TradeoffError> {
     let budget = request.budget;
     if let Some((gain, material)) = job.scene().diffuse_gain() {
-        return Err(TradeoffError::BudgetEnergyGain {
+        return Err(BudgetError::EnergyGain {
             material: material.to_owned(),
             gain,
-        });
+        }
+        .into());
     }
     let mask = Mask::from_hits(&job.first_hits());
     let half = (request.pilot_spp / 2).max(1);
@@ -175,18 +176,13 @@ pub fn render_within(
             prediction,
             need,
         } => {
-            return Err(TradeoffError::BudgetUnreachable {
-                metric: budget.metric.name(),
-                tolerance: budget.tolerance,
-                best: prediction.bound(),
-                settings: describe(&final_settings(
-                    &candidates[index].settings,
-                    prediction.spp(),
-                    half,
-                )),
-                top_spp: prediction.spp(),
-                need,
-            });
+            return Err(unreachable(
+                budget,
+                &candidates[index].settings,
+                (prediction, need),
+                half,
+            )
+            .into());
         }
     };
     let chosen = final_settings(&candidates[index].settings, predicted.spp(), half);
@@ -222,6 +218,25 @@ pub fn render_within(
     })
 }
 
+/// Why `budget` cannot be met: the candidate `settings` predicted
+/// nearest, at the most samples the budget renders it at, and what it
+/// would need.
+fn unreachable(
+    budget: Budget,
+    settings: &Settings,
+    (prediction, need): (Predicted, crate::tradeoff::budget::Need),
+    half: u32,
+) -> BudgetError {
+    BudgetError::Unreachable {
+        metric: budget.metric.name(),
+        tolerance: budget.tolerance,
+        best: prediction.bound(),
+        settings: describe(&final_settings(settings, prediction.spp(), half)),
+        top_spp: prediction.spp(),
+        need,
+    }
+}
+
 /// The predictor of `metric` from the pilot's pass, or why the pilot
 /// cannot bound the light at all.
 fn predict(
@@ -231,7 +246,7 @@ fn predict(
     request: &BudgetRequest<'_>,
 ) -> Result<Predictor, TradeoffError> {
     let [a, b] = &pass.reference;
-    let energy = budget::energy([a, b], mask).ok_or(TradeoffError::BudgetPilotNoisy {
+    let energy = budget::energy([a, b], mask).ok_or(BudgetError::PilotNoisy {
         pilot_spp: 2 * half,
     })?;
     Ok(match metric.shown() {

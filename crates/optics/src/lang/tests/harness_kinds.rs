@@ -10,6 +10,7 @@ use validation::pipeline::PipelineError;
 use validation::python::{Task, ToolError};
 use validation::reference::ReferenceError;
 use validation::regenerate::RegenerateError;
+use validation::tradeoff::error::BudgetError;
 
 /// The place of a checkout error's kind among the harness slots.
 pub fn checkout_slot(error: &CheckoutError) -> usize {
@@ -230,14 +231,14 @@ pub fn examples() -> Vec<(ErrorKind, Vec<String>)> {
             named(&["SCENE", "scenes/kaleidoscope.json"]),
         ),
         (
-            ErrorKind::Harness(HarnessKind::BudgetUnreachable {
+            ErrorKind::Harness(HarnessKind::Budget(BudgetError::Unreachable {
                 metric: "rel_rmse",
                 tolerance: 1e-7,
                 best: 0.0123,
                 settings: "path, 65536 spp, max_depth 64, fresnel exact".into(),
                 top_spp: Some(65536),
                 need: validation::tradeoff::budget::Need::Samples { spp: 1 << 20 },
-            }),
+            })),
             named(&[
                 "--tolerance 1e-7",
                 "rel_rmse",
@@ -246,14 +247,14 @@ pub fn examples() -> Vec<(ErrorKind, Vec<String>)> {
             ]),
         ),
         (
-            ErrorKind::Harness(HarnessKind::BudgetUnreachable {
+            ErrorKind::Harness(HarnessKind::Budget(BudgetError::Unreachable {
                 metric: "delta_e_p99",
                 tolerance: 0.5,
                 best: 14.6475,
                 settings: "path, 65536 spp, max_depth 1, fresnel exact".into(),
                 top_spp: Some(65536),
                 need: validation::tradeoff::budget::Need::Floor,
-            }),
+            })),
             named(&[
                 "--tolerance 0.5",
                 "delta_e_p99",
@@ -262,14 +263,14 @@ pub fn examples() -> Vec<(ErrorKind, Vec<String>)> {
             ]),
         ),
         (
-            ErrorKind::Harness(HarnessKind::BudgetUnreachable {
+            ErrorKind::Harness(HarnessKind::Budget(BudgetError::Unreachable {
                 metric: "rel_rmse",
                 tolerance: 1e-3,
                 best: 0.0612,
                 settings: "whitted, max_depth 64, fresnel exact".into(),
                 top_spp: None,
                 need: validation::tradeoff::budget::Need::Never,
-            }),
+            })),
             named(&[
                 "--tolerance 1e-3",
                 "rel_rmse",
@@ -277,14 +278,14 @@ pub fn examples() -> Vec<(ErrorKind, Vec<String>)> {
             ]),
         ),
         (
-            ErrorKind::Harness(HarnessKind::BudgetUnreachable {
+            ErrorKind::Harness(HarnessKind::Budget(BudgetError::Unreachable {
                 metric: "rel_rmse",
                 tolerance: 1e-3,
                 best: 0.0123,
                 settings: "photon, 4096 spp, max_depth 16, fresnel exact".into(),
                 top_spp: Some(4096),
                 need: validation::tradeoff::budget::Need::Capped { spp: 4096 },
-            }),
+            })),
             named(&[
                 "--tolerance 1e-3",
                 "rel_rmse",
@@ -293,10 +294,10 @@ pub fn examples() -> Vec<(ErrorKind, Vec<String>)> {
             ]),
         ),
         (
-            ErrorKind::Harness(HarnessKind::BudgetEnergyGain {
+            ErrorKind::Harness(HarnessKind::Budget(BudgetError::EnergyGain {
                 material: "green".to_owned(),
                 gain: 2.51,
-            }),
+            })),
             named(&[
                 "`optics tradeoff --lambert`",
                 "--lambert",
@@ -306,7 +307,9 @@ pub fn examples() -> Vec<(ErrorKind, Vec<String>)> {
             ]),
         ),
         (
-            ErrorKind::Harness(HarnessKind::BudgetPilotNoisy { pilot_spp: 8 }),
+            ErrorKind::Harness(HarnessKind::Budget(BudgetError::PilotNoisy {
+                pilot_spp: 8,
+            })),
             named(&[
                 "--pilot-spp 8",
                 "course_rough",
