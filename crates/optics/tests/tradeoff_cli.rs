@@ -414,3 +414,69 @@ fn a_metal_scene_carries_its_metals_rgb_error_and_its_depth_and_schlick_findings
         "{findings}"
     );
 }
+
+/// A plot that cannot be drawn (a checkout without its Python
+/// environment) leaves no record behind: the sweep writes its JSON, its
+/// Markdown and its plot, or none of them. With `--no-plot` the same
+/// sweep writes the other two.
+#[test]
+fn a_sweep_whose_plot_cannot_be_drawn_writes_nothing() {
+    let checkout = tempfile::tempdir().unwrap();
+    std::fs::create_dir_all(checkout.path().join("validation/reference")).unwrap();
+    std::fs::create_dir_all(checkout.path().join("python-checks")).unwrap();
+    std::fs::write(checkout.path().join("python-checks/requirements.txt"), "").unwrap();
+    let dir = tempfile::tempdir().unwrap();
+    let (path, out) = (scene("shadow"), dir.path().to_str().unwrap().to_owned());
+    let args = [
+        "--json",
+        "tradeoff",
+        &path,
+        "--lambert",
+        "--width",
+        "8",
+        "--height",
+        "6",
+        "--truth-spp",
+        "4",
+        "--repeats",
+        "1",
+        "--min-seconds",
+        "0",
+        "--out",
+        &out,
+    ];
+    let run = |extra: &[&str]| {
+        Command::new(env!("CARGO_BIN_EXE_optics"))
+            .args(args)
+            .args(extra)
+            .env("OPTICS_CHECKOUT", checkout.path())
+            .current_dir(env!("CARGO_MANIFEST_DIR"))
+            .output()
+            .expect("the optics binary runs")
+    };
+    let failed = run(&[]);
+    assert_eq!(
+        failed.status.code(),
+        Some(1),
+        "{}",
+        String::from_utf8_lossy(&failed.stderr)
+    );
+    let error: Value = serde_json::from_slice(&failed.stdout).unwrap();
+    assert!(
+        error["error"]["message"]
+            .as_str()
+            .unwrap()
+            .contains("--no-plot"),
+        "{error}"
+    );
+    for file in [
+        "shadow-lambert.json",
+        "shadow-lambert.md",
+        "shadow-lambert-pareto.png",
+    ] {
+        assert!(!dir.path().join(file).exists(), "{file} written");
+    }
+    assert!(run(&["--no-plot"]).status.success());
+    assert!(dir.path().join("shadow-lambert.json").exists());
+    assert!(dir.path().join("shadow-lambert.md").exists());
+}

@@ -16,22 +16,46 @@ use crate::tradeoff::error::TradeoffError;
 use crate::tradeoff::verdict::Verdict;
 use crate::tradeoff::{prose, sweep};
 
-/// Writes the sweep's JSON and Markdown, both or neither, and with
-/// `plot` its Pareto plot: the files written.
+/// Writes the sweep's JSON and Markdown and, with `plot_too`, its Pareto
+/// plot: all of them or none. The plot is drawn first, from the JSON in a
+/// directory of its own, so that a plot that cannot be drawn leaves no
+/// record behind. Returns the files written.
 pub fn write_sweep(sweep: &Sweep, plot_too: bool) -> Result<Vec<PathBuf>, TradeoffError> {
     let files = &sweep.files;
     let json = serde_json::to_string_pretty(sweep).map_err(TradeoffError::Encode)? + "\n";
     let markdown = markdown(sweep, &sweep.stem);
-    safe_io::write_all_atomically(&[
+    let png = if plot_too {
+        Some(plot_bytes(&json)?)
+    } else {
+        None
+    };
+    let mut written = vec![
         (files.json.as_path(), json.as_bytes()),
         (files.markdown.as_path(), markdown.as_bytes()),
-    ])
-    .map_err(|error| TradeoffError::Output(error.into()))?;
-    let mut written = vec![files.json.clone(), files.markdown.clone()];
-    if plot_too {
-        written.push(plot(&files.json, &files.plot)?);
+    ];
+    if let Some(png) = &png {
+        written.push((files.plot.as_path(), png.as_slice()));
     }
-    Ok(written)
+    safe_io::write_all_atomically(&written).map_err(|error| TradeoffError::Output(error.into()))?;
+    Ok(written.iter().map(|(path, _)| path.to_path_buf()).collect())
+}
+
+/// The Pareto plot of the record `json`, drawn in a temporary directory.
+fn plot_bytes(json: &str) -> Result<Vec<u8>, TradeoffError> {
+    let io = |path: &Path, source| {
+        TradeoffError::Output(
+            safe_io::WriteError::Io {
+                path: path.display().to_string(),
+                source,
+            }
+            .into(),
+        )
+    };
+    let dir = tempfile::tempdir().map_err(|e| io(&std::env::temp_dir(), e))?;
+    let (record, png) = (dir.path().join("sweep.json"), dir.path().join("sweep.png"));
+    std::fs::write(&record, json).map_err(|e| io(&record, e))?;
+    plot(&record, &png)?;
+    std::fs::read(&png).map_err(|e| io(&png, e))
 }
 
 /// `R` `A` `P` `F`: on the front of relative RMSE, mean ΔE, 99th-percentile
