@@ -99,25 +99,9 @@ impl From<validation::tradeoff::error::TradeoffError> for Error {
                 ErrorKind::Harness(HarnessKind::Checkout(error)).into()
             }
             TradeoffError::NoPython { python } => {
-                let error = validation::python::ToolError::Start {
-                    what: validation::python::Task::Script(
-                        validation::tradeoff::engine::PLOT_SCRIPT.into(),
-                    ),
-                    program: python.display().to_string(),
-                    source: std::io::Error::new(
-                        std::io::ErrorKind::NotFound,
-                        "no .venv: `optics validate` creates it once (or pass --no-plot)",
-                    ),
-                };
-                ErrorKind::Harness(HarnessKind::Pipeline(
-                    validation::pipeline::PipelineError::Tool(error),
-                ))
-                .into()
+                ErrorKind::Harness(HarnessKind::NoPlotPython { python }).into()
             }
-            TradeoffError::Plot(error) => ErrorKind::Harness(HarnessKind::Pipeline(
-                validation::pipeline::PipelineError::Tool(error),
-            ))
-            .into(),
+            TradeoffError::Plot(error) => ErrorKind::Harness(HarnessKind::Plot(error)).into(),
         }
     }
 }

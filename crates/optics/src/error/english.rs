@@ -115,6 +115,15 @@ impl fmt::Display for HarnessKind {
                 "SCENE {}: its physical render is black: no light reaches the camera (a scene without lights shows only the course's ambient term), so there is no light transport to trade",
                 file.display()
             ),
+            HarnessKind::NoPlotPython { python } => write!(
+                f,
+                "the Pareto plot needs the checkout's Python environment and there is none at {} (`optics validate` creates it once; --no-plot skips the plot): nothing was written",
+                python.display()
+            ),
+            HarnessKind::Plot(error) => write!(
+                f,
+                "the Pareto plot cannot be drawn, so nothing was written (--no-plot skips it): {error}"
+            ),
             HarnessKind::Budget(BudgetError::Unreachable {
                 metric,
                 tolerance,

@@ -213,6 +213,15 @@ pub enum HarnessKind {
     /// tolerance: unreachable, a pilot too noisy, a material that gains
     /// energy.
     Budget(BudgetError),
+    /// `optics tradeoff`'s Pareto plot has no Python environment to be
+    /// drawn with: nothing was written.
+    NoPlotPython {
+        /// The interpreter looked for.
+        python: PathBuf,
+    },
+    /// `optics tradeoff`'s Pareto plot could not be drawn (its script
+    /// failed): nothing was written.
+    Plot(ToolError),
     /// A sweep spread over machines: a job or result line refused, a job
     /// not in the plan, results missing or given twice.
     Jobs(super::jobs::JobError),
@@ -229,6 +238,8 @@ impl HarnessKind {
             HarnessKind::ChecksFailed { .. } => "harness.checks_failed",
             HarnessKind::Compare(error) => error.name(),
             HarnessKind::TruthIsBlack { .. } => "tradeoff.truth_is_black",
+            HarnessKind::NoPlotPython { .. } => "tradeoff.no_python",
+            HarnessKind::Plot(_) => "tradeoff.plot",
             HarnessKind::Budget(BudgetError::Unreachable { .. }) => "budget.unreachable",
             HarnessKind::Budget(BudgetError::PilotNoisy { .. }) => "budget.pilot_noisy",
             HarnessKind::Budget(BudgetError::EnergyGain { .. }) => "budget.energy_gain",
@@ -247,6 +258,7 @@ impl HarnessKind {
             HarnessKind::ChecksFailed { .. } => None,
             HarnessKind::Compare(error) => super::compare::field(error),
             HarnessKind::TruthIsBlack { .. } => Some("SCENE".to_owned()),
+            HarnessKind::NoPlotPython { .. } | HarnessKind::Plot(_) => Some("--no-plot".to_owned()),
             HarnessKind::Budget(BudgetError::Unreachable { .. }) => Some("--tolerance".to_owned()),
             HarnessKind::Budget(BudgetError::PilotNoisy { .. }) => Some("--pilot-spp".to_owned()),
             HarnessKind::Budget(BudgetError::EnergyGain { .. }) => Some("--lambert".to_owned()),

@@ -159,6 +159,14 @@ pub fn harness_hu(kind: &HarnessKind) -> String {
             "SCENE {}: fizikai képe fekete: semmi fény nem jut a kamerába (fényforrás nélküli jelenetben csak a kurzus ambiens tagja látszik), így nincs mit fényterjedésben elcserélni",
             file.display()
         ),
+        HarnessKind::NoPlotPython { python } => format!(
+            "a Pareto-ábrához a munkapéldány Python-környezete kell, de a(z) {} nem létezik (az `optics validate` egyszer létrehozza; a --no-plot kihagyja az ábrát): semmi sem íródott ki",
+            python.display()
+        ),
+        HarnessKind::Plot(error) => format!(
+            "a Pareto-ábra nem rajzolható, így semmi sem íródott ki (a --no-plot kihagyja): {}",
+            tool_hu(error)
+        ),
         HarnessKind::Budget(BudgetError::Unreachable {
             metric,
             tolerance,

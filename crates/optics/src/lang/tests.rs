@@ -228,6 +228,14 @@ fn slot(kind: &ErrorKind) -> usize {
             CALCULATOR + render_kinds::SLOTS + harness_kinds::CHECKS_FAILED
         }
         #[cfg(feature = "harness")]
+        ErrorKind::Harness(HarnessKind::Plot(_)) => {
+            CALCULATOR + render_kinds::SLOTS + harness_kinds::PLOT
+        }
+        #[cfg(feature = "harness")]
+        ErrorKind::Harness(HarnessKind::NoPlotPython { .. }) => {
+            CALCULATOR + render_kinds::SLOTS + harness_kinds::NO_PLOT_PYTHON
+        }
+        #[cfg(feature = "harness")]
         ErrorKind::Harness(HarnessKind::TruthIsBlack { .. }) => {
             CALCULATOR + render_kinds::SLOTS + harness_kinds::TRUTH_IS_BLACK
         }

@@ -58,8 +58,14 @@ pub const BUDGET_PILOT_NOISY: usize = 15;
 /// without `--lambert`.
 pub const BUDGET_ENERGY_GAIN: usize = 16;
 
+/// The slot of a Pareto plot that cannot be drawn (`optics tradeoff`).
+pub const PLOT: usize = 17;
+
+/// The slot of a Pareto plot without a Python environment.
+pub const NO_PLOT_PYTHON: usize = 18;
+
 /// How many harness slots there are.
-pub const SLOTS: usize = 17;
+pub const SLOTS: usize = 19;
 
 /// An exit status of 3, as a failed tool reports it.
 fn exit_status() -> std::process::ExitStatus {
@@ -223,6 +229,32 @@ pub fn examples() -> Vec<(ErrorKind, Vec<String>)> {
                 checks: 40,
             }),
             vec![],
+        ),
+        (
+            ErrorKind::Harness(HarnessKind::NoPlotPython {
+                python: "/work/.venv/bin/python".into(),
+            }),
+            named(&[
+                "--no-plot",
+                "/work/.venv/bin/python",
+                "`optics validate`",
+                "Pareto",
+                "Python",
+            ]),
+        ),
+        (
+            ErrorKind::Harness(HarnessKind::Plot(ToolError::Failed {
+                what: Task::Script("python-checks/plot_tradeoff.py".into()),
+                status: exit_status(),
+                stderr_tail: "Traceback (most recent call last)".into(),
+            })),
+            named(&[
+                "--no-plot",
+                "python-checks/plot_tradeoff.py",
+                "Traceback (most recent call last)",
+                &status,
+                "Pareto",
+            ]),
         ),
         (
             ErrorKind::Harness(HarnessKind::TruthIsBlack {
