@@ -22,6 +22,7 @@
 //! assert!(results::compare(&rewritten, &section).is_ok());
 //! ```
 
+#[cfg(feature = "criterion")]
 pub mod criterion;
 mod diff;
 mod document;
