@@ -21,6 +21,7 @@ use std::error::Error;
 use std::path::{Path, PathBuf};
 
 use tracer::output::Destination;
+use validation::checkout::Lookup;
 use validation::tradeoff::engine::{self, Budget, BudgetRequest, Metric, Setup, SweepRequest};
 use validation::tradeoff::jobs::Place;
 
@@ -43,6 +44,10 @@ fn request(out: &Path) -> SweepRequest {
         lambert: true,
         fresh: false,
         threads: Some(2),
+        checkout: Lookup {
+            explicit: Some(Path::new(env!("CARGO_MANIFEST_DIR")).join("..")),
+            ..Lookup::default()
+        },
     }
 }
 
@@ -67,7 +72,7 @@ fn run(dir: &Path) -> Result<Ran, Box<dyn Error>> {
     let steps = Cell::new(0);
     let renders = engine::render_here(&setup, &asked, &truth, &|_| steps.set(steps.get() + 1))?;
     let here = engine::measure_points(setup, &asked, renders)?;
-    engine::write_sweep(&here, false)?;
+    engine::write_sweep(&here, None)?;
 
     let job = Setup::new(&asked)?.job;
     let png = dir.join("budget.png");

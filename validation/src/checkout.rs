@@ -72,16 +72,30 @@ pub struct Checkout {
     via: Via,
 }
 
-impl Checkout {
-    /// The checkout named by `explicit`, else by [`ENV`], else the nearest
-    /// one containing the working directory.
-    pub fn find(explicit: Option<&Path>) -> Result<Self, CheckoutError> {
-        let cwd = std::env::current_dir().unwrap_or_else(|_| PathBuf::from("."));
-        Self::locate(explicit, std::env::var_os(ENV), &cwd)
-    }
+/// Where a checkout is looked for, as a front end read it: the directory
+/// its user named, the value of [`ENV`] and the working directory. The
+/// library reads no environment; it is handed this.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Lookup {
+    /// The directory named (a front end's flag), if any.
+    pub explicit: Option<PathBuf>,
+    /// The value of [`ENV`], if set.
+    pub env: Option<OsString>,
+    /// The working directory, searched upward.
+    pub cwd: PathBuf,
+}
 
-    /// [`Checkout::find`] with the environment variable's value and the
-    /// working directory given. An empty variable counts as unset.
+impl Lookup {
+    /// The checkout this names ([`Checkout::locate`]).
+    pub fn find(&self) -> Result<Checkout, CheckoutError> {
+        Checkout::locate(self.explicit.as_deref(), self.env.clone(), &self.cwd)
+    }
+}
+
+impl Checkout {
+    /// The checkout named by `explicit`, else by `env` (the value of
+    /// [`ENV`]), else the nearest one containing `cwd`. An empty variable
+    /// counts as unset.
     pub fn locate(
         explicit: Option<&Path>,
         env: Option<OsString>,
@@ -110,7 +124,7 @@ impl Checkout {
     }
 
     /// The checkout this crate was built from, for tests and examples; the
-    /// harness's command finds its checkout with [`Checkout::find`].
+    /// harness's command finds its checkout with [`Lookup::find`].
     pub fn at_build_time() -> Self {
         let manifest = Path::new(env!("CARGO_MANIFEST_DIR"));
         Self {

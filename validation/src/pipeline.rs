@@ -7,7 +7,7 @@
 //! use validation::checkout::Checkout;
 //! use validation::pipeline::{self, Options};
 //!
-//! let options = Options::quick(Checkout::find(None)?, "example");
+//! let options = Options::quick(Checkout::at_build_time(), "example");
 //! let outcome = pipeline::run(&options, |step| eprintln!("{step:?}"))?;
 //! println!("{} checks passed: {}", outcome.report.checks.len(), outcome.passed());
 //! # Ok::<(), Box<dyn std::error::Error>>(())

@@ -24,7 +24,7 @@ use std::path::Path;
 
 use tracer::job::{Overrides, RenderJob};
 use tracer::scene::{IntegratorKind, Settings};
-use validation::checkout::Checkout;
+use validation::checkout::{Lookup, ENV};
 use validation::full_light::{decode, Estimate, FullLight, Region, RegionMean, FILE};
 use validation::tradeoff::mitsuba::{
     box_downsample, light_share, reference_for, region_light, Reference,
@@ -87,7 +87,13 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let job = RenderJob::with_settings(scene.clone(), *sized.settings())?;
     let truth = validation::tradeoff::sweep::truth_settings(&job, spp);
 
-    let dir = Checkout::find(None)?.reference_dir();
+    let dir = Lookup {
+        env: std::env::var_os(ENV),
+        cwd: std::env::current_dir()?,
+        ..Lookup::default()
+    }
+    .find()?
+    .reference_dir();
     let full = FullLight::load(&dir)?;
     let reference =
         reference_for(&scene, SCENE, &full, &dir.join(FILE)).map_err(|why| why.to_string())?;

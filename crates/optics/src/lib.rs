@@ -15,6 +15,8 @@ pub mod batch;
 #[cfg(feature = "harness")]
 pub mod budget;
 #[cfg(feature = "harness")]
+mod checkout;
+#[cfg(feature = "harness")]
 mod compare;
 mod envmap;
 pub mod error;

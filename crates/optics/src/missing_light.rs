@@ -107,7 +107,7 @@ struct Measured {
 #[cfg(feature = "harness")]
 fn measured_share(scene_file: &Path) -> Option<Measured> {
     use validation::full_light::{self, Estimate, FullLight, Region, RegionMean};
-    let checkout = validation::checkout::Checkout::find(None).ok()?;
+    let checkout = crate::checkout::lookup(None).find().ok()?;
     let reference = FullLight::load(&checkout.reference_dir()).ok()?;
     let inspected = scene_file.canonicalize().ok()?;
     let (index, s) = reference.scenes.iter().enumerate().find(|(_, s)| {

@@ -45,7 +45,7 @@ pub fn run(args: &TradeoffArgs, ui: &Ui) -> error::Result<()> {
         }
     };
     let sweep = engine::measure_points(setup, &request, renders)?;
-    report::write_and_show(&sweep, args, ui)
+    report::write_and_show(&sweep, args, &request.checkout, ui)
 }
 
 /// The sweep's progress bar on a terminal, nothing elsewhere.

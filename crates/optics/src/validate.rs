@@ -7,7 +7,6 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use indicatif::{ProgressBar, ProgressStyle};
-use validation::checkout::Checkout;
 use validation::pipeline::{self, Options, Outcome, PythonOptions, Step};
 use validation::python::SetUp;
 
@@ -66,8 +65,9 @@ pub struct ValidateArgs {
 impl ValidateArgs {
     /// The pipeline's options: the checkout found, the flags as they are.
     fn options(&self) -> error::Result<Options> {
-        let checkout =
-            Checkout::find(self.checkout.as_deref()).map_err(HarnessKind::CheckoutWithFlag)?;
+        let checkout = crate::checkout::lookup(self.checkout.as_deref())
+            .find()
+            .map_err(HarnessKind::CheckoutWithFlag)?;
         // The command as typed, by the program's name rather than its build path.
         let command = std::iter::once("optics".to_owned())
             .chain(std::env::args().skip(1))

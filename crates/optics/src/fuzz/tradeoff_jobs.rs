@@ -39,6 +39,7 @@ fn planned() -> &'static (Setup, Planned) {
             lambert: true,
             fresh: false,
             threads: Some(1),
+            checkout: validation::checkout::Lookup::default(),
         };
         let setup = Setup::new(&args).expect("the course's shadow scene loads");
         let planned = Planned::new(&setup.key, &setup.job, &setup.plan);

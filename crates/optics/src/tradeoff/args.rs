@@ -103,6 +103,7 @@ impl TradeoffArgs {
             lambert: self.lambert,
             fresh: self.fresh,
             threads: self.threads.map(|t| t as usize),
+            checkout: crate::checkout::lookup(None),
         }
     }
 

@@ -4,6 +4,7 @@
 
 use std::path::Path;
 
+use validation::checkout::Lookup;
 use validation::tradeoff::checks::UNCONVERGED;
 use validation::tradeoff::engine::{self, PlanWritten, Setup, Sweep};
 use validation::tradeoff::jobs::TRUTH_JOBS;
@@ -84,10 +85,17 @@ pub fn table(sweep: &Sweep, lang: Lang) -> Vec<String> {
 }
 
 /// Writes the sweep's JSON, Markdown and plot, and prints its record.
-pub fn write_and_show(sweep: &Sweep, args: &TradeoffArgs, ui: &Ui) -> error::Result<()> {
+/// The plot is drawn with the checkout `checkout` finds, unless
+/// `--no-plot`.
+pub fn write_and_show(
+    sweep: &Sweep,
+    args: &TradeoffArgs,
+    checkout: &Lookup,
+    ui: &Ui,
+) -> error::Result<()> {
     let lang = ui.lang;
     let files = &sweep.files;
-    let written = engine::write_sweep(sweep, !args.no_plot)?;
+    let written = engine::write_sweep(sweep, (!args.no_plot).then_some(checkout))?;
     let plotted = written.get(2);
     let mut record = Record::new("tradeoff", String::new(), "");
     let answer = written

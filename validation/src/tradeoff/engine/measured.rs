@@ -198,7 +198,7 @@ fn measure(
     let grazing_truth = (grazing.count() > 0)
         .then(|| measure::Truth::new(truth.image.clone(), truth.noise, &grazing));
     let mut scene_grazing: Option<measure::Truth> = None;
-    let mut second = second::Second::new(job.scene(), &args.scene);
+    let mut second = second::Second::new(job.scene(), &args.scene, &args.checkout);
     for (point, timed) in plan.points.into_iter().zip(timed) {
         let errors = measure::errors(&timed.images, truth, &mask);
         second.add(&point.label, &timed.images);
@@ -242,7 +242,7 @@ fn measure(
         truth: truth_record,
         points,
         skipped: plan.skipped,
-        rgb_against_spectrum: metals::rgb_against_spectrum(job.scene()),
+        rgb_against_spectrum: metals::rgb_against_spectrum(job.scene(), &args.checkout),
         findings: None,
         collected: provenance.collected,
         mitsuba,

@@ -4,6 +4,8 @@
 
 use std::path::PathBuf;
 
+use crate::checkout::Lookup;
+
 /// What a sweep is to measure, and how.
 #[derive(Clone, Debug, PartialEq)]
 pub struct SweepRequest {
@@ -31,6 +33,9 @@ pub struct SweepRequest {
     pub fresh: bool,
     /// Worker threads (all cores when `None`).
     pub threads: Option<usize>,
+    /// Where the checkout is (its references: Mitsuba's renders and the
+    /// metals' spectra; its plot script), as the front end was told.
+    pub checkout: Lookup,
 }
 
 impl SweepRequest {

@@ -11,6 +11,7 @@ use super::measured::median;
 use super::request::SweepRequest;
 use super::setup::Setup;
 use super::timing::{renders_wanted, MAX_RENDERS};
+use crate::checkout::Lookup;
 use crate::tradeoff::error::TradeoffError;
 use crate::tradeoff::jobs::{self, Input, Job, JobError, JobResult, LineKind, Place, Planned};
 use crate::tradeoff::render::render;
@@ -43,6 +44,8 @@ pub fn run_job(
     out: &Path,
     threads: Option<usize>,
 ) -> Result<JobRun, TradeoffError> {
+    // A job renders and times; it reads no reference.
+    let checkout = Lookup::default();
     let line: Job = jobs::read_line(text, LineKind::Job, &at)?;
     let scene = PathBuf::from(&line.scene);
     if let Ok(bytes) = std::fs::read(&scene) {
@@ -62,6 +65,7 @@ pub fn run_job(
         lambert: line.lambert,
         fresh: false,
         threads,
+        checkout,
     };
     let setup = Setup::new(&sweep)?;
     let planned = Planned::new(&setup.key, &setup.job, &setup.plan);

@@ -9,25 +9,25 @@ use record::Lang;
 
 use super::measured::{Measured, Sweep};
 use super::second;
-use crate::checkout::Checkout;
+use crate::checkout::Lookup;
 use crate::python::{run_tool, Task};
 use crate::tradeoff::checks::UNCONVERGED;
 use crate::tradeoff::error::TradeoffError;
 use crate::tradeoff::verdict::Verdict;
 use crate::tradeoff::{prose, sweep};
 
-/// Writes the sweep's JSON and Markdown and, with `plot_too`, its Pareto
-/// plot: all of them or none. The plot is drawn first, from the JSON in a
+/// Writes the sweep's JSON and Markdown and, given the checkout's
+/// `lookup`, its Pareto plot (drawn by that checkout's script and Python
+/// environment): all of them or none. The plot is drawn first, from the JSON in a
 /// directory of its own, so that a plot that cannot be drawn leaves no
 /// record behind. Returns the files written.
-pub fn write_sweep(sweep: &Sweep, plot_too: bool) -> Result<Vec<PathBuf>, TradeoffError> {
+pub fn write_sweep(sweep: &Sweep, plot: Option<&Lookup>) -> Result<Vec<PathBuf>, TradeoffError> {
     let files = &sweep.files;
     let json = serde_json::to_string_pretty(sweep).map_err(TradeoffError::Encode)? + "\n";
     let markdown = markdown(sweep, &sweep.stem);
-    let png = if plot_too {
-        Some(plot_bytes(&json)?)
-    } else {
-        None
+    let png = match plot {
+        Some(lookup) => Some(plot_bytes(&json, lookup)?),
+        None => None,
     };
     let mut written = vec![
         (files.json.as_path(), json.as_bytes()),
@@ -41,7 +41,7 @@ pub fn write_sweep(sweep: &Sweep, plot_too: bool) -> Result<Vec<PathBuf>, Tradeo
 }
 
 /// The Pareto plot of the record `json`, drawn in a temporary directory.
-fn plot_bytes(json: &str) -> Result<Vec<u8>, TradeoffError> {
+fn plot_bytes(json: &str, lookup: &Lookup) -> Result<Vec<u8>, TradeoffError> {
     let io = |path: &Path, source| {
         TradeoffError::Output(
             safe_io::WriteError::Io {
@@ -54,7 +54,7 @@ fn plot_bytes(json: &str) -> Result<Vec<u8>, TradeoffError> {
     let dir = tempfile::tempdir().map_err(|e| io(&std::env::temp_dir(), e))?;
     let (record, png) = (dir.path().join("sweep.json"), dir.path().join("sweep.png"));
     std::fs::write(&record, json).map_err(|e| io(&record, e))?;
-    plot(&record, &png)?;
+    plot(&record, &png, lookup)?;
     std::fs::read(&png).map_err(|e| io(&png, e))
 }
 
@@ -208,9 +208,10 @@ pub fn verdicts(sweep: &Sweep) -> Vec<String> {
 }
 
 /// Draws `json`'s Pareto plot into `png` with the checkout's
-/// `python-checks/plot_tradeoff.py` and its `.venv`.
-pub fn plot(json: &Path, png: &Path) -> Result<PathBuf, TradeoffError> {
-    let checkout = Checkout::find(None).map_err(TradeoffError::Checkout)?;
+/// `python-checks/plot_tradeoff.py` and its `.venv`, of the checkout
+/// `lookup` finds.
+pub fn plot(json: &Path, png: &Path, lookup: &Lookup) -> Result<PathBuf, TradeoffError> {
+    let checkout = lookup.find().map_err(TradeoffError::Checkout)?;
     let python = checkout.root().join(".venv/bin/python");
     if !python.is_file() {
         return Err(TradeoffError::NoPython { python });
