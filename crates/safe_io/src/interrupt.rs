@@ -17,7 +17,8 @@
 //! the destination, under a name of its own; the destination itself is
 //! always either whole or absent.
 //!
-//! **Test hook.** With `TRACER_TEST_PAUSE=mid-stage` the writer pauses
+//! **Test hook** (only with the `test-hooks` feature, which the tests turn
+//! on). With `TRACER_TEST_PAUSE=mid-stage` the writer pauses
 //! after the first temporary of a set is written and before the next is
 //! begun; with `TRACER_TEST_PAUSE=before-commit`, once its temporaries are
 //! complete and before the first rename;
@@ -140,7 +141,22 @@ fn phase() -> Phase {
     }
 }
 
+/// The pause the test hook asks for: [`PAUSE_VARIABLE`]'s value, read
+/// only in a build with the `test-hooks` feature (the tests turn it on
+/// through their dev-dependencies; a shipped build reads no variable and
+/// never pauses).
 fn hooked() -> Option<String> {
+    #[cfg(feature = "test-hooks")]
+    return test_hook_variable();
+    #[cfg(not(feature = "test-hooks"))]
+    None
+}
+
+/// [`PAUSE_VARIABLE`]'s value: a function of its own, never inlined, so
+/// that `.ci/no-fault-switches` can tell a build that has the hook.
+#[cfg(feature = "test-hooks")]
+#[inline(never)]
+fn test_hook_variable() -> Option<String> {
     std::env::var(PAUSE_VARIABLE).ok()
 }
 
