@@ -55,10 +55,10 @@ pub fn run(args: &InspectArgs, ui: &Ui) -> error::Result<()> {
     };
     let measure = |machinery: &Machinery| measure(&job, machinery, &runs, &progress);
     let base = measure(job.machinery());
-    let full: error::Result<Vec<(&str, Rendered)>> = match &base {
+    let full: error::Result<Vec<(Part, Rendered)>> = match &base {
         Ok(_) => parts
             .iter()
-            .map(|(name, machinery)| Ok((*name, measure(machinery)?)))
+            .map(|(part, machinery)| Ok((*part, measure(machinery)?)))
             .collect(),
         Err(_) => Ok(Vec::new()),
     };
@@ -68,8 +68,8 @@ pub fn run(args: &InspectArgs, ui: &Ui) -> error::Result<()> {
     let base = base?;
     let mut costs = Vec::new();
     let mut lines = Vec::new();
-    for (name, full) in full? {
-        let (cost, line) = cost_of(name, &full, &base, lang);
+    for (part, full) in full? {
+        let (cost, line) = cost_of(part, &full, &base, lang);
         costs.push(cost);
         lines.push(line);
     }
@@ -137,13 +137,56 @@ fn measure(
     Ok(best)
 }
 
+/// A part of the machinery the job skips because the scene does not need
+/// it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Part {
+    /// The shadow rays.
+    ShadowRays,
+    /// The lights that light nothing.
+    UnusedLights,
+    /// The samples after the first, where every path is deterministic.
+    ExtraSamples,
+    /// The rest of the paths the closed mirror tube holds.
+    HeldPaths,
+    /// All of them together.
+    All,
+}
+
+impl Part {
+    /// Its name in the record (`part`).
+    fn name(self) -> &'static str {
+        match self {
+            Part::ShadowRays => "shadow_rays",
+            Part::UnusedLights => "unused_lights",
+            Part::ExtraSamples => "extra_samples",
+            Part::HeldPaths => "held_paths",
+            Part::All => "all",
+        }
+    }
+
+    /// Its name in words, as a sentence starts.
+    fn words(self, lang: Lang) -> &'static str {
+        match self {
+            Part::ShadowRays => lang.pick("the shadow rays", "az árnyéksugarak"),
+            Part::UnusedLights => lang.pick("the unused lights", "a nem használt fények"),
+            Part::ExtraSamples => lang.pick("the samples after the first", "az első utáni minták"),
+            Part::HeldPaths => lang.pick(
+                "the rest of the paths the mirror tube holds",
+                "a tükörcsőben tartott utak folytatása",
+            ),
+            Part::All => lang.pick("all of them", "mindez együtt"),
+        }
+    }
+}
+
 /// Each part the job skips switched back on alone, then all together.
-fn skipped_parts(job: &RenderJob) -> Vec<(&'static str, Machinery)> {
+fn skipped_parts(job: &RenderJob) -> Vec<(Part, Machinery)> {
     let (lean, everything) = (job.machinery(), job.everything());
-    let mut parts: Vec<(&str, Machinery)> = Vec::new();
+    let mut parts: Vec<(Part, Machinery)> = Vec::new();
     if !lean.shadow_rays && job.needs().lights.iter().any(|l| l.used) {
         parts.push((
-            "shadow_rays",
+            Part::ShadowRays,
             Machinery {
                 shadow_rays: true,
                 ..lean.clone()
@@ -152,7 +195,7 @@ fn skipped_parts(job: &RenderJob) -> Vec<(&'static str, Machinery)> {
     }
     if lean.lights != everything.lights {
         parts.push((
-            "unused_lights",
+            Part::UnusedLights,
             // With their shadow rays: what blocks a light is part of its cost.
             Machinery {
                 lights: everything.lights.clone(),
@@ -163,7 +206,7 @@ fn skipped_parts(job: &RenderJob) -> Vec<(&'static str, Machinery)> {
     }
     if lean.spp != everything.spp {
         parts.push((
-            "extra_samples",
+            Part::ExtraSamples,
             Machinery {
                 spp: everything.spp,
                 ..lean.clone()
@@ -172,7 +215,7 @@ fn skipped_parts(job: &RenderJob) -> Vec<(&'static str, Machinery)> {
     }
     if lean.trap.is_some() {
         parts.push((
-            "held_paths",
+            Part::HeldPaths,
             Machinery {
                 trap: None,
                 ..lean.clone()
@@ -180,7 +223,7 @@ fn skipped_parts(job: &RenderJob) -> Vec<(&'static str, Machinery)> {
         ));
     }
     if parts.len() > 1 {
-        parts.push(("all", everything));
+        parts.push((Part::All, everything));
     }
     parts
 }
@@ -190,8 +233,8 @@ fn yes_no(lang: Lang, b: bool) -> String {
         .to_owned()
 }
 
-/// What switching `name` back on cost against `base`: the record and its line.
-fn cost_of(name: &str, full: &Rendered, base: &Rendered, lang: Lang) -> (Value, String) {
+/// What switching `part` back on cost against `base`: the record and its line.
+fn cost_of(part: Part, full: &Rendered, base: &Rendered, lang: Lang) -> (Value, String) {
     let extra_rays = full.rays.total() as i64 - base.rays.total() as i64;
     let extra_seconds = full.elapsed.as_secs_f64() - base.elapsed.as_secs_f64();
     let identical = full.image == base.image;
@@ -207,7 +250,7 @@ fn cost_of(name: &str, full: &Rendered, base: &Rendered, lang: Lang) -> (Value, 
         lang,
         "{}: would cost {} more rays ({:+.1} %), {:+.4} s; image identical: {}",
         "{}: {} további sugár ({:+.1} %), {:+.4} s; a kép azonos: {}",
-        name,
+        part.words(lang),
         extra_rays,
         100.0 * extra_rays as f64 / base.rays.total().max(1) as f64,
         extra_seconds,
@@ -224,7 +267,7 @@ fn cost_of(name: &str, full: &Rendered, base: &Rendered, lang: Lang) -> (Value, 
         }
     );
     let cost = json!({
-        "part": name,
+        "part": part.name(),
         "extra_rays": extra_rays,
         "extra_seconds": extra_seconds,
         "image_identical": identical,
@@ -250,15 +293,28 @@ fn needs_steps(needs: &Needs, deepest: u32, lang: Lang) -> Vec<String> {
         .map(|l| {
             let kind = needs::light_kind(l.kind, lang);
             match l.reason {
-                None => format!("{} {kind}", l.index),
-                Some(r) => format!("{} {kind} ({})", l.index, needs::unused(r, lang)),
+                None => say!(
+                    lang,
+                    "light {} ({}) used",
+                    "{}. fény ({}): használt",
+                    l.index,
+                    kind
+                ),
+                Some(r) => say!(
+                    lang,
+                    "light {} ({}) not used: {}",
+                    "{}. fény ({}): nem használt: {}",
+                    l.index,
+                    kind,
+                    needs::unused(r, lang)
+                ),
             }
         })
         .collect();
     let lights = if lights.is_empty() {
         lang.pick("none", "nincs").to_owned()
     } else {
-        lights.join(", ")
+        lights.join("; ")
     };
     vec![
         say!(
@@ -297,6 +353,6 @@ fn needs_steps(needs: &Needs, deepest: u32, lang: Lang) -> Vec<String> {
             "lehet árnyék: {}",
             yes_no(lang, needs.shadows)
         ),
-        say!(lang, "lights used: {}", "használt fények: {}", lights),
+        say!(lang, "lights: {}", "fények: {}", lights),
     ]
 }

@@ -427,10 +427,32 @@ fn inspect_reports_needs_and_measures_the_skipped_shadow_rays() {
         report.contains("light 0 (directional) skipped: the closed mirror tube around the camera"),
         "{report}"
     );
+    // Each light says whether it is used, in words: "lights used: 0
+    // directional" read as no light at all.
     assert!(
-        report.contains("unused_lights: would cost") && report.contains("image identical: yes"),
+        report.contains(
+            "lights: light 0 (directional) not used: the closed mirror tube around the camera"
+        ),
         "{report}"
     );
+    // The part switched back on is named in words, not by its record key.
+    assert!(
+        report.contains("the unused lights: would cost") && report.contains("image identical: yes"),
+        "{report}"
+    );
+    assert!(!report.contains("unused_lights"), "{report}");
+    let lit = text(
+        &optics(&[
+            "inspect",
+            &scene("shadow"),
+            "--width",
+            "16",
+            "--height",
+            "12",
+        ])
+        .stdout,
+    );
+    assert!(lit.contains("lights: light 0 (directional) used"), "{lit}");
 }
 
 /// `inspect` takes the settings `render` takes, and settles them the same
