@@ -186,7 +186,7 @@ pub fn run(args: &RenderArgs, ui: &Ui) -> error::Result<()> {
     if let Some(bar) = &bar {
         bar.finish_and_clear();
     }
-    ui.show_steps(&record(args, &job, &destination, &rendered?, ui.lang))
+    ui.show_steps_and_notes(&record(args, &job, &destination, &rendered?, ui.lang))
 }
 
 /// Past [`WARN_RAYS`], the estimate on stderr before the work starts.

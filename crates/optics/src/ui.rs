@@ -40,6 +40,18 @@ impl Ui {
         print_out(&steps)
     }
 
+    /// [`Ui::show_steps`], and in text the record's notes after its steps
+    /// (what was skipped or reduced, what to mind), which are otherwise
+    /// read only in the JSON.
+    pub fn show_steps_and_notes(&self, record: &Record) -> error::Result<()> {
+        self.show_steps(record)?;
+        if self.json {
+            return Ok(());
+        }
+        let notes: String = record.notes.iter().map(|n| format!("{n}\n")).collect();
+        print_out(&notes)
+    }
+
     /// The form chosen on a command line that did not parse: `--json` and
     /// `--lang hu` are looked for among the raw arguments, so that even a
     /// syntax error is reported in the form asked for.

@@ -63,6 +63,24 @@ fn render_writes_a_png_and_a_pfm_and_prints_a_summary() {
     assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 2);
 }
 
+/// Samples a deterministic integrator cannot use are said to be dropped
+/// in the text too, not only in `--json`'s notes: `--spp 4` under
+/// `whitted` renders one sample per pixel, and says so.
+#[test]
+fn samples_a_deterministic_render_drops_are_said_in_the_text() {
+    let dir = tempfile::tempdir().unwrap();
+    let png = dir.path().join("shadow.png");
+    let out = render_small(&scene("shadow"), &png, &["--spp", "4"]);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let said = text(&out.stdout);
+    assert!(
+        said.contains("4 samples per pixel reduced to 1: the whitted integrator is deterministic"),
+        "{said}"
+    );
+    let out = render_small(&scene("shadow"), &png, &["--spp", "1"]);
+    assert!(!text(&out.stdout).contains("reduced to 1"));
+}
+
 #[test]
 fn render_json_record_has_the_documented_fields() {
     let dir = tempfile::tempdir().unwrap();

@@ -153,14 +153,9 @@ pub fn write_and_show(
         ));
     }
     record.detail("sweep", sweep);
-    ui.show_steps(&record)?;
     // The notes (what was not swept, a truth not to be trusted) are read
     // after the table in text too, not only in the JSON.
-    if !ui.json {
-        let notes: String = record.notes.iter().map(|n| format!("{n}\n")).collect();
-        crate::ui::print_out(&notes)?;
-    }
-    Ok(())
+    ui.show_steps_and_notes(&record)
 }
 
 /// Prints what `--plan` wrote: how many jobs, how to run them and how to
