@@ -153,6 +153,28 @@ impl ShadeArgs {
                 number(radiance)
             )
         });
+        let coefficients_used: &[(&str, f64)] = match model {
+            ShadeModel::Lambert | ShadeModel::CourseLambert => &[("kd", kd)],
+            _ => &[("kd", kd), ("ks", ks)],
+        };
+        if coefficients_used.iter().all(|&(_, c)| c == 0.0) {
+            let names: Vec<String> = coefficients_used.iter().map(|(f, _)| via.name(f)).collect();
+            let names = names.join(lang.pick(" and ", " és "));
+            record.note(match coefficients_used.len() {
+                1 => say!(
+                    lang,
+                    "{} is 0 (its value when not given): this surface reflects nothing",
+                    "{} értéke 0 (megadás nélkül ennyi): ez a felület semmit sem ver vissza",
+                    names
+                ),
+                _ => say!(
+                    lang,
+                    "{} are both 0 (their value when not given): this surface reflects nothing",
+                    "{} értéke egyaránt 0 (megadás nélkül ennyi): ez a felület semmit sem ver vissza",
+                    names
+                ),
+            });
+        }
         if side == Hemisphere::ViewerBelow {
             record.note(say!(
                 lang,

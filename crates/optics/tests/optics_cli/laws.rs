@@ -85,3 +85,38 @@ fn law_evaluators_print_the_documented_json_record() {
     ]);
     assert!((number(&shaded["answer"]) - 1.0 / std::f64::consts::PI).abs() < 1e-15);
 }
+
+/// A BRDF whose every coefficient is 0 (their value when not given)
+/// reflects nothing, and the record says so rather than answering 0
+/// silently; one coefficient given is enough to lift the note.
+#[test]
+fn a_brdf_with_no_coefficient_given_says_it_reflects_nothing() {
+    let geometry = [
+        "--normal",
+        "0,0,1",
+        "--light-dir",
+        "0,3,4",
+        "--view-dir",
+        "0,4,3",
+        "--radiance",
+        "5",
+    ];
+    let mut args = vec!["shade"];
+    args.extend(geometry);
+    let record = json(&args);
+    assert_eq!(number(&record["answer"]), 0.0);
+    let notes = record["notes"].to_string();
+    assert!(
+        notes.contains("--kd and --ks are both 0 (their value when not given)"),
+        "{notes}"
+    );
+    let mut lambert = vec!["shade", "--model", "lambert"];
+    lambert.extend(geometry);
+    let notes = json(&lambert)["notes"].to_string();
+    assert!(notes.contains("--kd is 0"), "{notes}");
+    let mut given = vec!["shade", "--ks", "1"];
+    given.extend(geometry);
+    assert!(!json(&given)["notes"]
+        .to_string()
+        .contains("reflects nothing"));
+}
