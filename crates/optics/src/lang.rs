@@ -53,7 +53,18 @@ fn hungarian(kind: &ErrorKind) -> String {
         ErrorKind::CosineOrAngle { cosine, angle } => {
             format!("{cosine} és {angle} közül pontosan egyet kell megadni")
         }
-        ErrorKind::ConductorFromInside { name, cos_i } => format!(
+        ErrorKind::ConductorFromInside {
+            name,
+            degrees: Some(degrees),
+            ..
+        } => format!(
+            "{name}: vezetőnél (kappa > 0) legfeljebb 90 fok lehet: fény nem érkezhet fém belsejéből, kapott érték: {degrees}"
+        ),
+        ErrorKind::ConductorFromInside {
+            name,
+            cos_i,
+            degrees: None,
+        } => format!(
             "{name}: vezetőnél (kappa > 0) ≥ 0 kell legyen: fény nem érkezhet fém belsejéből, kapott érték: {cos_i}"
         ),
         ErrorKind::NoCriticalAngle {

@@ -34,10 +34,20 @@ impl fmt::Display for ErrorKind {
             ErrorKind::CosineOrAngle { cosine, angle } => {
                 write!(f, "give exactly one of {cosine} and {angle}")
             }
-            ErrorKind::ConductorFromInside { name, cos_i } => write!(
-                f,
-                "{name} must be ≥ 0 for a conductor (kappa > 0): light cannot arrive from inside a metal, got {cos_i}"
-            ),
+            ErrorKind::ConductorFromInside {
+                name,
+                cos_i,
+                degrees,
+            } => match degrees {
+                Some(degrees) => write!(
+                    f,
+                    "{name} must be at most 90 degrees for a conductor (kappa > 0): light cannot arrive from inside a metal, got {degrees}"
+                ),
+                None => write!(
+                    f,
+                    "{name} must be ≥ 0 for a conductor (kappa > 0): light cannot arrive from inside a metal, got {cos_i}"
+                ),
+            },
             ErrorKind::NoCriticalAngle {
                 name,
                 n,

@@ -52,6 +52,8 @@ pub enum ErrorKind {
         name: String,
         /// The signed cosine of incidence it gave.
         cos_i: f64,
+        /// The angle of incidence, degrees, where the input was an angle.
+        degrees: Option<f64>,
     },
     /// A critical angle asked for light going into a denser (or equal) medium.
     NoCriticalAngle {

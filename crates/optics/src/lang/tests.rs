@@ -93,8 +93,17 @@ fn every_kind() -> Vec<(Error, Vec<String>)> {
             ErrorKind::ConductorFromInside {
                 name: "--cos-i".into(),
                 cos_i: -0.5,
+                degrees: None,
             },
             named("--cos-i"),
+        ),
+        (
+            ErrorKind::ConductorFromInside {
+                name: "--theta-i-deg".into(),
+                cos_i: -0.5,
+                degrees: Some(120.0),
+            },
+            named("--theta-i-deg"),
         ),
         (
             ErrorKind::NoCriticalAngle {

@@ -227,3 +227,26 @@ fn hungarian_errors_leave_no_english_of_the_suites_own() {
     let text = error["message"].as_str().expect("a message");
     assert!(text.starts_with("hibás JSON: "), "{text}");
 }
+
+/// Light from inside a metal is refused in the quantity the user gave:
+/// an angle past 90° is named as an angle (not as the cosine it makes,
+/// -0.4999999999999998 for 120°), a negative cosine as a cosine.
+#[test]
+fn a_conductor_lit_from_inside_is_refused_in_the_quantity_given() {
+    let metal = ["fresnel", "--eta", "0.17", "--kappa", "3.1"];
+    let angle = optics(&[&metal[..], &["--theta-i-deg", "120"]].concat());
+    assert_eq!(angle.status.code(), Some(1));
+    let text = stderr(&angle);
+    assert!(
+        text.contains("--theta-i-deg must be at most 90 degrees for a conductor")
+            && text.contains("got 120"),
+        "{text}"
+    );
+    assert!(!text.contains("-0.49"), "{text}");
+    let cosine = optics(&[&metal[..], &["--cos-i", "-0.5"]].concat());
+    let text = stderr(&cosine);
+    assert!(
+        text.contains("--cos-i must be ≥ 0 for a conductor") && text.contains("got -0.5"),
+        "{text}"
+    );
+}

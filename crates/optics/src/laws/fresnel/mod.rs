@@ -124,7 +124,12 @@ impl FresnelArgs {
             } else {
                 "theta_i_deg"
             });
-            return Err(Error::from(ErrorKind::ConductorFromInside { name, cos_i }));
+            let degrees = self.theta_i_deg.filter(|_| self.cos_i.is_none());
+            return Err(Error::from(ErrorKind::ConductorFromInside {
+                name,
+                cos_i,
+                degrees,
+            }));
         }
         Ok(cos_i)
     }
