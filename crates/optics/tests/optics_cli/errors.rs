@@ -250,3 +250,32 @@ fn a_conductor_lit_from_inside_is_refused_in_the_quantity_given() {
         "{text}"
     );
 }
+
+/// `fresnel` without an angle asks for either form of it, not for the
+/// cosine alone: the usage names `--cos-i` and `--theta-i-deg` as one
+/// choice, and both given are refused.
+#[test]
+fn fresnel_without_an_incidence_asks_for_either_form() {
+    let missing = optics(&["fresnel", "--eta", "1.5"]);
+    assert_eq!(missing.status.code(), Some(2));
+    let text = stderr(&missing);
+    assert!(
+        text.contains("<--cos-i <COS_I>|--theta-i-deg <THETA_I_DEG>>"),
+        "{text}"
+    );
+    let both = optics(&[
+        "fresnel",
+        "--eta",
+        "1.5",
+        "--cos-i",
+        "1",
+        "--theta-i-deg",
+        "3",
+    ]);
+    assert_eq!(both.status.code(), Some(2));
+    assert!(
+        stderr(&both).contains("cannot be used with"),
+        "{}",
+        stderr(&both)
+    );
+}

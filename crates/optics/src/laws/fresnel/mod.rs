@@ -31,6 +31,7 @@ mod working;
 #[serde(deny_unknown_fields)]
 #[command(
     allow_negative_numbers = true,
+    group = clap::ArgGroup::new("incidence").required(true).args(["cos_i", "theta_i_deg"]),
     after_help = "Examples:
   optics fresnel --eta 1.5 --theta-i-deg 60
   optics fresnel --eta 1.5 --cos-i -0.5           (from inside the glass: total internal reflection)
@@ -46,12 +47,7 @@ pub struct FresnelArgs {
     #[serde(default)]
     pub kappa: f64,
     /// Signed cosine of incidence, n·wi: > 0 from outside, < 0 from inside.
-    #[arg(
-        long,
-        required_unless_present = "theta_i_deg",
-        conflicts_with = "theta_i_deg",
-        allow_hyphen_values = true
-    )]
+    #[arg(long, allow_hyphen_values = true)]
     #[serde(default)]
     pub cos_i: Option<f64>,
     /// Angle of incidence from the outward normal in degrees, 0..180 (over 90: from inside).
