@@ -78,9 +78,12 @@ pub struct LambertArgs {
     /// Direction towards the light (any length).
     #[arg(long, allow_hyphen_values = true)]
     pub light_dir: Vec3Arg,
-    /// Direction towards the camera (any length).
+    /// Direction towards the camera (any length; optional: a Lambert
+    /// surface looks alike from every direction above it, and nothing is
+    /// seen from below).
     #[arg(long, allow_hyphen_values = true)]
-    pub view_dir: Vec3Arg,
+    #[serde(default)]
+    pub view_dir: Option<Vec3Arg>,
     /// The light's L_in, W/m² on a surface facing it.
     #[arg(long, allow_hyphen_values = true)]
     pub radiance: f64,
@@ -95,7 +98,8 @@ impl LambertArgs {
             model: ShadeModel::CourseLambert,
             normal: self.normal,
             light_dir: self.light_dir,
-            view_dir: self.view_dir,
+            // Without a view direction, the viewer looks along the normal.
+            view_dir: self.view_dir.unwrap_or(self.normal),
             radiance: self.radiance,
             kd: self.kd,
             ks: 0.0,
@@ -108,11 +112,18 @@ impl LambertArgs {
             "The course's Lambert law: L_ref = L_in · kd · cos⁺θin",
             "Lambert-törvény a kurzus alakjában: L_ref = L_in · kd · cos⁺θin"
         );
-        record.step(|| say!(
-            lang,
-            "the view direction does not enter: a Lambert surface looks equally bright from everywhere above it",
-            "a nézeti irány nem számít: a Lambert-felület minden fölötte lévő irányból egyformán fényesnek látszik"
-        ));
+        record.step(|| match self.view_dir {
+            Some(_) => say!(
+                lang,
+                "the view direction does not enter: a Lambert surface looks equally bright from everywhere above it",
+                "a nézeti irány nem számít: a Lambert-felület minden fölötte lévő irányból egyformán fényesnek látszik"
+            ),
+            None => say!(
+                lang,
+                "no view direction is needed: a Lambert surface looks equally bright from everywhere above it",
+                "nézeti irány nem kell: a Lambert-felület minden fölötte lévő irányból egyformán fényesnek látszik"
+            ),
+        });
         let normalized = shading.radiance / std::f64::consts::PI;
         record.note(say!(
             lang,

@@ -101,7 +101,7 @@ fn solved(lang: Lang) -> Result<[Record; 4]> {
     let lambert = LambertArgs {
         normal: Vec3Arg([0.0, 0.0, 1.0]),
         light_dir: Vec3Arg([0.0, 3.0, 4.0]),
-        view_dir: Vec3Arg([1.0, 2.0, 3.0]),
+        view_dir: Some(Vec3Arg([1.0, 2.0, 3.0])),
         radiance: 5.0,
         kd: 0.6,
     }

@@ -344,3 +344,29 @@ fn quiz_seed_says_the_directional_light_is_given_as_a_radiance_but_is_an_irradia
         );
     }
 }
+
+/// The Lambert exercise needs no view direction (it does not enter a
+/// Lambert surface's radiance from above): without `--view-dir` the
+/// answer is the quiz's 2.4, the same as with any direction above.
+#[test]
+fn the_lambert_exercise_needs_no_view_direction() {
+    let base = [
+        "quiz",
+        "lambert",
+        "--normal",
+        "0,0,1",
+        "--light-dir",
+        "0,3,4",
+        "--radiance",
+        "5",
+        "--kd",
+        "0.6",
+    ];
+    let without = json(&base);
+    assert_eq!(number(&without["answer"]), 2.4);
+    assert!(without["steps"]
+        .to_string()
+        .contains("no view direction is needed"));
+    let with = json(&[&base[..], &["--view-dir", "1,2,3"]].concat());
+    assert_eq!(without["answer"], with["answer"]);
+}
