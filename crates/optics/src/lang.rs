@@ -76,7 +76,14 @@ fn hungarian(kind: &ErrorKind) -> String {
             "{name} = {n} nem nagyobb, mint {name_outside} = {n_outside}: sűrűbb (vagy azonos) közegbe lépő fény mindig megtörik, nincs határszög"
         ),
         ErrorKind::EmptyLine => "üres sor: minden sor egy kérést tartalmaz".to_owned(),
-        ErrorKind::MalformedJson(error) => format!("hibás JSON: {error}"),
+        ErrorKind::MalformedJson { error, non_finite } => format!(
+            "hibás JSON: {error}{}",
+            if *non_finite {
+                " (a JSON számai végesek: a NaN és az Infinity nem szám)"
+            } else {
+                ""
+            }
+        ),
         ErrorKind::NotAnObject => "a kérésnek JSON-objektumnak kell lennie".to_owned(),
         ErrorKind::LawMissing => "law: hiányzik; minden kérés megnevezi a törvényét".to_owned(),
         ErrorKind::LawNotString => "law: szövegnek kell lennie".to_owned(),

@@ -112,6 +112,24 @@ impl<'de> Visitor<'de> for ValueVisitor {
     }
 }
 
+/// Why JSON has no NaN or infinity, for a reader whose text spells one
+/// where parsing stopped ([`spells_non_finite`]).
+pub const NON_FINITE_HINT: &str = "JSON numbers are finite: NaN and Infinity are not numbers";
+
+/// Whether `text`, where `error` stopped parsing it, spells a number JSON
+/// does not have (`NaN`, `Infinity` or `inf`, signed or not).
+pub fn spells_non_finite(text: &str, error: &serde_json::Error) -> bool {
+    let here = text
+        .lines()
+        .nth(error.line().saturating_sub(1))
+        .and_then(|line| line.get(error.column().saturating_sub(1)..))
+        .unwrap_or("");
+    let here = here.trim_start_matches(['-', '+']);
+    ["NaN", "Infinity", "inf"]
+        .iter()
+        .any(|word| here.starts_with(word))
+}
+
 /// `error`'s message without the position `serde_json` appends to it
 /// (" at line L column C"), for a reader that names the place itself.
 pub fn without_position(error: &serde_json::Error) -> String {

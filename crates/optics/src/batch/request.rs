@@ -181,19 +181,26 @@ thread_local! {
 fn object(text: &str) -> std::result::Result<Value, ErrorKind> {
     #[cfg(test)]
     if REPEATED_KEYS_KEPT.get() {
-        return serde_json::from_str(text).map_err(ErrorKind::MalformedJson);
+        return serde_json::from_str(text).map_err(|e| malformed(text, e));
     }
     let json = &mut serde_json::Deserializer::from_str(text);
     let UniqueKeys(value) = serde_path_to_error::deserialize(&mut *json).map_err(|e| {
         if e.inner().classify() != Category::Data {
-            return ErrorKind::MalformedJson(e.into_inner());
+            return malformed(text, e.into_inner());
         }
         let path = Some(e.path().to_string());
         let message = without_position(e.inner());
         ErrorKind::Request { path, message }
     })?;
-    json.end().map_err(ErrorKind::MalformedJson)?;
+    json.end().map_err(|e| malformed(text, e))?;
     Ok(value)
+}
+
+/// A line that is not JSON, with the hint where it spells NaN or an
+/// infinity.
+fn malformed(text: &str, error: serde_json::Error) -> ErrorKind {
+    let non_finite = safe_io::json::spells_non_finite(text, &error);
+    ErrorKind::MalformedJson { error, non_finite }
 }
 
 /// What is wrong with a line: the error, and the law as the line gave it

@@ -55,7 +55,13 @@ impl fmt::Display for ErrorKind {
                 n_outside,
             } => no_critical_angle(f, (name, *n), (name_outside, *n_outside)),
             ErrorKind::EmptyLine => write!(f, "empty line: every line holds one request"),
-            ErrorKind::MalformedJson(error) => write!(f, "malformed JSON: {error}"),
+            ErrorKind::MalformedJson { error, non_finite } => {
+                write!(f, "malformed JSON: {error}")?;
+                if *non_finite {
+                    write!(f, " ({})", safe_io::json::NON_FINITE_HINT)?;
+                }
+                Ok(())
+            }
             ErrorKind::NotAnObject => write!(f, "a request must be a JSON object"),
             ErrorKind::LawMissing => write!(f, "law: missing; every request names its law"),
             ErrorKind::LawNotString => write!(f, "law: must be a string"),

@@ -69,7 +69,12 @@ pub enum ErrorKind {
     /// A batch line with nothing on it.
     EmptyLine,
     /// A batch line that is not JSON; serde's message.
-    MalformedJson(serde_json::Error),
+    MalformedJson {
+        /// serde's message.
+        error: serde_json::Error,
+        /// Whether the line spells NaN or an infinity where parsing stopped.
+        non_finite: bool,
+    },
     /// A batch line that is JSON but not an object.
     NotAnObject,
     /// A request without a `law`.
@@ -160,7 +165,7 @@ impl ErrorKind {
             ErrorKind::ConductorFromInside { .. } => "conductor_from_inside",
             ErrorKind::NoCriticalAngle { .. } => "no_critical_angle",
             ErrorKind::EmptyLine => "empty_line",
-            ErrorKind::MalformedJson(_) => "malformed_json",
+            ErrorKind::MalformedJson { .. } => "malformed_json",
             ErrorKind::NotAnObject => "not_an_object",
             ErrorKind::LawMissing => "law_missing",
             ErrorKind::LawNotString => "law_not_a_string",
@@ -197,7 +202,7 @@ impl ErrorKind {
             ErrorKind::VectorParts { .. }
             | ErrorKind::VectorComponent { .. }
             | ErrorKind::EmptyLine
-            | ErrorKind::MalformedJson(_)
+            | ErrorKind::MalformedJson { .. }
             | ErrorKind::NotAnObject
             | ErrorKind::ReadLine { .. }
             | ErrorKind::NotUtf8 { .. }

@@ -116,7 +116,10 @@ fn every_kind() -> Vec<(Error, Vec<String>)> {
         ),
         (ErrorKind::EmptyLine, vec![]),
         (
-            ErrorKind::MalformedJson(json_error()),
+            ErrorKind::MalformedJson {
+                error: json_error(),
+                non_finite: false,
+            },
             vec![json_error().to_string()],
         ),
         (ErrorKind::NotAnObject, vec![]),
@@ -207,7 +210,7 @@ fn slot(kind: &ErrorKind) -> usize {
         ErrorKind::ConductorFromInside { .. } => 8,
         ErrorKind::NoCriticalAngle { .. } => 9,
         ErrorKind::EmptyLine => 10,
-        ErrorKind::MalformedJson(_) => 11,
+        ErrorKind::MalformedJson { .. } => 11,
         ErrorKind::NotAnObject => 12,
         ErrorKind::LawMissing => 13,
         ErrorKind::LawNotString => 14,

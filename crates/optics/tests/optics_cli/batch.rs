@@ -252,3 +252,25 @@ fn a_line_past_the_length_limit_is_one_error_and_the_rest_go_on() {
         }
     }
 }
+
+/// A request line that spells NaN or an infinity is malformed JSON, and
+/// says why, as a scene file does: JSON numbers are finite. Other
+/// malformed lines get no such hint.
+#[test]
+fn a_line_spelling_nan_says_json_numbers_are_finite() {
+    let (records, _) = batch(
+        "{\"law\":\"fresnel\",\"eta\":NaN,\"cos_i\":1}\n\
+         {\"law\":\"fresnel\",\"eta\":-Infinity,\"cos_i\":1}\n\
+         {\"law\":\"fresnel\",\"eta\":1.5,\n",
+    );
+    for record in &records[..2] {
+        assert_eq!(record["error"]["kind"], "malformed_json", "{record}");
+        let message = record["error"]["message"].as_str().unwrap();
+        assert!(
+            message.contains("NaN and Infinity are not numbers"),
+            "{message}"
+        );
+    }
+    let message = records[2]["error"]["message"].as_str().unwrap();
+    assert!(!message.contains("NaN"), "{message}");
+}

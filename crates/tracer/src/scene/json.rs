@@ -68,14 +68,8 @@ pub(super) fn scene_file(text: &str) -> Result<SceneFile, SceneError> {
 fn syntax(text: &str, path: String, err: serde_json::Error) -> SceneError {
     let path = fields::known_prefix(&path).to_owned();
     let mut message = without_position(&err);
-    let here = text
-        .lines()
-        .nth(err.line().saturating_sub(1))
-        .and_then(|line| line.get(err.column().saturating_sub(1)..))
-        .unwrap_or("");
-    let here = here.trim_start_matches(['-', '+']);
-    if here.starts_with("NaN") || here.starts_with("Infinity") || here.starts_with("inf") {
-        message.push_str(" (JSON numbers are finite: NaN and Infinity are not numbers)");
+    if safe_io::json::spells_non_finite(text, &err) {
+        message.push_str(&format!(" ({})", safe_io::json::NON_FINITE_HINT));
     }
     let kind = ErrorKind::Syntax {
         message,
