@@ -37,6 +37,18 @@ pub fn error_message(error: &Error, lang: Lang) -> String {
     }
 }
 
+/// Light from inside a conductor, in the quantity it was given as.
+fn conductor_from_inside_hu(name: &str, cos_i: f64, degrees: Option<f64>) -> String {
+    match degrees {
+        Some(degrees) => format!(
+            "{name}: vezetőnél (kappa > 0) legfeljebb 90 fok lehet: fény nem érkezhet fém belsejéből, kapott érték: {degrees}"
+        ),
+        None => format!(
+            "{name}: vezetőnél (kappa > 0) ≥ 0 kell legyen: fény nem érkezhet fém belsejéből, kapott érték: {cos_i}"
+        ),
+    }
+}
+
 fn hungarian(kind: &ErrorKind) -> String {
     match kind {
         ErrorKind::Domain(error) => domain_hu(error),
@@ -55,18 +67,9 @@ fn hungarian(kind: &ErrorKind) -> String {
         }
         ErrorKind::ConductorFromInside {
             name,
-            degrees: Some(degrees),
-            ..
-        } => format!(
-            "{name}: vezetőnél (kappa > 0) legfeljebb 90 fok lehet: fény nem érkezhet fém belsejéből, kapott érték: {degrees}"
-        ),
-        ErrorKind::ConductorFromInside {
-            name,
             cos_i,
-            degrees: None,
-        } => format!(
-            "{name}: vezetőnél (kappa > 0) ≥ 0 kell legyen: fény nem érkezhet fém belsejéből, kapott érték: {cos_i}"
-        ),
+            degrees,
+        } => conductor_from_inside_hu(name, *cos_i, *degrees),
         ErrorKind::NoCriticalAngle {
             name,
             n,

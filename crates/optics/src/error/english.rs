@@ -38,16 +38,7 @@ impl fmt::Display for ErrorKind {
                 name,
                 cos_i,
                 degrees,
-            } => match degrees {
-                Some(degrees) => write!(
-                    f,
-                    "{name} must be at most 90 degrees for a conductor (kappa > 0): light cannot arrive from inside a metal, got {degrees}"
-                ),
-                None => write!(
-                    f,
-                    "{name} must be ≥ 0 for a conductor (kappa > 0): light cannot arrive from inside a metal, got {cos_i}"
-                ),
-            },
+            } => conductor_from_inside(f, name, *cos_i, *degrees),
             ErrorKind::NoCriticalAngle {
                 name,
                 n,
@@ -55,13 +46,7 @@ impl fmt::Display for ErrorKind {
                 n_outside,
             } => no_critical_angle(f, (name, *n), (name_outside, *n_outside)),
             ErrorKind::EmptyLine => write!(f, "empty line: every line holds one request"),
-            ErrorKind::MalformedJson { error, non_finite } => {
-                write!(f, "malformed JSON: {error}")?;
-                if *non_finite {
-                    write!(f, " ({})", safe_io::json::NON_FINITE_HINT)?;
-                }
-                Ok(())
-            }
+            ErrorKind::MalformedJson { error, non_finite } => malformed_json(f, error, *non_finite),
             ErrorKind::NotAnObject => write!(f, "a request must be a JSON object"),
             ErrorKind::LawMissing => write!(f, "law: missing; every request names its law"),
             ErrorKind::LawNotString => write!(f, "law: must be a string"),
@@ -183,6 +168,39 @@ impl fmt::Display for HarnessKind {
             ),
             HarnessKind::Jobs(error) => write!(f, "{}", error.named(super::jobs::flag)),
         }
+    }
+}
+
+/// A line that is not JSON, with why where it spells NaN or an infinity.
+fn malformed_json(
+    f: &mut fmt::Formatter<'_>,
+    error: &serde_json::Error,
+    non_finite: bool,
+) -> fmt::Result {
+    write!(f, "malformed JSON: {error}")?;
+    if non_finite {
+        write!(f, " ({})", safe_io::json::NON_FINITE_HINT)?;
+    }
+    Ok(())
+}
+
+/// Light from inside a conductor, in the quantity it was given as: an
+/// angle in degrees, or a signed cosine.
+fn conductor_from_inside(
+    f: &mut fmt::Formatter<'_>,
+    name: &str,
+    cos_i: f64,
+    degrees: Option<f64>,
+) -> fmt::Result {
+    match degrees {
+        Some(degrees) => write!(
+            f,
+            "{name} must be at most 90 degrees for a conductor (kappa > 0): light cannot arrive from inside a metal, got {degrees}"
+        ),
+        None => write!(
+            f,
+            "{name} must be ≥ 0 for a conductor (kappa > 0): light cannot arrive from inside a metal, got {cos_i}"
+        ),
     }
 }
 

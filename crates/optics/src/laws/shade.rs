@@ -153,28 +153,7 @@ impl ShadeArgs {
                 number(radiance)
             )
         });
-        let coefficients_used: &[(&str, f64)] = match model {
-            ShadeModel::Lambert | ShadeModel::CourseLambert => &[("kd", kd)],
-            _ => &[("kd", kd), ("ks", ks)],
-        };
-        if coefficients_used.iter().all(|&(_, c)| c == 0.0) {
-            let names: Vec<String> = coefficients_used.iter().map(|(f, _)| via.name(f)).collect();
-            let names = names.join(lang.pick(" and ", " és "));
-            record.note(match coefficients_used.len() {
-                1 => say!(
-                    lang,
-                    "{} is 0 (its value when not given): this surface reflects nothing",
-                    "{} értéke 0 (megadás nélkül ennyi): ez a felület semmit sem ver vissza",
-                    names
-                ),
-                _ => say!(
-                    lang,
-                    "{} are both 0 (their value when not given): this surface reflects nothing",
-                    "{} értéke egyaránt 0 (megadás nélkül ennyi): ez a felület semmit sem ver vissza",
-                    names
-                ),
-            });
-        }
+        note_no_coefficients(&mut record, model, (kd, ks), via, lang);
         if side == Hemisphere::ViewerBelow {
             record.note(say!(
                 lang,
@@ -326,5 +305,38 @@ fn step_half_vector(record: &mut Record, n: DVec3, l: DVec3, v: DVec3) {
         None => {
             record.step(|| "L = −V: no half vector, the highlight term is 0".to_owned());
         }
+    }
+}
+
+/// Notes that `model`'s coefficients are all 0 (their value when not
+/// given): the surface reflects nothing.
+fn note_no_coefficients(
+    record: &mut Record,
+    model: ShadeModel,
+    (kd, ks): (f64, f64),
+    via: Via,
+    lang: Lang,
+) {
+    let coefficients_used: &[(&str, f64)] = match model {
+        ShadeModel::Lambert | ShadeModel::CourseLambert => &[("kd", kd)],
+        _ => &[("kd", kd), ("ks", ks)],
+    };
+    if coefficients_used.iter().all(|&(_, c)| c == 0.0) {
+        let names: Vec<String> = coefficients_used.iter().map(|(f, _)| via.name(f)).collect();
+        let names = names.join(lang.pick(" and ", " és "));
+        record.note(match coefficients_used.len() {
+            1 => say!(
+                lang,
+                "{} is 0 (its value when not given): this surface reflects nothing",
+                "{} értéke 0 (megadás nélkül ennyi): ez a felület semmit sem ver vissza",
+                names
+            ),
+            _ => say!(
+                lang,
+                "{} are both 0 (their value when not given): this surface reflects nothing",
+                "{} értéke egyaránt 0 (megadás nélkül ennyi): ez a felület semmit sem ver vissza",
+                names
+            ),
+        });
     }
 }
