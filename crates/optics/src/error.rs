@@ -33,7 +33,9 @@ mod usage;
 #[cfg(feature = "harness")]
 pub use harness::HarnessKind;
 pub use kind::ErrorKind;
-pub(crate) use usage::{usage_argument, usage_text};
+pub(crate) use usage::{
+    decimal_comma_en, decimal_comma_fixed, usage_argument, usage_message, usage_text,
+};
 
 /// The outcome of a step that can fail with one of the suite's own errors.
 pub type Result<T, E = Error> = std::result::Result<T, E>;

@@ -132,7 +132,13 @@ fn hungarian(kind: &ErrorKind) -> String {
 fn usage_hu(error: &clap::Error) -> String {
     use std::error::Error as _;
     let ours = error.source().and_then(|e| e.downcast_ref::<Error>());
-    let message = ours.map_or_else(|| crate::error::usage_text(error), |e| hungarian(e.kind()));
+    let mut message = ours.map_or_else(
+        || crate::error::usage_message(error),
+        |e| hungarian(e.kind()),
+    );
+    if let Some(fixed) = crate::error::decimal_comma_fixed(error) {
+        message += &format!(" (a számokban tizedespont áll, nem vessző: {fixed})");
+    }
     match crate::error::usage_argument(error) {
         Some(arg) => format!("hibás parancssori argumentum ({arg}): {message}"),
         None => format!("hibás parancssor: {message}"),

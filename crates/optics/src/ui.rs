@@ -75,7 +75,16 @@ impl Ui {
         }
         let text = match (error.kind(), self.lang) {
             // The parser's own rendering, with its usage line and hint.
-            (ErrorKind::Usage(usage), Lang::En) => usage.render().to_string(),
+            (ErrorKind::Usage(usage), Lang::En) => {
+                let rendered = usage.render().to_string();
+                match (error::decimal_comma_fixed(usage), rendered.split_once('\n')) {
+                    (Some(fixed), Some((first, rest))) => format!(
+                        "{first}\n\n  tip: {}\n{rest}",
+                        error::decimal_comma_en(&fixed)
+                    ),
+                    _ => rendered,
+                }
+            }
             _ => format!(
                 "{}: {}\n",
                 self.lang.pick("error", "hiba"),

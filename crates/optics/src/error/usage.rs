@@ -11,9 +11,45 @@ pub(crate) fn usage_argument(error: &clap::Error) -> Option<String> {
     }
 }
 
+/// The value a number was refused for, written with a decimal point,
+/// where it was refused only for its decimal comma (`1,4`, as Hungarian
+/// students write it): `1.4`.
+pub(crate) fn decimal_comma_fixed(error: &clap::Error) -> Option<String> {
+    use clap::error::{ContextKind, ContextValue};
+    use std::error::Error as _;
+    // Only a value refused as a number: a vector's parts are refused by
+    // the suite's own parser, whose commas are separators.
+    error
+        .source()?
+        .downcast_ref::<std::num::ParseFloatError>()?;
+    let ContextValue::String(value) = error.get(ContextKind::InvalidValue)? else {
+        return None;
+    };
+    if value.matches(',').count() != 1 {
+        return None;
+    }
+    let fixed = value.replace(',', ".");
+    fixed.parse::<f64>().ok().map(|_| fixed)
+}
+
+/// The advice after a number refused for its decimal comma, in English.
+pub(crate) fn decimal_comma_en(fixed: &str) -> String {
+    format!("numbers take a decimal point, not a comma: {fixed}")
+}
+
+/// [`usage_message`] with the decimal point's advice where a number was
+/// refused for its comma.
+pub(crate) fn usage_text(error: &clap::Error) -> String {
+    let message = usage_message(error);
+    match decimal_comma_fixed(error) {
+        Some(fixed) => format!("{message} ({})", decimal_comma_en(&fixed)),
+        None => message,
+    }
+}
+
 /// The argument parser's message without its `error: ` and the usage and
 /// help hints that follow it, on one line.
-pub(crate) fn usage_text(error: &clap::Error) -> String {
+pub(crate) fn usage_message(error: &clap::Error) -> String {
     let text = error.to_string();
     let message: Vec<&str> = text
         .lines()

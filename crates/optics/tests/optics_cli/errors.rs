@@ -279,3 +279,36 @@ fn fresnel_without_an_incidence_asks_for_either_form() {
         stderr(&both)
     );
 }
+
+/// A number written with a decimal comma (`1,4`, as Hungarian students
+/// write it) is refused with the advice to write `1.4`, in the parser's
+/// text, in Hungarian and in the JSON error; a value that is not a number
+/// either way gets no such advice.
+#[test]
+fn a_decimal_comma_is_refused_with_the_number_it_meant() {
+    let english = optics(&["quiz", "critical-angle", "--n", "1,4"]);
+    assert_eq!(english.status.code(), Some(2));
+    let text = stderr(&english);
+    assert!(
+        text.contains("tip: numbers take a decimal point, not a comma: 1.4"),
+        "{text}"
+    );
+    let hungarian = stderr(&optics(&[
+        "--lang",
+        "hu",
+        "quiz",
+        "critical-angle",
+        "--n",
+        "1,4",
+    ]));
+    assert!(
+        hungarian.contains("a számokban tizedespont áll, nem vessző: 1.4"),
+        "{hungarian}"
+    );
+    let json = optics(&["--json", "fresnel", "--eta", "1,5", "--cos-i", "1"]);
+    let error: Value = serde_json::from_slice(&json.stdout).unwrap();
+    let message = error["error"]["message"].as_str().unwrap();
+    assert!(message.contains("not a comma: 1.5"), "{message}");
+    let neither = stderr(&optics(&["quiz", "critical-angle", "--n", "1,4,5"]));
+    assert!(!neither.contains("decimal point"), "{neither}");
+}
