@@ -32,6 +32,14 @@ pub enum OutputError {
         /// The name given.
         path: String,
     },
+    /// A name whose extension says another format than the PNG written.
+    #[error(
+        "{path}: the image is written as PNG (and a PFM beside it): give a name ending in .png"
+    )]
+    NotPng {
+        /// The name given.
+        path: String,
+    },
     /// The PNG encoder failed.
     #[error("cannot encode {path} as PNG: {source}")]
     Png {
@@ -101,6 +109,16 @@ impl Destination {
         let pfm = png.with_extension("pfm");
         if pfm == png {
             return Err(OutputError::PfmIsPng {
+                path: png.display().to_string(),
+            });
+        }
+        // PNG bytes under another format's name (`x.jpg`) would mislead;
+        // a name without an extension says nothing wrong.
+        if png
+            .extension()
+            .is_some_and(|e| !e.eq_ignore_ascii_case("png"))
+        {
+            return Err(OutputError::NotPng {
                 path: png.display().to_string(),
             });
         }

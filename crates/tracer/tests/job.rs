@@ -265,6 +265,14 @@ fn a_destination_is_refused_before_the_render() {
         Destination::new(&pfm, &[]),
         Err(OutputError::PfmIsPng { .. })
     ));
+    // PNG bytes are never written under another format's name.
+    for other in ["out.jpg", "out.JPEG", "out.exr"] {
+        assert!(matches!(
+            Destination::new(&dir.path().join(other), &[]),
+            Err(OutputError::NotPng { .. })
+        ));
+    }
+    assert!(Destination::new(&dir.path().join("out.PNG"), &[]).is_ok());
     let nowhere = dir.path().join("no/such/dir/out.png");
     assert!(matches!(
         Destination::new(&nowhere, &[]),

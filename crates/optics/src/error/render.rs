@@ -69,6 +69,7 @@ pub fn output_name(error: &OutputError) -> &'static str {
         OutputError::Write(WriteError::NotARegularFile { .. }) => "output.not_a_regular_file",
         OutputError::Write(WriteError::IsAnInput { .. }) => "output.is_an_input",
         OutputError::PfmIsPng { .. } => "output.pfm_is_png",
+        OutputError::NotPng { .. } => "output.not_png",
         OutputError::Png { .. } => "output.png",
     }
 }

@@ -217,6 +217,9 @@ pub fn output_hu(error: &OutputError) -> String {
         OutputError::PfmIsPng { path } => {
             format!("{path}: a PNG nevét kell megadni (a PFM mellé kerül)")
         }
+        OutputError::NotPng { path } => {
+            format!("{path}: a kép PNG-ként íródik ki (mellé a PFM): .png végű nevet kell megadni")
+        }
         OutputError::Png { path, source } => {
             format!("a(z) {path} nem kódolható PNG-ként: {source}")
         }

@@ -51,6 +51,7 @@ pub fn output_slot(error: &OutputError) -> usize {
         OutputError::Write(WriteError::Io { .. }) => 27,
         OutputError::Write(WriteError::NoDirectory { .. }) => 28,
         OutputError::PfmIsPng { .. } => 29,
+        OutputError::NotPng { .. } => 39,
         OutputError::Png { .. } => 30,
         OutputError::Write(WriteError::Unwritable { .. }) => 31,
         OutputError::Write(WriteError::NotARegularFile { .. }) => 32,
@@ -65,7 +66,7 @@ pub const THREADS: usize = 34;
 pub const NOT_FINITE: usize = 35;
 
 /// How many render slots there are.
-pub const SLOTS: usize = 39;
+pub const SLOTS: usize = 40;
 
 /// A thread pool that cannot start: its spawner fails.
 pub fn thread_pool_error() -> rayon::ThreadPoolBuildError {
@@ -298,6 +299,12 @@ pub fn examples() -> Vec<(ErrorKind, Vec<String>)> {
                 path: "a.pfm".into(),
             },
             &["a.pfm"],
+        ),
+        output(
+            OutputError::NotPng {
+                path: "a.jpg".into(),
+            },
+            &["a.jpg", ".png", "PNG", "PFM"],
         ),
         output(
             OutputError::Png {
