@@ -112,8 +112,12 @@ impl Destination {
                 path: png.display().to_string(),
             });
         }
+        check_destination(png, inputs)?;
+        check_destination(&pfm, inputs)?;
         // PNG bytes under another format's name (`x.jpg`) would mislead;
-        // a name without an extension says nothing wrong.
+        // a name without an extension says nothing wrong. Checked after
+        // the destinations, so that the scene itself given as the output
+        // is refused as such.
         if png
             .extension()
             .is_some_and(|e| !e.eq_ignore_ascii_case("png"))
@@ -122,8 +126,6 @@ impl Destination {
                 path: png.display().to_string(),
             });
         }
-        check_destination(png, inputs)?;
-        check_destination(&pfm, inputs)?;
         Ok(Destination {
             png: png.to_owned(),
             pfm,
