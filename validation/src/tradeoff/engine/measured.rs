@@ -198,7 +198,10 @@ fn measure(
     let grazing_truth = (grazing.count() > 0)
         .then(|| measure::Truth::new(truth.image.clone(), truth.noise, &grazing));
     let mut scene_grazing: Option<measure::Truth> = None;
-    let mut second = second::Second::new(job.scene(), &args.scene, &args.checkout);
+    // Found once, for Mitsuba's renders and the metals' spectra alike.
+    let checkout = args.checkout.find().map_err(|e| e.to_string());
+    let checkout = checkout.as_ref().map_err(String::as_str);
+    let mut second = second::Second::new(job.scene(), &args.scene, checkout);
     for (point, timed) in plan.points.into_iter().zip(timed) {
         let errors = measure::errors(&timed.images, truth, &mask);
         second.add(&point.label, &timed.images);
@@ -242,7 +245,7 @@ fn measure(
         truth: truth_record,
         points,
         skipped: plan.skipped,
-        rgb_against_spectrum: metals::rgb_against_spectrum(job.scene(), &args.checkout),
+        rgb_against_spectrum: metals::rgb_against_spectrum(job.scene(), checkout),
         findings: None,
         collected: provenance.collected,
         mitsuba,

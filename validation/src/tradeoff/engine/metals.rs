@@ -4,15 +4,15 @@
 //! reference (`optics validate`'s `metals.*`,
 //! [`crate::metals::three_channel_delta_e`]).
 
-use crate::checkout::Lookup;
+use crate::checkout::Checkout;
 use crate::metals::{three_channel_delta_e, MetalLaws, MetalsReference};
 use crate::tradeoff::findings::{MetalRgb, RgbOutcome};
 use tracer::scene::{Material, Scene};
 
 /// Each conductor of `scene`, in the scene's order, with its colour error
-/// or why there is none (the reference read from the checkout `lookup`
-/// finds); nothing for a scene without metals.
-pub fn rgb_against_spectrum(scene: &Scene, lookup: &Lookup) -> Vec<MetalRgb> {
+/// or why there is none (the reference read from `checkout`, or why there
+/// is no checkout); nothing for a scene without metals.
+pub fn rgb_against_spectrum(scene: &Scene, checkout: Result<&Checkout, &str>) -> Vec<MetalRgb> {
     let conductors: Vec<(&str, [f32; 3], [f32; 3])> = scene
         .materials
         .iter()
@@ -25,9 +25,8 @@ pub fn rgb_against_spectrum(scene: &Scene, lookup: &Lookup) -> Vec<MetalRgb> {
     if conductors.is_empty() {
         return Vec::new();
     }
-    let reference = lookup
-        .find()
-        .map_err(|e| e.to_string())
+    let reference = checkout
+        .map_err(str::to_owned)
         .and_then(|c| MetalsReference::load(&c.reference_dir()).map_err(|e| e.to_string()));
     let laws = MetalLaws::radiometry();
     conductors

@@ -7,7 +7,7 @@
 
 use std::path::Path;
 
-use crate::checkout::Lookup;
+use crate::checkout::Checkout;
 use crate::full_light::{FullLight, FILE};
 use crate::tradeoff::mitsuba::{
     against, box_downsample, measure, reference_for, AgainstMitsuba, MitsubaTruth, NoReference,
@@ -28,15 +28,14 @@ pub struct Second {
 
 impl Second {
     /// The reference for `scene` (as the sweep renders it, at its size),
-    /// read from `file`'s stem and the reference of the checkout `lookup`
-    /// finds, or why none.
-    pub fn new(scene: &Scene, file: &Path, lookup: &Lookup) -> Self {
+    /// read from `file`'s stem and the reference of `checkout` (or why
+    /// there is none: the checkout not found), or why none.
+    pub fn new(scene: &Scene, file: &Path, checkout: Result<&Checkout, &str>) -> Self {
         let name = file
             .file_stem()
             .map_or_else(String::new, |s| s.to_string_lossy().into_owned());
-        let reference = lookup
-            .find()
-            .map_err(|e| NoReference::Unreadable(e.to_string()))
+        let reference = checkout
+            .map_err(|e| NoReference::Unreadable(e.to_owned()))
             .and_then(|c| {
                 let dir = c.reference_dir();
                 let full =
