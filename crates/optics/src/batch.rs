@@ -19,6 +19,7 @@
 pub(crate) mod request;
 
 use crate::error::{Error, ErrorKind, Result};
+use crate::input::Via;
 use record::Lang;
 use record::Steps;
 
@@ -27,20 +28,7 @@ use std::io::{BufRead, Read, Write};
 use std::ops::Range;
 
 #[derive(clap::Args, Debug)]
-#[command(
-    after_help = r#"Requests are JSON objects, one per line; "law" is one of:
-  fresnel, refract, reflect, shade, f0, lambert, critical_angle, blinn_phong
-and the other fields are the subcommand's flags with '_' for '-' and vectors as [x, y, z].
-A request's "steps": true or false overrides --no-steps for that line.
-
-Examples:
-  printf '%s\n' '{"law": "fresnel", "eta": 1.5, "cos_i": 0.3}' \
-                '{"law": "refract", "wi": [0, 0.6, 0.8], "normal": [0, 0, 1], "eta": 1.5}' | optics batch
-  printf '%s\n' '{"law": "fresnel", "eta": 1.5, "cos_i": 0.3}' \
-                '{"law": "f0", "n": 1.5, "steps": true}' | optics batch --no-steps
-
-Exit status: 0 when every line was evaluated, 1 when any line gave an error object."#
-)]
+#[command(after_help = after_help())]
 pub struct BatchArgs {
     /// Lines evaluated together in parallel before their results are written.
     #[arg(long, default_value_t = 16384, value_parser = clap::value_parser!(u32).range(1..))]
@@ -48,6 +36,26 @@ pub struct BatchArgs {
     /// Skip the working: each record's "steps" is [] (a request's own "steps" overrides this).
     #[arg(long)]
     pub no_steps: bool,
+}
+
+/// `optics batch --help`'s closing text: the laws a request may name, from
+/// the law table, and examples.
+fn after_help() -> String {
+    let laws = crate::law_table::LAWS.join(", ");
+    format!(
+        r#"Requests are JSON objects, one per line; "law" is one of:
+  {laws}
+and the other fields are the subcommand's flags with '_' for '-' and vectors as [x, y, z].
+A request's "steps": true or false overrides --no-steps for that line.
+
+Examples:
+  printf '%s\n' '{{"law": "fresnel", "eta": 1.5, "cos_i": 0.3}}' \
+                '{{"law": "refract", "wi": [0, 0.6, 0.8], "normal": [0, 0, 1], "eta": 1.5}}' | optics batch
+  printf '%s\n' '{{"law": "fresnel", "eta": 1.5, "cos_i": 0.3}}' \
+                '{{"law": "f0", "n": 1.5, "steps": true}}' | optics batch --no-steps
+
+Exit status: 0 when every line was evaluated, 1 when any line gave an error object."#
+    )
 }
 
 impl BatchArgs {
@@ -65,7 +73,7 @@ pub fn line(number: usize, text: &str, lang: Lang, steps: Steps, out: &mut Vec<u
     let request = request::typed(text, steps).map_or_else(|| request::general(text, steps), Ok);
     let start = out.len();
     let written = request.and_then(|request| {
-        let record = request.law.solve(lang, request.steps);
+        let record = request.law.solve(Via::Json, lang, request.steps);
         let json = record.and_then(|record| {
             serde_json::to_writer(&mut *out, &record)
                 .map_err(ErrorKind::Encode)

@@ -10,6 +10,7 @@ use crate::laws::note_normalized;
 use glam::DVec3;
 use record::{number, vector, Answer, Record, Steps};
 use record::{say, Lang};
+use serde::Deserialize;
 use serde_json::{json, Map, Value};
 use techniques::envmap::cube::CubeTexel;
 use techniques::envmap::lat_long::LatLong;
@@ -17,7 +18,8 @@ use techniques::envmap::sphere::SphereTexel;
 use techniques::envmap::Direction;
 
 /// Which map to look the direction up in.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum, Deserialize)]
+#[serde(rename_all = "kebab-case")]
 pub enum MapChoice {
     /// The cube map: the face and (u, v) on it.
     Cube,
@@ -46,7 +48,8 @@ impl MapChoice {
 }
 
 /// Where a reflected direction is looked up in an environment map.
-#[derive(clap::Args, Clone, Debug)]
+#[derive(clap::Args, Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
 #[command(
     allow_negative_numbers = true,
     after_help = "--dir is the reflected direction r, pointing away from the surface into the surroundings
@@ -62,6 +65,7 @@ pub struct EnvmapArgs {
     pub dir: Vec3Arg,
     /// The map: cube, lat-long, sphere or all.
     #[arg(long, value_enum, default_value_t)]
+    #[serde(default)]
     pub map: MapChoice,
 }
 
@@ -69,7 +73,7 @@ impl EnvmapArgs {
     pub fn solve(&self, via: Via, lang: Lang, steps: Steps) -> Result<Record> {
         let given = via.direction("dir", self.dir)?;
         let title = say!(lang, "Environment map lookup", "Környezeti térkép címzése");
-        let mut record = Record::new("envmap", title, "").with_steps(steps);
+        let mut record = Record::new(Self::LAW, title, "").with_steps(steps);
         record
             .input("dir", self.dir.0)
             .input("map", self.map.name());

@@ -90,9 +90,9 @@ fn hungarian(kind: &ErrorKind) -> String {
         ErrorKind::NotAnObject => "a kérésnek JSON-objektumnak kell lennie".to_owned(),
         ErrorKind::LawMissing => "law: hiányzik; minden kérés megnevezi a törvényét".to_owned(),
         ErrorKind::LawNotString => "law: szövegnek kell lennie".to_owned(),
-        ErrorKind::UnknownLaw { law } => format!(
+        ErrorKind::UnknownLaw { law, expected } => format!(
             "law: ismeretlen törvény: {law:?}, a lehetségesek: {}",
-            crate::law_names::LAWS.join(", ")
+            expected.join(", ")
         ),
         ErrorKind::Request {
             path: Some(path),

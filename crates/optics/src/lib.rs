@@ -25,7 +25,7 @@ mod fuzz;
 pub mod input;
 mod inspect;
 pub mod lang;
-pub mod law_names;
+pub mod law_table;
 pub mod laws;
 mod missing_light;
 mod planar;
@@ -73,21 +73,10 @@ struct Cli {
 #[derive(Subcommand, Debug)]
 enum Command {
     /// Worked exercises of the course's quiz, with the steps.
-    Quiz(quiz::QuizArgs),
-    /// Fresnel reflectance, exact or Schlick, dielectric or conductor.
-    Fresnel(laws::FresnelArgs),
-    /// The refracted direction (Snell's law in vector form).
-    Refract(laws::RefractArgs),
-    /// The mirror direction.
-    Reflect(laws::ReflectArgs),
-    /// Radiance reflected by a BRDF under a directional light.
-    Shade(laws::ShadeArgs),
-    /// Where a reflected direction is looked up in a cube, lat-long or sphere map.
-    Envmap(envmap::EnvmapArgs),
-    /// The 4 × 4 matrix that mirrors a scene in a plane.
-    ReflectionMatrix(planar::ReflectionMatrixArgs),
-    /// The 4 × 4 matrix that projects a scene's shadow from a point light onto a plane.
-    ShadowMatrix(planar::ShadowMatrixArgs),
+    Quiz(QuizArgs),
+    /// The laws, each a subcommand of its own (`law_table`).
+    #[command(flatten)]
+    Law(law_table::LawCommand),
     /// Evaluate JSON Lines requests from stdin, one JSON result per line.
     Batch(batch::BatchArgs),
     /// Render a scene file to PNG and a float image.
@@ -108,24 +97,42 @@ enum Command {
     TradeoffJob(tradeoff::TradeoffJobArgs),
 }
 
+#[derive(clap::Args, Debug)]
+#[command(
+    allow_negative_numbers = true,
+    after_help = "Examples:
+  optics quiz                 (lists the exercises)
+  optics quiz seed            (works every question of the course's quiz)
+  optics quiz f0 --n 1.4
+  optics --lang hu quiz seed"
+)]
+struct QuizArgs {
+    #[command(subcommand)]
+    exercise: Option<Exercise>,
+}
+
+#[derive(Subcommand, Debug)]
+enum Exercise {
+    /// Every question of the course's quiz, with the printed answers checked.
+    #[command(after_help = "Examples:
+  optics quiz seed
+  optics --lang hu quiz seed          (in the course's language)
+  optics --json quiz seed             (one JSON object; the questions under details.questions)")]
+    Seed,
+    /// The exercises one can pose with other numbers (`law_table`).
+    #[command(flatten)]
+    Law(law_table::QuizLaw),
+}
+
 /// The record of a command that evaluates one law with its flags; `None`
 /// for the others.
 fn law_record(command: &Command, lang: Lang) -> Option<error::Result<Record>> {
     let (via, steps) = (Via::Flags, Steps::Wanted);
     Some(match command {
-        Command::Fresnel(args) => args.solve(via, lang, steps),
-        Command::Refract(args) => args.solve(via, lang, steps),
-        Command::Reflect(args) => args.solve(via, lang, steps),
-        Command::Shade(args) => args.solve(via, lang, steps),
-        Command::Envmap(args) => args.solve(via, lang, steps),
-        Command::ReflectionMatrix(args) => args.solve(via, lang, steps),
-        Command::ShadowMatrix(args) => args.solve(via, lang, steps),
+        Command::Law(law) => law.solve(via, lang, steps),
         Command::Quiz(args) => match args.exercise.as_ref()? {
-            quiz::Exercise::F0(a) => a.solve(via, lang, steps),
-            quiz::Exercise::Lambert(a) => a.solve(via, lang, steps),
-            quiz::Exercise::CriticalAngle(a) => a.solve(via, lang, steps),
-            quiz::Exercise::BlinnPhong(a) => a.solve(via, lang, steps),
-            quiz::Exercise::Seed => return None,
+            Exercise::Law(law) => law.solve(via, lang, steps),
+            Exercise::Seed => return None,
         },
         _ => return None,
     })
@@ -139,8 +146,8 @@ fn run(command: &Command, ui: &Ui) -> error::Result<ExitCode> {
     }
     match command {
         Command::Quiz(args) => match &args.exercise {
-            Some(quiz::Exercise::Seed) if ui.json => ui.show(&quiz::seed_record(lang)?)?,
-            Some(quiz::Exercise::Seed) => {
+            Some(Exercise::Seed) if ui.json => ui.show(&quiz::seed_record(lang)?)?,
+            Some(Exercise::Seed) => {
                 for (i, question) in quiz::seed(lang)?.iter().enumerate() {
                     if i > 0 {
                         print_out("\n")?;
@@ -175,13 +182,7 @@ fn run(command: &Command, ui: &Ui) -> error::Result<ExitCode> {
         #[cfg(feature = "harness")]
         Command::TradeoffJob(args) => tradeoff::run_job(args, ui)?,
         // Evaluated by `law_record` above.
-        Command::Fresnel(_)
-        | Command::Refract(_)
-        | Command::Reflect(_)
-        | Command::Shade(_)
-        | Command::Envmap(_)
-        | Command::ReflectionMatrix(_)
-        | Command::ShadowMatrix(_) => {}
+        Command::Law(_) => {}
     }
     Ok(ExitCode::SUCCESS)
 }

@@ -19,12 +19,17 @@ static DOCUMENT: Mutex<()> = Mutex::new(());
 /// Settles `section` against `docs/results.md`: a deterministic section is
 /// compared (rewritten under `RESULTS_WRITE=1`), a measured one written.
 pub fn settle(section: &Section) -> Result<(), Error> {
-    let path = document_path();
+    settle_in(&document_path(), section)
+}
+
+/// [`settle`] against another document of the checkout (a table of
+/// `docs/cli.md` generated from the code's own declarations).
+pub fn settle_in(path: &std::path::Path, section: &Section) -> Result<(), Error> {
     let _guard = DOCUMENT.lock().unwrap_or_else(|e| e.into_inner());
-    let document = match std::fs::read_to_string(&path) {
+    let document = match std::fs::read_to_string(path) {
         Ok(text) => text,
         Err(e) if e.kind() == std::io::ErrorKind::NotFound => String::new(),
-        Err(e) => return Err(Error::io(&path, e)),
+        Err(e) => return Err(Error::io(path, e)),
     };
     if section.deterministic && !write_requested() {
         return compare(&document, section);
@@ -33,7 +38,7 @@ pub fn settle(section: &Section) -> Result<(), Error> {
     if updated != document {
         let tmp = path.with_extension("md.tmp");
         std::fs::write(&tmp, updated).map_err(|e| Error::io(&tmp, e))?;
-        std::fs::rename(&tmp, &path).map_err(|e| Error::io(&path, e))?;
+        std::fs::rename(&tmp, path).map_err(|e| Error::io(path, e))?;
     }
     Ok(())
 }

@@ -33,7 +33,8 @@ mod section;
 mod stamp;
 
 pub use document::{
-    assert_settled, assert_settled_keyed, document_path, key_is_current, settle, write_requested,
+    assert_settled, assert_settled_keyed, document_path, key_is_current, settle, settle_in,
+    write_requested,
 };
 pub use error::{Error, WRITE_VAR};
 pub use section::{compare, replace, Section};

@@ -12,11 +12,9 @@
 //! reading that answers is never visible in the output.
 
 use crate::error::{Error, ErrorKind, Result};
-use crate::input::Via;
-use crate::laws::{FresnelArgs, ReflectArgs, RefractArgs, ShadeArgs};
-use crate::quiz::{BlinnPhongArgs, CriticalAngleArgs, F0Args, LambertArgs};
-use record::Lang;
-use record::{Record, Steps};
+pub use crate::law_table::Law;
+use crate::law_table::LAWS;
+use record::Steps;
 use safe_io::json::{without_position, UniqueKeys};
 use serde::de::value::{BorrowedStrDeserializer, MapAccessDeserializer};
 use serde::de::{DeserializeSeed, Deserializer, Error as _, MapAccess, Visitor};
@@ -33,52 +31,6 @@ pub struct Request<'a> {
     pub name: Cow<'a, str>,
     pub law: Law,
     pub steps: Steps,
-}
-
-/// The arguments of one of the laws the batch evaluates.
-#[derive(Debug)]
-pub enum Law {
-    Fresnel(FresnelArgs),
-    Refract(RefractArgs),
-    Reflect(ReflectArgs),
-    Shade(ShadeArgs),
-    F0(F0Args),
-    Lambert(LambertArgs),
-    CriticalAngle(CriticalAngleArgs),
-    BlinnPhong(BlinnPhongArgs),
-}
-
-impl Law {
-    /// The arguments of the law `name` (one of [`crate::law_names::LAWS`]) read from
-    /// `fields`; `None` for a law the batch does not evaluate.
-    fn read<'de, D: Deserializer<'de>>(name: &str, fields: D) -> Option<Result<Self, D::Error>> {
-        Some(match name {
-            "fresnel" => FresnelArgs::deserialize(fields).map(Law::Fresnel),
-            "refract" => RefractArgs::deserialize(fields).map(Law::Refract),
-            "reflect" => ReflectArgs::deserialize(fields).map(Law::Reflect),
-            "shade" => ShadeArgs::deserialize(fields).map(Law::Shade),
-            "f0" => F0Args::deserialize(fields).map(Law::F0),
-            "lambert" => LambertArgs::deserialize(fields).map(Law::Lambert),
-            "critical_angle" => CriticalAngleArgs::deserialize(fields).map(Law::CriticalAngle),
-            "blinn_phong" => BlinnPhongArgs::deserialize(fields).map(Law::BlinnPhong),
-            _ => return None,
-        })
-    }
-
-    /// Evaluates the law, its inputs named as JSON fields.
-    pub fn solve(&self, lang: Lang, steps: Steps) -> Result<Record> {
-        let via = Via::Json;
-        match self {
-            Law::Fresnel(args) => args.solve(via, lang, steps),
-            Law::Refract(args) => args.solve(via, lang, steps),
-            Law::Reflect(args) => args.solve(via, lang, steps),
-            Law::Shade(args) => args.solve(via, lang, steps),
-            Law::F0(args) => args.solve(via, lang, steps),
-            Law::Lambert(args) => args.solve(via, lang, steps),
-            Law::CriticalAngle(args) => args.solve(via, lang, steps),
-            Law::BlinnPhong(args) => args.solve(via, lang, steps),
-        }
-    }
 }
 
 /// The request on `text` read in one pass, straight into its law's
@@ -251,7 +203,14 @@ pub fn general(text: &str, steps: Steps) -> Result<Request<'static>, Refusal> {
         }
         None => {
             let law = Value::String(name.clone());
-            refuse(law, ErrorKind::UnknownLaw { law: name })
+            let expected = LAWS;
+            refuse(
+                law,
+                ErrorKind::UnknownLaw {
+                    law: name,
+                    expected,
+                },
+            )
         }
     }
 }

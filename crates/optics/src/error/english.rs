@@ -50,10 +50,10 @@ impl fmt::Display for ErrorKind {
             ErrorKind::NotAnObject => write!(f, "a request must be a JSON object"),
             ErrorKind::LawMissing => write!(f, "law: missing; every request names its law"),
             ErrorKind::LawNotString => write!(f, "law: must be a string"),
-            ErrorKind::UnknownLaw { law } => write!(
+            ErrorKind::UnknownLaw { law, expected } => write!(
                 f,
                 "law: unknown law {law:?}, expected one of {}",
-                crate::law_names::LAWS.join(", ")
+                expected.join(", ")
             ),
             ErrorKind::Request { path, message } => match path {
                 Some(path) => write!(f, "{path}: {message}"),

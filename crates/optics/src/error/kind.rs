@@ -85,6 +85,8 @@ pub enum ErrorKind {
     UnknownLaw {
         /// The law named.
         law: String,
+        /// The laws there are (`law_table::LAWS`).
+        expected: &'static [&'static str],
     },
     /// A request field (or the request) that does not deserialise; serde's
     /// message.

@@ -4,7 +4,8 @@
 //! both ways [`crate::batch::request`] reads it, which must agree.
 
 use super::{
-    check_error_field, check_record, edge_number, run_and_report, runner, Coverage, SCHEMA, VECTORS,
+    check_error_field, check_record, edge_number, is_vector, run_and_report, runner, schema,
+    Coverage,
 };
 use crate::batch::request::{self, LINE_STEPS_IGNORED, REPEATED_KEYS_KEPT};
 use crate::batch::{self, BatchArgs, NOT_UTF8_STOPS_THE_RUN};
@@ -28,6 +29,9 @@ fn course_requests() -> Vec<Value> {
         json!({"law": "lambert", "normal": [0, 0, 1], "light_dir": [0, 3, 4], "view_dir": [1, 2, 3], "radiance": 5, "kd": 0.6}),
         json!({"law": "critical_angle", "n": 10}),
         json!({"law": "blinn_phong", "normal": [0, 0, 1], "light_dir": [0, 3, 4], "view_dir": [0, 4, 3], "radiance": 5, "ks": std::f64::consts::SQRT_2, "shine": 3}),
+        json!({"law": "envmap", "dir": [-3.2, 5.1, -8.4], "map": "cube"}),
+        json!({"law": "reflection_matrix", "plane_point": [0, 1, 0], "plane_normal": [0, 1, 0], "point": [2, 3, 4]}),
+        json!({"law": "shadow_matrix", "light": [0, 4, 0], "plane_point": [0, 0, 0], "plane_normal": [0, 1, 0], "vertex": [1, 2, 0]}),
     ]
 }
 
@@ -57,7 +61,10 @@ enum Change {
 }
 
 fn change() -> impl Strategy<Value = Change> {
-    let laws: Vec<String> = SCHEMA.iter().map(|(law, _)| law.to_string()).collect();
+    let laws: Vec<String> = crate::law_table::LAWS
+        .iter()
+        .map(|&law| law.to_owned())
+        .collect();
     prop_oneof![
         6 => (any::<usize>(), field_value()).prop_map(|(i, v)| Change::Set(i, v)),
         1 => any::<usize>().prop_map(Change::Remove),
@@ -77,15 +84,15 @@ fn apply(mut request: Map<String, Value>, change: Change) -> Map<String, Value> 
         return request;
     }
     let law = request["law"].as_str().unwrap_or_default().to_owned();
-    let fields = super::schema(&law);
+    let fields = schema(&law);
     if fields.is_empty() {
         return request; // an unknown law: nothing more to change
     }
     match change {
         Change::Set(i, value) => {
-            let field = fields[i % fields.len()];
+            let field = &fields[i % fields.len()];
             // A vector field is mostly given a vector, a number a number.
-            let value = match (&value, VECTORS.contains(&field)) {
+            let value = match (&value, is_vector(&law, field)) {
                 (Value::Number(_), true) | (Value::Array(_), false) if i % 4 != 0 => {
                     request.get(field).cloned().unwrap_or(value)
                 }
@@ -94,7 +101,7 @@ fn apply(mut request: Map<String, Value>, change: Change) -> Map<String, Value> 
             request.insert(field.to_owned(), value);
         }
         Change::Remove(i) => {
-            request.remove(fields[i % fields.len()]);
+            request.remove(&fields[i % fields.len()]);
         }
         Change::Unknown(value) => {
             request.insert("colour".into(), value);
@@ -126,6 +133,19 @@ fn line_text(request: &Map<String, Value>, law_first: bool) -> String {
         .map(|(name, value)| format!("{}:{value}", Value::from(name.as_str())));
     let fields: Vec<String> = law.into_iter().chain(rest).collect();
     format!("{{{}}}", fields.join(","))
+}
+
+/// The course's requests name every law of the table, so that each is
+/// fuzzed.
+#[test]
+fn course_requests_name_every_law() {
+    let named: Vec<Value> = course_requests()
+        .into_iter()
+        .map(|r| r["law"].clone())
+        .collect();
+    for law in crate::law_table::LAWS {
+        assert!(named.contains(&json!(law)), "no request of {law}");
+    }
 }
 
 /// One line: a course request with its changes, then byte mutations.

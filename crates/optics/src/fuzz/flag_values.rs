@@ -1,21 +1,13 @@
 //! Flag values: every law's command line with numbers at the edges of
 //! `f64`, typed as people type them, through the parser and the law.
 
-use super::{
-    check_error_field, check_record, number_text, run_and_report, runner, Coverage, SCHEMA, VECTORS,
-};
+use super::{check_error_field, check_record, number_text, run_and_report, runner, Coverage};
+use crate::law_table::schema::{self, Field, Kind};
+use crate::law_table::{command_words, LAWS};
 use clap::{CommandFactory, FromArgMatches};
 use proptest::prelude::*;
 use proptest::test_runner::TestCaseError;
 use record::Lang;
-
-/// The words before the flags: `fresnel`, `quiz f0`, ….
-fn subcommand(law: &str) -> Vec<String> {
-    match law {
-        "fresnel" | "refract" | "reflect" | "shade" => vec![law.into()],
-        quiz => vec!["quiz".into(), quiz.replace('_', "-")],
-    }
-}
 
 fn flag(field: &str) -> String {
     format!("--{}", field.replace('_', "-"))
@@ -35,35 +27,13 @@ struct Line {
     clean: bool,
 }
 
-fn value(field: &'static str, law: &str) -> BoxedStrategy<String> {
-    match field {
-        "model" if law == "fresnel" => prop::sample::select(vec!["exact", "schlick"])
-            .prop_map(str::to_owned)
-            .boxed(),
-        "model" => prop::sample::select(vec![
-            "lambert",
-            "course-lambert",
-            "phong",
-            "blinn-phong",
-            "blinn-phong-reciprocal",
-        ])
-        .prop_map(str::to_owned)
-        .boxed(),
-        _ if VECTORS.contains(&field) => prop::array::uniform3(number_text())
+fn value(field: &Field) -> BoxedStrategy<String> {
+    match &field.kind {
+        Kind::Choice(names) => prop::sample::select(names.clone()).boxed(),
+        Kind::Vector => prop::array::uniform3(number_text())
             .prop_map(|v| v.join(","))
             .boxed(),
-        _ => number_text().boxed(),
-    }
-}
-
-/// Whether the flag has a default.
-fn optional(law: &str, field: &str) -> bool {
-    match law {
-        "fresnel" | "f0" => ["kappa", "model"].contains(&field),
-        "shade" => ["model", "kd", "ks", "shine"].contains(&field),
-        "critical_angle" => field == "n_outside",
-        "blinn_phong" => field == "kd",
-        _ => false,
+        Kind::Number => number_text().boxed(),
     }
 }
 
@@ -115,11 +85,11 @@ fn near_normal_refraction() -> impl Strategy<Value = Line> {
 }
 
 fn any_law() -> impl Strategy<Value = Line> {
-    (0..SCHEMA.len()).prop_flat_map(|i| {
-        let (law, fields) = SCHEMA[i];
-        let values: Vec<_> = fields
-            .iter()
-            .map(|&field| (Just(field), value(field, law), any::<bool>()))
+    (0..LAWS.len()).prop_flat_map(|i| {
+        let law = LAWS[i];
+        let values: Vec<_> = schema::fields(law)
+            .into_iter()
+            .map(|field| (value(&field), Just(field), any::<bool>()))
             .collect();
         let spoil = (
             any::<prop::sample::Index>(),
@@ -129,19 +99,19 @@ fn any_law() -> impl Strategy<Value = Line> {
             move |(values, spoil, json)| {
                 let mut args = vec!["optics".to_owned()];
                 args.extend(json.then(|| "--json".to_owned()));
-                args.extend(subcommand(law));
-                let mut given = Vec::new();
-                for (field, text, optional_given) in values {
+                args.extend(command_words(law));
+                let mut given: Vec<String> = Vec::new();
+                for (text, field, optional_given) in values {
                     // Fresnel's incidence is one of two flags.
-                    let wanted = match field {
+                    let wanted = match field.name.as_str() {
                         "cos_i" => optional_given,
-                        "theta_i_deg" => !given.contains(&"cos_i"),
-                        _ if optional(law, field) => optional_given,
+                        "theta_i_deg" => !given.iter().any(|g| g == "cos_i"),
+                        _ if !field.required => optional_given,
                         _ => true,
                     };
                     if wanted {
-                        given.push(field);
-                        args.extend([flag(field), text]);
+                        args.extend([flag(&field.name), text]);
+                        given.push(field.name);
                     }
                 }
                 let clean = spoil.is_none();
@@ -160,23 +130,23 @@ fn any_law() -> impl Strategy<Value = Line> {
 fn parse(args: &[String], reverted: bool) -> Result<crate::Cli, clap::Error> {
     let mut command = crate::Cli::command();
     if reverted {
-        let numbers_refuse_hyphens = |mut c: clap::Command| {
-            let ids: Vec<String> = c.get_arguments().map(|a| a.get_id().to_string()).collect();
-            for id in ids.iter().filter(|id| !VECTORS.contains(&id.as_str())) {
-                c = c.mut_arg(id, |a| a.allow_hyphen_values(false));
-            }
-            c
-        };
-        for name in ["fresnel", "refract", "reflect", "shade"] {
-            command = command.mut_subcommand(name, numbers_refuse_hyphens);
+        for &law in LAWS {
+            let numbers_refuse_hyphens = |mut c: clap::Command| {
+                for field in schema::fields(law) {
+                    if field.kind == Kind::Number {
+                        c = c.mut_arg(&field.name, |a| a.allow_hyphen_values(false));
+                    }
+                }
+                c
+            };
+            command = match command_words(law).as_slice() {
+                [name] => command.mut_subcommand(name, numbers_refuse_hyphens),
+                [quiz, name] => {
+                    command.mut_subcommand(quiz, |q| q.mut_subcommand(name, numbers_refuse_hyphens))
+                }
+                words => unreachable!("{words:?}"),
+            };
         }
-        command = command.mut_subcommand("quiz", |quiz| {
-            ["f0", "lambert", "critical-angle", "blinn-phong"]
-                .into_iter()
-                .fold(quiz, |q, name| {
-                    q.mut_subcommand(name, numbers_refuse_hyphens)
-                })
-        });
     }
     crate::Cli::from_arg_matches(&command.try_get_matches_from(args)?)
 }

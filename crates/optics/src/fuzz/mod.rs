@@ -60,56 +60,21 @@ fn runner(cases: u32) -> TestRunner {
     )
 }
 
-/// The fields of each law's request, as `optics batch` names them (the
-/// flags are the same with `--` and `-` for `_`).
-const SCHEMA: [(&str, &[&str]); 8] = [
-    (
-        "fresnel",
-        &["eta", "kappa", "cos_i", "theta_i_deg", "model"],
-    ),
-    ("refract", &["wi", "normal", "eta"]),
-    ("reflect", &["wi", "normal"]),
-    (
-        "shade",
-        &[
-            "model",
-            "normal",
-            "light_dir",
-            "view_dir",
-            "radiance",
-            "kd",
-            "ks",
-            "shine",
-        ],
-    ),
-    ("f0", &["n", "kappa"]),
-    (
-        "lambert",
-        &["normal", "light_dir", "view_dir", "radiance", "kd"],
-    ),
-    ("critical_angle", &["n", "n_outside"]),
-    (
-        "blinn_phong",
-        &[
-            "normal",
-            "light_dir",
-            "view_dir",
-            "radiance",
-            "ks",
-            "shine",
-            "kd",
-        ],
-    ),
-];
-
-fn schema(law: &str) -> &'static [&'static str] {
-    SCHEMA
-        .iter()
-        .find(|(name, _)| *name == law)
-        .map_or(&[], |(_, fields)| fields)
+/// The fields of a law's request, as `optics batch` names them (the
+/// flags are the same with `--` and `-` for `_`): the law table's.
+fn schema(law: &str) -> Vec<String> {
+    crate::law_table::schema::fields(law)
+        .into_iter()
+        .map(|field| field.name)
+        .collect()
 }
 
-const VECTORS: [&str; 4] = ["wi", "normal", "light_dir", "view_dir"];
+/// Whether the field `field` of the law `law` holds a vector.
+fn is_vector(law: &str, field: &str) -> bool {
+    crate::law_table::schema::fields(law)
+        .iter()
+        .any(|f| f.name == field && f.kind == crate::law_table::schema::Kind::Vector)
+}
 
 /// A number at the edges of `f64` as often as an ordinary one: zeros,
 /// subnormals, the squares' underflow and overflow, the largest finite,
@@ -292,7 +257,11 @@ fn check_record(record: &Value) -> Result<(), TestCaseError> {
         let r = answer.as_f64().unwrap_or(f64::NAN);
         prop_assert!((0.0..=1.0).contains(&r), "{record}: R = {r}");
     }
-    if let Some(v) = answer.as_array() {
+    // A direction (a matrix's rows are not one).
+    if let Some(v) = answer
+        .as_array()
+        .filter(|v| v.len() == 3 && v.iter().all(Value::is_number))
+    {
         let length = v
             .iter()
             .filter_map(Value::as_f64)

@@ -42,7 +42,7 @@ fn every_kind() -> Vec<(Error, Vec<String>)> {
     let our_usage = usage(&["optics", "reflect", "--wi", "0,1", "--normal", "0,0,1"]);
     let json_error = || serde_json::from_str::<serde_json::Value>("{").unwrap_err();
     let named = |name: &str| vec![name.to_owned()];
-    let laws = crate::law_names::LAWS.join(", ");
+    let laws = crate::law_table::LAWS.join(", ");
     let mut kinds: Vec<(ErrorKind, Vec<String>)> = vec![
         (
             DomainError::NotFinite {
@@ -128,6 +128,7 @@ fn every_kind() -> Vec<(Error, Vec<String>)> {
         (
             ErrorKind::UnknownLaw {
                 law: "teleport".into(),
+                expected: crate::law_table::LAWS,
             },
             vec![laws, "teleport".into()],
         ),

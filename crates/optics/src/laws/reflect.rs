@@ -32,7 +32,7 @@ impl ReflectArgs {
         let wi = via.direction("wi", self.wi)?;
         let n = via.direction("normal", self.normal)?;
         let title = say!(lang, "Mirror direction", "Tükörirány");
-        let mut record = Record::new("reflect", title, "1").with_steps(steps);
+        let mut record = Record::new(Self::LAW, title, "1").with_steps(steps);
         record.input("wi", self.wi.0).input("normal", self.normal.0);
         note_normalized(&mut record, lang, "wi", &wi);
         note_normalized(&mut record, lang, "normal", &n);

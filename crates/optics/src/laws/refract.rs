@@ -40,7 +40,7 @@ impl RefractArgs {
         let n = via.direction("normal", self.normal)?;
         let eta = via.index("eta", self.eta)?;
         let mut record = Record::new(
-            "refract",
+            Self::LAW,
             say!(lang, "Refracted direction", "Törési irány"),
             "1",
         )

@@ -99,7 +99,7 @@ pub struct Shading {
 
 impl ShadeArgs {
     pub fn solve(&self, via: Via, lang: Lang, steps: Steps) -> Result<Record> {
-        Ok(self.shade("shade", via, lang, steps)?.record)
+        Ok(self.shade(Self::LAW, via, lang, steps)?.record)
     }
 
     /// Shades and records the working under the name `law`.

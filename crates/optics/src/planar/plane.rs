@@ -8,14 +8,12 @@ use record::{number, vector, Record};
 use record::{say, Lang};
 use techniques::planar::Plane;
 
-/// A plane, by a point of it and its normal.
-#[derive(clap::Args, Clone, Debug)]
+/// A plane, by a point of it and its normal, as both matrices' flags
+/// `--plane-point` and `--plane-normal` give it (fields of their own in
+/// each, so that a batch request names them as its own).
+#[derive(Clone, Copy, Debug)]
 pub struct PlaneArgs {
-    /// A point of the plane.
-    #[arg(long, allow_hyphen_values = true)]
     pub plane_point: Vec3Arg,
-    /// The plane's normal (any length but zero).
-    #[arg(long, allow_hyphen_values = true)]
     pub plane_normal: Vec3Arg,
 }
 

@@ -12,10 +12,12 @@ use glam::{DMat4, DVec3};
 use radiometry::domain::Direction;
 use record::{number, vector, Record, Steps};
 use record::{say, Lang};
+use serde::Deserialize;
 use techniques::planar::{reflection, Plane};
 
 /// The matrix that mirrors a scene in a plane.
-#[derive(clap::Args, Clone, Debug)]
+#[derive(clap::Args, Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
 #[command(
     allow_negative_numbers = true,
     after_help = "The slides' M = F⁻¹ S(1, −1, 1) F, F = R(n → y) T(−p): column vectors, M (x, y, z, 1).
@@ -26,8 +28,12 @@ Example:
   optics reflection-matrix --plane-point 0,1,0 --plane-normal 0,1,0 --point 2,3,4   (the floor y = 1)"
 )]
 pub struct ReflectionMatrixArgs {
-    #[command(flatten)]
-    pub plane: PlaneArgs,
+    /// A point of the plane.
+    #[arg(long, allow_hyphen_values = true)]
+    pub plane_point: Vec3Arg,
+    /// The plane's normal (any length but zero).
+    #[arg(long, allow_hyphen_values = true)]
+    pub plane_normal: Vec3Arg,
     /// A point (a light's position) to mirror.
     #[arg(long, allow_hyphen_values = true)]
     pub point: Option<Vec3Arg>,
@@ -37,8 +43,15 @@ pub struct ReflectionMatrixArgs {
 }
 
 impl ReflectionMatrixArgs {
+    fn plane(&self) -> PlaneArgs {
+        PlaneArgs {
+            plane_point: self.plane_point,
+            plane_normal: self.plane_normal,
+        }
+    }
+
     pub fn solve(&self, via: Via, lang: Lang, steps: Steps) -> Result<Record> {
-        let plane = self.plane.plane(via)?;
+        let plane = self.plane().plane(via)?;
         let point = finite_point(via, "point", self.point)?;
         let direction = self
             .direction
@@ -49,8 +62,8 @@ impl ReflectionMatrixArgs {
             "Reflection matrix of a plane",
             "Sík tükrözési mátrixa"
         );
-        let mut record = Record::new("reflection_matrix", title, "").with_steps(steps);
-        self.plane.inputs(&mut record);
+        let mut record = Record::new(Self::LAW, title, "").with_steps(steps);
+        self.plane().inputs(&mut record);
         if let Some(p) = self.point {
             record.input("point", p.0);
         }

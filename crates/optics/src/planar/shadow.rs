@@ -10,13 +10,15 @@ use crate::input::{Vec3Arg, Via};
 use glam::{DMat4, DVec3, DVec4};
 use record::{number, vector, Record, Steps};
 use record::{say, Lang};
+use serde::Deserialize;
 use techniques::planar::{
     light_on_plane, project_shadow, shadow_matrix, shadow_matrix_y0, Plane, Shadow,
 };
 
 /// The matrix that flattens a scene onto a plane along the rays of a
 /// point light, and where it puts one vertex.
-#[derive(clap::Args, Clone, Debug)]
+#[derive(clap::Args, Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
 #[command(
     allow_negative_numbers = true,
     after_help = "The slides' shadow matrix of a point light l onto n · x + d = 0: column vectors, M (x, y, z, 1),
@@ -32,26 +34,37 @@ pub struct ShadowMatrixArgs {
     /// The point light's position.
     #[arg(long, allow_hyphen_values = true)]
     pub light: Vec3Arg,
-    #[command(flatten)]
-    pub plane: PlaneArgs,
+    /// A point of the plane.
+    #[arg(long, allow_hyphen_values = true)]
+    pub plane_point: Vec3Arg,
+    /// The plane's normal (any length but zero).
+    #[arg(long, allow_hyphen_values = true)]
+    pub plane_normal: Vec3Arg,
     /// A vertex to project onto the plane.
     #[arg(long, allow_hyphen_values = true)]
     pub vertex: Option<Vec3Arg>,
 }
 
 impl ShadowMatrixArgs {
+    fn plane(&self) -> PlaneArgs {
+        PlaneArgs {
+            plane_point: self.plane_point,
+            plane_normal: self.plane_normal,
+        }
+    }
+
     pub fn solve(&self, via: Via, lang: Lang, steps: Steps) -> Result<Record> {
         let light = via.point("light", self.light)?;
-        let plane = self.plane.plane(via)?;
+        let plane = self.plane().plane(via)?;
         let vertex = self.vertex.map(|v| vertex(via, v)).transpose()?;
         let title = say!(
             lang,
             "Shadow matrix of a point light",
             "Pontfényforrás árnyékmátrixa"
         );
-        let mut record = Record::new("shadow_matrix", title, "").with_steps(steps);
+        let mut record = Record::new(Self::LAW, title, "").with_steps(steps);
         record.input("light", self.light.0);
-        self.plane.inputs(&mut record);
+        self.plane().inputs(&mut record);
         if let Some(v) = self.vertex {
             record.input("vertex", v.0);
         }

@@ -34,7 +34,7 @@ impl F0Args {
         let n = via.index("n", self.n)?;
         let kappa = via.extinction("kappa", self.kappa)?;
         let mut record = Record::new(
-            "f0",
+            Self::LAW,
             say!(
                 lang,
                 "Reflectance at normal incidence, F0",
@@ -105,7 +105,7 @@ impl LambertArgs {
             ks: 0.0,
             shine: 1.0,
         };
-        let mut shading = shade.shade("lambert", via, lang, steps)?;
+        let mut shading = shade.shade(Self::LAW, via, lang, steps)?;
         let record = &mut shading.record;
         record.title = say!(
             lang,
@@ -162,7 +162,7 @@ impl CriticalAngleArgs {
         let n = via.index("n", self.n)?;
         let n_out = via.index("n_outside", self.n_outside)?;
         let mut record = Record::new(
-            "critical_angle",
+            Self::LAW,
             say!(
                 lang,
                 "Critical angle of total internal reflection",
@@ -267,7 +267,7 @@ impl BlinnPhongArgs {
             ks: self.ks,
             shine: self.shine,
         };
-        let mut shading = shade.shade("blinn_phong", via, lang, steps)?;
+        let mut shading = shade.shade(Self::LAW, via, lang, steps)?;
         shading.record.title = say!(
             lang,
             "The course's Phong-Blinn law: L_ref = L_in (kd + ks (cos⁺δ)^shine / cos⁺θin) cos⁺θin",

@@ -19,38 +19,6 @@ use record::{say, Lang};
 use record::{Answer, Record};
 use serde_json::Value;
 
-#[derive(clap::Args, Debug)]
-#[command(
-    allow_negative_numbers = true,
-    after_help = "Examples:
-  optics quiz                 (lists the exercises)
-  optics quiz seed            (works every question of the course's quiz)
-  optics quiz f0 --n 1.4
-  optics --lang hu quiz seed"
-)]
-pub struct QuizArgs {
-    #[command(subcommand)]
-    pub exercise: Option<Exercise>,
-}
-
-#[derive(clap::Subcommand, Debug)]
-pub enum Exercise {
-    /// Every question of the course's quiz, with the printed answers checked.
-    #[command(after_help = "Examples:
-  optics quiz seed
-  optics --lang hu quiz seed          (in the course's language)
-  optics --json quiz seed             (one JSON object; the questions under details.questions)")]
-    Seed,
-    /// Reflectance at normal incidence, F0, from the refractive index.
-    F0(F0Args),
-    /// Radiance reflected by the course's Lambert surface under a directional light.
-    Lambert(LambertArgs),
-    /// The critical angle of total internal reflection, from a medium into air.
-    CriticalAngle(CriticalAngleArgs),
-    /// Radiance reflected by the course's Phong-Blinn surface under a directional light.
-    BlinnPhong(BlinnPhongArgs),
-}
-
 /// The exercises, for `optics quiz` without one: name, what it solves, example.
 const EXERCISES: [(&str, &str, &str, &str); 5] = [
     (

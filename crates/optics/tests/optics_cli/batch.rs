@@ -111,21 +111,22 @@ fn a_block_of_four_billion_lines_is_held_only_as_lines_arrive() {
 }
 
 /// Each output line of `optics batch [args]` on the ROUND_TRIP requests,
-/// one per law of `optics::law_names::LAWS`, with the given line endings.
+/// one per law of `optics::law_table::LAWS`, with the given line endings.
 fn round_trip_records(args: &[&str], extra: &str) -> Vec<serde_json::Value> {
     let laws: Vec<&str> = ROUND_TRIP
         .iter()
         .map(|(request, _)| {
             let law = &serde_json::from_str::<serde_json::Value>(request).unwrap()["law"];
-            optics::law_names::LAWS
-                .into_iter()
-                .find(|name| law == name)
+            optics::law_table::LAWS
+                .iter()
+                .copied()
+                .find(|&name| law == name)
                 .expect("a law of the batch")
         })
         .collect();
     assert_eq!(
         laws,
-        optics::law_names::LAWS,
+        optics::law_table::LAWS,
         "one request per law, in order"
     );
     let input: String = ROUND_TRIP

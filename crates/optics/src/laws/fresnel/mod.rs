@@ -145,7 +145,7 @@ impl FresnelArgs {
             (FresnelModel::Course, Lang::Hu) => "a kurzus shaderének alakja",
         };
         let mut record = Record::new(
-            "fresnel",
+            Self::LAW,
             say!(
                 lang,
                 "Fresnel reflectance, {model}, {kind}",
