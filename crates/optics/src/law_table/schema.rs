@@ -87,3 +87,50 @@ pub fn fields(law: &str) -> Vec<Field> {
         })
         .collect()
 }
+
+/// The first example of the law's `--help` (`optics reflect --wi 0,0.6,0.8
+/// --normal 0,0,1`), as a batch line's fields and as the flags after the
+/// law's command words. Panics where the help gives none, or gives a flag
+/// that is not a field of the law.
+#[cfg(test)]
+pub fn example(law: &str) -> (serde_json::Map<String, serde_json::Value>, Vec<String>) {
+    let command = command(law).unwrap_or_else(|| panic!("{law} is not a law"));
+    let words = format!("optics {} ", command_words(law).join(" "));
+    let help = command
+        .get_after_help()
+        .map(ToString::to_string)
+        .unwrap_or_default();
+    let line = help
+        .lines()
+        .map(str::trim)
+        .find_map(|line| line.strip_prefix(&words))
+        .unwrap_or_else(|| panic!("`{words}--help` shows no example"));
+    // A remark may follow, in parentheses.
+    let flags: Vec<String> = line
+        .split("  (")
+        .next()
+        .unwrap_or_default()
+        .split_whitespace()
+        .map(str::to_owned)
+        .collect();
+    let fields = fields(law);
+    let mut request = serde_json::Map::new();
+    for pair in flags.chunks(2) {
+        let name = pair[0].trim_start_matches("--").replace('-', "_");
+        let field = fields
+            .iter()
+            .find(|f| f.name == name)
+            .unwrap_or_else(|| panic!("{words}: {} is not a field", pair[0]));
+        let text = pair.get(1).map_or("", String::as_str);
+        let value = match field.kind {
+            Kind::Vector => serde_json::json!(text
+                .split(',')
+                .map(|c| c.parse::<f64>().expect("a component"))
+                .collect::<Vec<_>>()),
+            Kind::Number => serde_json::json!(text.parse::<f64>().expect("a number")),
+            Kind::Choice(_) => serde_json::json!(text),
+        };
+        request.insert(name, value);
+    }
+    (request, flags)
+}

@@ -4,27 +4,22 @@ use crate::common::{optics, stdout};
 
 #[test]
 fn every_subcommand_has_help_with_an_example() {
-    let subcommands: &[&[&str]] = &[
+    let others: &[&[&str]] = &[
         &["quiz"],
         &["quiz", "seed"],
-        &["quiz", "f0"],
-        &["quiz", "lambert"],
-        &["quiz", "critical-angle"],
-        &["quiz", "blinn-phong"],
-        &["fresnel"],
-        &["refract"],
-        &["reflect"],
-        &["shade"],
-        &["envmap"],
-        &["reflection-matrix"],
-        &["shadow-matrix"],
         &["batch"],
         &["render"],
         &["inspect"],
         &["validate"],
     ];
-    for sub in subcommands {
-        let mut args = sub.to_vec();
+    let laws = optics::law_table::LAWS
+        .iter()
+        .map(|&law| optics::law_table::command_words(law));
+    let others = others
+        .iter()
+        .map(|words| words.iter().map(|w| w.to_string()).collect());
+    for sub in laws.chain(others) {
+        let mut args: Vec<&str> = sub.iter().map(String::as_str).collect();
         args.push("--help");
         let output = optics(&args);
         assert!(output.status.success(), "optics {args:?}");
