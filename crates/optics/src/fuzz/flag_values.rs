@@ -102,12 +102,15 @@ fn any_law() -> impl Strategy<Value = Line> {
                 args.extend(command_words(law));
                 let mut given: Vec<String> = Vec::new();
                 for (text, field, optional_given) in values {
-                    // Fresnel's incidence is one of two flags.
-                    let wanted = match field.name.as_str() {
-                        "cos_i" => optional_given,
-                        "theta_i_deg" => !given.iter().any(|g| g == "cos_i"),
-                        _ if !field.required => optional_given,
-                        _ => true,
+                    // Of a group one of which is required (Fresnel's
+                    // incidence), exactly one: the last if none before.
+                    let wanted = match &field.one_of {
+                        _ if field.required => true,
+                        Some(members) => {
+                            !given.iter().any(|g| members.contains(g))
+                                && (optional_given || members.last() == Some(&field.name))
+                        }
+                        None => optional_given,
                     };
                     if wanted {
                         args.extend([flag(&field.name), text]);

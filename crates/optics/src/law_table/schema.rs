@@ -24,6 +24,9 @@ pub struct Field {
     /// Whether every request must give it (a field of a group one of
     /// which is required, as Fresnel's incidence, is not).
     pub required: bool,
+    /// The fields of the group, one of which every request must give,
+    /// that this one belongs to (Fresnel's `cos_i` and `theta_i_deg`).
+    pub one_of: Option<Vec<String>>,
     pub kind: Kind,
     /// The flag's help line, in English.
     pub help: String,
@@ -52,6 +55,11 @@ pub fn fields(law: &str) -> Vec<Field> {
     let Some(command) = command(law) else {
         return Vec::new();
     };
+    let groups: Vec<Vec<String>> = command
+        .get_groups()
+        .filter(|group| group.is_required_set())
+        .map(|group| group.get_args().map(|id| id.as_str().to_owned()).collect())
+        .collect();
     command
         .get_arguments()
         .filter(|arg| arg.get_long().is_some())
@@ -78,9 +86,15 @@ pub fn fields(law: &str) -> Vec<Field> {
                 debug_assert!(parses("0,0,1"), "--{:?} takes a vector", arg.get_long());
                 Kind::Vector
             };
+            let name = arg.get_id().as_str().to_owned();
+            let one_of = groups
+                .iter()
+                .find(|members| members.contains(&name))
+                .cloned();
             Field {
-                name: arg.get_id().as_str().to_owned(),
+                name,
                 required: arg.is_required_set(),
+                one_of,
                 kind,
                 help: arg.get_help().map(ToString::to_string).unwrap_or_default(),
             }
