@@ -36,8 +36,25 @@ fn cosines<T: Real>(indices: &[f64]) -> Vec<T> {
         }
     }
     c.extend((0..997).map(|k| -1.0 + 2.0 * f64::from(k) / 996.0));
+    // And a spread of pseudo-random ones (splitmix64), so that each tier
+    // compares at least a million results.
+    let mut state = 0x9e37_79b9_7f4a_7c15_u64;
+    c.extend((0..RANDOM_COSINES).map(|_| {
+        state = state.wrapping_add(0x9e37_79b9_7f4a_7c15);
+        let mut z = state;
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        z ^= z >> 31;
+        (z >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+    }));
     c.into_iter().map(T::lit).collect()
 }
+
+/// The pseudo-random cosines added to the special ones.
+const RANDOM_COSINES: usize = 50_000;
+
+/// The fewest results each tier compares.
+const AT_LEAST: usize = 1_000_000;
 
 fn same_bits<T: Real>(a: T, b: T) -> bool {
     a == b && a.is_sign_negative() == b.is_sign_negative() || a.is_nan() && b.is_nan()
@@ -95,6 +112,10 @@ fn check<T: Real + std::fmt::LowerExp>(tier: &str) {
         }
     }
     println!("{tier}: {compared} results, all the same bits");
+    assert!(
+        compared >= AT_LEAST,
+        "{tier}: only {compared} results compared"
+    );
 }
 
 #[test]

@@ -34,6 +34,9 @@ fn value(field: &Field) -> BoxedStrategy<String> {
             .prop_map(|v| v.join(","))
             .boxed(),
         Kind::Number => number_text().boxed(),
+        Kind::List => prop::collection::vec(number_text(), 1..5)
+            .prop_map(|v| v.join(","))
+            .boxed(),
     }
 }
 

@@ -39,6 +39,7 @@ fn field(field: &Field) -> String {
     let shape = match &field.kind {
         Kind::Number => String::new(),
         Kind::Vector => " [x, y, z]".to_owned(),
+        Kind::List => " [c, …]".to_owned(),
         Kind::Choice(names) => format!(" {}", names.join("\\|")),
     };
     if field.required {

@@ -12,6 +12,9 @@ pub enum Kind {
     Number,
     /// A vector, `[x, y, z]` in a request and `x,y,z` on the command line.
     Vector,
+    /// Numbers, as many as given: `[c, …]` in a request, `c,…` on the
+    /// command line.
+    List,
     /// One of the names a choice takes (`exact`, `lat-long`, …).
     Choice(Vec<String>),
 }
@@ -80,6 +83,8 @@ pub fn fields(law: &str) -> Vec<Field> {
                 .collect();
             let kind = if !choices.is_empty() {
                 Kind::Choice(choices)
+            } else if arg.get_value_delimiter().is_some() {
+                Kind::List
             } else if parses("1.5") {
                 Kind::Number
             } else {
@@ -137,7 +142,7 @@ pub fn example(law: &str) -> (serde_json::Map<String, serde_json::Value>, Vec<St
             .unwrap_or_else(|| panic!("{words}: {} is not a field", pair[0]));
         let text = pair.get(1).map_or("", String::as_str);
         let value = match field.kind {
-            Kind::Vector => serde_json::json!(text
+            Kind::Vector | Kind::List => serde_json::json!(text
                 .split(',')
                 .map(|c| c.parse::<f64>().expect("a component"))
                 .collect::<Vec<_>>()),

@@ -4,7 +4,7 @@
 use crate::envmap::EnvmapArgs;
 use crate::error::Result;
 use crate::input::Via;
-use crate::laws::{FresnelArgs, ReflectArgs, RefractArgs, ShadeArgs};
+use crate::laws::{FresnelArgs, FresnelBulkArgs, ReflectArgs, RefractArgs, ShadeArgs};
 use crate::planar::{ReflectionMatrixArgs, ShadowMatrixArgs};
 use crate::quiz::{BlinnPhongArgs, CriticalAngleArgs, F0Args, LambertArgs};
 use record::{Lang, Record, Steps};
@@ -99,6 +99,8 @@ laws! {
     commands {
         /// Fresnel reflectance, exact or Schlick, dielectric or conductor.
         "fresnel" Fresnel(FresnelArgs),
+        /// Exact Fresnel reflectance of one material at many cosines at once.
+        "fresnel_bulk" FresnelBulk(FresnelBulkArgs),
         /// The refracted direction (Snell's law in vector form).
         "refract" Refract(RefractArgs),
         /// The mirror direction.

@@ -8,12 +8,14 @@
 //! a law decided, and each law is evaluated at most once per request.
 
 mod fresnel;
+mod fresnel_bulk;
 mod normalized;
 mod reflect;
 pub(crate) mod refract;
 mod shade;
 
 pub use fresnel::{FresnelArgs, FresnelModel};
+pub use fresnel_bulk::FresnelBulkArgs;
 pub use normalized::note_normalized;
 pub use reflect::ReflectArgs;
 pub use refract::RefractArgs;
