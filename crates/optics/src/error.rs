@@ -16,7 +16,6 @@
 //! kinds that carry them say which argument or field they concern.
 
 use radiometry::domain::DomainError;
-use std::fmt;
 use tracer::job::RenderError;
 
 #[cfg(feature = "harness")]
@@ -32,42 +31,13 @@ mod usage;
 
 #[cfg(feature = "harness")]
 pub use harness::HarnessKind;
-pub use kind::ErrorKind;
+pub use kind::{Error, ErrorKind};
 pub(crate) use usage::{
     decimal_comma_en, decimal_comma_fixed, usage_argument, usage_message, usage_text,
 };
 
 /// The outcome of a step that can fail with one of the suite's own errors.
 pub type Result<T, E = Error> = std::result::Result<T, E>;
-
-/// A failure of a command: its kind, which also knows the argument or JSON
-/// field it concerns.
-#[derive(Debug)]
-pub struct Error {
-    // Boxed: the harness's kinds are large, and an error is moved often.
-    kind: Box<ErrorKind>,
-}
-
-impl Error {
-    /// What failed.
-    pub fn kind(&self) -> &ErrorKind {
-        &self.kind
-    }
-
-    /// The argument or JSON field the failure concerns, as the user wrote
-    /// it, when known.
-    pub fn field(&self) -> Option<String> {
-        self.kind.field()
-    }
-}
-
-impl From<ErrorKind> for Error {
-    fn from(kind: ErrorKind) -> Self {
-        Self {
-            kind: Box::new(kind),
-        }
-    }
-}
 
 #[cfg(feature = "harness")]
 impl From<compare::CompareError> for Error {
@@ -130,11 +100,3 @@ impl From<RenderError> for Error {
         }
     }
 }
-
-impl fmt::Display for Error {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        self.kind.fmt(f)
-    }
-}
-
-impl std::error::Error for Error {}
