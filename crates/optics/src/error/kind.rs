@@ -6,6 +6,7 @@ use std::fmt;
 use std::path::PathBuf;
 
 use radiometry::domain::DomainError;
+use record::Lang;
 use tracer::output::OutputError;
 use tracer::scene::SceneError;
 
@@ -32,6 +33,21 @@ impl Error {
     /// it, when known.
     pub fn field(&self) -> Option<String> {
         self.kind.field()
+    }
+
+    /// The error's message in `lang`.
+    pub fn message(&self, lang: Lang) -> String {
+        self.kind.message(lang)
+    }
+
+    /// The error as JSON: `{"kind": …, "field": …, "message": …}`, the
+    /// message in `lang`, the field `null` when unknown.
+    pub fn to_json(&self, lang: Lang) -> serde_json::Value {
+        serde_json::json!({
+            "kind": self.kind.name(),
+            "field": self.field(),
+            "message": self.message(lang),
+        })
     }
 }
 
