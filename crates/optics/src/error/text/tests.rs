@@ -1,5 +1,8 @@
-//! Every error kind walked in both languages: the Hungarian has no English
-//! left but the names, numbers and other programs' messages it quotes.
+//! Every error kind walked in both languages. That each kind has both
+//! texts the compiler sees (`super`); these check what it cannot: each
+//! text is there and differs from the other, and the Hungarian has no
+//! English left but the names, numbers and other programs' messages it
+//! quotes.
 
 #[cfg(feature = "harness")]
 use crate::error::HarnessKind;
@@ -37,11 +40,10 @@ fn every_kind() -> Vec<(Error, Vec<String>)> {
         Err(error) => error,
         Ok(_) => panic!("{args:?} parses"),
     };
-    let foreign_usage = usage(&["optics", "fresnel", "--eta", "glass", "--cos-i", "1"]);
-    let foreign_text = ErrorKind::Usage(usage(&[
-        "optics", "fresnel", "--eta", "glass", "--cos-i", "1",
-    ]))
-    .message(Lang::En);
+    let foreign = ["optics", "fresnel", "--eta", "glass", "--cos-i", "1"];
+    let foreign_usage = usage(&foreign);
+    // The parser's own message, which the Hungarian quotes as it wrote it.
+    let foreign_text = ErrorKind::Usage(usage(&foreign)).message(Lang::En);
     let our_usage = usage(&["optics", "reflect", "--wi", "0,1", "--normal", "0,0,1"]);
     let json_error = || serde_json::from_str::<serde_json::Value>("{").unwrap_err();
     let named = |name: &str| vec![name.to_owned()];
@@ -318,6 +320,17 @@ fn every_kind_has_an_example_and_a_name_of_its_own() {
         "no example of the kinds in slots {missing:?}"
     );
     assert_eq!(names.len(), SLOTS, "two kinds share a name: {names:?}");
+}
+
+#[test]
+fn every_kind_is_worded_in_both_languages() {
+    for (error, _) in every_kind() {
+        let (en, hu) = (error.message(Lang::En), error.message(Lang::Hu));
+        let name = error.kind().name();
+        assert!(!en.trim().is_empty(), "{name}: no English");
+        assert!(!hu.trim().is_empty(), "{name}: no Hungarian");
+        assert_ne!(en, hu, "{name}: the Hungarian is the English");
+    }
 }
 
 #[test]
