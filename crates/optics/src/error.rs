@@ -1,73 +1,44 @@
 //! Why a command failed, as a typed kind.
 //!
-//! An error's identity is its [`ErrorKind`]; its English text is only the
-//! kind's `Display`, its Hungarian text an exhaustive `match` over the kinds
-//! in [`crate::lang`], and its JSON form `{"kind", "field", "message"}` takes
-//! the kind's [`name`](ErrorKind::name). Adding a kind without a name, a
-//! field or a translation stops the build.
+//! An error's identity is its [`ErrorKind`]; its message in each language
+//! is one exhaustive `match` over the kinds whose arms give the English and
+//! the Hungarian side by side (`text`), the English being also the kind's
+//! `Display`; and its JSON form `{"kind", "field", "message"}` takes the
+//! kind's [`name`](ErrorKind::name). Adding a kind without a name, a field
+//! or its Hungarian stops the build.
 //!
 //! Another crate's typed errors are wrapped whole as one variant, as
 //! [`ErrorKind::Domain`] wraps the radiometry crate's [`DomainError`] and
-//! [`ErrorKind::Scene`] the tracer's [`tracer::scene::SceneError`]; the translation of such
-//! a variant is one exhaustive `match` over that crate's kinds, beside the
-//! others in `lang`, and its name and field are given in `error::render` or
-//! `error::harness`. Messages that come from outside the suite (the argument
-//! parser's, serde's, the operating system's) keep their text, and the
-//! kinds that carry them say which argument or field they concern.
+//! [`ErrorKind::Scene`] the tracer's [`tracer::scene::SceneError`]: their
+//! English is that crate's `Display`, their Hungarian one exhaustive
+//! `match` over that crate's kinds in `text`, and their name and field are
+//! given in `error::render` or `error::harness`. Messages that come from
+//! outside the suite (the argument parser's, serde's, the operating
+//! system's) keep their text, and the kinds that carry them say which
+//! argument or field they concern.
 
 use radiometry::domain::DomainError;
-use std::fmt;
 use tracer::job::RenderError;
 
 #[cfg(feature = "harness")]
 pub mod compare;
-mod english;
 #[cfg(feature = "harness")]
 pub mod harness;
 #[cfg(feature = "harness")]
 pub mod jobs;
 mod kind;
 pub mod render;
+mod text;
 mod usage;
 
 #[cfg(feature = "harness")]
 pub use harness::HarnessKind;
-pub use kind::ErrorKind;
-pub(crate) use usage::{
-    decimal_comma_en, decimal_comma_fixed, usage_argument, usage_message, usage_text,
-};
+pub use kind::{Error, ErrorKind};
+pub(crate) use text::decimal_comma;
+pub(crate) use usage::decimal_comma_fixed;
 
 /// The outcome of a step that can fail with one of the suite's own errors.
 pub type Result<T, E = Error> = std::result::Result<T, E>;
-
-/// A failure of a command: its kind, which also knows the argument or JSON
-/// field it concerns.
-#[derive(Debug)]
-pub struct Error {
-    // Boxed: the harness's kinds are large, and an error is moved often.
-    kind: Box<ErrorKind>,
-}
-
-impl Error {
-    /// What failed.
-    pub fn kind(&self) -> &ErrorKind {
-        &self.kind
-    }
-
-    /// The argument or JSON field the failure concerns, as the user wrote
-    /// it, when known.
-    pub fn field(&self) -> Option<String> {
-        self.kind.field()
-    }
-}
-
-impl From<ErrorKind> for Error {
-    fn from(kind: ErrorKind) -> Self {
-        Self {
-            kind: Box::new(kind),
-        }
-    }
-}
 
 #[cfg(feature = "harness")]
 impl From<compare::CompareError> for Error {
@@ -130,11 +101,3 @@ impl From<RenderError> for Error {
         }
     }
 }
-
-impl fmt::Display for Error {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        self.kind.fmt(f)
-    }
-}
-
-impl std::error::Error for Error {}

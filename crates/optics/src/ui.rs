@@ -3,7 +3,6 @@
 //! also as the error object on stdout). The only module that prints.
 
 use crate::error::{self, Error, ErrorKind};
-use crate::lang;
 use record::{Lang, Record};
 use std::io::Write;
 
@@ -80,7 +79,7 @@ impl Ui {
                 match (error::decimal_comma_fixed(usage), rendered.split_once('\n')) {
                     (Some(fixed), Some((first, rest))) => format!(
                         "{first}\n\n  tip: {}\n{rest}",
-                        error::decimal_comma_en(&fixed)
+                        error::decimal_comma(&fixed, Lang::En)
                     ),
                     _ => rendered,
                 }
@@ -88,7 +87,7 @@ impl Ui {
             _ => format!(
                 "{}: {}\n",
                 self.lang.pick("error", "hiba"),
-                lang::error_message(error, self.lang)
+                error.message(self.lang)
             ),
         };
         print_err(&text);

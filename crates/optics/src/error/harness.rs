@@ -1,7 +1,6 @@
 //! The harness's errors as the commands of the `harness` feature report
-//! them ([`HarnessKind`]): each kind's stable name, the flag (or variable)
-//! that sets what it concerns, and the advice about a missing checkout that
-//! the reporting command accepts.
+//! them ([`HarnessKind`]): each kind's stable name and the flag (or
+//! variable) that sets what it concerns.
 
 use std::path::PathBuf;
 
@@ -12,46 +11,9 @@ use validation::reference::ReferenceError;
 use validation::regenerate::RegenerateError;
 use validation::tradeoff::error::BudgetError;
 
-/// The flag an English and a Hungarian message start with, where the
-/// harness's own message does not say which flag sets what it concerns.
-#[derive(Clone, Copy, Debug)]
-pub struct Lead {
-    /// In English.
-    pub en: &'static str,
-    /// In Hungarian.
-    pub hu: &'static str,
-}
-
 /// The flag `optics validate` names the checkout with; the other commands
 /// that need a checkout have none.
 pub const CHECKOUT_FLAG: &str = "--checkout";
-
-/// A checkout error in English, for a command whose checkout flag is
-/// `flag` (`None`: the command has none): the flag leads the message of a
-/// directory it named, and the advice after a missing checkout names only
-/// what the command accepts.
-pub fn checkout_en(error: &CheckoutError, flag: Option<&str>) -> String {
-    match (error, flag) {
-        (
-            CheckoutError::NotACheckout {
-                via: Via::Explicit,
-                path,
-                marker,
-            },
-            Some(flag),
-        ) => format!(
-            "{flag} {}: not a checkout of the suite (it has no {marker})",
-            path.display()
-        ),
-        (CheckoutError::NotACheckout { .. }, _) => error.to_string(),
-        (CheckoutError::NotFound { .. }, Some(flag)) => {
-            format!("{error}; pass {flag} DIR, set {ENV}=DIR, or run from inside a checkout")
-        }
-        (CheckoutError::NotFound { .. }, None) => {
-            format!("{error}; set {ENV}=DIR, or run from inside a checkout")
-        }
-    }
-}
 
 /// The name of a checkout error's kind.
 pub fn checkout_name(error: &CheckoutError) -> &'static str {
@@ -121,65 +83,6 @@ pub fn pipeline_field(error: &PipelineError) -> Option<String> {
         | PipelineError::Regenerate(_) => return None,
     };
     Some(flag.to_owned())
-}
-
-/// The flag a pipeline error's message is led by, where the harness's own
-/// message names a path or a program but not the flag that set it.
-pub fn pipeline_lead(error: &PipelineError) -> Option<Lead> {
-    match error {
-        PipelineError::OutNotADirectory { .. } => Some(Lead {
-            en: "--out",
-            hu: "--out",
-        }),
-        PipelineError::NoRequirements { .. } => Some(Lead {
-            en: "--checkout (or --no-python)",
-            hu: "--checkout (vagy --no-python)",
-        }),
-        PipelineError::Tool(ToolError::Start { .. }) => Some(Lead {
-            en: "--python (or --no-python)",
-            hu: "--python (vagy --no-python)",
-        }),
-        PipelineError::CreateDir { .. }
-        | PipelineError::Write(_)
-        | PipelineError::Reference(_)
-        | PipelineError::Tool(ToolError::Failed { .. })
-        | PipelineError::Regenerate(_) => None,
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn not_found() -> CheckoutError {
-        CheckoutError::NotFound {
-            start: "/tmp/work".into(),
-        }
-    }
-
-    #[test]
-    fn a_command_without_the_flag_is_not_advised_to_pass_it() {
-        let message = checkout_en(&not_found(), None);
-        assert!(!message.contains("--"), "{message}");
-        assert!(message.contains(&format!("set {ENV}=DIR")), "{message}");
-        assert_eq!(checkout_field(&not_found(), None), ENV);
-    }
-
-    #[test]
-    fn a_command_with_the_flag_is_advised_to_pass_it() {
-        let message = checkout_en(&not_found(), Some(CHECKOUT_FLAG));
-        for way in [
-            "--checkout DIR",
-            &format!("{ENV}=DIR"),
-            "from inside a checkout",
-        ] {
-            assert!(message.contains(way), "{message}");
-        }
-        assert_eq!(
-            checkout_field(&not_found(), Some(CHECKOUT_FLAG)),
-            CHECKOUT_FLAG
-        );
-    }
 }
 
 /// The failures of the commands the `harness` feature adds: the

@@ -1,10 +1,12 @@
 //! The kinds of failure a command reports ([`ErrorKind`]): each kind's
 //! stable name (the JSON error's `kind`) and the argument or field it
-//! concerns.
+//! concerns; and the [`Error`] that carries one.
 
+use std::fmt;
 use std::path::PathBuf;
 
 use radiometry::domain::DomainError;
+use record::Lang;
 use tracer::output::OutputError;
 use tracer::scene::SceneError;
 
@@ -12,6 +14,58 @@ use tracer::scene::SceneError;
 use super::harness::HarnessKind;
 use super::render;
 use super::usage::usage_argument;
+
+/// A failure of a command: its kind, which also knows the argument or JSON
+/// field it concerns.
+#[derive(Debug)]
+pub struct Error {
+    // Boxed: the harness's kinds are large, and an error is moved often.
+    kind: Box<ErrorKind>,
+}
+
+impl Error {
+    /// What failed.
+    pub fn kind(&self) -> &ErrorKind {
+        &self.kind
+    }
+
+    /// The argument or JSON field the failure concerns, as the user wrote
+    /// it, when known.
+    pub fn field(&self) -> Option<String> {
+        self.kind.field()
+    }
+
+    /// The error's message in `lang`.
+    pub fn message(&self, lang: Lang) -> String {
+        self.kind.message(lang)
+    }
+
+    /// The error as JSON: `{"kind": …, "field": …, "message": …}`, the
+    /// message in `lang`, the field `null` when unknown.
+    pub fn to_json(&self, lang: Lang) -> serde_json::Value {
+        serde_json::json!({
+            "kind": self.kind.name(),
+            "field": self.field(),
+            "message": self.message(lang),
+        })
+    }
+}
+
+impl From<ErrorKind> for Error {
+    fn from(kind: ErrorKind) -> Self {
+        Self {
+            kind: Box::new(kind),
+        }
+    }
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        self.kind.fmt(f)
+    }
+}
+
+impl std::error::Error for Error {}
 
 /// Every failure the suite reports.
 #[derive(Debug)]

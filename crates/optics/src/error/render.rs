@@ -44,22 +44,6 @@ pub fn scene_name(kind: &Scene) -> &'static str {
     }
 }
 
-/// The flags that settle a refused scene, for the commands that take
-/// them: the tracer names the values, the command line its flags. Empty
-/// for the other kinds.
-pub fn advice_en(kind: &Scene) -> &'static str {
-    match kind {
-        Scene::TooExpensive { .. } => {
-            "; optics render and inspect take --allow-expensive to render it anyway"
-        }
-        Scene::CourseHasNoRefraction => {
-            "; choose one with --integrator whitted or path (render, inspect, compare) or \
-             the scene's render.integrator"
-        }
-        _ => "",
-    }
-}
-
 /// The name of an image-writing error's kind: `output.` and the kind.
 pub fn output_name(error: &OutputError) -> &'static str {
     match error {

@@ -1,5 +1,6 @@
 //! What the argument parser's errors say, read once: the argument they
-//! name and their message on one line.
+//! name, the number refused for its decimal comma, and their message on
+//! one line.
 
 /// The argument a command-line error names (`--eta <ETA>`), if it names one.
 pub(crate) fn usage_argument(error: &clap::Error) -> Option<String> {
@@ -30,21 +31,6 @@ pub(crate) fn decimal_comma_fixed(error: &clap::Error) -> Option<String> {
     }
     let fixed = value.replace(',', ".");
     fixed.parse::<f64>().ok().map(|_| fixed)
-}
-
-/// The advice after a number refused for its decimal comma, in English.
-pub(crate) fn decimal_comma_en(fixed: &str) -> String {
-    format!("numbers take a decimal point, not a comma: {fixed}")
-}
-
-/// [`usage_message`] with the decimal point's advice where a number was
-/// refused for its comma.
-pub(crate) fn usage_text(error: &clap::Error) -> String {
-    let message = usage_message(error);
-    match decimal_comma_fixed(error) {
-        Some(fixed) => format!("{message} ({})", decimal_comma_en(&fixed)),
-        None => message,
-    }
 }
 
 /// The argument parser's message without its `error: ` and the usage and

@@ -1,12 +1,15 @@
-//! Every error kind walked in both languages: the Hungarian has no English
-//! left but the names, numbers and other programs' messages it quotes.
+//! Every error kind walked in both languages. That each kind has both
+//! texts the compiler sees (`super`); these check what it cannot: each
+//! text is there and differs from the other, and the Hungarian has no
+//! English left but the names, numbers and other programs' messages it
+//! quotes.
 
-use super::*;
-use crate::error::usage_text;
 #[cfg(feature = "harness")]
 use crate::error::HarnessKind;
+use crate::error::{Error, ErrorKind};
 use clap::Parser;
 use radiometry::domain::{self, DomainError, Expected};
+use record::Lang;
 use std::collections::BTreeSet;
 #[cfg(feature = "harness")]
 use validation::tradeoff::error::BudgetError;
@@ -37,8 +40,10 @@ fn every_kind() -> Vec<(Error, Vec<String>)> {
         Err(error) => error,
         Ok(_) => panic!("{args:?} parses"),
     };
-    let foreign_usage = usage(&["optics", "fresnel", "--eta", "glass", "--cos-i", "1"]);
-    let foreign_text = usage_text(&foreign_usage);
+    let foreign = ["optics", "fresnel", "--eta", "glass", "--cos-i", "1"];
+    let foreign_usage = usage(&foreign);
+    // The parser's own message, which the Hungarian quotes as it wrote it.
+    let foreign_text = ErrorKind::Usage(usage(&foreign)).message(Lang::En);
     let our_usage = usage(&["optics", "reflect", "--wi", "0,1", "--normal", "0,0,1"]);
     let json_error = || serde_json::from_str::<serde_json::Value>("{").unwrap_err();
     let named = |name: &str| vec![name.to_owned()];
@@ -319,13 +324,20 @@ fn every_kind_has_an_example_and_a_name_of_its_own() {
 }
 
 #[test]
+fn every_kind_is_worded_in_both_languages() {
+    for (error, _) in every_kind() {
+        let (en, hu) = (error.message(Lang::En), error.message(Lang::Hu));
+        let name = error.kind().name();
+        assert!(!en.trim().is_empty(), "{name}: no English");
+        assert!(!hu.trim().is_empty(), "{name}: no Hungarian");
+        assert_ne!(en, hu, "{name}: the Hungarian is the English");
+    }
+}
+
+#[test]
 fn hungarian_messages_have_no_english_left() {
     for (error, quoted) in every_kind() {
-        let (mut en, mut hu) = (
-            error_message(&error, Lang::En),
-            error_message(&error, Lang::Hu),
-        );
-        assert_eq!(en, error.to_string(), "the English is the Display");
+        let (mut en, mut hu) = (error.message(Lang::En), error.message(Lang::Hu));
         for text in &quoted {
             assert!(hu.contains(text.as_str()), "{hu:?} does not quote {text:?}");
             en = en.replace(text.as_str(), " ");
@@ -357,7 +369,7 @@ fn the_json_error_names_its_kind_and_field() {
         })
     );
     assert_eq!(
-        error_message(&error, Lang::En),
+        error.message(Lang::En),
         "--eta must be a positive refractive index, got -1"
     );
     let line = Error::from(ErrorKind::EmptyLine).to_json(Lang::En);

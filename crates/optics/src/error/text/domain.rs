@@ -1,10 +1,20 @@
-//! The radiometry crate's domain errors in Hungarian.
+//! The radiometry crate's domain errors: its `Display` in English, an
+//! exhaustive `match` over its kinds in Hungarian.
 
 use radiometry::domain::{self, DomainError, Expected};
+use record::Lang;
 
-/// A domain error of the laws: the input's name, what it should have been,
-/// the value given.
-pub fn domain_hu(error: &DomainError) -> String {
+/// A domain error of the laws in `lang`: the input's name, what it should
+/// have been, the value given.
+pub(super) fn domain(error: &DomainError, lang: Lang) -> String {
+    match lang {
+        Lang::En => error.to_string(),
+        Lang::Hu => domain_hu(error),
+    }
+}
+
+/// A domain error of the laws in Hungarian.
+fn domain_hu(error: &DomainError) -> String {
     match error {
         DomainError::NotFinite { name, value } => {
             format!("{name}: véges számnak kell lennie, kapott érték: {value}")
@@ -26,7 +36,7 @@ pub fn domain_hu(error: &DomainError) -> String {
 
 /// What an input should have been, as the rest of a Hungarian sentence
 /// that names the input.
-pub fn expected_hu(expected: Expected) -> String {
+fn expected_hu(expected: Expected) -> String {
     let (low, high) = expected
         .index_range()
         .map(domain::IndexRange::ends_text)

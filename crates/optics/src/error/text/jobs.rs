@@ -1,9 +1,20 @@
-//! The errors of a sweep spread over machines in Hungarian: an exhaustive
-//! `match` over their kinds.
+//! The errors of a sweep spread over machines: the library's English,
+//! naming the flag or argument each input came from, and an exhaustive
+//! `match` over their kinds in Hungarian.
+
+use record::Lang;
 
 use crate::error::jobs::{flag, listed, ImageProblem, Input, JobError, LineKind};
 
-use super::render::output_hu;
+use super::output::output;
+
+/// A sweep's job or result refused, in `lang`.
+pub(super) fn jobs(error: &JobError, lang: Lang) -> String {
+    match lang {
+        Lang::En => error.named(flag).to_string(),
+        Lang::Hu => jobs_hu(error),
+    }
+}
 
 /// `feladatsor` or `eredménysor`: what a line was read as.
 fn line_hu(kind: LineKind) -> &'static str {
@@ -32,8 +43,8 @@ fn image_hu(problem: &ImageProblem) -> String {
     }
 }
 
-/// A sweep's job or result refused.
-pub fn jobs_hu(error: &JobError) -> String {
+/// A sweep's job or result refused, in Hungarian.
+fn jobs_hu(error: &JobError) -> String {
     match error {
         JobError::Read {
             input,
@@ -143,7 +154,9 @@ fn plan_hu(error: &JobError) -> String {
             path.display(),
             lines.saturating_sub(1)
         ),
-        JobError::Write { input, error } => format!("{}: {}", flag(*input), output_hu(error)),
+        JobError::Write { input, error } => {
+            format!("{}: {}", flag(*input), output(error, Lang::Hu))
+        }
         JobError::Read { .. }
         | JobError::Line { .. }
         | JobError::Schema { .. }

@@ -1,21 +1,26 @@
-//! The tracer's errors in Hungarian: a scene refused, an image not
-//! written. Each is an exhaustive `match` over the tracer's kinds.
+//! A scene the tracer refused: the file, the JSON path and what is wrong.
+//! The English of what is wrong is the tracer's `Display`, its Hungarian
+//! an exhaustive `match` over the tracer's kinds; the advice on the flags
+//! that settle it is the command's own, in both languages side by side.
 
 use std::path::Path;
 
-use safe_io::WriteError;
+use record::Lang;
 use techniques::bump::{FieldError, MAX_SLOPE, MIN_PERIOD};
-use tracer::output::OutputError;
 use tracer::scene::error::{ImageProblem, JsonType, SizeRule};
 use tracer::scene::{ErrorKind as Scene, SceneError, MAX_PIXELS, SCHEMA_VERSION};
 
-use super::domain::domain_hu;
+use super::domain::domain;
 
-/// A refused scene: the file, the JSON path (where the message does not
-/// name its subject itself), and what is wrong.
-pub fn scene_hu(file: &Path, error: &SceneError) -> String {
+/// A refused scene in `lang`: the file, the JSON path (where the message
+/// does not name its subject itself), what is wrong, and the advice.
+pub(super) fn scene(file: &Path, error: &SceneError, lang: Lang) -> String {
     let file = file.display();
-    let what = scene_kind_hu(error.kind()) + advice_hu(error.kind());
+    let advice = advice(error.kind(), lang);
+    let what = match lang {
+        Lang::En => return format!("scene {file}: {error}{advice}"),
+        Lang::Hu => scene_kind_hu(error.kind()) + advice,
+    };
     match error.kind() {
         Scene::Read { .. } | Scene::Domain(_) => format!("a(z) {file} jelenet: {what}"),
         _ if error.field() == "." => format!("a(z) {file} jelenet: {what}"),
@@ -24,20 +29,25 @@ pub fn scene_hu(file: &Path, error: &SceneError) -> String {
 }
 
 /// The flags that settle a refused scene, for the commands that take
-/// them (`crate::error::render::advice_en` in English); empty for the rest.
-fn advice_hu(kind: &Scene) -> &'static str {
+/// them: the tracer names the values, the command line its flags. Empty
+/// for the other kinds.
+fn advice(kind: &Scene, lang: Lang) -> &'static str {
     match kind {
-        Scene::TooExpensive { .. } => {
-            "; az optics render és az inspect a --allow-expensive kapcsolóval mégis rendereli"
-        }
-        Scene::CourseHasNoRefraction => {
+        Scene::TooExpensive { .. } => lang.pick(
+            "; optics render and inspect take --allow-expensive to render it anyway",
+            "; az optics render és az inspect a --allow-expensive kapcsolóval mégis rendereli",
+        ),
+        Scene::CourseHasNoRefraction => lang.pick(
+            "; choose one with --integrator whitted or path (render, inspect, compare) or \
+             the scene's render.integrator",
             "; a --integrator whitted vagy path kapcsolóval (render, inspect, compare) vagy a \
-             jelenet render.integrator mezőjében választható"
-        }
+             jelenet render.integrator mezőjében választható",
+        ),
         _ => "",
     }
 }
 
+/// What is wrong with a refused scene, in Hungarian.
 pub(super) fn scene_kind_hu(kind: &Scene) -> String {
     match kind {
         Scene::Read { source, .. } => format!("nem olvasható: {source}"),
@@ -73,7 +83,7 @@ pub(super) fn scene_kind_hu(kind: &Scene) -> String {
         Scene::TooManyPixels { width, height } => {
             format!("{width} × {height} képpont több a megengedett {MAX_PIXELS} képpontnál")
         }
-        Scene::Domain(error) => domain_hu(error),
+        Scene::Domain(error) => domain(error, Lang::Hu),
         Scene::DirectionUnrepresentable => "f32-ben ábrázolható iránynak kell lennie".to_owned(),
         Scene::TargetIsEye => "különböznie kell a camera.eye értékétől".to_owned(),
         Scene::UpAlongView => "nem lehet párhuzamos a nézés irányával".to_owned(),
@@ -194,42 +204,4 @@ fn json_type_hu(t: JsonType) -> &'static str {
         JsonType::Array => "tömb",
         JsonType::Object => "objektum",
     }
-}
-
-/// An image that could not be written: the file, and why.
-pub fn output_hu(error: &OutputError) -> String {
-    match error {
-        OutputError::Write(WriteError::Io { path, source }) => {
-            format!("a(z) {path} nem írható: {source}")
-        }
-        OutputError::Write(WriteError::NoDirectory { path, dir }) => {
-            format!("a(z) {path} nem írható: a(z) {dir} könyvtár nem létezik")
-        }
-        OutputError::Write(WriteError::Unwritable { dir, source }) => {
-            format!("a(z) {dir} könyvtárba nem írható fájl: {source}")
-        }
-        OutputError::Write(WriteError::NotARegularFile { path }) => {
-            format!("a(z) {path} létezik, és nem közönséges fájl; nem íródik felül")
-        }
-        OutputError::Write(WriteError::IsAnInput { path, input }) => {
-            format!("a(z) {path} azonos a beolvasott {input} fájllal; más kimenetet kell megadni")
-        }
-        OutputError::PfmIsPng { path } => {
-            format!("{path}: a PNG nevét kell megadni (a PFM mellé kerül)")
-        }
-        OutputError::NotPng { path } => {
-            format!("{path}: a kép PNG-ként íródik ki (mellé a PFM): .png végű nevet kell megadni")
-        }
-        OutputError::Png { path, source } => {
-            format!("a(z) {path} nem kódolható PNG-ként: {source}")
-        }
-    }
-}
-
-/// A rendered pixel that left `f32`.
-pub fn not_finite_hu(x: u32, y: u32) -> String {
-    format!(
-        "a(z) ({x}, {y}) képpont sugársűrűsége nem véges f32-ben: az utak erősítése ott \
-         meghaladja az f32 tartományát; semmi sem íródott ki"
-    )
 }
