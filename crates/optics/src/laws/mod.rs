@@ -9,6 +9,7 @@
 
 mod fresnel;
 mod fresnel_bulk;
+mod lit_surface;
 mod normalized;
 mod reflect;
 pub(crate) mod refract;
@@ -16,6 +17,7 @@ mod shade;
 
 pub use fresnel::{FresnelArgs, FresnelModel};
 pub use fresnel_bulk::FresnelBulkArgs;
+pub(crate) use lit_surface::lit_surface_args;
 pub use normalized::note_normalized;
 pub use reflect::ReflectArgs;
 pub use refract::RefractArgs;

@@ -1,6 +1,7 @@
 //! `optics shade`: radiance reflected towards a viewer from a directional
 //! light, by one of the course's BRDFs.
 
+use super::lit_surface::lit_surface_args;
 use super::normalized::note_normalized;
 use crate::error::{ErrorKind, Result};
 use crate::input::{Vec3Arg, Via};
@@ -44,6 +45,7 @@ impl ShadeModel {
     }
 }
 
+lit_surface_args! {
 /// Radiance reflected towards a viewer from a directional light.
 #[derive(clap::Args, Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -57,22 +59,12 @@ Examples:
   optics shade --model blinn-phong --normal 0,0,1 --light-dir 0,3,4 --view-dir 0,4,3 --radiance 5 --ks 1.41421356 --shine 3"
 )]
 pub struct ShadeArgs {
+    /// Direction towards the viewer (any length).
+    view_dir: Vec3Arg,
     /// The BRDF model.
     #[arg(long, value_enum, default_value_t)]
     #[serde(default)]
     pub model: ShadeModel,
-    /// Surface normal (any length).
-    #[arg(long, allow_hyphen_values = true)]
-    pub normal: Vec3Arg,
-    /// Direction towards the light (any length).
-    #[arg(long, allow_hyphen_values = true)]
-    pub light_dir: Vec3Arg,
-    /// Direction towards the viewer (any length).
-    #[arg(long, allow_hyphen_values = true)]
-    pub view_dir: Vec3Arg,
-    /// The light's L_in, W/m² on a surface facing it.
-    #[arg(long, allow_hyphen_values = true)]
-    pub radiance: f64,
     /// Diffuse coefficient (the albedo for `lambert`).
     #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
     #[serde(default)]
@@ -85,6 +77,7 @@ pub struct ShadeArgs {
     #[arg(long, default_value_t = 1.0, allow_hyphen_values = true)]
     #[serde(default = "one")]
     pub shine: f64,
+}
 }
 
 fn one() -> f64 {

@@ -5,7 +5,7 @@
 use crate::error::Result;
 use crate::error::{Error, ErrorKind};
 use crate::input::{Vec3Arg, Via};
-use crate::laws::{ShadeArgs, ShadeModel};
+use crate::laws::{lit_surface_args, ShadeArgs, ShadeModel};
 use radiometry::fresnel::f0;
 use radiometry::snell::critical_angle;
 use record::{number, percent, Answer, Record, Steps};
@@ -63,6 +63,7 @@ impl F0Args {
     }
 }
 
+lit_surface_args! {
 /// The course's Lambert exercise (quiz question 3).
 #[derive(clap::Args, Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -72,24 +73,14 @@ impl F0Args {
   optics quiz lambert --normal 0,0,1 --light-dir 0,3,4 --view-dir 1,2,3 --radiance 5 --kd 0.6"
 )]
 pub struct LambertArgs {
-    /// Surface normal (any length).
-    #[arg(long, allow_hyphen_values = true)]
-    pub normal: Vec3Arg,
-    /// Direction towards the light (any length).
-    #[arg(long, allow_hyphen_values = true)]
-    pub light_dir: Vec3Arg,
     /// Direction towards the camera (any length; optional: a Lambert
     /// surface looks alike from every direction above it, and nothing is
     /// seen from below).
-    #[arg(long, allow_hyphen_values = true)]
-    #[serde(default)]
-    pub view_dir: Option<Vec3Arg>,
-    /// The light's L_in, W/m² on a surface facing it.
-    #[arg(long, allow_hyphen_values = true)]
-    pub radiance: f64,
+    view_dir: Option<Vec3Arg>,
     /// The course's diffuse coefficient kd (f_r = kd, without 1/π).
     #[arg(long, allow_hyphen_values = true)]
     pub kd: f64,
+}
 }
 
 impl LambertArgs {
@@ -222,6 +213,7 @@ impl CriticalAngleArgs {
     }
 }
 
+lit_surface_args! {
 /// The course's Phong-Blinn exercise (quiz question 5).
 #[derive(clap::Args, Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -231,18 +223,8 @@ impl CriticalAngleArgs {
   optics quiz blinn-phong --normal 0,0,1 --light-dir 0,3,4 --view-dir 0,4,3 --radiance 5 --ks 1.41421356 --shine 3"
 )]
 pub struct BlinnPhongArgs {
-    /// Surface normal (any length).
-    #[arg(long, allow_hyphen_values = true)]
-    pub normal: Vec3Arg,
-    /// Direction towards the light (any length).
-    #[arg(long, allow_hyphen_values = true)]
-    pub light_dir: Vec3Arg,
     /// Direction towards the camera (any length).
-    #[arg(long, allow_hyphen_values = true)]
-    pub view_dir: Vec3Arg,
-    /// The light's L_in, W/m² on a surface facing it.
-    #[arg(long, allow_hyphen_values = true)]
-    pub radiance: f64,
+    view_dir: Vec3Arg,
     /// Specular coefficient.
     #[arg(long, allow_hyphen_values = true)]
     pub ks: f64,
@@ -253,6 +235,7 @@ pub struct BlinnPhongArgs {
     #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
     #[serde(default)]
     pub kd: f64,
+}
 }
 
 impl BlinnPhongArgs {
