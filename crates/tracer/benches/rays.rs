@@ -10,8 +10,6 @@ use criterion::{criterion_group, Criterion, Throughput};
 use tracer::job::RenderJob;
 use tracer::scene::{self, IntegratorKind, Settings};
 
-const SCENES: [&str; 11] = scene::COURSE_SCENES;
-
 /// The integrators each scene is benched with, and their samples per pixel.
 fn runs(name: &str) -> [(IntegratorKind, u32); 2] {
     // The course shader has no glass; the last four are not its scenes.
@@ -29,7 +27,7 @@ fn rays_per_second(c: &mut Criterion) {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes");
     let mut group = c.benchmark_group("rays");
     group.sample_size(10);
-    for name in SCENES {
+    for name in scene::course_scenes() {
         let scene = scene::load(&dir.join(format!("{name}.json")))
             .expect("course scene")
             .resized(160, 120);
@@ -64,7 +62,7 @@ fn main() {
 /// second per scene and integrator.
 fn record(run: &results::criterion::Run) -> Result<results::Section, results::Error> {
     let mut table = String::from("| scene | whitted | other |\n|---|---|---|\n");
-    for name in SCENES {
+    for name in scene::course_scenes() {
         let [(_, _), (other, _)] = runs(name);
         let ids = runs(name).map(|(integrator, _)| format!("rays/{name}/{integrator}"));
         let rates: Vec<f64> = run

@@ -5,7 +5,7 @@
 
 use tracer::chains::{self, Chain};
 use tracer::needs;
-use tracer::scene::{self, Scene, COURSE_SCENES};
+use tracer::scene::{self, course_scenes, Scene};
 
 fn load(name: &str) -> Scene {
     let path = format!("{}/scenes/{name}.json", env!("CARGO_MANIFEST_DIR"));
@@ -72,7 +72,7 @@ fn every_course_scene_names_the_chains_it_has() {
             ],
         ),
     ];
-    assert_eq!(expected.len(), COURSE_SCENES.len());
+    assert_eq!(expected.len(), course_scenes().len());
     for (name, chains) in expected {
         let mut found = named(&load(name));
         let mut want: Vec<String> = chains.iter().map(|s| s.to_string()).collect();
