@@ -112,14 +112,14 @@ MAX_DEPTH = 16
 ANGULAR_RADIUS = 0.05
 DISK_DISTANCE = 1.0e4
 
-# The course scenes measured; the others and why not.
-SCENES = ["diffuse", "blinn_phong", "shadow", "gold_spheres", "kaleidoscope_lit",
-          "webgl_seven_spheres", "glass_spheres", "inside_water"]
+# The course scenes not measured, and why not; every other course scene
+# (``mr.course_scenes``, in its order) is measured.
 EXCLUDED = {
     "first_red_sphere": "no light: an emitter alone, nothing to miss",
     "normals": "shows the normal as a colour: not a radiance",
     "kaleidoscope": "its only light cannot enter the closed mirror tube: every estimate is black",
 }
+SCENES = [name for name in mr.course_scenes() if name not in EXCLUDED]
 # The regions measured, by what the camera sees first: a diffuse surface
 # (where all three estimates apply), any surface (the light tracer cannot
 # see through a delta surface, so only ``path`` and ``area`` there).

@@ -11,8 +11,9 @@ two and a half minutes on a 2-core machine (Mitsuba's ``scalar_rgb`` variant:
 the Whitted renders one ray at a time from Python, the path renders through
 ``mi.render``, two scenes at a time).
 
-The scenes are the tracer's list, ``tracer::scene::COURSE_SCENES``: a scene
-added there gets its references here, compared by both integrators unless
+The scenes are the tracer's course list (``scene_list.py``, which reads
+``crates/tracer/src/scene/shipped.json``): a scene added there gets its
+references here, compared by both integrators unless
 a material of it is not a radiance (``NOT_A_RADIANCE``) or it is listed in
 ``PATH_SKIPPED``.
 
@@ -131,7 +132,6 @@ import json
 import math
 import multiprocessing
 import os
-import re
 import struct
 import sys
 import zlib
@@ -140,6 +140,7 @@ import drjit as dr  # Mitsuba's array library, imported first
 import mitsuba as mi
 import numpy as np
 from atomic_write import write_text
+from scene_list import course_scenes
 
 VARIANT = "scalar_rgb"
 mi.set_variant(VARIANT)
@@ -185,11 +186,10 @@ TUBE_SEGMENT_HALF_LENGTH = 0.5
 # point's rounding (see `spawn`).
 SPAWN_OFFSET = 2.0 ** -21
 
-# The scenes: the tracer's one list, ``tracer::scene::COURSE_SCENES``, read
-# from its source, so a scene added there gets its references here. A scene
-# with a material that is not a radiance is not compared (``excluded``); one
-# listed in ``PATH_SKIPPED`` is compared by Whitted only.
-SCENE_LIST = "crates/tracer/src/scene/mod.rs"
+# The scenes: the tracer's one course list (``course_scenes``), so a scene
+# added there gets its references here. A scene with a material that is not
+# a radiance is not compared (``excluded``); one listed in ``PATH_SKIPPED``
+# is compared by Whitted only.
 NOT_A_RADIANCE = {
     "normal_colour": "shows the normal as a colour: not a radiance, nothing to compare",
 }
@@ -642,16 +642,6 @@ def f32_base64(values):
 
 def u8_base64(values):
     return base64.b64encode(bytes(values)).decode("ascii")
-
-
-def course_scenes():
-    """``tracer::scene::COURSE_SCENES``, in its order."""
-    with open(os.path.join(ROOT, SCENE_LIST), encoding="utf-8") as f:
-        source = f.read()
-    found = re.search(r"pub const COURSE_SCENES: \[&str; \d+\] = \[(.*?)\];", source, re.S)
-    if not found:
-        raise SceneError(f"{SCENE_LIST}: no COURSE_SCENES list")
-    return re.findall(r'"([a-z0-9_]+)"', found.group(1))
 
 
 def scene_text(name):

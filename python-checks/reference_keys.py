@@ -5,8 +5,9 @@ SHA-256 of
 
 - its generator's source, with the sources of the ``python-checks`` modules
   it imports, transitively (``atomic_write``, ``colorimetry``, ...);
-- the repository files it reads (``INPUTS`` below: the tracer's scene files
-  and the list of course scenes, for the renders);
+- the repository files it reads (the globs in ``GENERATORS`` below: the
+  tracer's scene files and their list, ``scene_list.SCENE_LIST``, for the
+  renders);
 - the pinned tools (``python-checks/requirements.txt``) and Python's
   major.minor version.
 
@@ -43,16 +44,13 @@ import subprocess
 import sys
 
 from atomic_write import write_json, write_text
+from scene_list import SCENE_LIST
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 KEYS_PATH = os.path.join(ROOT, "validation", "reference", "keys.json")
 REQUIREMENTS = os.path.join(HERE, "requirements.txt")
 REGENERATE = ".venv/bin/python python-checks/reference_keys.py --regenerate"
-
-# The course scenes' list, as mitsuba_render.py reads it: a pattern after
-# "#" keys an input by the part of the file it matches, not the whole file.
-SCENE_LIST = r"crates/tracer/src/scene/mod.rs#pub const COURSE_SCENES: \[&str; \d+\] = \[.*?\];"
 
 # (generator, files it writes, repository files it reads, kind). The kind
 # groups references that one tool computes the same way: CI regenerates at
@@ -123,26 +121,17 @@ def local_modules(script, folder=HERE):
 
 
 def inputs(patterns, root=ROOT):
-    """[(name, bytes)] of the repository inputs ``patterns`` name, sorted: a
-    glob names whole files; ``path#regex`` the part of one file the regular
-    expression matches. A pattern that names nothing is an error, never an
-    empty input."""
+    """[(name, bytes)] of the repository files the globs ``patterns`` name,
+    sorted. A pattern that names nothing is an error, never an empty input."""
     found = {}
     for pattern in patterns:
-        path, _, part = pattern.partition("#")
-        files = sorted(glob.glob(os.path.join(root, path)))
+        files = sorted(glob.glob(os.path.join(root, pattern)))
         if not files:
-            raise FileNotFoundError(f"input {path} of a reference names no file")
+            raise FileNotFoundError(f"input {pattern} of a reference names no file")
         for file in files:
             name = os.path.relpath(file, root).replace(os.sep, "/")
             with open(file, "rb") as fh:
-                data = fh.read()
-            if part:
-                match = re.search(part.encode(), data, re.S)
-                if not match:
-                    raise FileNotFoundError(f"input {name} holds nothing that matches {part}")
-                name, data = f"{name}#{part}", match.group(0)
-            found[name] = data
+                found[name] = fh.read()
     return sorted(found.items())
 
 

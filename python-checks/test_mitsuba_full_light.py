@@ -94,3 +94,11 @@ def test_the_measured_scene_is_the_course_scene_with_lambert_for_the_rough_mater
     assert scene["background"] == [0, 0, 0]
     assert scene["render"]["integrator"] == "path" and scene["render"]["throughput_cutoff"] == 0
 
+
+
+def test_the_measured_scenes_are_the_course_scenes_less_the_excluded_ones():
+    # A scene added to the course list is measured unless excluded with a
+    # reason; an exclusion names a scene that is on the list.
+    assert set(fl.EXCLUDED) <= set(mr.course_scenes())
+    assert fl.SCENES == [name for name in mr.course_scenes() if name not in fl.EXCLUDED]
+    assert fl.SCENES, "no scene measured"

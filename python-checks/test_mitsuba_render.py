@@ -171,13 +171,6 @@ def test_film_keeps_the_course_cameras_x_on_the_right():
     assert rows.mean() < height / 2 and columns.mean() > width / 2, (rows.mean(), columns.mean())
 
 
-def test_scene_list_is_the_tracers():
-    names = mr.course_scenes()
-    assert names[0] == "first_red_sphere" and "webgl_seven_spheres" in names
-    for name in names:
-        assert os.path.exists(os.path.join(mr.ROOT, "crates", "tracer", "scenes", f"{name}.json")), name
-
-
 def test_glass_in_a_uniform_sky_is_invisible():
     # White furnace: inside a uniform radiance L a lossless glass sphere shows
     # L, if reflection, refraction (mi.fresnel, mi.refract) and the radiance's

@@ -66,14 +66,15 @@ def test_one_scenes_part_of_the_renders_is_the_whole_documents_part():
     assert "shadow" in [e["name"] for e in whole["scenes"]]
 
 
-def test_the_scene_list_input_is_the_one_mitsuba_render_reads():
-    # mitsuba_render.py reads its scene list from SCENE_LIST; the key must
-    # hash the same place, or a new scene would leave the key unchanged.
-    with open(os.path.join(rk.HERE, "mitsuba_render.py"), encoding="utf-8") as fh:
-        source = fh.read()
-    path = rk.SCENE_LIST.partition("#")[0]
-    assert f'SCENE_LIST = "{path}"' in source
-    assert "pub const COURSE_SCENES" in rk.SCENE_LIST
+def test_the_scene_list_input_is_the_one_the_render_generators_read():
+    # The render generators read their scenes through scene_list.py; their
+    # keys must hash the file it reads, or a new scene would leave them
+    # unchanged.
+    import scene_list
+    assert rk.SCENE_LIST == scene_list.SCENE_LIST
+    for script in ("mitsuba_render.py", "mitsuba_full_light.py"):
+        assert "scene_list.py" in rk.local_modules(script), script
+        assert rk.SCENE_LIST in rk.generator(script)[2], script
 
 
 @pytest.fixture
@@ -81,7 +82,7 @@ def tree(tmp_path):
     """A copy of the files a render reference's key reads."""
     shutil.copytree(rk.HERE, tmp_path / "python-checks",
                     ignore=shutil.ignore_patterns("__pycache__"))
-    for pattern in (rk.SCENE_LIST.partition("#")[0], "crates/tracer/scenes/*.json"):
+    for pattern in (rk.SCENE_LIST, "crates/tracer/scenes/*.json"):
         for name, _ in rk.inputs([pattern]):
             os.makedirs(tmp_path / os.path.dirname(name), exist_ok=True)
             shutil.copyfile(os.path.join(rk.ROOT, name), tmp_path / name)
@@ -112,9 +113,9 @@ def test_a_changed_input_changes_the_key(tree, change):
     elif change == "a scene file":
         append(tree / "crates" / "tracer" / "scenes" / "shadow.json", " ")
     elif change == "the scene list":
-        path = tree / rk.SCENE_LIST.partition("#")[0]
-        text = path.read_text(encoding="utf-8").replace('"shadow"', '"shadow", "new_scene"', 1)
-        text = text.replace("pub const COURSE_SCENES: [&str; ", "pub const COURSE_SCENES: [&str; 1", 1)
+        path = tree / rk.SCENE_LIST
+        text = path.read_text(encoding="utf-8").replace('"shadow",', '"shadow",\n    "new_scene",', 1)
+        assert "new_scene" in text
         path.write_text(text, encoding="utf-8")
     elif change == "a tool pin":
         path = tree / "python-checks" / "requirements.txt"
@@ -132,8 +133,7 @@ def test_a_change_outside_what_a_generator_reads_keeps_its_key(tree):
 
 
 def test_a_scene_list_that_cannot_be_found_is_an_error_not_an_empty_input(tree):
-    path = tree / rk.SCENE_LIST.partition("#")[0]
-    path.write_text("// no list here\n", encoding="utf-8")
+    (tree / rk.SCENE_LIST).unlink()
     with pytest.raises(FileNotFoundError):
         key_of(tree)
 

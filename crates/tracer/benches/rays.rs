@@ -8,32 +8,32 @@ use std::path::Path;
 
 use criterion::{criterion_group, Criterion, Throughput};
 use tracer::job::RenderJob;
-use tracer::scene::{self, IntegratorKind, Settings};
+use tracer::scene::{self, IntegratorKind, Scene, Settings};
 
-const SCENES: [&str; 11] = scene::COURSE_SCENES;
+/// The course scene `name`, at 160 × 120.
+fn load(name: &str) -> Scene {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes");
+    scene::load(&dir.join(format!("{name}.json")))
+        .expect("course scene")
+        .resized(160, 120)
+}
 
-/// The integrators each scene is benched with, and their samples per pixel.
-fn runs(name: &str) -> [(IntegratorKind, u32); 2] {
-    // The course shader has no glass; the last four are not its scenes.
-    if matches!(
-        name,
-        "kaleidoscope_lit" | "webgl_seven_spheres" | "glass_spheres" | "inside_water"
-    ) {
-        [(IntegratorKind::Whitted, 1), (IntegratorKind::Path, 4)]
-    } else {
+/// The integrators a scene is benched with, and their samples per pixel:
+/// the course shader where the scene is within it, else `path`.
+fn runs(scene: &Scene) -> [(IntegratorKind, u32); 2] {
+    if scene.within_course_shader() {
         [(IntegratorKind::Whitted, 1), (IntegratorKind::Course, 1)]
+    } else {
+        [(IntegratorKind::Whitted, 1), (IntegratorKind::Path, 4)]
     }
 }
 
 fn rays_per_second(c: &mut Criterion) {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes");
     let mut group = c.benchmark_group("rays");
     group.sample_size(10);
-    for name in SCENES {
-        let scene = scene::load(&dir.join(format!("{name}.json")))
-            .expect("course scene")
-            .resized(160, 120);
-        for (integrator, spp) in runs(name) {
+    for name in scene::course_scenes() {
+        let scene = load(name);
+        for (integrator, spp) in runs(&scene) {
             let settings = Settings {
                 integrator,
                 spp,
@@ -64,9 +64,10 @@ fn main() {
 /// second per scene and integrator.
 fn record(run: &results::criterion::Run) -> Result<results::Section, results::Error> {
     let mut table = String::from("| scene | whitted | other |\n|---|---|---|\n");
-    for name in SCENES {
-        let [(_, _), (other, _)] = runs(name);
-        let ids = runs(name).map(|(integrator, _)| format!("rays/{name}/{integrator}"));
+    for name in scene::course_scenes() {
+        let runs = runs(&load(name));
+        let [(_, _), (other, _)] = runs;
+        let ids = runs.map(|(integrator, _)| format!("rays/{name}/{integrator}"));
         let rates: Vec<f64> = run
             .estimates(&ids)?
             .iter()

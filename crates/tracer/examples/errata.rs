@@ -62,15 +62,13 @@ fn table() -> String {
     let mut table = String::from(
         "| erratum | scene | mean diff | max diff | pixels visibly changed |\n|---|---|---|---|---|\n",
     );
-    // The course's shader only has the directional light of these scenes.
-    for name in [
-        "diffuse",
-        "blinn_phong",
-        "shadow",
-        "gold_spheres",
-        "kaleidoscope",
-    ] {
+    // The lit course scenes within the course's shader (an unlit one has
+    // nothing the shader shades).
+    for name in scene::course_scenes() {
         let scene = load(name);
+        if !scene.within_course_shader() || scene.lights.is_empty() {
+            continue;
+        }
         let physical = Settings {
             integrator: IntegratorKind::Whitted,
             ..scene.settings

@@ -17,7 +17,7 @@ use std::path::Path;
 
 use tracer::job::{Overrides, RenderJob};
 use tracer::render::Image;
-use tracer::scene::{self, Precision, RenderSpec, COURSE_SCENES};
+use tracer::scene::{self, Precision, RenderSpec};
 
 results::deterministic_example!(
     "precision-tiers",
@@ -49,7 +49,7 @@ fn table() -> String {
         "| scene | integrator | mean \\|f64 − f32\\| | largest | pixels > 10⁻³ |\n\
          |---|---|---|---|---|\n",
     );
-    for name in COURSE_SCENES {
+    for name in scene::course_scenes() {
         let (single, double) = (render(name, Precision::F32), render(name, Precision::F64));
         let (mean, max) = double.difference(&single);
         let over = double

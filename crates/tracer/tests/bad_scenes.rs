@@ -370,7 +370,7 @@ fn each_refusal_carries_its_field_and_kind() {
     }
 }
 
-/// `scene::COURSE_SCENES` and `scene::TECHNIQUE_SCENES` name every scene
+/// `scene::course_scenes` and `scene::technique_scenes` name every scene
 /// file in `crates/tracer/scenes/` and nothing else, so a scene added or
 /// removed there is seen by every test, bench and example that walks the
 /// lists.
@@ -385,9 +385,9 @@ fn the_course_scene_list_is_the_scene_folder() {
         })
         .collect();
     on_disk.sort();
-    let mut listed: Vec<String> = tracer::scene::COURSE_SCENES
+    let mut listed: Vec<String> = tracer::scene::course_scenes()
         .iter()
-        .chain(&tracer::scene::TECHNIQUE_SCENES)
+        .chain(tracer::scene::technique_scenes())
         .map(|s| String::from(*s))
         .collect();
     listed.sort();

@@ -5,7 +5,7 @@
 
 use tracer::chains::{self, Chain};
 use tracer::needs;
-use tracer::scene::{self, Scene, COURSE_SCENES};
+use tracer::scene::{self, course_scenes, Scene};
 
 fn load(name: &str) -> Scene {
     let path = format!("{}/scenes/{name}.json", env!("CARGO_MANIFEST_DIR"));
@@ -26,59 +26,66 @@ fn named(scene: &Scene) -> Vec<String> {
         .collect()
 }
 
+/// The course scenes that have chains, and their chains; every other
+/// course scene has none (the kaleidoscope's light, outside the closed
+/// tube, reaches nothing inside it), so a scene added to the list with
+/// chains fails here until they are written down.
+const CHAINS: &[(&str, &[&str])] = &[
+    ("gold_spheres", &["directional 0 → gold → green"]),
+    ("kaleidoscope_lit", &["point 0 → gold → green"]),
+    (
+        "webgl_seven_spheres",
+        &[
+            "point 0 → gold → ground",
+            "point 0 → gold → red",
+            "point 0 → gold → green",
+            "point 0 → gold → blue",
+            "point 0 → silver → ground",
+            "point 0 → silver → red",
+            "point 0 → silver → green",
+            "point 0 → silver → blue",
+        ],
+    ),
+    (
+        "glass_spheres",
+        &[
+            "point 0 → glass → floor",
+            "point 0 → glass → wall",
+            "point 0 → glass → blue",
+            "point 0 → air_in_glass → floor",
+            "point 0 → air_in_glass → wall",
+            "point 0 → air_in_glass → blue",
+        ],
+    ),
+    (
+        "inside_water",
+        &[
+            "directional 0 → water → ground",
+            "directional 0 → water → orange",
+            "directional 0 → copper → ground",
+            "directional 0 → copper → orange",
+        ],
+    ),
+];
+
 #[test]
 fn every_course_scene_names_the_chains_it_has() {
-    let expected: &[(&str, &[&str])] = &[
-        ("first_red_sphere", &[]),
-        ("normals", &[]),
-        ("diffuse", &[]),
-        ("blinn_phong", &[]),
-        ("shadow", &[]),
-        ("gold_spheres", &["directional 0 → gold → green"]),
-        // The light outside the closed tube reaches nothing inside it.
-        ("kaleidoscope", &[]),
-        ("kaleidoscope_lit", &["point 0 → gold → green"]),
-        (
-            "webgl_seven_spheres",
-            &[
-                "point 0 → gold → ground",
-                "point 0 → gold → red",
-                "point 0 → gold → green",
-                "point 0 → gold → blue",
-                "point 0 → silver → ground",
-                "point 0 → silver → red",
-                "point 0 → silver → green",
-                "point 0 → silver → blue",
-            ],
-        ),
-        (
-            "glass_spheres",
-            &[
-                "point 0 → glass → floor",
-                "point 0 → glass → wall",
-                "point 0 → glass → blue",
-                "point 0 → air_in_glass → floor",
-                "point 0 → air_in_glass → wall",
-                "point 0 → air_in_glass → blue",
-            ],
-        ),
-        (
-            "inside_water",
-            &[
-                "directional 0 → water → ground",
-                "directional 0 → water → orange",
-                "directional 0 → copper → ground",
-                "directional 0 → copper → orange",
-            ],
-        ),
-    ];
-    assert_eq!(expected.len(), COURSE_SCENES.len());
-    for (name, chains) in expected {
+    for (name, _) in CHAINS {
+        assert!(
+            course_scenes().contains(name),
+            "{name} is not a course scene"
+        );
+    }
+    for name in course_scenes() {
+        let chains = CHAINS
+            .iter()
+            .find(|(n, _)| n == name)
+            .map_or(&[][..], |(_, c)| c);
         let mut found = named(&load(name));
         let mut want: Vec<String> = chains.iter().map(|s| s.to_string()).collect();
         found.sort();
         want.sort();
-        assert_eq!(found, want, "{name}");
+        assert_eq!(found, want, "{name} (its chains are listed in CHAINS)");
     }
 }
 

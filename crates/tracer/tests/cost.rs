@@ -64,7 +64,7 @@ fn an_exponential_render_is_refused_before_it_starts_unless_allowed() {
 /// render casts more rays than it said.
 #[test]
 fn the_estimate_bounds_the_rays_cast() {
-    let mut scenes: Vec<Scene> = tracer::scene::COURSE_SCENES
+    let mut scenes: Vec<Scene> = tracer::scene::course_scenes()
         .iter()
         .map(|name| common::course_scene(name, 16, 12))
         .collect();

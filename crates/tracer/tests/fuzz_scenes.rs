@@ -30,8 +30,6 @@ use tracer::job::{Overrides, RenderError, RenderJob};
 use tracer::scene::faults::{self, Fault};
 use tracer::scene::{self, IntegratorKind, PixelFilter, Precision, RenderSpec};
 
-const SCENES: [&str; 11] = scene::COURSE_SCENES;
-
 use tracer::scene::fields::{field_of, FIELDS};
 
 /// An unknown field `key`, named as the file spells it, under the whole
@@ -226,7 +224,7 @@ type Case = (usize, Vec<Edit>, Vec<ByteEdit>);
 /// Generates a [`Case`].
 fn case() -> impl Strategy<Value = Case> {
     (
-        0..SCENES.len(),
+        0..scene::course_scenes().len(),
         prop::collection::vec(edit(), 0..6),
         prop_oneof![4 => Just(Vec::new()), 1 => prop::collection::vec(byte_edit(), 1..4)],
     )
@@ -238,7 +236,7 @@ fn course_value(index: usize) -> Value {
     let path = format!(
         "{}/scenes/{}.json",
         env!("CARGO_MANIFEST_DIR"),
-        SCENES[index]
+        scene::course_scenes()[index]
     );
     let mut value: Value = serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
     let render = value
@@ -559,7 +557,10 @@ fn the_fuzz_target_finds_each_fix_undone() {
         let found = faults::with(fault, || run(budget * cases(), &coverage));
         match found {
             Err(TestError::Fail(reason, case)) if reason.message().contains(promise) => {
-                println!("{fault:?} found: {reason} (scene {})", SCENES[case.0])
+                println!(
+                    "{fault:?} found: {reason} (scene {})",
+                    scene::course_scenes()[case.0]
+                )
             }
             other => panic!("{fault:?} not found: {other:?}"),
         }

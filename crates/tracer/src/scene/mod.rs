@@ -21,6 +21,7 @@
 //! | [`bound`] | the largest radiance the scene's numbers can give, within `f32` |
 //! | [`model`] | the validated scene the integrators read |
 //! | [`settings`] | render settings as given and as settled |
+//! | `shipped` | the scenes that ship with the tracer, listed in `shipped.json`: [`course_scenes`], [`technique_scenes`] |
 //! | [`error`] | the kinds of refusal |
 
 pub mod bound;
@@ -37,6 +38,7 @@ pub mod model;
 pub mod schema;
 pub mod settings;
 mod shape;
+mod shipped;
 pub mod validate;
 pub mod values;
 
@@ -49,30 +51,7 @@ pub use error::{ErrorKind, SceneError};
 pub use model::{Light, Material, Scene};
 pub use schema::SceneFile;
 pub use settings::{PhotonSettings, RenderSpec, Settings};
-
-/// The course's scenes that ship with the tracer, as
-/// `crates/tracer/scenes/<name>.json`, in the order the course meets them
-/// (then the glass the course leaves out, for its cross-check):
-/// the inputs of the tracer's tests, benches and examples and of the
-/// harness's render references.
-pub const COURSE_SCENES: [&str; 11] = [
-    "first_red_sphere",
-    "normals",
-    "diffuse",
-    "blinn_phong",
-    "shadow",
-    "gold_spheres",
-    "kaleidoscope",
-    "kaleidoscope_lit",
-    "webgl_seven_spheres",
-    "glass_spheres",
-    "inside_water",
-];
-
-/// The scenes that ship beside the course's to show a technique of `001`
-/// (`docs/techniques.md`): rendered for the documents and read by the
-/// tests, but not among the [`COURSE_SCENES`] the harness cross-checks.
-pub const TECHNIQUE_SCENES: [&str; 1] = ["bump_sphere"];
+pub use shipped::{course_scenes, technique_scenes};
 
 /// Reads and validates a scene file; an environment's image files are
 /// named relative to its directory.

@@ -223,6 +223,20 @@ impl Scene {
         })
     }
 
+    /// Whether the course's final GLSL shader has everything this scene
+    /// holds: its lights are all directional (the shader's one light) and
+    /// none of its materials is glass (it has no refraction). Its
+    /// integrator, `course`, draws such a scene as the course did.
+    pub fn within_course_shader(&self) -> bool {
+        self.lights
+            .iter()
+            .all(|light| matches!(light, Light::Directional { .. }))
+            && !self
+                .materials
+                .iter()
+                .any(|material| matches!(material, Material::Dielectric { .. }))
+    }
+
     /// The same scene rendered at another size (the camera keeps its view).
     pub fn resized(&self, width: u32, height: u32) -> Scene {
         Scene {
