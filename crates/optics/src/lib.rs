@@ -22,6 +22,7 @@ mod envmap;
 pub mod error;
 #[cfg(test)]
 mod fuzz;
+mod image_size;
 pub mod input;
 mod inspect;
 pub mod lang;

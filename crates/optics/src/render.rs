@@ -11,9 +11,10 @@ use tracer::needs::{Needs, WARN_RAYS};
 use tracer::output::Destination;
 use tracer::render::Rendered;
 use tracer::scene::{FresnelModel, IntegratorKind, PixelFilter, Precision, RenderSpec, Settings};
-use tracer::scene::{MAX_DEPTH, MAX_IMAGE_SIDE, MAX_PHOTONS, MAX_PHOTON_PASSES, MAX_SPP};
+use tracer::scene::{MAX_DEPTH, MAX_PHOTONS, MAX_PHOTON_PASSES, MAX_SPP};
 
 use crate::error::{self, ErrorKind};
+use crate::image_size::ImageSize;
 use crate::lang::needs;
 use crate::ui::Ui;
 use record::{say, Lang};
@@ -97,14 +98,9 @@ pub struct JobArgs {
     #[arg(long)]
     #[serde(skip_serializing_if = "Option::is_none")]
     pub photon_radius: Option<f64>,
-    /// Image width in pixels, overriding the scene's (the camera keeps its view).
-    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=MAX_IMAGE_SIDE as i64))]
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub width: Option<u32>,
-    /// Image height in pixels, overriding the scene's.
-    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=MAX_IMAGE_SIDE as i64))]
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub height: Option<u32>,
+    #[command(flatten)]
+    #[serde(flatten)]
+    pub size: ImageSize,
     /// Render even when the estimate of the rays cast is past 10¹² (hours);
     /// past 10¹⁰ the estimate is shown before the render starts.
     #[arg(long)]
@@ -139,8 +135,8 @@ impl JobArgs {
                 precision: self.precision,
                 ..RenderSpec::default()
             },
-            width: self.width,
-            height: self.height,
+            width: self.size.width,
+            height: self.size.height,
             allow_expensive: self.allow_expensive,
         };
         let scene_error = |error| -> error::Error {

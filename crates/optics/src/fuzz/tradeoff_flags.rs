@@ -104,8 +104,8 @@ fn check_line(line: &Line, coverage: &Coverage) -> Result<(), TestCaseError> {
                     "--truth-spp" => f64::from(args.truth_spp),
                     "--repeats" => f64::from(args.repeats),
                     "--min-seconds" => args.min_seconds,
-                    "--width" => args.width.map_or(f64::NAN, f64::from),
-                    _ => args.height.map_or(f64::NAN, f64::from),
+                    "--width" => args.size.width.map_or(f64::NAN, f64::from),
+                    _ => args.size.height.map_or(f64::NAN, f64::from),
                 };
                 let want: f64 = value.parse().unwrap_or(f64::NAN);
                 prop_assert_eq!(parsed, want, "{:?}: {} settled wrongly", line.args, flag);

@@ -2,8 +2,9 @@
 
 use std::path::{Path, PathBuf};
 
+use crate::image_size::ImageSize;
 use serde::Serialize;
-use tracer::scene::{MAX_IMAGE_SIDE, MAX_SPP};
+use tracer::scene::MAX_SPP;
 use validation::tradeoff::engine::SweepRequest;
 
 #[derive(clap::Args, Debug, Serialize)]
@@ -22,14 +23,9 @@ sweep over machines\".")]
 pub struct TradeoffArgs {
     /// The scene file (JSON, see docs/scene-schema.md).
     pub scene: PathBuf,
-    /// Image width in pixels (default: the scene's); the camera keeps its view.
-    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=MAX_IMAGE_SIDE as i64))]
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub width: Option<u32>,
-    /// Image height in pixels (default: the scene's).
-    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=MAX_IMAGE_SIDE as i64))]
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub height: Option<u32>,
+    #[command(flatten)]
+    #[serde(flatten)]
+    pub size: ImageSize,
     /// Samples per pixel of the Monte Carlo integrators on the ladder when
     /// the scene's own integrator is deterministic.
     #[arg(long, default_value_t = 16, value_parser = clap::value_parser!(u32).range(1..=MAX_SPP as i64))]
@@ -93,8 +89,8 @@ impl TradeoffArgs {
     pub fn request(&self) -> SweepRequest {
         SweepRequest {
             scene: self.scene.clone(),
-            width: self.width,
-            height: self.height,
+            width: self.size.width,
+            height: self.size.height,
             spp: self.spp,
             truth_spp: self.truth_spp,
             repeats: self.repeats,
