@@ -13,11 +13,10 @@
 //! the same bound is some 5·10⁸ times smaller ([`crate::tier`]).
 
 use num_traits::Float;
-use radiometry::Real;
+use radiometry::{Real, Vector3};
 
 use crate::geometry::Hit;
 use crate::kinds::RayOffset;
-use crate::tier::Vector;
 
 /// The smallest offset used, m: keeps a hit at the origin (error bound 0)
 /// from restarting on its own surface.
@@ -25,7 +24,7 @@ const MIN_OFFSET: f64 = 1e-30;
 
 /// The origin of a ray leaving `hit` on the side of `side` (a unit normal
 /// pointing where the new ray goes).
-pub fn origin<V: Vector>(hit: &Hit<V>, side: V, offset: RayOffset) -> V {
+pub fn origin<V: Vector3>(hit: &Hit<V>, side: V, offset: RayOffset) -> V {
     let lit = V::Scalar::lit;
     let distance = match offset {
         RayOffset::Robust => (lit(2.0) * hit.error).max(lit(MIN_OFFSET)),
