@@ -10,7 +10,7 @@
 //! is twice the hit's error bound ([`Hit::error`]), which scales with the
 //! coordinates of the surface; twice, because the bound is per component and
 //! the point may lie up to `√3` bounds off the surface. At the `f64` tier
-//! the same bound is some 5·10⁸ times smaller ([`crate::tier`]).
+//! the same bound is some 5·10⁸ times smaller ([`radiometry::Real::gamma`]).
 
 use num_traits::Float;
 use radiometry::{Real, Vector3};
