@@ -1,18 +1,36 @@
-//! The two precision tiers, `f32` and `f64`, and their 3-vectors.
+//! The two precision tiers, `f32` and `f64`, and their 3-vectors: the one
+//! abstraction over the float type that the laws, the tracer and the
+//! cross-checks are all written over.
 
+use core::convert::identity;
 use core::fmt::{Debug, Display};
-use core::ops::{Add, Mul, Neg, Sub};
+use core::ops::{Add, AddAssign, Div, Index, Mul, Neg, Sub};
 
+use glam::{DVec3, Vec3};
 use num_traits::{Float, FloatConst, Zero};
 
 /// A floating-point scalar the laws are written over: `f32` or `f64`.
-pub trait Real: Float + FloatConst + Debug + Display + Default + Send + Sync + 'static {
+///
+/// Widening to `f64` (`Into<f64>`) is exact for both tiers.
+pub trait Real:
+    Float + FloatConst + Debug + Display + Default + Into<f64> + Send + Sync + 'static
+{
+    /// The tier's 3-vector: `glam::Vec3` for `f32`, `glam::DVec3` for `f64`.
+    type Vec3: Vector3<Scalar = Self>;
     /// The precision in which the few sums that cancel are carried (in
     /// twice *its* precision): `f64` for both tiers. Products of `f32`s are
     /// exact in `f64`, so the `f32` tier gets those sums essentially exact.
     type Wide: Real;
     /// Converts a literal `f64` constant (rounding once for `f32`).
     fn lit(x: f64) -> Self;
+    /// Widens an `f32` (exact for both tiers): a number of a scene, which
+    /// is validated in `f32` whatever the tier it is rendered at.
+    fn of_f32(x: f32) -> Self;
+    /// `γ(n) = n ε / (1 − n ε)` with this tier's unit roundoff `ε`: the
+    /// bound on the relative error of `n` successive roundings (Higham,
+    /// *Accuracy and Stability of Numerical Algorithms*, §3.1; pbrt-v4
+    /// §6.8.1).
+    fn gamma(n: u32) -> Self;
     /// Converts exactly into [`Real::Wide`].
     fn widen(self) -> Self::Wide;
     /// Rounds from [`Real::Wide`] once.
@@ -89,10 +107,20 @@ fn spacing(x: f64, epsilon: f64, min_positive: f64) -> f64 {
 }
 
 impl Real for f32 {
+    type Vec3 = Vec3;
     type Wide = f64;
     #[inline]
     fn lit(x: f64) -> Self {
         x as f32
+    }
+    #[inline]
+    fn of_f32(x: f32) -> Self {
+        x
+    }
+    #[inline]
+    fn gamma(n: u32) -> Self {
+        let ne = n as f32 * f32::EPSILON * 0.5;
+        ne / (1.0 - ne)
     }
     #[inline]
     fn widen(self) -> f64 {
@@ -129,10 +157,20 @@ impl Real for f32 {
 }
 
 impl Real for f64 {
+    type Vec3 = DVec3;
     type Wide = f64;
     #[inline]
     fn lit(x: f64) -> Self {
         x
+    }
+    #[inline]
+    fn of_f32(x: f32) -> Self {
+        x.into()
+    }
+    #[inline]
+    fn gamma(n: u32) -> Self {
+        let ne = n as f64 * f64::EPSILON * 0.5;
+        ne / (1.0 - ne)
     }
     #[inline]
     fn widen(self) -> f64 {
@@ -180,28 +218,69 @@ impl Real for f64 {
 }
 
 /// A 3-vector of [`Real`]s: `glam::Vec3` for `f32`, `glam::DVec3` for `f64`.
+/// Points in metres, directions, and radiance per channel alike.
 ///
-/// The laws that take directions are generic over this trait, so the same
-/// code serves both precision tiers.
+/// The laws that take directions, and the tracer's geometry and
+/// integrators, are generic over this trait, so the same code serves both
+/// precision tiers. Each method is glam's own, so the `f32` tier computes
+/// the bits glam does.
 pub trait Vector3:
     Copy
     + Debug
+    + Default
     + PartialEq
     + Add<Output = Self>
+    + AddAssign
     + Sub<Output = Self>
     + Neg<Output = Self>
+    + Mul<Output = Self>
     + Mul<<Self as Vector3>::Scalar, Output = Self>
+    + Div<<Self as Vector3>::Scalar, Output = Self>
+    + Index<usize, Output = <Self as Vector3>::Scalar>
+    + Send
+    + Sync
+    + 'static
 {
     /// The scalar type of the components.
     type Scalar: Real;
+    /// `(0, 0, 0)`.
+    const ZERO: Self;
+    /// `(1, 1, 1)`.
+    const ONE: Self;
+    /// The x axis.
+    const X: Self;
+    /// The y axis.
+    const Y: Self;
     /// Builds a vector from its components.
     fn new(x: Self::Scalar, y: Self::Scalar, z: Self::Scalar) -> Self;
+    /// Every component `x`.
+    fn splat(x: Self::Scalar) -> Self;
     /// The dot product.
     fn dot(self, other: Self) -> Self::Scalar;
     /// The cross product.
     fn cross(self, other: Self) -> Self;
     /// The components as an array.
     fn to_array(self) -> [Self::Scalar; 3];
+    /// The x component.
+    fn x(self) -> Self::Scalar;
+    /// The components' absolute values.
+    fn abs(self) -> Self;
+    /// The larger of each pair of components.
+    fn max(self, other: Self) -> Self;
+    /// The largest component.
+    fn max_element(self) -> Self::Scalar;
+    /// The unit vector along `self` (glam's `normalize`).
+    fn normalize(self) -> Self;
+    /// The unit vector along `self`, or zero where it has none.
+    fn normalize_or_zero(self) -> Self;
+    /// Widens an `f32` vector (exact): a scene's, validated in `f32`.
+    fn of_f32(v: Vec3) -> Self;
+    /// Rounds to `f32` once: a film's radiance, an environment's lookup.
+    fn to_f32(self) -> Vec3;
+    /// Rounds an `f64` construction (a camera's, a bump map's) once.
+    fn of_f64(v: DVec3) -> Self;
+    /// Widens to `f64` (exact).
+    fn to_f64(self) -> DVec3;
 
     /// The Euclidean length.
     #[inline]
@@ -225,13 +304,23 @@ pub trait Vector3:
     }
 }
 
+/// Forwards each method to glam's own of the same name; the roundings to
+/// `f32` are `$to_f32` and `$of_f64`, the widenings glam's `From`.
 macro_rules! impl_vector3 {
-    ($vec:ty, $scalar:ty) => {
+    ($vec:ty, $scalar:ty, $to_f32:expr, $of_f64:expr) => {
         impl Vector3 for $vec {
             type Scalar = $scalar;
+            const ZERO: Self = <$vec>::ZERO;
+            const ONE: Self = <$vec>::ONE;
+            const X: Self = <$vec>::X;
+            const Y: Self = <$vec>::Y;
             #[inline]
             fn new(x: $scalar, y: $scalar, z: $scalar) -> Self {
                 <$vec>::new(x, y, z)
+            }
+            #[inline]
+            fn splat(x: $scalar) -> Self {
+                <$vec>::splat(x)
             }
             #[inline]
             fn dot(self, other: Self) -> $scalar {
@@ -245,12 +334,52 @@ macro_rules! impl_vector3 {
             fn to_array(self) -> [$scalar; 3] {
                 <$vec>::to_array(&self)
             }
+            #[inline]
+            fn x(self) -> $scalar {
+                self.x
+            }
+            #[inline]
+            fn abs(self) -> Self {
+                <$vec>::abs(self)
+            }
+            #[inline]
+            fn max(self, other: Self) -> Self {
+                <$vec>::max(self, other)
+            }
+            #[inline]
+            fn max_element(self) -> $scalar {
+                <$vec>::max_element(self)
+            }
+            #[inline]
+            fn normalize(self) -> Self {
+                <$vec>::normalize(self)
+            }
+            #[inline]
+            fn normalize_or_zero(self) -> Self {
+                <$vec>::normalize_or_zero(self)
+            }
+            #[inline]
+            fn of_f32(v: Vec3) -> Self {
+                v.into()
+            }
+            #[inline]
+            fn to_f32(self) -> Vec3 {
+                $to_f32(self)
+            }
+            #[inline]
+            fn of_f64(v: DVec3) -> Self {
+                $of_f64(v)
+            }
+            #[inline]
+            fn to_f64(self) -> DVec3 {
+                self.into()
+            }
         }
     };
 }
 
-impl_vector3!(glam::Vec3, f32);
-impl_vector3!(glam::DVec3, f64);
+impl_vector3!(Vec3, f32, identity, |v: DVec3| v.as_vec3());
+impl_vector3!(DVec3, f64, |v: DVec3| v.as_vec3(), identity);
 
 /// `2^k` for a normal double's exponent, from the bits: a constant where
 /// `powi` is a call that blocks a loop's vectorisation.
@@ -259,38 +388,4 @@ pub(crate) const fn power_of_two(k: i32) -> f64 {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn ulp_at_is_the_float32_spacing() {
-        assert_eq!(f32::ulp_at(1.0), f32::EPSILON as f64);
-        assert_eq!(f32::ulp_at(0.75), f32::EPSILON as f64 / 2.0);
-        assert_eq!(f32::ulp_at(0.0), 2f64.powi(-149));
-        assert_eq!(f32::ulp_at(-1.0), f32::EPSILON as f64);
-        for x in [1e-40f32, f32::MIN_POSITIVE, 0.04, 3.0, 1e30] {
-            let spacing = f64::from(x.next_up()) - f64::from(x);
-            assert_eq!(f32::ulp_at(x.into()), spacing, "{x:e}");
-        }
-        // An exact value just below 1 is in the binade below, even though
-        // it rounds to 1 in f32.
-        assert_eq!(f32::ulp_at(1.0 - 1e-12), f32::EPSILON as f64 / 2.0);
-    }
-
-    #[test]
-    fn ulp_at_is_the_double_spacing() {
-        assert_eq!(f64::ulp_at(1.0), f64::EPSILON);
-        assert_eq!(f64::ulp_at(0.75), f64::EPSILON / 2.0);
-        assert_eq!(f64::ulp_at(0.0), f64::from_bits(1));
-        assert_eq!(f64::ulp_at(f64::MIN_POSITIVE), f64::from_bits(1));
-        assert_eq!(f64::ulp_at(1e-300), 1e-300f64.next_up() - 1e-300);
-        for x in [
-            f64::from_bits(1 << 52),
-            f64::from_bits(60 << 52),
-            5.8e-300,
-            0.04,
-        ] {
-            assert_eq!(f64::ulp_at(x), x.next_up() - x, "{x:e}");
-        }
-    }
-}
+mod tests;

@@ -16,6 +16,8 @@
 //! assert_eq!(Lang::Hu.pick("reflectance", "reflexió"), "reflexió");
 //! ```
 
+#![warn(missing_docs)]
+
 mod lang;
 mod record;
 

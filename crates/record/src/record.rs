@@ -27,7 +27,9 @@ use std::borrow::Cow;
 #[derive(Clone, Debug, Serialize)]
 #[serde(untagged)]
 pub enum Answer {
+    /// A number in the record's unit.
     Number(f64),
+    /// A direction or an RGB triple, `[x, y, z]`.
     Vector([f64; 3]),
     /// No value exists (a ray totally reflected has no refracted direction).
     None,
@@ -44,8 +46,10 @@ pub enum Answer {
 /// record's `steps` is then `[]`.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum Steps {
+    /// The working is written, line by line.
     #[default]
     Wanted,
+    /// The working is left out; `steps` stays `[]`.
     Skipped,
 }
 
@@ -97,6 +101,8 @@ pub struct Record {
 }
 
 impl Record {
+    /// A record of `law` with its heading and the answer's unit, no inputs
+    /// yet, the answer [`Answer::None`] and the working wanted.
     pub fn new(law: &'static str, title: String, unit: &'static str) -> Self {
         Self {
             law,
@@ -141,11 +147,13 @@ impl Record {
         self
     }
 
+    /// Sets the input `name` to `value`, as given.
     pub fn input(&mut self, name: &'static str, value: impl Serialize) -> &mut Self {
         self.inputs.insert(Cow::Borrowed(name), json(value));
         self
     }
 
+    /// Sets the detail `name` to `value`.
     pub fn detail(&mut self, name: &'static str, value: impl Serialize) -> &mut Self {
         self.details.insert(Cow::Borrowed(name), json(value));
         self
@@ -159,6 +167,7 @@ impl Record {
         self
     }
 
+    /// A remark, always written.
     pub fn note(&mut self, line: String) -> &mut Self {
         self.notes.push(line);
         self
@@ -248,6 +257,7 @@ impl Fields {
         Some(&self.0[i].1)
     }
 
+    /// Whether no value is set.
     pub fn is_empty(&self) -> bool {
         self.0.is_empty()
     }

@@ -22,6 +22,8 @@
 //! assert!(results::compare(&rewritten, &section).is_ok());
 //! ```
 
+#![warn(missing_docs)]
+
 #[cfg(feature = "criterion")]
 pub mod criterion;
 mod diff;

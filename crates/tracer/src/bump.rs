@@ -13,7 +13,7 @@
 use techniques::bump::{self, HeightField, SurfacePoint};
 
 use crate::geometry::{Hit, Object};
-use crate::tier::{Tier, Vector};
+use radiometry::Vector3;
 
 /// The shading normal of `hit` on `object` under `field`, at the tracer's
 /// tier, outward like `hit.normal`. The bend is computed in `f64` about
@@ -21,10 +21,10 @@ use crate::tier::{Tier, Vector};
 /// The tube has no bump maps (the schema has none for it); its hits keep
 /// their normal, as do points where the bend is undefined (the sphere's
 /// poles).
-pub fn shading_normal<V: Vector>(object: &Object<V>, field: &HeightField, hit: &Hit<V>) -> V {
+pub fn shading_normal<V: Vector3>(object: &Object<V>, field: &HeightField, hit: &Hit<V>) -> V {
     let point = hit.point.to_f64();
     let at: Option<SurfacePoint> = match object {
-        Object::Sphere(s) => bump::on_sphere(s.center.to_f64(), s.radius.to_f64(), point),
+        Object::Sphere(s) => bump::on_sphere(s.center.to_f64(), s.radius.into(), point),
         Object::Plane(p) => Some(bump::on_plane(p.point.to_f64(), p.normal.to_f64(), point)),
         Object::Tube(_) => None,
     };

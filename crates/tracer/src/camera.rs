@@ -10,7 +10,7 @@
 use glam::{DMat4, DVec3, DVec4, Vec3};
 
 use crate::geometry::Ray;
-use crate::tier::Vector;
+use radiometry::Vector3;
 
 /// How primary rays are made.
 // One camera per scene: the size difference between the variants costs nothing.
@@ -126,7 +126,7 @@ impl Camera {
 
     /// [`Camera::ray_at`] at tier `V`: the construction is carried in
     /// `f64` and rounded once to the tier.
-    pub fn ray_in<V: Vector>(&self, x: u32, y: u32, within: (f64, f64)) -> Ray<V> {
+    pub fn ray_in<V: Vector3>(&self, x: u32, y: u32, within: (f64, f64)) -> Ray<V> {
         let [ray] = self.rays_in(x, y, [within]);
         ray
     }
@@ -137,7 +137,7 @@ impl Camera {
     /// on, go through the vector units side by side instead of each
     /// stalling the path traced behind it.
     #[inline]
-    pub fn rays_in<V: Vector, const N: usize>(
+    pub fn rays_in<V: Vector3, const N: usize>(
         &self,
         x: u32,
         y: u32,

@@ -1,6 +1,6 @@
 //! Rays and the course scenes' primitives: spheres, two-sided planes and the
 //! kaleidoscope's regular-polygon mirror tube; lengths in metres, at the
-//! tracer's precision tier ([`crate::tier`]; `f32` unless named).
+//! tracer's precision tier ([`radiometry::Vector3`]; `f32` unless named).
 //!
 //! Every hit point is re-projected onto the surface it lies on, so its
 //! rounding error is a few ulps of the surface's own coordinates whatever

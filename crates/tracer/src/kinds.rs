@@ -209,8 +209,8 @@ pub enum Precision {
 impl Precision {
     /// Whether `integrator` computes at this tier: every one in `f32`;
     /// in `f64` the deterministic `local` and `whitted`, whose steps are
-    /// written over [`Vector`](crate::tier::Vector) (`path`, `photon` and the course's shader
-    /// stay `f32`).
+    /// written over [`radiometry::Vector3`] (`path`, `photon` and the
+    /// course's shader stay `f32`).
     pub fn serves(self, integrator: IntegratorKind) -> bool {
         match self {
             Precision::F32 => true,

@@ -41,7 +41,6 @@
 //! | [`capture`] | the slides' capture of a cube map by tracing |
 //! | [`filter`] | the pixel filter: stratified rays over the pixel (box) or its centre |
 //! | [`spawn`] | where secondary rays start: the hit's error bound, or the course's fixed epsilon |
-//! | [`tier`] | the precision tier, `f32` or `f64`: the scalar and vector the geometry and the deterministic integrators are written over |
 //! | [`integrator`] | `local`, `whitted`, `path`, `photon` (the path tracer plus a caustic photon map) and the course shader's loop, one file each, and the shared scatter step |
 //! | [`needs`] | what a scene needs, so the renderer runs only that |
 //! | [`trap`] | the rays a mirror tube holds until their depth runs out, whose paths end early |
@@ -63,9 +62,12 @@
 //!
 //! `local` and `whitted` also compute in `f64` (`render.precision`,
 //! [`kinds::Precision`]): the geometry, the camera ray, the direct light and
-//! the specular lobes are written once over [`tier::Vector`] and call the
-//! laws at the same tier; the scene, validated in `f32`, is widened once
-//! per render, and the image is `f32` either way. `path`, `photon` and
+//! the specular lobes are written once over [`radiometry::Vector3`] and
+//! call the laws at the same tier; the scene, validated in `f32`, is
+//! widened once, exactly, when a tier's world is built
+//! ([`scene::model::World`]), so both tiers read the same numbers and
+//! differ only in the arithmetic. The image is `f32` radiance either way,
+//! each pixel's mean rounded once at the end. `path`, `photon` and
 //! `course` stay `f32`.
 
 #![forbid(unsafe_code)]
@@ -89,5 +91,4 @@ pub mod rng;
 pub mod sampler;
 pub mod scene;
 pub mod spawn;
-pub mod tier;
 pub mod trap;

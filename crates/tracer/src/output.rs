@@ -176,7 +176,9 @@ fn png_bytes(path: &Path, image: &Image) -> Result<Vec<u8>, OutputError> {
     Ok(encoded)
 }
 
-/// Writes the image as a PFM, atomically.
+/// Writes the image as a PFM, atomically: the file `optics compare` reads,
+/// for an image rendered or changed through the library rather than by
+/// `optics render`.
 pub fn write_pfm(path: &Path, image: &Image) -> Result<(), OutputError> {
     Ok(write_atomically(path, &pfm_bytes(image))?)
 }
@@ -287,5 +289,35 @@ mod tests {
         let first = f32::from_le_bytes(bytes[12..16].try_into().unwrap());
         assert_eq!(first, 3.0);
         assert_eq!(read_pfm(&bytes), Some(image));
+    }
+
+    /// What [`write_pfm`] leaves on disk reads back bit for bit, negative
+    /// zero, subnormals and infinities included.
+    #[test]
+    fn written_pfm_reads_back_exactly() {
+        let pixels = vec![
+            Vec3::new(-0.0, f32::from_bits(1), f32::INFINITY),
+            Vec3::new(0.1, 0.2, 0.3),
+            Vec3::new(1e30, -1e-30, f32::MAX),
+            Vec3::new(2.0, 0.5, 7.25),
+        ];
+        let image = Image {
+            width: 2,
+            height: 2,
+            pixels,
+        };
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("image.pfm");
+        write_pfm(&path, &image).unwrap();
+        let back = read_pfm(&std::fs::read(&path).unwrap()).unwrap();
+        let bits = |image: &Image| -> Vec<[u32; 3]> {
+            image
+                .pixels
+                .iter()
+                .map(|p| p.to_array().map(f32::to_bits))
+                .collect()
+        };
+        assert_eq!((back.width, back.height), (2, 2));
+        assert_eq!(bits(&back), bits(&image));
     }
 }

@@ -11,7 +11,7 @@ use rayon::prelude::*;
 use crate::filter::sample_point;
 use crate::integrator::{Primary, RayCounts, Tracer};
 use crate::sampler::{Sample, Sampler};
-use crate::tier::Vector;
+use radiometry::Vector3;
 
 /// A linear-radiance image, W/(sr·m²) per channel, rows top to bottom.
 #[derive(Clone, Debug, PartialEq)]
@@ -68,7 +68,7 @@ pub struct Rendered {
 /// cores). `progress` is called with 0 as the render starts, then with the
 /// number of rows finished so far, from any thread.
 /// [`RenderJob`](crate::job::RenderJob) is the way in.
-pub(crate) fn render<V: Vector>(
+pub(crate) fn render<V: Vector3>(
     tracer: &impl Primary<V>,
     threads: Option<usize>,
     progress: &(dyn Fn(usize) + Sync),
@@ -123,7 +123,7 @@ const CAMERA_BLOCK: u32 = 8;
 /// `f32`. The samples' camera rays are made [`CAMERA_BLOCK`] at a time;
 /// each sample keeps its own numbers and the sum its order, so the pixel
 /// has the bits of one sample made and traced after another.
-fn pixel<V: Vector>(tracer: &impl Primary<V>, x: u32, y: u32, counts: &mut RayCounts) -> Vec3 {
+fn pixel<V: Vector3>(tracer: &impl Primary<V>, x: u32, y: u32, counts: &mut RayCounts) -> Vec3 {
     let Tracer {
         scene,
         settings,

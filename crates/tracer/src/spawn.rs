@@ -10,14 +10,13 @@
 //! is twice the hit's error bound ([`Hit::error`]), which scales with the
 //! coordinates of the surface; twice, because the bound is per component and
 //! the point may lie up to `√3` bounds off the surface. At the `f64` tier
-//! the same bound is some 5·10⁸ times smaller ([`crate::tier`]).
+//! the same bound is some 5·10⁸ times smaller ([`radiometry::Real::gamma`]).
 
 use num_traits::Float;
-use radiometry::Real;
+use radiometry::{Real, Vector3};
 
 use crate::geometry::Hit;
 use crate::kinds::RayOffset;
-use crate::tier::Vector;
 
 /// The smallest offset used, m: keeps a hit at the origin (error bound 0)
 /// from restarting on its own surface.
@@ -25,7 +24,7 @@ const MIN_OFFSET: f64 = 1e-30;
 
 /// The origin of a ray leaving `hit` on the side of `side` (a unit normal
 /// pointing where the new ray goes).
-pub fn origin<V: Vector>(hit: &Hit<V>, side: V, offset: RayOffset) -> V {
+pub fn origin<V: Vector3>(hit: &Hit<V>, side: V, offset: RayOffset) -> V {
     let lit = V::Scalar::lit;
     let distance = match offset {
         RayOffset::Robust => (lit(2.0) * hit.error).max(lit(MIN_OFFSET)),

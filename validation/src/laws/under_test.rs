@@ -4,31 +4,22 @@
 
 use radiometry::fresnel::{self, ConductorFresnel, DielectricFresnel};
 use radiometry::specular::{self, Refraction};
-use radiometry::{snell, Real, Vector3};
+use radiometry::{snell, Real};
 
-/// A precision tier: its scalar, and the vector its direction laws take.
-pub trait Tier: Real {
-    /// The tier's 3-vector (`glam::Vec3` for `f32`, `glam::DVec3` for `f64`).
-    type Vec3: Vector3<Scalar = Self>;
-}
-
-impl Tier for f32 {
-    type Vec3 = glam::Vec3;
-}
-
-impl Tier for f64 {
-    type Vec3 = glam::DVec3;
-}
+/// A precision tier, `f32` or `f64`, with the vector its direction laws
+/// take ([`Real::Vec3`]): the laws' own abstraction, under the name the
+/// checks use.
+pub use radiometry::Real as Tier;
 
 /// A refraction law of tier `T`: `(wi, n, eta)` to the refracted direction
 /// and the effective index, `None` under total internal reflection.
 pub type RefractLaw<T> =
-    fn(<T as Tier>::Vec3, <T as Tier>::Vec3, T) -> Option<Refraction<<T as Tier>::Vec3>>;
+    fn(<T as Real>::Vec3, <T as Real>::Vec3, T) -> Option<Refraction<<T as Real>::Vec3>>;
 
 /// The laws under test in tier `T`: `f32` ([`Laws`] alone, the tier the
 /// tracer uses and Mitsuba is compared in) or `f64` ([`Laws64`]).
 #[derive(Clone, Copy)]
-pub struct Laws<T: Tier = f32> {
+pub struct Laws<T: Real = f32> {
     /// Exact dielectric Fresnel, `(cos_i, eta)`, either side.
     pub dielectric: fn(T, T) -> DielectricFresnel<T>,
     /// Exact conductor Fresnel, `(cos_i, n, kappa)`.
@@ -50,7 +41,7 @@ pub struct Laws<T: Tier = f32> {
 /// The laws under test in `f64`.
 pub type Laws64 = Laws<f64>;
 
-impl<T: Tier> Laws<T> {
+impl<T: Real> Laws<T> {
     /// The radiometry crate's laws.
     pub fn radiometry() -> Self {
         Self {

@@ -5,11 +5,11 @@ use glam::Vec3;
 use super::plane::Plane;
 use super::sphere::Sphere;
 use super::tube::Tube;
-use crate::tier::{Tier, Vector};
+use radiometry::{Real, Vector3};
 
 /// One object of a scene.
 #[derive(Clone, Debug, PartialEq)]
-pub enum Object<V: Vector = Vec3> {
+pub enum Object<V: Vector3 = Vec3> {
     /// A sphere.
     Sphere(Sphere<V>),
     /// A two-sided plane.
@@ -21,7 +21,7 @@ pub enum Object<V: Vector = Vec3> {
 impl Object {
     /// This object at tier `V`: its numbers widened exactly, a tube built
     /// again from its corners' construction in `V`'s arithmetic.
-    pub fn at_tier<V: Vector>(&self) -> Object<V> {
+    pub fn at_tier<V: Vector3>(&self) -> Object<V> {
         let widen = V::Scalar::of_f32;
         match self {
             Object::Sphere(s) => Object::Sphere(Sphere {
@@ -41,7 +41,7 @@ impl Object {
     }
 }
 
-impl<V: Vector> Object<V> {
+impl<V: Vector3> Object<V> {
     /// The material index.
     pub fn material(&self) -> u32 {
         match self {

@@ -1,14 +1,13 @@
 //! The infinite plane, visible from both sides.
 
 use glam::Vec3;
-use radiometry::Real;
+use radiometry::{Real, Vector3};
 
 use super::ray::{Hit, Ray};
-use crate::tier::{Tier, Vector};
 
 /// An infinite plane, visible from both sides.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Plane<V: Vector = Vec3> {
+pub struct Plane<V: Vector3 = Vec3> {
     /// A point on the plane, m.
     pub point: V,
     /// Unit normal, as declared.
@@ -17,7 +16,7 @@ pub struct Plane<V: Vector = Vec3> {
     pub material: u32,
 }
 
-impl<V: Vector> Plane<V> {
+impl<V: Vector3> Plane<V> {
     /// The hit in `(t_min, ray.t_max)` from either side; rays parallel to
     /// the plane (including those lying in it) miss.
     pub fn intersect(&self, ray: &Ray<V>, t_min: V::Scalar) -> Option<Hit<V>> {
@@ -63,7 +62,7 @@ impl<V: Vector> Plane<V> {
 
 impl Plane {
     /// This plane at tier `V`, its numbers widened exactly.
-    pub fn at_tier<V: Vector>(&self) -> Plane<V> {
+    pub fn at_tier<V: Vector3>(&self) -> Plane<V> {
         Plane {
             point: V::of_f32(self.point),
             normal: V::of_f32(self.normal),

@@ -3,13 +3,11 @@
 
 use glam::Vec3;
 use num_traits::Float;
-use radiometry::Real;
-
-use crate::tier::Vector;
+use radiometry::{Real, Vector3};
 
 /// A ray: `origin + t · direction` for `t` in `(0, t_max)`.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Ray<V: Vector = Vec3> {
+pub struct Ray<V: Vector3 = Vec3> {
     /// Where the ray starts, m.
     pub origin: V,
     /// Unit direction of travel.
@@ -18,7 +16,7 @@ pub struct Ray<V: Vector = Vec3> {
     pub t_max: V::Scalar,
 }
 
-impl<V: Vector> Ray<V> {
+impl<V: Vector3> Ray<V> {
     /// An unbounded ray.
     pub fn new(origin: V, direction: V) -> Self {
         Ray {
@@ -36,7 +34,7 @@ impl<V: Vector> Ray<V> {
 
 /// Where a ray meets a surface.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Hit<V: Vector = Vec3> {
+pub struct Hit<V: Vector3 = Vec3> {
     /// Ray parameter of the hit, m (the direction is a unit vector).
     pub t: V::Scalar,
     /// The hit point, re-projected onto the surface.
@@ -60,7 +58,7 @@ pub struct Hit<V: Vector = Vec3> {
     pub object: u32,
 }
 
-impl<V: Vector> Hit<V> {
+impl<V: Vector3> Hit<V> {
     /// Whether a ray along `ray_direction` met a two-sided surface from
     /// behind its declared normal: decided by the geometric normal, once
     /// for both of the normals below.

@@ -3,14 +3,13 @@
 
 use glam::Vec3;
 use num_traits::Float;
-use radiometry::Real;
+use radiometry::{Real, Vector3};
 
 use super::ray::{Hit, Ray};
-use crate::tier::{Tier, Vector};
 
 /// A sphere.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Sphere<V: Vector = Vec3> {
+pub struct Sphere<V: Vector3 = Vec3> {
     /// Centre, m.
     pub center: V,
     /// Radius, m, > 0.
@@ -22,7 +21,7 @@ pub struct Sphere<V: Vector = Vec3> {
 /// The two roots `t0 ≤ t1` of `|o + t d − c|² = r²` for a unit `d`, or `None`.
 pub type Roots<T = f32> = Option<(T, T)>;
 
-impl<V: Vector> Sphere<V> {
+impl<V: Vector3> Sphere<V> {
     /// The roots of the ray-sphere quadratic, computed stably.
     ///
     /// With `f = o − c` and unit `d`, the textbook discriminant

@@ -3,18 +3,17 @@
 
 use glam::Vec3;
 use num_traits::Float;
-use radiometry::Real;
+use radiometry::{Real, Vector3};
 
 use super::plane::Plane;
 use super::ray::{Hit, Ray};
-use crate::tier::{Tier, Vector};
 
 /// The homework's kaleidoscope (`000`): `sides` mirror strips forming a
 /// regular polygon of circumradius `radius` around an axis, infinite along
 /// it. Corner `i` is at angle `2π i / sides` from the first basis vector
 /// perpendicular to the axis (the x axis for a tube along z, as in the course).
 #[derive(Clone, Debug, PartialEq)]
-pub struct Tube<V: Vector = Vec3> {
+pub struct Tube<V: Vector3 = Vec3> {
     /// The side planes; each normal points out of the tube.
     pub faces: Vec<Plane<V>>,
     /// Unit axis direction.
@@ -34,7 +33,7 @@ pub struct Tube<V: Vector = Vec3> {
     pub tangents: Vec<V>,
 }
 
-impl<V: Vector> Tube<V> {
+impl<V: Vector3> Tube<V> {
     /// Builds the tube. `axis` must be a unit vector and `sides ≥ 3`.
     pub fn new(axis_point: V, axis: V, sides: u32, radius: V::Scalar, material: u32) -> Self {
         let reference = if axis.x().abs() < V::Scalar::lit(0.9) {
@@ -66,7 +65,8 @@ impl<V: Vector> Tube<V> {
             midpoints.push((p1 + p2) * V::Scalar::lit(0.5));
             tangents.push(tangent);
         }
-        let half_side = V::Scalar::lit(radius.to_f64() * (alpha / 2.0).sin());
+        let wide_radius: f64 = radius.into();
+        let half_side = V::Scalar::lit(wide_radius * (alpha / 2.0).sin());
         Tube {
             faces,
             axis,

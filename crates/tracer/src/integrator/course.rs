@@ -8,10 +8,10 @@ use glam::Vec3;
 use radiometry::{course, fresnel, radiance, specular};
 
 use super::counts::{Bounce, RayCounts};
+use super::direct::rgb;
 use super::tracer::Tracer;
 use crate::geometry::{Hit, Object, Ray};
 use crate::scene::{Light, Material};
-use crate::tier::rgb;
 
 /// How far the course moves a secondary ray's origin along the normal, m.
 const EPSILON: f32 = 0.001;

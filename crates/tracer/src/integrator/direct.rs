@@ -2,16 +2,15 @@
 //! shadow rays, the course's ambient term, and the BRDFs behind both.
 
 use radiometry::brdf::{BlinnPhong, Brdf, Lambert};
-use radiometry::{radiance, Real};
+use radiometry::{radiance, Real, Vector3};
 
 use super::counts::RayCounts;
 use super::tracer::Tracer;
 use crate::geometry::{Hit, Ray};
 use crate::scene::{Light, Material};
 use crate::spawn;
-use crate::tier::{rgb, Vector};
 
-impl<V: Vector> Material<V> {
+impl<V: Vector3> Material<V> {
     /// The BRDF of a rough material per channel, 1/sr (zero for the others,
     /// which scatter only into discrete directions or not at all).
     pub fn brdf(&self, n: V, wi: V, wo: V) -> V {
@@ -47,7 +46,7 @@ impl<V: Vector> Material<V> {
     }
 }
 
-impl<V: Vector> Tracer<'_, V> {
+impl<V: Vector3> Tracer<'_, V> {
     fn occluded(&self, ray: &Ray<V>, counts: &mut RayCounts) -> bool {
         counts.shadow += 1;
         self.intersect_surface(ray).is_some()
@@ -113,7 +112,7 @@ impl<V: Vector> Tracer<'_, V> {
 /// delivers there, and where a shadow ray must stop (a point light's
 /// position); `None` where a point light sits on the point.
 #[allow(clippy::type_complexity)]
-fn arrival<V: Vector>(light: &Light<V>, hit: &Hit<V>, n: V) -> Option<(V, V, Option<V>)> {
+fn arrival<V: Vector3>(light: &Light<V>, hit: &Hit<V>, n: V) -> Option<(V, V, Option<V>)> {
     Some(match *light {
         Light::Directional {
             towards,
@@ -138,4 +137,9 @@ fn arrival<V: Vector>(light: &Light<V>, hit: &Hit<V>, n: V) -> Option<(V, V, Opt
             )
         }
     })
+}
+
+/// A colour from a function of its channel index.
+pub(crate) fn rgb<V: Vector3>(f: impl Fn(usize) -> V::Scalar) -> V {
+    V::new(f(0), f(1), f(2))
 }

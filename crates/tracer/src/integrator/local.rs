@@ -6,9 +6,9 @@ use super::counts::RayCounts;
 use super::scatter::Surface;
 use super::tracer::Tracer;
 use crate::geometry::Ray;
-use crate::tier::Vector;
+use radiometry::Vector3;
 
-impl<V: Vector> Tracer<'_, V> {
+impl<V: Vector3> Tracer<'_, V> {
     pub(super) fn local(&self, ray: &Ray<V>, counts: &mut RayCounts) -> V {
         let Some(hit) = self.intersect(ray) else {
             return self.scene.escaped(ray.direction);

@@ -17,7 +17,7 @@
 //! course's loop keeps its own rules, intersection included, in [`course`].
 //!
 //! Radiance is in W/(sr·m²) per channel. The tracer computes at its
-//! precision tier ([`crate::tier`], `Settings::precision`): `local`,
+//! precision tier ([`radiometry::Vector3`], `Settings::precision`): `local`,
 //! `whitted` and the steps they share in `f32` or `f64`; `path`, `photon`
 //! and `course` in `f32` only.
 

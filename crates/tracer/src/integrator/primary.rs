@@ -8,7 +8,7 @@ use super::tracer::Tracer;
 use crate::geometry::Ray;
 use crate::sampler::Sample;
 use crate::scene::IntegratorKind;
-use crate::tier::Vector;
+use radiometry::Vector3;
 
 impl Tracer<'_> {
     /// The radiance arriving along a primary ray, by the chosen integrator
@@ -29,7 +29,7 @@ impl Tracer<'_> {
 
 /// The radiance along a primary ray at a tracer's tier: what
 /// [`crate::render`] asks of a tracer of either tier.
-pub(crate) trait Primary<V: Vector>: Sync {
+pub(crate) trait Primary<V: Vector3>: Sync {
     /// The tracer's scene, settings and machinery.
     fn tracer(&self) -> &Tracer<'_, V>;
     /// The radiance arriving along `ray` (see [`Tracer::radiance`]).

@@ -10,7 +10,7 @@
 
 use glam::Vec3;
 use radiometry::snell::Incidence;
-use radiometry::{course, fresnel, radiance, specular, Real};
+use radiometry::{course, fresnel, radiance, specular, Real, Vector3};
 
 use super::counts::Bounce;
 use super::tracer::Tracer;
@@ -18,11 +18,10 @@ use crate::geometry::{Hit, Ray};
 use crate::scene::faults::Fault;
 use crate::scene::{FresnelModel, Material};
 use crate::spawn;
-use crate::tier::Vector;
 
 /// What a surface does with the light that reaches it.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Surface<V: Vector = Vec3> {
+pub enum Surface<V: Vector3 = Vec3> {
     /// Unlit: it shows this radiance, whatever lights it.
     Shows(V),
     /// Rough: shaded from the lights and the ambient term by its BRDF.
@@ -31,7 +30,7 @@ pub enum Surface<V: Vector = Vec3> {
     Smooth,
 }
 
-impl<V: Vector> Material<V> {
+impl<V: Vector3> Material<V> {
     /// What this material does with light at `hit`.
     pub fn surface(&self, hit: &Hit<V>) -> Surface<V> {
         match *self {
@@ -48,7 +47,7 @@ impl<V: Vector> Material<V> {
 
 /// One way light leaves a smooth surface.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Lobe<V: Vector = Vec3> {
+pub struct Lobe<V: Vector3 = Vec3> {
     /// Its kind.
     pub bounce: Bounce,
     /// The secondary ray, started off the surface on the side it travels into.
@@ -65,7 +64,7 @@ pub struct Lobe<V: Vector = Vec3> {
 
 /// The lobes of a smooth surface.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Lobes<V: Vector = Vec3> {
+pub struct Lobes<V: Vector3 = Vec3> {
     /// The mirror lobe, weighted by the Fresnel reflectance.
     pub reflection: Lobe<V>,
     /// Through a dielectric, the refracted lobe (weighted by the
@@ -75,7 +74,7 @@ pub struct Lobes<V: Vector = Vec3> {
     pub refraction: Option<(Lobe<V>, V::Scalar)>,
 }
 
-impl<V: Vector> Tracer<'_, V> {
+impl<V: Vector3> Tracer<'_, V> {
     /// The lobes of the smooth material at `hit`, seen along `wo` (towards
     /// the viewer) with `n` the hit's shading normal.
     pub(crate) fn lobes(&self, hit: &Hit<V>, n: V, wo: V, material: &Material<V>) -> Lobes<V> {
@@ -280,7 +279,7 @@ impl<T: Real> Interface<T> {
     }
 }
 
-fn mirror<V: Vector>(ray: Ray<V>, weight: V) -> Lobe<V> {
+fn mirror<V: Vector3>(ray: Ray<V>, weight: V) -> Lobe<V> {
     Lobe {
         bounce: Bounce::Reflection,
         ray,

@@ -5,17 +5,15 @@
 //! reflectance the shortcut stands in for is replaced, by the technique's
 //! own function (`techniques`), never a copy of it.
 
-use crate::tier::Tier;
 use radiometry::course::refract_001_approx;
 use radiometry::snell::Incidence;
-use radiometry::Real;
+use radiometry::{Real, Vector3};
 use techniques::empirical_fresnel;
 
 use super::tracer::Tracer;
 use crate::scene::GlassShortcut;
-use crate::tier::Vector;
 
-impl<V: Vector> Tracer<'_, V> {
+impl<V: Vector3> Tracer<'_, V> {
     /// The refracted direction: `exact` (Snell's, for `wo` at the shading
     /// normal `n` and the decided `incidence`), or the cheap form's in its
     /// place.
@@ -32,7 +30,7 @@ impl<V: Vector> Tracer<'_, V> {
         // As the slides apply it: the direction of travel and the normal
         // facing the light (`techniques::refraction::compare`).
         let facing = if incidence.from_inside { -n } else { n };
-        let c = V::Scalar::lit(constant.value(incidence.eta_path().to_f64()));
+        let c = V::Scalar::lit(constant.value(incidence.eta_path().into()));
         refract_001_approx(-wo, facing, c)
     }
 
@@ -49,7 +47,7 @@ impl<V: Vector> Tracer<'_, V> {
         if incidence.from_inside || incidence.cos_transmitted().is_none() {
             return None;
         }
-        let cos_i = incidence.abs_cos_i.to_f64();
+        let cos_i: f64 = incidence.abs_cos_i.into();
         Some(V::Scalar::lit(empirical_fresnel::reflectance(&form, cos_i)))
     }
 }

@@ -3,7 +3,7 @@
 //! which every integrator asks.
 
 use glam::Vec3;
-use radiometry::Real;
+use radiometry::{Real, Vector3};
 
 use super::machinery::Machinery;
 use super::photon::maps::Caustics;
@@ -11,11 +11,10 @@ use crate::geometry::{Hit, Object, Ray};
 use crate::scene::faults::{self, Fault};
 use crate::scene::model::World;
 use crate::scene::{Scene, Settings};
-use crate::tier::Vector;
 
 /// One render's tracer: the scene, the settings and the machinery, at
 /// precision tier `V` (`Vec3`: `f32`; `DVec3`: `f64`).
-pub struct Tracer<'a, V: Vector = Vec3> {
+pub struct Tracer<'a, V: Vector3 = Vec3> {
     /// The scene.
     pub scene: &'a Scene,
     /// The scene's objects, materials and lights at the tier, widened once.
@@ -31,7 +30,7 @@ pub struct Tracer<'a, V: Vector = Vec3> {
     pub caustics: Option<Caustics>,
 }
 
-impl<'a, V: Vector> Tracer<'a, V> {
+impl<'a, V: Vector3> Tracer<'a, V> {
     /// The tracer of `scene` under `settings`, running `machinery`, with
     /// the fault planted on this thread, if any (`scene::faults`), at tier
     /// `V`. A render takes its tier from `settings.precision`
@@ -48,7 +47,7 @@ impl<'a, V: Vector> Tracer<'a, V> {
     }
 }
 
-impl<V: Vector> Tracer<'_, V> {
+impl<V: Vector3> Tracer<'_, V> {
     /// The nearest hit along `ray`, robustly: the stable sphere roots,
     /// planes and the tube seen from both sides; its shading normal bent by
     /// the object's bump map, if it has one ([`crate::bump`]).

@@ -7,9 +7,9 @@ use super::counts::RayCounts;
 use super::scatter::Surface;
 use super::tracer::Tracer;
 use crate::geometry::Ray;
-use crate::tier::{Tier, Vector};
+use radiometry::{Real, Vector3};
 
-impl<V: Vector> Tracer<'_, V> {
+impl<V: Vector3> Tracer<'_, V> {
     /// Radiance along `ray`, `depth` bounces after the primary hit, whose
     /// contribution to the pixel is scaled by `throughput`.
     pub(super) fn whitted(

@@ -11,7 +11,7 @@ use super::settings::Settings;
 use crate::camera::Camera;
 use crate::environment::Environment;
 use crate::geometry::Object;
-use crate::tier::{Tier, Vector};
+use radiometry::{Real, Vector3};
 
 /// A validated scene in the tracer's `f32`.
 #[derive(Clone, Debug)]
@@ -47,7 +47,7 @@ pub struct Scene {
 
 /// A material, in the validated scene's `f32` or at a tracer's tier.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Material<V: Vector = Vec3> {
+pub enum Material<V: Vector3 = Vec3> {
     /// See [`MaterialSpec::Flat`](super::schema::MaterialSpec::Flat).
     Flat {
         /// Radiance, W/(sr·m²).
@@ -90,7 +90,7 @@ pub enum Material<V: Vector = Vec3> {
 impl Material {
     /// This material at tier `V`: its numbers widened exactly, a
     /// conductor's law built again at the tier from them.
-    pub fn at_tier<V: Vector>(&self) -> Material<V> {
+    pub fn at_tier<V: Vector3>(&self) -> Material<V> {
         let widen = V::Scalar::of_f32;
         match *self {
             Material::Flat { radiance } => Material::Flat {
@@ -124,7 +124,7 @@ impl Material {
     }
 }
 
-impl<V: Vector> Material<V> {
+impl<V: Vector3> Material<V> {
     /// Whether light is shaded here from the lights (a rough surface).
     pub fn is_rough(&self) -> bool {
         matches!(
@@ -144,7 +144,7 @@ impl<V: Vector> Material<V> {
 
 /// A light, in the validated scene's `f32` or at a tracer's tier.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Light<V: Vector = Vec3> {
+pub enum Light<V: Vector3 = Vec3> {
     /// See [`LightSpec::Directional`](super::schema::LightSpec::Directional).
     Directional {
         /// Unit direction towards the light.
@@ -163,7 +163,7 @@ pub enum Light<V: Vector = Vec3> {
 
 impl Light {
     /// This light at tier `V`, its numbers widened exactly.
-    pub fn at_tier<V: Vector>(&self) -> Light<V> {
+    pub fn at_tier<V: Vector3>(&self) -> Light<V> {
         match *self {
             Light::Directional {
                 towards,
@@ -188,7 +188,7 @@ impl Light {
 /// built (exact, and the same numbers at both tiers: the scene's own for
 /// `f32`).
 #[derive(Clone, Debug)]
-pub struct World<V: Vector = Vec3> {
+pub struct World<V: Vector3 = Vec3> {
     /// [`Scene::objects`] at the tier.
     pub objects: Vec<Object<V>>,
     /// [`Scene::materials`] at the tier.
@@ -199,7 +199,7 @@ pub struct World<V: Vector = Vec3> {
     pub ambient: V,
 }
 
-impl<V: Vector> World<V> {
+impl<V: Vector3> World<V> {
     /// `scene`'s objects, materials and lights at tier `V`.
     pub fn of(scene: &Scene) -> Self {
         World {
@@ -216,7 +216,7 @@ impl Scene {
     /// nothing: the environment's there, else the constant background. A
     /// map's texels are `f32`: a tracer at another tier looks them up
     /// along its direction rounded to `f32`.
-    pub fn escaped<V: Vector>(&self, direction: V) -> V {
+    pub fn escaped<V: Vector3>(&self, direction: V) -> V {
         V::of_f32(match &self.environment {
             Some(environment) => environment.radiance(direction.to_f32()),
             None => self.background,

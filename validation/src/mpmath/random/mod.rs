@@ -39,13 +39,14 @@ pub mod regions;
 
 pub use reference::{CaseSet, FresnelRandom, Law, Sampling, Tier, FILE, SCHEMA};
 
+use radiometry::Real;
+
 use super::angles::transmitted_angle_bound_ulps;
 use super::bounds::{
     dielectric_bound_ulps, BOUND_ULPS, CONDUCTOR_BOUND_ULPS, DIELECTRIC_F64_BOUND_ULPS,
 };
 use crate::check::Check;
-use crate::laws::Laws64;
-use crate::laws::{Laws, Tier as Precision};
+use crate::laws::{Laws, Laws64};
 
 /// The most average bits of error a set may show. The worst average
 /// measured is 1.21 bits (the conductor's `R_p` in f32, uniform over the
@@ -74,31 +75,15 @@ struct Answer {
     tir: Option<bool>,
 }
 
-trait Widen: Precision {
-    fn wide(self) -> f64;
-}
-
-impl Widen for f32 {
-    fn wide(self) -> f64 {
-        self.into()
-    }
-}
-
-impl Widen for f64 {
-    fn wide(self) -> f64 {
-        self
-    }
-}
-
-fn no_value<T: Widen>(x: Option<T>) -> f64 {
-    x.map_or(f64::NAN, Widen::wide)
+fn no_value<T: Real>(x: Option<T>) -> f64 {
+    x.map_or(f64::NAN, Into::into)
 }
 
 /// The law under test at inputs `x` (numbers of tier `T`, exactly).
-fn answer<T: Widen>(laws: &Laws<T>, law: Law, x: &[f64]) -> Answer {
+fn answer<T: Real>(laws: &Laws<T>, law: Law, x: &[f64]) -> Answer {
     let x: Vec<T> = x.iter().map(|&v| T::lit(v)).collect();
     let values = |values: Vec<T>| Answer {
-        values: values.into_iter().map(Widen::wide).collect(),
+        values: values.into_iter().map(Into::into).collect(),
         tir: None,
     };
     match law {
@@ -106,7 +91,7 @@ fn answer<T: Widen>(laws: &Laws<T>, law: Law, x: &[f64]) -> Answer {
             let f = (laws.dielectric)(x[0], x[1]);
             Answer {
                 values: [f.r_s, f.r_p, f.reflectance(), f.transmittance()]
-                    .map(Widen::wide)
+                    .map(Into::into)
                     .to_vec(),
                 tir: Some(f.is_total_internal_reflection()),
             }
