@@ -13,7 +13,7 @@
 //!
 //! A law's own file holds its arguments and its `solve`: the inputs checked,
 //! the radiometry crate called, the working narrated in both languages.
-//! Adding a law is that file and one line in [`table`]'s `laws!`.
+//! Adding a law is that file and one line in `table.rs`'s `laws!`.
 
 pub mod docs;
 pub mod schema;
