@@ -27,6 +27,7 @@ use serde_json::{json, Value};
 use std::io::{BufRead, Read, Write};
 use std::ops::Range;
 
+/// `optics batch`'s flags.
 #[derive(clap::Args, Debug)]
 #[command(after_help = after_help())]
 pub struct BatchArgs {

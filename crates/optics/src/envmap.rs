@@ -70,6 +70,7 @@ pub struct EnvmapArgs {
 }
 
 impl EnvmapArgs {
+    /// Evaluates the law: its inputs checked (named as `via` gives them), the working in `lang`.
     pub fn solve(&self, via: Via, lang: Lang, steps: Steps) -> Result<Record> {
         let given = via.direction("dir", self.dir)?;
         let title = say!(lang, "Environment map lookup", "Környezeti térkép címzése");

@@ -40,6 +40,7 @@ impl FromStr for Vec3Arg {
 }
 
 impl Vec3Arg {
+    /// The vector as `glam`'s.
     pub fn dvec3(self) -> DVec3 {
         DVec3::from_array(self.0)
     }
@@ -49,7 +50,9 @@ impl Vec3Arg {
 /// `--cos-i` on the command line, `cos_i` in a batch request.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Via {
+    /// Flags of the command line: `--cos-i`.
     Flags,
+    /// Fields of a batch request: `cos_i`.
     Json,
 }
 
@@ -76,26 +79,32 @@ impl Via {
         }
     }
 
+    /// `x` if finite, else the error naming `field` as the user wrote it.
     pub fn finite(self, field: &str, x: f64) -> Result<f64, DomainError> {
         self.check(field, |name| domain::finite(name, x))
     }
 
+    /// `x` if a cosine, in `[-1, 1]`.
     pub fn cosine(self, field: &str, x: f64) -> Result<f64, DomainError> {
         self.check(field, |name| domain::cosine(name, x))
     }
 
+    /// `x` if a refractive index: finite and positive.
     pub fn index(self, field: &str, x: f64) -> Result<f64, DomainError> {
         self.check(field, |name| domain::refractive_index(name, x))
     }
 
+    /// `x` if an extinction coefficient: finite and not negative.
     pub fn extinction(self, field: &str, x: f64) -> Result<f64, DomainError> {
         self.check(field, |name| domain::extinction(name, x))
     }
 
+    /// `x` if finite and not negative.
     pub fn non_negative(self, field: &str, x: f64) -> Result<f64, DomainError> {
         self.check(field, |name| domain::non_negative(name, x))
     }
 
+    /// `v` as a direction: finite and not zero, with its unit vector.
     pub fn direction(self, field: &str, v: Vec3Arg) -> Result<Direction, DomainError> {
         self.check(field, |name| domain::direction(name, v.dvec3()))
     }

@@ -11,6 +11,24 @@
 //! [`Error::to_json`] writes), and exit with status 1 (2 for command-line
 //! syntax, as reported by the argument parser).
 
+//!
+//! A law from a library: the arguments read as a batch request would give
+//! them, evaluated, the record's answer.
+//!
+//! ```
+//! use optics::input::Via;
+//! use optics::law_table::Law;
+//! use optics::Lang;
+//! use record::Steps;
+//!
+//! let fields = serde_json::json!({"n": 1.5});
+//! let law = Law::read("f0", &fields).expect("a law").expect("its fields");
+//! let record = law.solve(Via::Json, Lang::En, Steps::Wanted).unwrap();
+//! assert_eq!(serde_json::to_value(&record).unwrap()["answer"], 0.04);
+//! ```
+
+#![warn(missing_docs)]
+
 pub mod batch;
 #[cfg(feature = "harness")]
 pub mod budget;

@@ -98,6 +98,7 @@ pub struct JobArgs {
     #[arg(long)]
     #[serde(skip_serializing_if = "Option::is_none")]
     pub photon_radius: Option<f64>,
+    /// The image's size, where it overrides the scene's.
     #[command(flatten)]
     #[serde(flatten)]
     pub size: ImageSize,

@@ -9,7 +9,9 @@ use std::io::Write;
 /// How results are shown: plain text or one JSON object, in English or Hungarian.
 #[derive(Debug, Clone, Copy)]
 pub struct Ui {
+    /// One JSON object rather than text (`--json`).
     pub json: bool,
+    /// The language of the text (`--lang`).
     pub lang: Lang,
 }
 

@@ -30,6 +30,7 @@ pub struct Field {
     /// The fields of the group, one of which every request must give,
     /// that this one belongs to (Fresnel's `cos_i` and `theta_i_deg`).
     pub one_of: Option<Vec<String>>,
+    /// What it holds.
     pub kind: Kind,
     /// The flag's help line, in English.
     pub help: String,

@@ -33,8 +33,8 @@ macro_rules! laws {
         /// The arguments of any law, as `optics batch` reads them.
         #[derive(Debug)]
         pub enum Law {
-            $( $cvariant($cargs), )*
-            $( $qvariant($qargs), )*
+            $( #[doc = $cdoc] $cvariant($cargs), )*
+            $( #[doc = $qdoc] $qvariant($qargs), )*
         }
 
         /// The laws a request may name, in the order `--help` lists them.

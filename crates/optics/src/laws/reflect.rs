@@ -28,6 +28,7 @@ pub struct ReflectArgs {
 }
 
 impl ReflectArgs {
+    /// Evaluates the law: its inputs checked (named as `via` gives them), the working in `lang`.
     pub fn solve(&self, via: Via, lang: Lang, steps: Steps) -> Result<Record> {
         let wi = via.direction("wi", self.wi)?;
         let n = via.direction("normal", self.normal)?;

@@ -86,11 +86,14 @@ fn one() -> f64 {
 
 /// A shading evaluation's numbers, for the quiz solvers built on it.
 pub struct Shading {
+    /// The record, with the working.
     pub record: Record,
+    /// The reflected radiance, W/(sr m²).
     pub radiance: f64,
 }
 
 impl ShadeArgs {
+    /// Evaluates the law: its inputs checked (named as `via` gives them), the working in `lang`.
     pub fn solve(&self, via: Via, lang: Lang, steps: Steps) -> Result<Record> {
         Ok(self.shade(Self::LAW, via, lang, steps)?.record)
     }

@@ -50,6 +50,7 @@ impl ReflectionMatrixArgs {
         }
     }
 
+    /// Evaluates the law: its inputs checked (named as `via` gives them), the working in `lang`.
     pub fn solve(&self, via: Via, lang: Lang, steps: Steps) -> Result<Record> {
         let plane = self.plane().plane(via)?;
         let point = finite_point(via, "point", self.point)?;

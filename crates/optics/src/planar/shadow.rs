@@ -53,6 +53,7 @@ impl ShadowMatrixArgs {
         }
     }
 
+    /// Evaluates the law: its inputs checked (named as `via` gives them), the working in `lang`.
     pub fn solve(&self, via: Via, lang: Lang, steps: Steps) -> Result<Record> {
         let light = via.point("light", self.light)?;
         let plane = self.plane().plane(via)?;

@@ -30,6 +30,7 @@ pub struct F0Args {
 }
 
 impl F0Args {
+    /// Evaluates the law: its inputs checked (named as `via` gives them), the working in `lang`.
     pub fn solve(&self, via: Via, lang: Lang, steps: Steps) -> Result<Record> {
         let n = via.index("n", self.n)?;
         let kappa = via.extinction("kappa", self.kappa)?;
@@ -84,6 +85,7 @@ pub struct LambertArgs {
 }
 
 impl LambertArgs {
+    /// Evaluates the law: its inputs checked (named as `via` gives them), the working in `lang`.
     pub fn solve(&self, via: Via, lang: Lang, steps: Steps) -> Result<Record> {
         let shade = ShadeArgs {
             model: ShadeModel::CourseLambert,
@@ -149,6 +151,7 @@ fn air() -> f64 {
 }
 
 impl CriticalAngleArgs {
+    /// Evaluates the law: its inputs checked (named as `via` gives them), the working in `lang`.
     pub fn solve(&self, via: Via, lang: Lang, steps: Steps) -> Result<Record> {
         let n = via.index("n", self.n)?;
         let n_out = via.index("n_outside", self.n_outside)?;
@@ -239,6 +242,7 @@ pub struct BlinnPhongArgs {
 }
 
 impl BlinnPhongArgs {
+    /// Evaluates the law: its inputs checked (named as `via` gives them), the working in `lang`.
     pub fn solve(&self, via: Via, lang: Lang, steps: Steps) -> Result<Record> {
         let shade = ShadeArgs {
             model: ShadeModel::BlinnPhong,

@@ -7,6 +7,7 @@ use serde::Serialize;
 use tracer::scene::MAX_SPP;
 use validation::tradeoff::engine::SweepRequest;
 
+/// `optics tradeoff`'s flags.
 #[derive(clap::Args, Debug, Serialize)]
 #[command(after_help = "Examples:
   optics tradeoff crates/tracer/scenes/kaleidoscope_lit.json --width 160 --height 120
@@ -23,6 +24,7 @@ sweep over machines\".")]
 pub struct TradeoffArgs {
     /// The scene file (JSON, see docs/scene-schema.md).
     pub scene: PathBuf,
+    /// The image's size, where it overrides the scene's.
     #[command(flatten)]
     #[serde(flatten)]
     pub size: ImageSize,

@@ -15,6 +15,7 @@ use crate::ui::Ui;
 use record::say;
 use record::{Answer, Record};
 
+/// `optics tradeoff-job`'s arguments.
 #[derive(clap::Args, Debug, Serialize)]
 #[command(after_help = "Examples:
   optics tradeoff crates/tracer/scenes/shadow.json --lambert --plan jobs.jsonl

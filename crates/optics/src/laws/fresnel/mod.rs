@@ -61,6 +61,7 @@ pub struct FresnelArgs {
 }
 
 impl FresnelArgs {
+    /// Evaluates the law: its inputs checked (named as `via` gives them), the working in `lang`.
     pub fn solve(&self, via: Via, lang: Lang, steps: Steps) -> Result<Record> {
         let eta = via.index("eta", self.eta)?;
         let kappa = via.extinction("kappa", self.kappa)?;
