@@ -206,3 +206,41 @@ fn the_link_reader_finds_links_and_images_but_not_code() {
     let text = "see [a](docs/a.md#x) and ![b](img/b.png)\n`[c](no.md)` then\n```\n[d](no.md)\n```\n[e](https://x.org)";
     assert_eq!(targets(text), ["docs/a.md#x", "img/b.png", "https://x.org"]);
 }
+
+/// The headings' slugs of a Markdown document, in order, repeats kept.
+fn heading_slugs(text: &str) -> Vec<String> {
+    prose_lines(text)
+        .filter_map(|line| {
+            let hashes = line.chars().take_while(|&c| c == '#').count();
+            ((1..=6).contains(&hashes) && line[hashes..].starts_with(' '))
+                .then(|| slug(line[hashes..].trim()))
+        })
+        .collect()
+}
+
+/// No two headings of a document share an anchor: a link to the second
+/// would land on the first (GitHub numbers it `-1`, which no reader
+/// guesses).
+#[test]
+fn no_two_headings_of_a_document_share_an_anchor() {
+    let mut repeated = Vec::new();
+    for path in documents() {
+        let text = std::fs::read_to_string(&path).unwrap();
+        let mut seen = std::collections::HashSet::new();
+        for slug in heading_slugs(&text) {
+            if !seen.insert(slug.clone()) {
+                repeated.push(format!("{}: #{slug}", path.display()));
+            }
+        }
+    }
+    assert!(
+        repeated.is_empty(),
+        "headings sharing an anchor:\n{}",
+        repeated.join("\n")
+    );
+    let doubled = "## The missing light\n\n### Detail\n\n## The missing light\n";
+    assert_eq!(
+        heading_slugs(doubled),
+        ["the-missing-light", "detail", "the-missing-light"]
+    );
+}
