@@ -393,3 +393,37 @@ fn the_course_scene_list_is_the_scene_folder() {
     listed.sort();
     assert_eq!(on_disk, listed);
 }
+
+/// A point light whose irradiance cannot be bounded because the scene's
+/// extent makes f32's rounding of hit points larger than its distance to a
+/// surface is refused at the light, naming the object whose coordinates
+/// set that extent, not at a material as a radiance beyond f32.
+#[test]
+fn a_light_within_rounding_of_a_far_object_is_refused_at_the_light() {
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/scenes/kaleidoscope_lit.json"
+    ))
+    .unwrap();
+    let mut scene: Value = serde_json::from_str(&text).unwrap();
+    let tube = scene["objects"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .position(|o| o["type"] == "mirror_tube")
+        .unwrap();
+    scene["objects"][tube]["axis_point"] = json!([0, 0, 1e19]);
+    let error = scene::parse(&scene.to_string()).expect_err("refused");
+    assert_eq!(error.field(), "lights[0]", "{error}");
+    match error.kind() {
+        ErrorKind::LightWithinRounding {
+            distance,
+            rounding,
+            widest,
+        } => {
+            assert_eq!(*widest, tube);
+            assert!(distance <= rounding && *distance > 0.0, "{error}");
+        }
+        other => panic!("refused as {other:?}"),
+    }
+}

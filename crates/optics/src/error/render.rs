@@ -31,6 +31,7 @@ pub fn scene_name(kind: &Scene) -> &'static str {
         Scene::FarNotBeyondNear { .. } => "scene.far_not_beyond_near",
         Scene::UnknownMaterial { .. } => "scene.unknown_material",
         Scene::RadianceOverflow { .. } => "scene.radiance_overflow",
+        Scene::LightWithinRounding { .. } => "scene.light_within_rounding",
         Scene::TooExpensive { .. } => "scene.too_expensive",
         Scene::DielectricWithoutInside => "scene.dielectric_without_inside",
         Scene::CourseHasNoRefraction => "scene.course_has_no_refraction",

@@ -33,6 +33,11 @@ pub(super) fn check(scene: &Scene) -> Result<(), SceneError> {
     for (name, material) in scene.material_names.iter().zip(&scene.materials) {
         let bound = material_bound(material, scene.ambient, irradiance);
         if bound > f32::MAX as f64 || bound.is_nan() {
+            // Unbounded because a point light is within rounding of a
+            // surface: that light is the cause, not the material.
+            if let Some(error) = light_within_rounding(scene) {
+                return Err(error);
+            }
             return Err(SceneError::new(
                 format!("materials.{name}"),
                 ErrorKind::RadianceOverflow { bound },
@@ -40,6 +45,68 @@ pub(super) fn check(scene: &Scene) -> Result<(), SceneError> {
         }
     }
     Ok(())
+}
+
+/// The first point light within the rounding of a surface's hit points,
+/// as the error naming it, the surface and the rounding.
+fn light_within_rounding(scene: &Scene) -> Option<SceneError> {
+    scene.lights.iter().enumerate().find_map(|(i, light)| {
+        let Light::Point { position, .. } = *light else {
+            return None;
+        };
+        let near = clearance(&scene.objects, position.as_dvec3());
+        (near.distance <= near.rounding).then(|| {
+            let kind = ErrorKind::LightWithinRounding {
+                distance: near.distance,
+                rounding: near.rounding,
+                widest: near.widest,
+            };
+            SceneError::new(format!("lights[{i}]"), kind)
+        })
+    })
+}
+
+/// How far a point is from the scene's surfaces, and how far hit points
+/// are rounded.
+struct Clearance {
+    /// To the nearest surface, m.
+    distance: f64,
+    /// Of a hit point in `f32`: a few ulps of the scene's extent, m.
+    rounding: f64,
+    /// The object whose coordinates set that extent.
+    widest: usize,
+}
+
+fn clearance(objects: &[Object], p: DVec3) -> Clearance {
+    let plane = |point: Vec3, normal: Vec3| (p - point.as_dvec3()).dot(normal.as_dvec3()).abs();
+    let mut nearest = f64::INFINITY;
+    let (mut scale, mut widest) = (p.abs().max_element(), 0);
+    for (i, object) in objects.iter().enumerate() {
+        let (d, size) = match object {
+            Object::Sphere(s) => {
+                let c = s.center.as_dvec3();
+                let size = c.abs().max_element() + s.radius as f64;
+                (((p - c).length() - s.radius as f64).abs(), size)
+            }
+            Object::Plane(q) => (plane(q.point, q.normal), q.point.abs().max_element() as f64),
+            Object::Tube(t) => t
+                .faces
+                .iter()
+                .fold((f64::INFINITY, 0.0_f64), |(d, size), f| {
+                    let size = size.max(f.point.abs().max_element() as f64);
+                    (d.min(plane(f.point, f.normal)), size)
+                }),
+        };
+        nearest = nearest.min(d);
+        if size > scale {
+            (scale, widest) = (size, i);
+        }
+    }
+    Clearance {
+        distance: nearest,
+        rounding: 8.0 * f32::EPSILON as f64 * scale,
+        widest,
+    }
 }
 
 /// The largest radiance a material sends, per the module's bound, in the
@@ -92,28 +159,6 @@ pub fn lights_irradiance(scene: &Scene) -> DVec3 {
 /// rounding of a hit point in `f32` (a light within rounding of a surface
 /// is on it: distance 0).
 fn nearest_surface(objects: &[Object], p: DVec3) -> f64 {
-    let plane = |point: Vec3, normal: Vec3| (p - point.as_dvec3()).dot(normal.as_dvec3()).abs();
-    let mut nearest = f64::INFINITY;
-    let mut scale = p.abs().max_element();
-    for object in objects {
-        let (d, size) = match object {
-            Object::Sphere(s) => {
-                let c = s.center.as_dvec3();
-                let size = c.abs().max_element() + s.radius as f64;
-                (((p - c).length() - s.radius as f64).abs(), size)
-            }
-            Object::Plane(q) => (plane(q.point, q.normal), q.point.abs().max_element() as f64),
-            Object::Tube(t) => t
-                .faces
-                .iter()
-                .fold((f64::INFINITY, 0.0_f64), |(d, size), f| {
-                    let size = size.max(f.point.abs().max_element() as f64);
-                    (d.min(plane(f.point, f.normal)), size)
-                }),
-        };
-        nearest = nearest.min(d);
-        scale = scale.max(size);
-    }
-    // Hit points are rounded to f32: a few ulps of the scene's extent.
-    (nearest - 8.0 * f32::EPSILON as f64 * scale).max(0.0)
+    let near = clearance(objects, p);
+    (near.distance - near.rounding).max(0.0)
 }

@@ -97,6 +97,16 @@ pub(super) fn scene_kind_hu(kind: &Scene) -> String {
             format!("nincs {name:?} nevű anyag; a jelenet anyagai: {defined:?}")
         }
         Scene::RadianceOverflow { bound } => radiance_overflow_hu(*bound),
+        Scene::LightWithinRounding {
+            distance,
+            rounding,
+            widest,
+        } => format!(
+            "a pontfényforrás {distance:.3e} m-re van a legközelebbi felülettől, a \
+             metszéspontok f32-kerekítésén belül ({rounding:.3e} m, ezt a(z) {widest}. objektum \
+             koordinátái szabják meg): a megvilágítása ott korlátlan; a fényt távolabb kell \
+             vinni a felülettől, vagy a(z) {widest}. objektumot közelebb az origóhoz"
+        ),
         Scene::TooExpensive { rays } => too_expensive_hu(*rays),
         Scene::DielectricWithoutInside => "a dielektrikumhoz belső térrel bíró zárt felület \
                                            kell: csak gömb lehet dielektrikum"

@@ -55,6 +55,17 @@ impl fmt::Display for ErrorKind {
                 "no material named {name:?}; the scene defines {defined:?}"
             ),
             ErrorKind::RadianceOverflow { bound } => radiance_overflow(f, *bound),
+            ErrorKind::LightWithinRounding {
+                distance,
+                rounding,
+                widest,
+            } => write!(
+                f,
+                "a point light {distance:.3e} m from the nearest surface, within the f32 \
+                 rounding of hit points ({rounding:.3e} m, set by objects[{widest}]'s \
+                 coordinates): its irradiance has no bound there; move the light away from \
+                 the surface, or bring objects[{widest}] nearer the origin"
+            ),
             ErrorKind::TooExpensive { rays } => too_expensive(f, *rays),
             ErrorKind::DielectricWithoutInside => f.write_str(
                 "a dielectric needs a closed surface with an inside: only spheres may be dielectric",

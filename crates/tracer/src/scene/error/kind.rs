@@ -113,6 +113,17 @@ pub enum ErrorKind {
         /// The bound, W/(sr·m²), computed in `f64`.
         bound: f64,
     },
+    /// A point light within the rounding of a surface's hit points, so
+    /// that the irradiance it gives there has no bound in `f32`: the
+    /// surface's coordinates, far from the origin, may be the cause.
+    LightWithinRounding {
+        /// From the light to the nearest surface, m.
+        distance: f64,
+        /// How far hit points are rounded at the scene's extent, m.
+        rounding: f64,
+        /// The index of the object whose coordinates set that extent.
+        widest: usize,
+    },
     /// A render whose bound on the rays it casts is past
     /// [`MAX_RAYS`](crate::kinds::MAX_RAYS), not allowed by the caller.
     TooExpensive {

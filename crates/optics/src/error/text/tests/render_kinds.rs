@@ -34,6 +34,7 @@ pub fn scene_slot(kind: &Scene) -> usize {
         Scene::NotUtf8 { .. } => 19,
         Scene::WrongShape { .. } => 20,
         Scene::RadianceOverflow { .. } => 21,
+        Scene::LightWithinRounding { .. } => 40,
         Scene::TooExpensive { .. } => 22,
         Scene::Bump(FieldError::NotFinite { .. }) => 23,
         Scene::Bump(FieldError::PeriodTooShort { .. }) => 24,
@@ -66,7 +67,7 @@ pub const THREADS: usize = 34;
 pub const NOT_FINITE: usize = 35;
 
 /// How many render slots there are.
-pub const SLOTS: usize = 40;
+pub const SLOTS: usize = 41;
 
 /// A thread pool that cannot start: its spawner fails.
 pub fn thread_pool_error() -> rayon::ThreadPoolBuildError {
@@ -326,6 +327,15 @@ pub fn examples() -> Vec<(ErrorKind, Vec<String>)> {
         scene(
             "materials.red",
             Scene::RadianceOverflow { bound: 1e40 },
+            &[],
+        ),
+        scene(
+            "lights[0]",
+            Scene::LightWithinRounding {
+                distance: 1.2,
+                rounding: 9.5e12,
+                widest: 3,
+            },
             &[],
         ),
         scene(
