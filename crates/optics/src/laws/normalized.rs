@@ -9,13 +9,28 @@ use record::{say, Lang};
 pub fn note_normalized(record: &mut Record, lang: Lang, field: &str, d: &Direction) {
     if d.was_normalized() {
         record.step(|| {
+            let noun = direction_hu(field);
             say!(
                 lang,
                 "{field} has length {}: normalised to {}",
-                "{field} hossza {}: normalizálva {}",
+                "{noun} hossza {}: normalizálva {}",
                 number(d.given_length),
                 vector(d.unit.to_array())
             )
         });
     }
+}
+
+/// A direction's name in a Hungarian sentence, the input's own name beside
+/// it: `a fényirány (light_dir)`.
+fn direction_hu(field: &str) -> String {
+    let noun = match field {
+        "normal" => "a felületi normális",
+        "light_dir" => "a fényirány",
+        "view_dir" => "a nézeti irány",
+        "wi" => "a beeső irány",
+        "dir" => "a visszavert irány",
+        _ => "az irány",
+    };
+    format!("{noun} ({field})")
 }
