@@ -1,5 +1,5 @@
-//! What the README shows is what runs: each `console` block's commands
-//! print exactly the lines below them, the Rust snippet builds against the
+//! What the README shows is what runs: each `console` block's commands (in
+//! the README and `docs/cli.md`) print exactly the lines below them, the Rust snippet builds against the
 //! crates and prints what it says, and the Python snippet, through `optics
 //! batch`, prints what it says.
 
@@ -64,9 +64,17 @@ fn says_it_prints(snippet: &str) -> String {
 }
 
 #[test]
-fn readme_transcripts_print_what_they_show() {
-    let transcripts = blocks(&readme(), "console");
-    assert!(!transcripts.is_empty(), "the README shows a transcript");
+fn documented_transcripts_print_what_they_show() {
+    let cli = std::fs::read_to_string(root().join("docs/cli.md")).expect("docs/cli.md reads");
+    let readme_commands = blocks(&readme(), "console")
+        .iter()
+        .map(|b| transcript(b).len())
+        .sum::<usize>();
+    assert!(
+        readme_commands >= 3,
+        "the README's try-it block shows {readme_commands} commands"
+    );
+    let transcripts = [blocks(&readme(), "console"), blocks(&cli, "console")].concat();
     let mut commands = 0;
     for block in transcripts {
         for (args, shown) in transcript(&block) {
@@ -77,13 +85,16 @@ fn readme_transcripts_print_what_they_show() {
                 .expect("optics runs");
             let printed = String::from_utf8_lossy(&output.stdout).into_owned()
                 + &String::from_utf8_lossy(&output.stderr);
+            // A blank line between two commands is the transcript's, not
+            // their output's.
+            let (printed, shown) = (printed.trim_end(), shown.trim_end());
             assert_eq!(printed, shown, "optics {}", args.join(" "));
             commands += 1;
         }
     }
     assert!(
-        commands >= 3,
-        "the README's try-it block shows {commands} commands"
+        commands > readme_commands,
+        "docs/cli.md shows transcripts too"
     );
 }
 
