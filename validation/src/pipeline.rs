@@ -101,7 +101,16 @@ pub fn run(options: &Options, mut progress: impl FnMut(Step)) -> Result<Outcome,
         let mut drawing = None;
         suite::schedule::run_merged(&kinds, &context, &mut report, |step| {
             match step {
-                Merge::Awaiting { index, name } => progress(Step::Checks { index, total, name }),
+                Merge::Awaiting {
+                    index,
+                    name,
+                    name_hu,
+                } => progress(Step::Checks {
+                    index,
+                    total,
+                    name,
+                    name_hu,
+                }),
                 Merge::FigureData { report } => {
                     if let Some(python) = &python {
                         progress(Step::DrawingFigures);

@@ -31,6 +31,10 @@ impl CheckKind for LawChecks {
         "laws against Mitsuba 3 and mpmath"
     }
 
+    fn name_hu(&self) -> &'static str {
+        "a törvények a Mitsuba 3-hoz és az mpmath-hoz mérve"
+    }
+
     fn feeds_figures(&self) -> bool {
         true // the Fresnel curves
     }
@@ -102,6 +106,10 @@ impl CheckKind for ColourChecks {
         "colorimetry against colour-science"
     }
 
+    fn name_hu(&self) -> &'static str {
+        "a színmérés a colour-science-hez mérve"
+    }
+
     fn run(&self, context: &Context, report: &mut Report) -> Result<(), ReferenceError> {
         let reference = Colorimetry::load(&context.reference_dir)?;
         report.note_reference(&context.reference_dir, colorimetry::FILE)?;
@@ -118,6 +126,10 @@ pub struct MetalChecks(pub MetalLaws);
 impl CheckKind for MetalChecks {
     fn name(&self) -> &'static str {
         "metal colours and their shortcuts"
+    }
+
+    fn name_hu(&self) -> &'static str {
+        "a fémek színe és egyszerűsítései"
     }
 
     fn feeds_figures(&self) -> bool {
@@ -155,6 +167,10 @@ impl CheckKind for SpeedChecks {
         "the cost of a spectral colour"
     }
 
+    fn name_hu(&self) -> &'static str {
+        "a spektrális szín ára"
+    }
+
     fn measures_time(&self) -> bool {
         true
     }
@@ -182,6 +198,10 @@ impl CheckKind for TechniqueChecks {
         "the slides' techniques against the exact answers"
     }
 
+    fn name_hu(&self) -> &'static str {
+        "a diák technikái a pontos válaszokhoz mérve"
+    }
+
     fn feeds_figures(&self) -> bool {
         true // the cheap refraction's error, the fitted Fresnel forms
     }
@@ -201,6 +221,10 @@ pub struct TradeoffChecks;
 impl CheckKind for TradeoffChecks {
     fn name(&self) -> &'static str {
         "the speed/accuracy trade, as recorded"
+    }
+
+    fn name_hu(&self) -> &'static str {
+        "a sebesség és a pontosság cseréje, ahogy rögzítették"
     }
 
     fn run(&self, context: &Context, report: &mut Report) -> Result<(), ReferenceError> {
@@ -261,6 +285,10 @@ impl CheckKind for RenderChecks {
         "renders against Mitsuba 3"
     }
 
+    fn name_hu(&self) -> &'static str {
+        "a renderelt képek a Mitsuba 3-hoz mérve"
+    }
+
     fn run(&self, context: &Context, report: &mut Report) -> Result<(), ReferenceError> {
         let reference = MitsubaRenders::load(&context.reference_dir)?;
         report.note_reference(&context.reference_dir, renders::FILE)?;
@@ -279,6 +307,10 @@ impl CheckKind for FullLightChecks {
         "all the light against Mitsuba 3"
     }
 
+    fn name_hu(&self) -> &'static str {
+        "az összes fény a Mitsuba 3-hoz mérve"
+    }
+
     fn run(&self, context: &Context, report: &mut Report) -> Result<(), ReferenceError> {
         let reference = FullLight::load(&context.reference_dir)?;
         report.note_reference(&context.reference_dir, full_light::FILE)?;
@@ -292,6 +324,10 @@ pub struct FlipChecks(pub flip::ErrorMap);
 impl CheckKind for FlipChecks {
     fn name(&self) -> &'static str {
         "ꟻLIP against NVIDIA's evaluator"
+    }
+
+    fn name_hu(&self) -> &'static str {
+        "a ꟻLIP az NVIDIA kiértékelőjéhez mérve"
     }
 
     fn run(&self, context: &Context, report: &mut Report) -> Result<(), ReferenceError> {
@@ -329,7 +365,7 @@ pub fn run(
 ) -> Result<Report, ReferenceError> {
     let mut report = Report::new(context.quick, command);
     schedule::run_merged(kinds, context, &mut report, |step| {
-        if let Merge::Awaiting { index, name } = step {
+        if let Merge::Awaiting { index, name, .. } = step {
             progress(index, name);
         }
         Ok::<(), ReferenceError>(())

@@ -240,6 +240,9 @@ impl CheckKind for Late {
     fn name(&self) -> &'static str {
         self.0.name()
     }
+    fn name_hu(&self) -> &'static str {
+        self.0.name_hu()
+    }
     fn run(&self, context: &suite::Context, report: &mut Report) -> Result<(), ReferenceError> {
         std::thread::sleep(self.1);
         self.0.run(context, report)
@@ -317,4 +320,24 @@ fn the_report_is_the_same_whichever_kind_finishes_first() {
     assert!(beside.checks.len() > 20, "{} checks", beside.checks.len());
     assert_eq!(beside.speed.len(), in_turn.speed.len());
     assert!(deterministic_part(&beside) == deterministic_part(&in_turn));
+}
+
+/// Each kind of check is named in Hungarian too, in other words than its
+/// English name's (the progress lines of `optics --lang hu validate`).
+#[test]
+fn every_kind_of_check_has_its_own_hungarian_name() {
+    for kind in suite::standard_kinds() {
+        let (en, hu) = (kind.name(), kind.name_hu());
+        assert!(!hu.trim().is_empty(), "{en}: no Hungarian name");
+        let english: Vec<&str> = en
+            .split(|c: char| !c.is_alphabetic())
+            // Names of tools stay as they are (colour-science).
+            .filter(|w| {
+                w.len() > 3
+                    && !["Mitsuba", "mpmath", "NVIDIA", "ꟻLIP", "colour", "science"].contains(w)
+            })
+            .collect();
+        let left: Vec<&&str> = english.iter().filter(|w| hu.contains(**w)).collect();
+        assert!(left.is_empty(), "{en}: English {left:?} left in {hu:?}");
+    }
 }

@@ -138,14 +138,19 @@ fn progress(ui: &Ui, bar: Option<&ProgressBar>, step: Step) {
             "regenerating the references with the pinned tools",
             "a referenciák újragenerálása a rögzített eszközökkel"
         ),
-        Step::Checks { index, total, name } => match bar {
+        Step::Checks {
+            index,
+            total,
+            name,
+            name_hu,
+        } => match bar {
             Some(bar) => {
                 bar.set_length(total as u64);
                 bar.set_position(index as u64);
-                bar.set_message(name.to_owned());
+                bar.set_message(lang.pick(name, name_hu).to_owned());
                 return;
             }
-            None => format!("[{}/{total}] {name}", index + 1),
+            None => format!("[{}/{total}] {}", index + 1, lang.pick(name, name_hu)),
         },
         Step::ChecksDone => {
             if let Some(bar) = bar {

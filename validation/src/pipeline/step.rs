@@ -18,6 +18,8 @@ pub enum Step<'a> {
         total: usize,
         /// Its name.
         name: &'a str,
+        /// Its name in Hungarian.
+        name_hu: &'a str,
     },
     /// Every kind of check has run.
     ChecksDone,

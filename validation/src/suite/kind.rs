@@ -8,6 +8,8 @@ use crate::report::Report;
 pub trait CheckKind: Sync {
     /// A stable name, used in progress messages (`laws`, `colorimetry`).
     fn name(&self) -> &'static str;
+    /// Its name in Hungarian, for progress messages under `--lang hu`.
+    fn name_hu(&self) -> &'static str;
     /// Runs the checks, appending them and their data to `report`.
     fn run(&self, context: &Context, report: &mut Report) -> Result<(), ReferenceError>;
     /// Whether the report's figures (`python-checks/plot_report.py`) draw

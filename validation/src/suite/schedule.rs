@@ -19,6 +19,8 @@ pub enum Merge<'a> {
         index: usize,
         /// Its name.
         name: &'static str,
+        /// Its name in Hungarian.
+        name_hu: &'static str,
     },
     /// Every kind that [feeds the figures](CheckKind::feeds_figures) has
     /// finished: `report` holds their [figure data](Report::figure_data),
@@ -80,6 +82,7 @@ pub fn run_merged<E: From<ReferenceError>>(
             step(Merge::Awaiting {
                 index,
                 name: kind.name(),
+                name_hu: kind.name_hu(),
             })?;
             let part = if kind.measures_time() {
                 for (later, handle) in running.iter_mut().enumerate().skip(index + 1) {
