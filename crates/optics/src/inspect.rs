@@ -260,7 +260,7 @@ fn cost_of(part: Part, full: &Rendered, base: &Rendered, lang: Lang) -> (Value, 
             say!(
                 lang,
                 "no, {} pixels differ by up to {:.3}",
-                "nem, {} pixel tér el, legfeljebb {:.3}-mal",
+                "nem, {} képpont tér el, legfeljebb {:.3}-mal",
                 changed,
                 max_difference
             )

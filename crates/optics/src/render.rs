@@ -308,14 +308,14 @@ pub(crate) fn steps(
             say!(
                 lang,
                 "{} samples per pixel reduced to 1: every path is deterministic and passes through the pixel centre",
-                "{} minta pixelenként 1-re csökkentve: minden út determinisztikus, és a pixel közepén halad át",
+                "{} minta képpontonként 1-re csökkentve: minden út determinisztikus, és a képpont közepén halad át",
                 settings.spp
             )
         } else {
             say!(
                 lang,
                 "{} samples per pixel reduced to 1: the {} integrator is deterministic and its rays pass through the pixel centre (--pixel-filter box takes them all)",
-                "{} minta pixelenként 1-re csökkentve: a(z) {} integrátor determinisztikus, sugarai a pixel közepén haladnak át (a --pixel-filter box mindet felhasználja)",
+                "{} minta képpontonként 1-re csökkentve: a(z) {} integrátor determinisztikus, sugarai a képpont közepén haladnak át (a --pixel-filter box mindet felhasználja)",
                 settings.spp,
                 settings.integrator
             )

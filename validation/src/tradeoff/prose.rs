@@ -80,7 +80,7 @@ fn second_truth(m: &SecondTruth, lang: Lang) -> String {
     say!(
         lang,
         "Against Mitsuba's light tracer, on the {} pixels that see a diffuse surface at {}×{}, the truth carries {:.4} ± {:.4} of its light ({}) and the scene's own settings {:.4}; {}.",
-        "A Mitsuba fénykövetőjével szemben, a {1}×{2}-es kép {0} diffúz felületet látó pixelén a referencia annak fényéből {3:.4} ± {4:.4} részt hordoz ({5}), a jelenet saját beállításai {6:.4} részt; {7}.",
+        "A Mitsuba fénykövetőjével szemben, a {1}×{2}-es kép {0} diffúz felületet látó képpontján a referencia annak fényéből {3:.4} ± {4:.4} részt hordoz ({5}), a jelenet saját beállításai {6:.4} részt; {7}.",
         m.pixels,
         m.size[0],
         m.size[1],
@@ -241,7 +241,7 @@ fn schlick(s: &Schlick, lang: Lang) -> String {
         Some(g) => say!(
             lang,
             "over the {} pixels whose centre first meets a mirror or glass at a cosine below {}: ΔE mean {:.2}, p99 {:.2}, relative RMSE {:.4}",
-            "azon {} pixelen, amelyek középpontja először tükröt vagy üveget ér {} alatti koszinusszal: ΔE átlag {:.2}, p99 {:.2}, relatív RMSE {:.4}",
+            "azon {} képponton, amelyek középpontja először tükröt vagy üveget ér {} alatti koszinusszal: ΔE átlag {:.2}, p99 {:.2}, relatív RMSE {:.4}",
             g.pixels,
             GRAZING_COS,
             g.delta_e_mean,
@@ -251,7 +251,7 @@ fn schlick(s: &Schlick, lang: Lang) -> String {
         None => say!(
             lang,
             "no pixel's centre first meets a mirror or glass at a cosine below {}",
-            "egyetlen pixel középpontja sem ér először tükröt vagy üveget {} alatti koszinusszal",
+            "egyetlen képpont középpontja sem ér először tükröt vagy üveget {} alatti koszinusszal",
             GRAZING_COS
         ),
     };

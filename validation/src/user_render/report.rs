@@ -131,7 +131,7 @@ fn reference_line(reference: &Reference, lang: Lang) -> String {
         Some((_, samples)) => say!(
             lang,
             "reference: the tracer's {} at {}×{}, {} samples per pixel (seeds from 2^32)",
-            "referencia: a sugárkövető {} integrátora, {}×{}, {} minta pixelenként (magok 2^32-től)",
+            "referencia: a sugárkövető {} integrátora, {}×{}, {} minta képpontonként (magok 2^32-től)",
             integrator,
             scene.width,
             scene.height,

@@ -29,16 +29,17 @@ pub fn table(sweep: &Sweep, lang: Lang) -> Vec<String> {
         say!(
             lang,
             "{}: {}×{}, {} surface pixels; truth {} spp ({}), relative noise floor {:.1e}",
-            "{}: {}×{}, {} felületi pixel; referencia {} minta ({}), relatív zajszint {:.1e}",
+            "{}: {}×{}, {} felületi képpont; referencia {} minta ({}), relatív zajszint {:.1e}",
             sweep.scene,
             sweep.width,
             sweep.height,
             sweep.surface_pixels,
             sweep.truth.spp,
-            if sweep.truth.cached {
-                "cached"
-            } else {
-                "rendered"
+            match (sweep.truth.cached, lang) {
+                (true, Lang::En) => "cached",
+                (false, Lang::En) => "rendered",
+                (true, Lang::Hu) => "gyorsítótárból",
+                (false, Lang::Hu) => "most renderelve",
             },
             sweep.truth.noise_relative
         ),
@@ -51,8 +52,8 @@ pub fn table(sweep: &Sweep, lang: Lang) -> Vec<String> {
             "ΔE avg",
             "ΔE p99",
             "ꟻLIP",
-            "variance",
-            "bias²",
+            lang.pick("variance", "szórásnégyzet"),
+            lang.pick("bias²", "torzítás²"),
             lang.pick("effic.", "hatékony."),
             lang.pick("vs own", "saját"),
         ),

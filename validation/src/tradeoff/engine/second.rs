@@ -126,7 +126,7 @@ fn header(m: &AgainstMitsuba, lang: Lang) -> String {
     say!(
         lang,
         "against Mitsuba's {} (all the light), {} region at {}×{} ({} pixels, each the mean of {}×{} of the sweep's), {} passes of {} spp, max_depth {}: our truth carries {:.4} ± {:.4} of its light, relative RMSE {:.4} (the floor)",
-        "a Mitsuba {} becslésével (az összes fény) szemben, {} tartomány {}×{} méretben ({} pixel, mindegyik a mérés {}×{} pixelének átlaga), {} menet, menetenként {} minta, max_depth {}: saját referenciánk fényének {:.4} ± {:.4} részét hordozza, relatív RMSE {:.4} (az alsó határ)",
+        "a Mitsuba {} becslésével (az összes fény) szemben, {} tartomány {}×{} méretben ({} képpont, mindegyik a mérés {}×{} képpontjának átlaga), {} menet, menetenként {} minta, max_depth {}: saját referenciánk fényének {:.4} ± {:.4} részét hordozza, relatív RMSE {:.4} (az alsó határ)",
         m.estimate,
         m.region,
         m.width,

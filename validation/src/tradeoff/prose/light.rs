@@ -54,7 +54,7 @@ pub(super) fn light(l: &LightLeftOut, lang: Lang) -> String {
     say!(
         lang,
         "Light left out at the scene's max_depth {}, 1 − Σx/Σt over the surface pixels (the truth's own noise ±{}; within the noise: within two standard deviations of the truth's and the render's own): {}.",
-        "A kimaradó fény a jelenet saját max_depth {} korlátjával, 1 − Σx/Σt a felületi pixeleken (a referencia saját zaja ±{}; a zajon belül: a referencia és a kép saját zajának két szórásán belül): {}.",
+        "A kimaradó fény a jelenet saját max_depth {} korlátjával, 1 − Σx/Σt a felületi képpontokon (a referencia saját zaja ±{}; a zajon belül: a referencia és a kép saját zajának két szórásán belül): {}.",
         l.max_depth,
         percent(l.truth_noise),
         items.join(", ")

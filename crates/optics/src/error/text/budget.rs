@@ -45,7 +45,7 @@ fn need_text(need: Need, top_spp: Option<u32>, lang: Lang) -> String {
         (Need::Samples { spp }, Some(top)) => say!(
             lang,
             "it would need 2^{} = {spp} spp (a power of two, as the budget renders), past the most it renders, {top} spp",
-            "2^{} = {spp} minta kellene pixelenként (kettőhatvány, ahogy a költségvetés renderel), több, mint a legtöbb, amennyivel renderel, {top}",
+            "2^{} = {spp} minta kellene képpontonként (kettőhatvány, ahogy a költségvetés renderel), több, mint a legtöbb, amennyivel renderel, {top}",
             spp.trailing_zeros()
         ),
         (Need::Capped { spp }, _) => say!(
