@@ -42,6 +42,7 @@ pub fn scene_slot(kind: &Scene) -> usize {
         Scene::EnvironmentImage { .. } => 36,
         Scene::BackgroundWithEnvironment => 37,
         Scene::PrecisionNotServed { .. } => 38,
+        Scene::SchlickFormUnnamed => 40,
     }
 }
 
@@ -66,7 +67,7 @@ pub const THREADS: usize = 34;
 pub const NOT_FINITE: usize = 35;
 
 /// How many render slots there are.
-pub const SLOTS: usize = 40;
+pub const SLOTS: usize = 41;
 
 /// A thread pool that cannot start: its spawner fails.
 pub fn thread_pool_error() -> rayon::ThreadPoolBuildError {
@@ -229,6 +230,11 @@ pub fn examples() -> Vec<(ErrorKind, Vec<String>)> {
                 "whitted",
                 "path",
             ],
+        ),
+        scene(
+            "render.fresnel",
+            Scene::SchlickFormUnnamed,
+            &["schlick", "schlick-incident", "schlick-rarer"],
         ),
         scene(
             "overrides.precision",
