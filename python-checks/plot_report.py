@@ -3,7 +3,7 @@
     .venv/bin/python python-checks/plot_report.py validation/out/report.json validation/out/figures
 
 ``optics validate`` runs this after writing ``report.json`` (schema
-``validation-report/1``, see ``validation/README.md``); it reads only that file
+``validation-report/2``, see ``validation/README.md``); it reads only that file
 and writes PNGs into the figure directory, printing each file name on its own
 line. The numbers are the report's; nothing is recomputed here.
 """
@@ -17,7 +17,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-SCHEMA = "validation-report/1"
+SCHEMA = "validation-report/2"
 
 
 def _save(fig, path):
@@ -50,7 +50,8 @@ def fresnel_curves(report, out):
     fig, axes = _curve_panels(len(curves))
     for ax, c in zip(axes.flat, curves):
         ax.plot(c["angle_deg"], c["exact"], "k-", label="exact")
-        ax.plot(c["angle_deg"], c["schlick"], "b--", label="Schlick (cos θi)")
+        ax.plot(c["angle_deg"], c["schlick-incident"], "b--", label="Schlick, incident cos θi (schlick-incident)")
+        ax.plot(c["angle_deg"], c["schlick-rarer"], "g-.", label="Schlick, rarer medium's cos (schlick-rarer)")
         ax.plot(c["angle_deg"], c["mitsuba"], "r:", lw=2, label="Mitsuba 3")
         ax.set_title(c["label"], fontsize=10)
         ax.set_xlim(0, 90)
@@ -65,9 +66,11 @@ def fresnel_errors(report, out):
     fig, axes = _curve_panels(len(curves))
     floor = 1e-10  # below any float32 rounding; zeros are drawn here
     for ax, c in zip(axes.flat, curves):
-        schlick = [max(abs(s - e), floor) for s, e in zip(c["schlick"], c["exact"])]
+        incident = [max(abs(s - e), floor) for s, e in zip(c["schlick-incident"], c["exact"])]
+        rarer = [max(abs(s - e), floor) for s, e in zip(c["schlick-rarer"], c["exact"])]
         mitsuba = [max(abs(m - e), floor) for m, e in zip(c["mitsuba"], c["exact"])]
-        ax.semilogy(c["angle_deg"], schlick, "b-", label="|Schlick − exact|")
+        ax.semilogy(c["angle_deg"], incident, "b-", label="|schlick-incident − exact|")
+        ax.semilogy(c["angle_deg"], rarer, "g-.", label="|schlick-rarer − exact|")
         ax.semilogy(c["angle_deg"], mitsuba, "r-", label="|Mitsuba (float32) − exact|")
         ax.set_title(c["label"], fontsize=10)
         ax.set_xlim(0, 90)

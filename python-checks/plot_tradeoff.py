@@ -3,7 +3,8 @@
     .venv/bin/python python-checks/plot_tradeoff.py SWEEP.json SWEEP-pareto.png
 
 ``optics tradeoff`` runs this after writing the sweep (schema
-``optics.tradeoff`` version 1, see ``docs/tradeoffs.md``). One panel per
+``optics.tradeoff`` version 2, or 1, which differs only in calling
+Schlick's rarer-medium form ``schlick``; see ``docs/tradeoffs.md``). One panel per
 fixed error measure: the median render time against the error, log-log,
 every point labelled, the Pareto front joined. It reads only that file; the
 numbers are the sweep's, nothing is recomputed here. Prints the PNG's path.
@@ -19,7 +20,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 SCHEMA = "optics.tradeoff"
-VERSION = 1
+VERSIONS = (1, 2)
 MEASURES = [
     ("rel_rmse", "relative RMSE of radiance"),
     ("delta_e_mean", "mean ΔE2000, displayed"),
@@ -34,9 +35,9 @@ def load(path):
     """The sweep at `path`, refused unless it is the schema this draws."""
     with open(path, encoding="utf-8") as f:
         sweep = json.load(f)
-    if sweep.get("schema") != SCHEMA or sweep.get("version") != VERSION:
+    if sweep.get("schema") != SCHEMA or sweep.get("version") not in VERSIONS:
         raise SystemExit(
-            f"{path}: not an {SCHEMA} version {VERSION} sweep "
+            f"{path}: not an {SCHEMA} version 1 or 2 sweep "
             f"(schema {sweep.get('schema')!r}, version {sweep.get('version')!r})"
         )
     return sweep

@@ -11,9 +11,10 @@ import plot_report  # noqa: E402
 
 def tiny_report():
     angles = [0.0, 45.0, 89.0]
-    return {"schema": "validation-report/1",
+    return {"schema": "validation-report/2",
             "fresnel_curves": [{"label": "glass, from outside", "angle_deg": angles, "exact": [0.04, 0.05, 0.9],
-                                "schlick": [0.04, 0.045, 0.95], "mitsuba": [0.04, 0.05, 0.9]}],
+                                "schlick-incident": [0.04, 0.045, 0.95], "schlick-rarer": [0.04, 0.045, 0.95],
+                                "mitsuba": [0.04, 0.05, 0.9]}],
             "metal_spectra": [{"metal": "gold", "angle_deg": 0.0, "wavelength_nm": [400.0, 500.0, 600.0],
                                "exact": [0.4, 0.5, 0.9], "schlick": [0.4, 0.5, 0.9]}],
             "metal_colours": [{"metal": "gold", "angle_deg": a, "method": m, "srgb": [1.0, 0.9, 0.6],

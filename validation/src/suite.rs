@@ -64,7 +64,8 @@ impl CheckKind for LawChecks {
     }
 }
 
-/// The exact law and Schlick beside Mitsuba's curves, per material.
+/// The exact law and both forms of Schlick's beside Mitsuba's curves, per
+/// material.
 pub fn fresnel_curves(reference: &MitsubaLaws) -> Vec<FresnelCurve> {
     use radiometry::fresnel;
     reference
@@ -72,11 +73,27 @@ pub fn fresnel_curves(reference: &MitsubaLaws) -> Vec<FresnelCurve> {
         .iter()
         .map(|curve| {
             let f0 = fresnel::f0(curve.n, curve.kappa);
+            let dielectric = curve.kappa == 0.0;
             let exact = |c: f64| {
-                if curve.kappa == 0.0 {
+                if dielectric {
                     fresnel::dielectric(c, curve.n)
                 } else {
                     fresnel::conductor(c, curve.n, curve.kappa)
+                }
+            };
+            // A conductor is lit from outside, where both forms take cos θi.
+            let incident = |c: f64| {
+                if dielectric {
+                    fresnel::schlick_dielectric_incident(c, curve.n)
+                } else {
+                    fresnel::schlick(c, f0)
+                }
+            };
+            let rarer = |c: f64| {
+                if dielectric {
+                    fresnel::schlick_dielectric(c, curve.n)
+                } else {
+                    fresnel::schlick(c, f0)
                 }
             };
             FresnelCurve {
@@ -87,11 +104,8 @@ pub fn fresnel_curves(reference: &MitsubaLaws) -> Vec<FresnelCurve> {
                     .map(|c| c.abs().acos().to_degrees())
                     .collect(),
                 exact: curve.cos_i.iter().map(|&c| exact(c)).collect(),
-                schlick: curve
-                    .cos_i
-                    .iter()
-                    .map(|&c| fresnel::schlick(c, f0))
-                    .collect(),
+                schlick_incident: curve.cos_i.iter().map(|&c| incident(c)).collect(),
+                schlick_rarer: curve.cos_i.iter().map(|&c| rarer(c)).collect(),
                 mitsuba: curve.mitsuba_f.clone(),
             }
         })

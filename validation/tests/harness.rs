@@ -71,7 +71,7 @@ fn every_check_passes_against_the_committed_references() {
     );
     // The report is JSON the figure script can read.
     let json: serde_json::Value = serde_json::from_str(&to_json(&report)).unwrap();
-    assert_eq!(json["schema"], "validation-report/1");
+    assert_eq!(json["schema"], "validation-report/2");
 }
 
 fn refract_normal_flipped(wi: Vec3, n: Vec3, eta: f32) -> Option<Refraction<Vec3>> {

@@ -165,7 +165,7 @@ fn shortcuts(findings: &Findings) -> impl Iterator<Item = &Shortcut> {
 }
 
 /// A trade-off record of two settings, as `optics tradeoff` writes one.
-const TRADEOFF: &str = r#"{"schema": "optics.tradeoff", "version": 1,
+const TRADEOFF: &str = r#"{"schema": "optics.tradeoff", "version": 2,
   "scene": "crates/tracer/scenes/gold_spheres.json", "lambert": true, "width": 80, "height": 60,
   "machine": "a machine, 2 threads", "date": "2026-12-04", "load": "load average 0.5",
   "command": "optics tradeoff crates/tracer/scenes/gold_spheres.json --lambert",
@@ -178,8 +178,8 @@ const TRADEOFF: &str = r#"{"schema": "optics.tradeoff", "version": 1,
      "errors": {"rel_rmse": 0.1796523927533933, "delta_e_mean": 2.06, "delta_e_p99": 28.047669109095697, "flip_mean": 0.0678083591684686, "light": 0.9623574712545723},
      "against_scene": {"rel_rmse": 0.0, "delta_e_mean": 0.0, "delta_e_p99": 0.0, "flip_mean": 0.0},
      "pareto": ["delta_e_mean", "delta_e_p99", "flip_mean"]},
-    {"axis": "fresnel", "label": "fresnel schlick",
-     "settings": {"integrator": "whitted", "max_depth": 63, "fresnel": "schlick"},
+    {"axis": "fresnel", "label": "fresnel schlick-rarer",
+     "settings": {"integrator": "whitted", "max_depth": 63, "fresnel": "schlick-rarer"},
      "seconds_median": 0.0002, "seconds": [0.0002], "rays": 5304.0,
      "errors": {"rel_rmse": 0.1791, "delta_e_mean": 2.26, "delta_e_p99": 28.05, "flip_mean": 0.072},
      "against_scene": {"rel_rmse": 0.01, "delta_e_mean": 0.1, "delta_e_p99": 1.21, "flip_mean": 0.01},
@@ -401,7 +401,7 @@ fn a_page_showing_a_wrong_number_is_caught() {
 fn report_json_names_its_schema_and_version() {
     let (report, _) = sample();
     let json: serde_json::Value = serde_json::from_str(&to_json(&report)).unwrap();
-    assert_eq!(json["schema"], "validation-report/1");
+    assert_eq!(json["schema"], "validation-report/2");
 }
 
 #[test]

@@ -11,7 +11,7 @@ use validation::tradeoff::record::Record;
 
 /// Two settings whose fronts and verdict are the ones their numbers give
 /// (their findings are added from them: [`with_findings`]).
-const RECORD: &str = r#"{"schema": "optics.tradeoff", "version": 1,
+const RECORD: &str = r#"{"schema": "optics.tradeoff", "version": 2,
   "scene": "crates/tracer/scenes/gold_spheres.json", "lambert": true, "width": 80, "height": 60,
   "machine": "a machine", "date": "2026-12-04", "load": "", "command": "optics tradeoff",
   "truth": {"spp": 64, "noise_relative": 3.56e-5},
@@ -20,7 +20,7 @@ const RECORD: &str = r#"{"schema": "optics.tradeoff", "version": 1,
      "errors": {"rel_rmse": 0.18, "delta_e_mean": 2.06, "delta_e_p99": 28.04, "flip_mean": 0.068},
      "against_scene": {"rel_rmse": 0.0, "delta_e_mean": 0.0, "delta_e_p99": 0.0, "flip_mean": 0.0},
      "pareto": ["delta_e_mean", "delta_e_p99", "flip_mean"]},
-    {"axis": "fresnel", "label": "fresnel schlick", "settings": {"integrator": "whitted", "max_depth": 63, "fresnel": "schlick"}, "seconds_median": 0.0002, "rays": 5304.0,
+    {"axis": "fresnel", "label": "fresnel schlick-rarer", "settings": {"integrator": "whitted", "max_depth": 63, "fresnel": "schlick-rarer"}, "seconds_median": 0.0002, "rays": 5304.0,
      "errors": {"rel_rmse": 0.17, "delta_e_mean": 2.26, "delta_e_p99": 28.05, "flip_mean": 0.072},
      "against_scene": {"rel_rmse": 0.01, "delta_e_mean": 0.1, "delta_e_p99": 0.5, "flip_mean": 0.01},
      "pareto": ["rel_rmse", "delta_e_mean", "delta_e_p99", "flip_mean"], "verdict": "worth_it"}
@@ -116,9 +116,9 @@ fn an_unconverged_truth_fails() {
 
 #[test]
 fn a_record_of_another_version_or_malformed_fails_naming_it() {
-    let f = failures(|v| v["version"] = serde_json::json!(2));
+    let f = failures(|v| v["version"] = serde_json::json!(3));
     assert!(
-        f[0].contains("version 2") && f[0].contains("docs/tradeoffs/make"),
+        f[0].contains("version 3") && f[0].contains("docs/tradeoffs/make"),
         "{f:?}"
     );
     let f = failures(|v| v["points"][1]["seconds_median"] = serde_json::json!("fast"));
@@ -245,7 +245,7 @@ fn mitsuba() -> serde_json::Value {
         "scene": "gold_spheres", "estimate": "ptracer", "region": "diffuse",
         "width": 40, "height": 30, "factor": 2, "pixels": 11, "passes": 16, "spp": 64,
         "max_depth": 16, "floor": against("truth", 0.02),
-        "points": [against("scene", 0.2), against("fresnel schlick", 0.1)],
+        "points": [against("scene", 0.2), against("fresnel schlick-rarer", 0.1)],
         "ranking": {"concordant": 1, "discordant": []}}})
 }
 
@@ -274,4 +274,36 @@ fn a_mitsuba_truth_is_held_to_its_numbers_and_its_settings() {
         &record(|v| v["mitsuba"] = serde_json::json!({"no_reference": "a reason"})),
     );
     assert!(c.passed(), "{:?}", c.failures);
+}
+
+/// A record of version 1 named Schlick's rarer-medium form `schlick`: it
+/// is read with that name mapped (`record::upgrade`), as version 2, and
+/// passes as the same record written with the new names does; a
+/// version-2 record is read as written.
+#[test]
+fn a_version_1_record_is_read_with_its_schlick_named_as_the_rarer_form() {
+    let current = with_findings(serde_json::from_str(RECORD).unwrap()).to_string();
+    // As version 1 wrote it: every name of the form bare.
+    let old = current
+        .replace("schlick-rarer", "schlick")
+        .replace("\"version\":2", "\"version\":1");
+    assert!(
+        old.contains("\"fresnel schlick\"") && old.contains("\"version\":1"),
+        "{old}"
+    );
+    let upgraded = validation::tradeoff::record::upgrade(&old);
+    let read: Record =
+        validation::reference::parse(Path::new("x.json"), &upgraded, "optics.tradeoff").unwrap();
+    assert_eq!(read.version, 2);
+    assert_eq!(read.points[1].label, "fresnel schlick-rarer");
+    assert_eq!(read.points[1].settings.fresnel, "schlick-rarer");
+    let schlick = read
+        .findings
+        .as_ref()
+        .and_then(|f| f.schlick.as_ref())
+        .expect("the finding");
+    assert_eq!(schlick.shortcut.label, "fresnel schlick-rarer");
+    let c = check(Path::new("docs/tradeoffs/x.json"), &Ok(read));
+    assert!(c.passed(), "{:?}", c.failures);
+    assert_eq!(validation::tradeoff::record::upgrade(RECORD), RECORD);
 }

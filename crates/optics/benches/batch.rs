@@ -22,7 +22,7 @@ fn requests(count: usize) -> String {
                 2.0 * t - 1.0
             ),
             1 => format!(
-                r#"{{"law": "fresnel", "eta": 0.17, "kappa": 3.1, "cos_i": {t}, "model": "schlick"}}"#
+                r#"{{"law": "fresnel", "eta": 0.17, "kappa": 3.1, "cos_i": {t}, "model": "schlick-incident"}}"#
             ),
             2 => format!(
                 r#"{{"law": "refract", "wi": [0, {t}, 1], "normal": [0, 0, 1], "eta": 1.5}}"#

@@ -10,7 +10,7 @@ use tracer::job::{Overrides, RenderJob};
 use tracer::needs::{Needs, WARN_RAYS};
 use tracer::output::Destination;
 use tracer::render::Rendered;
-use tracer::scene::{FresnelModel, IntegratorKind, PixelFilter, Precision, RenderSpec, Settings};
+use tracer::scene::{FresnelName, IntegratorKind, PixelFilter, Precision, RenderSpec, Settings};
 use tracer::scene::{MAX_DEPTH, MAX_PHOTONS, MAX_PHOTON_PASSES, MAX_SPP};
 
 use crate::error::{self, ErrorKind};
@@ -67,10 +67,11 @@ pub struct JobArgs {
     #[arg(long, value_parser = clap::value_parser!(u32).range(0..=MAX_DEPTH as i64))]
     #[serde(skip_serializing_if = "Option::is_none")]
     pub max_depth: Option<u32>,
-    /// Fresnel law of mirrors and glass.
+    /// Fresnel law of mirrors and glass (the bare `schlick` is refused:
+    /// name the form).
     #[arg(long, value_enum)]
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub fresnel: Option<FresnelModel>,
+    pub fresnel: Option<FresnelName>,
     /// Where primary rays pass through their pixel (default: the scene's,
     /// else box for path and center for the others).
     #[arg(long, value_enum)]

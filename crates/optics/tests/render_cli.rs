@@ -105,7 +105,7 @@ fn render_json_record_has_the_documented_fields() {
         "--max-depth",
         "4",
         "--fresnel",
-        "schlick",
+        "schlick-rarer",
     ]);
     assert!(out.status.success(), "{}", text(&out.stderr));
     let record: Value = serde_json::from_slice(&out.stdout).unwrap();
@@ -115,7 +115,7 @@ fn render_json_record_has_the_documented_fields() {
     assert_eq!(record["inputs"]["spp"], 2);
     assert_eq!(record["inputs"]["output"], png_arg);
     assert_eq!(record["details"]["settings"]["integrator"], "path");
-    assert_eq!(record["details"]["settings"]["fresnel"], "schlick");
+    assert_eq!(record["details"]["settings"]["fresnel"], "schlick-rarer");
     assert_eq!(record["details"]["settings"]["spp"], 2);
     // No filter given: the path integrator's default, settled and shown.
     assert_eq!(record["details"]["settings"]["pixel_filter"], "box");
@@ -276,6 +276,12 @@ fn bad_scene_files_exit_non_zero_naming_the_json_path_without_panic_or_output() 
             "render.spp",
         ),
         (
+            bad_scene("bare schlick", |v| {
+                v["render"]["fresnel"] = "schlick".into()
+            }),
+            "render.fresnel: \"schlick\" names neither of Schlick's forms",
+        ),
+        (
             (
                 "NaN".into(),
                 PathBuf::from(
@@ -320,6 +326,42 @@ fn bad_scene_files_exit_non_zero_naming_the_json_path_without_panic_or_output() 
             "{name}"
         );
     }
+}
+
+/// `--fresnel schlick` names no form: refused at `overrides.fresnel` with
+/// both forms named, in the JSON error and in Hungarian, and nothing is
+/// written.
+#[test]
+fn a_bare_schlick_fresnel_flag_is_refused_naming_both_forms() {
+    let dir = tempfile::tempdir().unwrap();
+    let png = dir.path().join("x.png");
+    let scene = scene("gold_spheres");
+    let args = [
+        "render",
+        &scene,
+        "-o",
+        png.to_str().unwrap(),
+        "--fresnel",
+        "schlick",
+    ];
+    let out = optics(&[&["--json"], &args[..]].concat());
+    assert_eq!(out.status.code(), Some(1), "{}", text(&out.stderr));
+    let record: Value = serde_json::from_slice(&out.stdout).unwrap();
+    let error = &record["error"];
+    assert_eq!(error["kind"], "scene.schlick_form_unnamed", "{record}");
+    assert_eq!(error["field"], "overrides.fresnel", "{record}");
+    let message = error["message"].as_str().unwrap();
+    assert!(
+        message.contains("\"schlick-incident\"") && message.contains("\"schlick-rarer\""),
+        "{message}"
+    );
+    let hu = optics(&[&["--lang", "hu"], &args[..]].concat());
+    let hu = text(&hu.stderr);
+    assert!(
+        hu.contains("overrides.fresnel: a \"schlick\" Schlick két alakja"),
+        "{hu}"
+    );
+    assert!(!png.exists());
 }
 
 #[test]
@@ -492,7 +534,7 @@ fn inspect_takes_every_setting_render_takes() {
         "--max-depth",
         "3",
         "--fresnel",
-        "schlick",
+        "schlick-incident",
         "--seed",
         "9",
     ]);
@@ -502,7 +544,7 @@ fn inspect_takes_every_setting_render_takes() {
     assert_eq!(settings["integrator"], "path");
     assert_eq!(settings["spp"], 2);
     assert_eq!(settings["max_depth"], 3);
-    assert_eq!(settings["fresnel"], "schlick");
+    assert_eq!(settings["fresnel"], "schlick-incident");
     assert_eq!(settings["seed"], 9);
     assert_eq!(record["answer"]["reflection_depth"]["up_to_max_depth"], 3);
     assert_eq!(record["inputs"]["max_depth"], 3);

@@ -11,7 +11,7 @@ use radiometry::brdf::{
 };
 use radiometry::fresnel::{
     conductor, conductor_polarized, dielectric, dielectric_polarized, f0, schlick,
-    schlick_dielectric,
+    schlick_dielectric, schlick_dielectric_incident,
 };
 use radiometry::specular::{reflect, refract};
 use radiometry::{fresnel, snell};
@@ -144,6 +144,7 @@ proptest! {
         prop_assert!((0.0..=1.0).contains(&c.r_s) && (0.0..=1.0).contains(&c.r_p), "{c:?}");
         prop_assert!((0.0..=1.0).contains(&schlick(cos_i, f0(n, kappa))));
         prop_assert!((0.0..=1.0).contains(&schlick_dielectric(cos_i, eta)));
+        prop_assert!((0.0..=1.0).contains(&schlick_dielectric_incident(cos_i, eta)));
     }
 
     /// Energy is conserved at a dielectric interface: R + T = 1 for each
@@ -279,7 +280,7 @@ fn schlick_stays_within_measured_bound() {
             );
         }
         let course_inside = angles()
-            .map(|c| (schlick(c, f0) - dielectric(-c, eta)).abs())
+            .map(|c| (schlick_dielectric_incident(-c, eta) - dielectric(-c, eta)).abs())
             .fold(0.0, f64::max);
         assert!(
             (course_inside - course_miss).abs() <= 1e-4,
@@ -293,6 +294,60 @@ fn schlick_stays_within_measured_bound() {
             assert!(err <= bound, "{name} at cos {c}: {err} > {bound}");
         }
     }
+}
+
+/// Schlick's incident form agrees with the exact law at normal incidence,
+/// from either side, to 1e-15 (a few ulps of 0.04: `F0` is the exact law's
+/// own value there, rounded through two different formulas).
+#[test]
+fn schlick_incident_equals_exact_at_normal_incidence() {
+    for eta in [1.333, 1.5, 2.42] {
+        for cos_i in [1.0_f64, -1.0] {
+            let (incident, exact) = (
+                schlick_dielectric_incident(cos_i, eta),
+                dielectric(cos_i, eta),
+            );
+            assert!(
+                (incident - exact).abs() <= 1e-15,
+                "η {eta}, cos {cos_i}: {incident} vs {exact}"
+            );
+        }
+    }
+}
+
+/// Entering glass (η = 1.5) Schlick's incident form stays within 0.01 of
+/// the exact law up to 45° (0.0082 there; 0.019 at 60°, where it gives
+/// 0.0700 against 0.0892), and is the rarer-medium form to the bit from
+/// the rarer side, where both take `cos θ_i`.
+#[test]
+fn schlick_incident_is_within_0_01_of_exact_entering_glass_to_45_degrees() {
+    for tenth in 0..=450 {
+        let c = (f64::from(tenth) / 10.0).to_radians().cos();
+        let (incident, exact) = (schlick_dielectric_incident(c, 1.5), dielectric(c, 1.5));
+        assert!(
+            (incident - exact).abs() <= 0.01,
+            "{}°: {incident} vs {exact}",
+            f64::from(tenth) / 10.0
+        );
+        assert_eq!(incident.to_bits(), schlick_dielectric(c, 1.5).to_bits());
+    }
+}
+
+/// From inside glass past the critical angle (41.8°) the exact law
+/// reflects everything (R = 1 exactly) and the rarer-medium form knows it;
+/// the incident form reflects less than 1: at 60°, 0.0700 (= 0.04 + 0.96 ·
+/// 0.5⁵, to 1e-12), and below 0.5 from the critical angle to 70°.
+#[test]
+fn schlick_incident_misses_total_internal_reflection_from_inside() {
+    let critical = (1.0_f64 / 1.5).asin().to_degrees();
+    for deg in [critical + 0.01, 45.0, 60.0, 70.0] {
+        let c = -deg.to_radians().cos();
+        assert_eq!(dielectric(c, 1.5), 1.0, "{deg}°");
+        assert_eq!(schlick_dielectric(c, 1.5), 1.0, "{deg}°");
+        let incident = schlick_dielectric_incident(c, 1.5);
+        assert!(incident < 0.5, "{deg}°: {incident}");
+    }
+    assert!((schlick_dielectric_incident(-0.5_f64, 1.5) - 0.07).abs() <= 1e-12);
 }
 
 /// The per-channel laws are the scalar law applied per channel, bit for bit.

@@ -92,7 +92,7 @@ fn table() -> String {
             ..exact
         };
         let schlick = Settings {
-            fresnel: FresnelModel::Schlick,
+            fresnel: FresnelModel::SchlickRarer,
             ..exact
         };
         let fixed = Settings {
@@ -107,7 +107,7 @@ fn table() -> String {
             &reference,
         );
         table += &row(
-            "Schlick for exact (not an erratum)",
+            "schlick-rarer for exact (not an erratum)",
             name,
             &draw(&scene, &schlick),
             &reference,

@@ -8,6 +8,10 @@ use std::fmt;
 
 use serde::{Deserialize, Serialize};
 
+mod fresnel;
+
+pub use fresnel::{FresnelModel, FresnelName};
+
 /// The most samples per pixel accepted: 2^20. Beyond this the `f32` image
 /// cannot resolve the difference a further sample makes.
 pub const MAX_SPP: u32 = 1 << 20;
@@ -58,39 +62,6 @@ impl fmt::Display for IntegratorKind {
             IntegratorKind::Path => "path",
             IntegratorKind::Photon => "photon",
             IntegratorKind::Course => "course",
-        })
-    }
-}
-
-/// Which Fresnel law: the smooth materials' in a render, and the law
-/// `optics fresnel --model` evaluates (exact by default in both).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Deserialize, Serialize)]
-#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
-#[serde(rename_all = "snake_case")]
-pub enum FresnelModel {
-    /// The exact equations (`radiometry::fresnel::conductor_rgb`, `dielectric`).
-    #[cfg_attr(feature = "clap", value(help = "The exact Fresnel equations"))]
-    #[default]
-    Exact,
-    /// Schlick's approximation (`radiometry::fresnel::schlick_rgb`, `schlick_dielectric`).
-    #[cfg_attr(feature = "clap", value(help = "Schlick's approximation"))]
-    Schlick,
-    /// The course shader's reversed form, `F0 + (1 − F0) cos⁵θ`
-    /// (`radiometry::course::fresnel_000_glsl`): isolates that one erratum
-    /// in an otherwise physical render.
-    #[cfg_attr(
-        feature = "clap",
-        value(help = "The course shader's reversed form, for measuring that erratum alone")
-    )]
-    Course,
-}
-
-impl fmt::Display for FresnelModel {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(match self {
-            FresnelModel::Exact => "exact",
-            FresnelModel::Schlick => "schlick",
-            FresnelModel::Course => "course",
         })
     }
 }

@@ -142,6 +142,8 @@ fn hostile_value() -> impl Strategy<Value = Value> {
         Just("course"),
         Just("local"),
         Just("schlick"),
+        Just("schlick-incident"),
+        Just("schlick-rarer"),
         Just("robust"),
         Just(""),
         Just("gold"),

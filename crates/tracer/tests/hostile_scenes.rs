@@ -122,13 +122,34 @@ fn shapes_beyond_the_schema_are_refused_by_path() {
     }
     // The documented shapes are read.
     for render in [
-        json!({ "integrator": "path", "fresnel": "schlick", "ray_offset": "robust" }),
+        json!({ "integrator": "path", "fresnel": "schlick-rarer", "ray_offset": "robust" }),
+        json!({ "fresnel": "schlick-incident" }),
         json!({ "integrator": "whitted", "pixel_filter": "box" }),
         json!({ "pixel_filter": "center" }),
         json!({ "ray_offset": { "fixed": 0.001 } }),
         json!({ "ray_offset": { "scaled": 8.94e-5 } }),
     ] {
         scene::parse(&set("render", render)).expect("documented shape");
+    }
+}
+
+/// The bare `schlick` named one form in some places and the other
+/// elsewhere: a scene that gives it is refused at `render.fresnel`, and
+/// the message names both forms, so no scene silently changes meaning.
+#[test]
+fn a_bare_schlick_is_refused_naming_the_field_and_both_forms() {
+    let mut file = course_file("shadow");
+    file["render"] = json!({ "fresnel": "schlick" });
+    let error = refused(&file.to_string());
+    assert_eq!(error.field(), "render.fresnel", "{error}");
+    assert!(
+        matches!(error.kind(), ErrorKind::SchlickFormUnnamed),
+        "{:?}",
+        error.kind()
+    );
+    let message = error.to_string();
+    for form in ["\"schlick-incident\"", "\"schlick-rarer\""] {
+        assert!(message.contains(form), "{message}");
     }
 }
 

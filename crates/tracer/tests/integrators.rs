@@ -363,7 +363,7 @@ fn course_integrator_uses_the_course_fresnel_and_whitted_the_exact_law() {
     let schlick = radiance_along(
         &scene,
         &Settings {
-            fresnel: FresnelModel::Schlick,
+            fresnel: FresnelModel::SchlickRarer,
             ..settings(IntegratorKind::Whitted)
         },
         &head_on,
@@ -390,7 +390,7 @@ fn glass_sphere_in_a_uniform_sky_is_invisible() {
             "objects": [ { "type": "sphere", "center": [0, 0, 3], "radius": 1.2, "material": "glass" } ]
         }),
     );
-    for fresnel in [FresnelModel::Exact, FresnelModel::Schlick] {
+    for fresnel in [FresnelModel::Exact, FresnelModel::SchlickRarer] {
         let path = Settings {
             spp: 4,
             max_depth: 64,

@@ -41,7 +41,7 @@ fn settings_are_the_defaults_under_the_scene_under_the_overrides() {
     let overrides = Overrides {
         render: RenderSpec {
             spp: Some(16.0),
-            fresnel: Some(FresnelModel::Schlick),
+            fresnel: Some(FresnelModel::SchlickRarer.into()),
             seed: Some(7),
             ..RenderSpec::default()
         },
@@ -56,7 +56,7 @@ fn settings_are_the_defaults_under_the_scene_under_the_overrides() {
             integrator: IntegratorKind::Path,
             spp: 16,
             max_depth: 3,
-            fresnel: FresnelModel::Schlick,
+            fresnel: FresnelModel::SchlickRarer,
             seed: 7,
             pixel_filter: PixelFilter::Box,
             ..Settings::default()

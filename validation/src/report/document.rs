@@ -14,7 +14,7 @@ use crate::tradeoff::prose::sentences;
 use record::Lang;
 
 /// The schema of `report.json`.
-pub const REPORT_SCHEMA: &str = "validation-report/1";
+pub const REPORT_SCHEMA: &str = "validation-report/2";
 
 /// `report.json`: every check, its data for the figures, and the references used.
 #[derive(Clone, Debug, Serialize)]
@@ -31,7 +31,7 @@ pub struct Report {
     pub references: BTreeMap<String, ReferenceInfo>,
     /// Every check.
     pub checks: Vec<Check>,
-    /// Reflectance against angle per material: exact, Schlick, Mitsuba.
+    /// Reflectance against angle per material: exact, both Schlick forms, Mitsuba.
     pub fresnel_curves: Vec<FresnelCurve>,
     /// Each metal's reflectance spectrum at each angle: exact and Schlick.
     pub metal_spectra: Vec<MetalSpectrum>,
@@ -96,8 +96,15 @@ pub struct FresnelCurve {
     pub angle_deg: Vec<f64>,
     /// The exact law (the radiometry crate, f64).
     pub exact: Vec<f64>,
-    /// Schlick's approximation with `cos θ_i` and `F0(n, κ)`, as the course uses it.
-    pub schlick: Vec<f64>,
+    /// Schlick's approximation in its incident form, `cos θ_i` and
+    /// `F0(n, κ)` from either side, as the course uses it.
+    #[serde(rename = "schlick-incident")]
+    pub schlick_incident: Vec<f64>,
+    /// Schlick's approximation in its rarer-medium form: `cos θ_t` from
+    /// inside a dielectric, 1 past the critical angle; at a conductor the
+    /// incident form.
+    #[serde(rename = "schlick-rarer")]
+    pub schlick_rarer: Vec<f64>,
     /// Mitsuba 3 (float32).
     pub mitsuba: Vec<f64>,
 }

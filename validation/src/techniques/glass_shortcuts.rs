@@ -260,7 +260,7 @@ pub fn check_empirical_fresnel_render(
         FresnelModel::Exact,
         GlassShortcut::EmpiricalFresnel(form),
     );
-    let schlick = render_with(&scene, FresnelModel::Schlick, GlassShortcut::None);
+    let schlick = render_with(&scene, FresnelModel::SchlickRarer, GlassShortcut::None);
     figures.push(strip(
         "techniques_empirical_fresnel.png",
         &empirical,
@@ -274,7 +274,7 @@ pub fn check_empirical_fresnel_render(
     let e = measures(&empirical, &truth, &whole);
     record(&mut check, "fitted form", &e, &at);
     let s = measures(&schlick, &truth, &whole);
-    record(&mut check, "Schlick", &s, &at);
+    record(&mut check, &FresnelModel::SchlickRarer.to_string(), &s, &at);
     check.measure("form: bias", form.bias, "");
     check.measure("form: scale", form.scale, "");
     check.measure("form: power", form.power, "");

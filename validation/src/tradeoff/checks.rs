@@ -27,7 +27,8 @@ pub const UNCONVERGED: f64 = 0.01;
 /// A record file and what reading it gave.
 pub type Read = (PathBuf, Result<Record, ReferenceError>);
 
-/// The records under `dir`, by file name, in name order.
+/// The records under `dir`, by file name, in name order, each read as
+/// this version reads it ([`super::record::upgrade`]).
 ///
 /// # Errors
 ///
@@ -51,7 +52,7 @@ pub fn read(dir: &Path) -> Result<Vec<Read>, ReferenceError> {
                 path: path.clone(),
                 source,
             })?;
-            let record = parse(&path, &text, SCHEMA);
+            let record = parse(&path, &super::record::upgrade(&text), SCHEMA);
             Ok((path, record))
         })
         .collect()

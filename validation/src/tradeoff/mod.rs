@@ -27,7 +27,7 @@ pub mod truth;
 mod schema;
 mod verdict;
 
-pub use schema::{MEASURES, SCHEMA, SCHEMA_VERSION};
+pub use schema::{MEASURES, SCHEMA, SCHEMA_VERSION, SCHLICK_UNNAMED_VERSION};
 pub use verdict::{Verdict, JUST_NOTICEABLE, WORTH_IT};
 
 pub use jobs::VERSION as JOB_VERSION;

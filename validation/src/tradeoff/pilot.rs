@@ -15,6 +15,8 @@ use tracer::job::RenderJob;
 use tracer::render::Rendered;
 use tracer::scene::{FresnelModel, IntegratorKind, PixelFilter, RenderSpec, Settings};
 
+use super::sweep::SCHLICK_SWEPT;
+
 /// The bounce limits a candidate may take, up to the truth's.
 const DEPTHS: [u32; 6] = [1, 2, 4, 8, 16, 32];
 
@@ -85,14 +87,14 @@ pub fn candidates(job: &RenderJob, truth: &Settings) -> Vec<Candidate> {
     };
     let smooth = job.needs().conductors || job.needs().refraction;
     let laws: &[FresnelModel] = if smooth {
-        &[FresnelModel::Exact, FresnelModel::Schlick]
+        &[FresnelModel::Exact, SCHLICK_SWEPT]
     } else {
         &[FresnelModel::Exact]
     };
     let depths = DEPTHS.iter().copied().filter(|&d| d < truth.max_depth);
     for depth in depths.map(Some).chain([None]) {
         for &fresnel in laws {
-            let shortcut = match (depth.is_some(), fresnel == FresnelModel::Schlick) {
+            let shortcut = match (depth.is_some(), fresnel == SCHLICK_SWEPT) {
                 (false, false) => Shortcut::None,
                 (true, false) => Shortcut::MaxDepth,
                 (false, true) => Shortcut::Schlick,
@@ -100,7 +102,7 @@ pub fn candidates(job: &RenderJob, truth: &Settings) -> Vec<Candidate> {
             };
             let spec = RenderSpec {
                 max_depth: depth.map(f64::from),
-                fresnel: Some(fresnel),
+                fresnel: Some(fresnel.into()),
                 ..RenderSpec::default()
             };
             add(shortcut, spec);

@@ -2,10 +2,16 @@
 //! shows and checks (the command writes more; unknown fields are ignored,
 //! so a record stays readable as fields are added within a version).
 
+use std::borrow::Cow;
+
 use serde::{Deserialize, Serialize};
+use serde_json::Value;
+use tracer::scene::FresnelName;
 
 use super::findings::{Findings, MetalRgb};
 use super::mitsuba::MitsubaTruth;
+use super::schema::{SCHEMA_VERSION, SCHLICK_UNNAMED_VERSION};
+use super::sweep::SCHLICK_SWEPT;
 use super::verdict::Verdict;
 
 /// One scene's sweep.
@@ -106,7 +112,7 @@ pub struct Settings {
     pub integrator: String,
     /// The bounce limit.
     pub max_depth: u32,
-    /// The Fresnel law (`exact`, `schlick`, `course`).
+    /// The Fresnel law (`exact`, `schlick-incident`, `schlick-rarer`, `course`).
     pub fresnel: String,
 }
 
@@ -168,5 +174,48 @@ impl Record {
         } else {
             name
         }
+    }
+}
+
+/// The record `text` as this version reads it: a record of
+/// [`SCHLICK_UNNAMED_VERSION`] has its every `schlick` (the `fresnel`
+/// setting) and `fresnel schlick` (a label) renamed for the form they
+/// meant, Schlick's rarer-medium ([`SCHLICK_SWEPT`]), and is read as
+/// [`SCHEMA_VERSION`]; any other text is read as it is. Mapped, not
+/// rewritten: the committed records are measurements, and the names are
+/// all that changed.
+pub fn upgrade(text: &str) -> Cow<'_, str> {
+    let Ok(mut value) = serde_json::from_str::<Value>(text) else {
+        return Cow::Borrowed(text);
+    };
+    if value["version"] != SCHLICK_UNNAMED_VERSION {
+        return Cow::Borrowed(text);
+    }
+    let (old, new) = (FresnelName::UNNAMED_SCHLICK, SCHLICK_SWEPT.to_string());
+    let (old_label, new_label) = (format!("fresnel {old}"), format!("fresnel {new}"));
+    rename(&mut value, &|s| {
+        if s == old {
+            Some(new.clone())
+        } else if s == old_label {
+            Some(new_label.clone())
+        } else {
+            None
+        }
+    });
+    value["version"] = SCHEMA_VERSION.into();
+    Cow::Owned(value.to_string())
+}
+
+/// Every string in `value` that `new` maps, replaced.
+fn rename(value: &mut Value, new: &dyn Fn(&str) -> Option<String>) {
+    match value {
+        Value::String(s) => {
+            if let Some(renamed) = new(s) {
+                *s = renamed;
+            }
+        }
+        Value::Array(items) => items.iter_mut().for_each(|v| rename(v, new)),
+        Value::Object(map) => map.values_mut().for_each(|v| rename(v, new)),
+        _ => {}
     }
 }

@@ -10,6 +10,11 @@ use tracer::scene::{
     FresnelModel, IntegratorKind, PixelFilter, Precision, RayOffset, RenderSpec, Settings,
 };
 
+/// The form of Schlick's approximation the sweep and the budget measure:
+/// the rarer medium's, the form the tracer rendered as `schlick` before the
+/// forms were named (the records of version 1 call it so).
+pub const SCHLICK_SWEPT: FresnelModel = FresnelModel::SchlickRarer;
+
 /// Mitsuba 3's `RayEpsilon` in `float32`, 1500 · 2⁻²⁴: its relative offset.
 const MITSUBA_EPSILON: f64 = 1500.0 / 16_777_216.0;
 
@@ -45,7 +50,7 @@ pub enum Axis {
 pub struct Point {
     /// What it varies.
     pub axis: Axis,
-    /// How it reads in a table: `max_depth 4`, `fresnel schlick`.
+    /// How it reads in a table: `max_depth 4`, `fresnel schlick-rarer`.
     pub label: String,
     /// The settings it renders with, settled.
     pub settings: Settings,
@@ -228,13 +233,9 @@ impl<'a> Planner<'a> {
             );
             return;
         }
-        for model in [
-            FresnelModel::Exact,
-            FresnelModel::Schlick,
-            FresnelModel::Course,
-        ] {
+        for model in [FresnelModel::Exact, SCHLICK_SWEPT, FresnelModel::Course] {
             let spec = RenderSpec {
-                fresnel: Some(model),
+                fresnel: Some(model.into()),
                 ..RenderSpec::default()
             };
             self.add(Axis::Fresnel, format!("fresnel {model}"), spec);
@@ -350,7 +351,7 @@ pub fn truth_settings(job: &RenderJob, spp: u32) -> Settings {
         spp: Some(f64::from(spp)),
         precision: Some(Precision::F32),
         max_depth: Some(f64::from(base.max_depth.max(64))),
-        fresnel: Some(FresnelModel::Exact),
+        fresnel: Some(FresnelModel::Exact.into()),
         ray_offset: Some(RayOffset::Robust),
         pixel_filter: Some(PixelFilter::Box),
         ..RenderSpec::default()

@@ -109,6 +109,12 @@ pub enum ErrorKind {
         /// The angle of incidence, degrees, where the input was an angle.
         degrees: Option<f64>,
     },
+    /// A Fresnel model named by the bare `schlick`, which names neither of
+    /// Schlick's forms.
+    SchlickFormUnnamed {
+        /// The input's name as the user wrote it.
+        name: String,
+    },
     /// A critical angle asked for light going into a denser (or equal) medium.
     NoCriticalAngle {
         /// The name of the index the light comes from.
@@ -220,6 +226,7 @@ impl ErrorKind {
             ErrorKind::CosineOrAngle { .. } => "cosine_or_angle",
             ErrorKind::ConductorFromInside { .. } => "conductor_from_inside",
             ErrorKind::NoCriticalAngle { .. } => "no_critical_angle",
+            ErrorKind::SchlickFormUnnamed { .. } => "schlick_form_unnamed",
             ErrorKind::EmptyLine => "empty_line",
             ErrorKind::MalformedJson { .. } => "malformed_json",
             ErrorKind::NotAnObject => "not_an_object",
@@ -248,7 +255,8 @@ impl ErrorKind {
             ErrorKind::Usage(error) => usage_argument(error),
             ErrorKind::AngleDegrees { name, .. }
             | ErrorKind::ConductorFromInside { name, .. }
-            | ErrorKind::NoCriticalAngle { name, .. } => Some(name.clone()),
+            | ErrorKind::NoCriticalAngle { name, .. }
+            | ErrorKind::SchlickFormUnnamed { name } => Some(name.clone()),
             ErrorKind::LawMissing | ErrorKind::LawNotString | ErrorKind::UnknownLaw { .. } => {
                 Some("law".to_owned())
             }

@@ -42,6 +42,7 @@ pub fn scene_name(kind: &Scene) -> &'static str {
         Scene::BumpOnSmoothSurface => "scene.bump_on_smooth_surface",
         Scene::EnvironmentImage { .. } => "scene.environment_image",
         Scene::BackgroundWithEnvironment => "scene.background_with_environment",
+        Scene::SchlickFormUnnamed => "scene.schlick_form_unnamed",
     }
 }
 

@@ -63,6 +63,9 @@ impl ErrorKind {
                 n_outside,
             } => input::no_critical_angle((name, *n), (name_outside, *n_outside), lang),
             ErrorKind::Overflow { quantity, inputs } => input::overflow(quantity, inputs, lang),
+            ErrorKind::SchlickFormUnnamed { name } => {
+                format!("{name}: {}", scene::schlick_form_unnamed(lang))
+            }
             ErrorKind::EmptyLine => batch::empty_line(lang),
             ErrorKind::MalformedJson { error, non_finite } => {
                 batch::malformed_json(error, *non_finite, lang)

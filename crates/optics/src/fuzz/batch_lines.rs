@@ -28,7 +28,9 @@ fn course_requests() -> Vec<Value> {
     });
     let course = vec![
         json!({"law": "fresnel", "eta": 1.5, "cos_i": 0.3}),
-        json!({"law": "fresnel", "eta": 0.17, "kappa": 3.1, "theta_i_deg": 60, "model": "schlick"}),
+        json!({"law": "fresnel", "eta": 0.17, "kappa": 3.1, "theta_i_deg": 60, "model": "schlick-incident"}),
+        json!({"law": "fresnel", "eta": 1.5, "theta_i_deg": 120, "model": "schlick-rarer"}),
+        json!({"law": "fresnel", "eta": 1.5, "cos_i": 0.3, "model": "schlick"}),
         json!({"law": "refract", "wi": [0, 0.6, 0.8], "normal": [0, 0, 1], "eta": 1.5}),
         json!({"law": "reflect", "wi": [1, 2, 3], "normal": [0, 0, 1]}),
         json!({"law": "shade", "model": "phong", "normal": [0, 0, 1], "light_dir": [0, 3, 4], "view_dir": [0, 4, 3], "radiance": 5, "kd": 0.2, "ks": 1.5, "shine": 3}),
@@ -51,7 +53,7 @@ fn field_value() -> impl Strategy<Value = Value> {
         4 => prop::array::uniform3(edge_number()).prop_map(|v| json!(v)),
         1 => prop::collection::vec(edge_number(), 0..5).prop_map(|v| json!(v)),
         1 => prop::sample::select(vec![
-            json!(null), json!(true), json!("1.5"), json!({}), json!("schlick"),
+            json!(null), json!(true), json!("1.5"), json!({}), json!("schlick"), json!("schlick-incident"),
             json!("course-lambert"), json!(-1), json!([[0, 0, 1]]),
         ]),
     ]

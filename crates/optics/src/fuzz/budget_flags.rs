@@ -41,7 +41,7 @@ const FLAGS: [(&str, &[&str], &[&str]); 4] = [
 const CHOSEN: [(&str, &str); 3] = [
     ("--spp", "4"),
     ("--max-depth", "3"),
-    ("--fresnel", "schlick"),
+    ("--fresnel", "schlick-incident"),
 ];
 
 /// How `--lambert` is given: left out, as the switch it is, or with a

@@ -5,8 +5,9 @@
 //! promises: a clean line parses and settles to the filter it names, else
 //! to the default of the integrator it names, else to the scene's, and to
 //! the tier it names (else `f32`) where its integrator computes in it, a
-//! refusal naming `overrides.precision` where not; a spoiled value is a
-//! usage error naming its flag; nothing panics.
+//! refusal naming `overrides.precision` where not, and to the Fresnel law
+//! it names, the bare `schlick` refused naming `overrides.fresnel`; a
+//! spoiled value is a usage error naming its flag; nothing panics.
 
 use std::path::PathBuf;
 
@@ -25,7 +26,13 @@ fn scene() -> PathBuf {
 
 const INTEGRATORS: [&str; 4] = ["local", "whitted", "path", "course"];
 const FILTERS: [&str; 2] = ["box", "center"];
-const FRESNELS: [&str; 3] = ["exact", "schlick", "course"];
+const FRESNELS: [&str; 5] = [
+    "exact",
+    "schlick-incident",
+    "schlick-rarer",
+    "course",
+    "schlick",
+];
 const PRECISIONS: [&str; 2] = ["f32", "f64"];
 /// The flags whose values are choices, in the order a spoiling picks them.
 const CHOICE_FLAGS: [&str; 4] = ["--integrator", "--pixel-filter", "--fresnel", "--precision"];
@@ -49,6 +56,7 @@ struct Line {
     args: Vec<String>,
     integrator: Option<&'static str>,
     filter: Option<&'static str>,
+    fresnel: Option<&'static str>,
     precision: Option<&'static str>,
     spoiled: Option<&'static str>,
 }
@@ -99,6 +107,7 @@ fn command_line() -> impl Strategy<Value = Line> {
                 Line {
                     integrator: given("--integrator").filter(|v| INTEGRATORS.contains(v)),
                     filter: given("--pixel-filter").filter(|v| FILTERS.contains(v)),
+                    fresnel: given("--fresnel").filter(|v| FRESNELS.contains(v)),
                     precision: given("--precision").filter(|v| PRECISIONS.contains(v)),
                     spoiled,
                     args,
@@ -170,6 +179,20 @@ fn check_line(line: &Line, dropped: Dropped, coverage: &Coverage) -> Result<(), 
             }
             let (precision, served) = expected_tier(line);
             let job = match args.job(&scene()) {
+                // Settled before the tier is checked against the integrator.
+                Err(e) if line.fresnel == Some("schlick") => {
+                    let json = e.to_json(record::Lang::En);
+                    coverage.error(&json);
+                    prop_assert_eq!(json["field"].as_str(), Some("overrides.fresnel"));
+                    prop_assert_eq!(json["kind"].as_str(), Some("scene.schlick_form_unnamed"));
+                    return Ok(());
+                }
+                Ok(_) if line.fresnel == Some("schlick") => {
+                    return Err(TestCaseError::fail(format!(
+                        "{:?}: the bare schlick settled",
+                        line.args
+                    )))
+                }
                 Err(e) if !served => {
                     let json = e.to_json(record::Lang::En);
                     coverage.error(&json);
@@ -186,6 +209,9 @@ fn check_line(line: &Line, dropped: Dropped, coverage: &Coverage) -> Result<(), 
                 Ok(job) => job,
             };
             coverage.answer();
+            if let Some(fresnel) = line.fresnel {
+                prop_assert_eq!(job.settings().fresnel.to_string(), fresnel);
+            }
             prop_assert_eq!(
                 job.settings().precision,
                 precision,

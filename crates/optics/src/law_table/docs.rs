@@ -34,7 +34,7 @@ pub fn table() -> String {
 }
 
 /// A field as the table shows it: `eta`, `[kappa]`, `wi [x, y, z]`,
-/// `model exact|schlick`.
+/// `model exact|schlick-incident|schlick-rarer|course`.
 fn field(field: &Field) -> String {
     let shape = match &field.kind {
         Kind::Number => String::new(),

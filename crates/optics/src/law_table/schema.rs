@@ -77,9 +77,12 @@ pub fn fields(law: &str) -> Vec<Field> {
                     .try_get_matches_from([flag.as_str(), text])
                     .is_ok()
             };
+            // A hidden value is read to be refused (the bare `schlick`),
+            // not offered.
             let choices: Vec<String> = arg
                 .get_possible_values()
                 .iter()
+                .filter(|v| !v.is_hide_set())
                 .map(|v| v.get_name().to_owned())
                 .collect();
             let kind = if !choices.is_empty() {

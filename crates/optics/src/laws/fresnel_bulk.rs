@@ -140,7 +140,7 @@ mod tests {
                     kappa,
                     cos_i: Some(c),
                     theta_i_deg: None,
-                    model: FresnelModel::Exact,
+                    model: FresnelModel::Exact.into(),
                 };
                 let scalar = scalar
                     .solve(Via::Json, Lang::En, Steps::from_wanted(false))

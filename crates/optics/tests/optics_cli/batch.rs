@@ -276,3 +276,33 @@ fn a_line_spelling_nan_says_json_numbers_are_finite() {
     let message = records[2]["error"]["message"].as_str().unwrap();
     assert!(!message.contains("NaN"), "{message}");
 }
+
+/// A request naming the bare `schlick` is refused naming its `model` and
+/// both forms, and the lines after it go on; each named form answers.
+#[test]
+fn a_bare_schlick_model_is_refused_naming_the_field_and_the_rest_go_on() {
+    let input = [
+        r#"{"law": "fresnel", "eta": 1.5, "theta_i_deg": 120, "model": "schlick"}"#,
+        r#"{"law": "fresnel", "eta": 1.5, "theta_i_deg": 120, "model": "schlick-incident"}"#,
+        r#"{"law": "fresnel", "eta": 1.5, "theta_i_deg": 120, "model": "schlick-rarer"}"#,
+    ]
+    .join("\n");
+    let (results, output) = batch(&input);
+    assert_eq!(output.status.code(), Some(1), "{}", stderr(&output));
+    let error = &results[0]["error"];
+    assert_eq!(error["kind"], "schlick_form_unnamed", "{}", results[0]);
+    assert_eq!(error["field"], "model", "{}", results[0]);
+    let message = error["message"].as_str().unwrap();
+    assert!(
+        message.starts_with("model: \"schlick\" names neither"),
+        "{message}"
+    );
+    // Inside glass at 60°: the incident form misses total internal
+    // reflection (0.07, to 1e-12), the rarer-medium form gives 1.
+    assert!(
+        (number(&results[1]["answer"]) - 0.07).abs() <= 1e-12,
+        "{}",
+        results[1]
+    );
+    assert_eq!(number(&results[2]["answer"]), 1.0, "{}", results[2]);
+}

@@ -155,6 +155,15 @@ fn json_errors_are_typed_objects_naming_the_field() {
             1,
         ),
         (
+            &[
+                "fresnel", "--eta", "1.5", "--cos-i", "0.3", "--model", "schlick",
+            ],
+            "schlick_form_unnamed",
+            Some("--model"),
+            "--model: \"schlick\" names neither of Schlick's forms: give \"schlick-incident\"",
+            1,
+        ),
+        (
             &["fresnel", "--eta", "glass", "--cos-i", "0.3"],
             "usage",
             Some("--eta <ETA>"),
@@ -204,6 +213,13 @@ fn hungarian_errors_leave_no_english_of_the_suites_own() {
         (
             &["quiz", "critical-angle", "--n", "0.5"],
             "hiba: --n = 0.5 nem nagyobb, mint --n-outside = 1: sűrűbb (vagy azonos) közegbe lépő fény mindig megtörik, nincs határszög",
+        ),
+        (
+            &["fresnel", "--eta", "1.5", "--cos-i", "0.3", "--model", "schlick"],
+            "hiba: --model: a \"schlick\" Schlick két alakja közül egyiket sem nevezi meg: \
+             \"schlick-incident\" (a beesési szög koszinusza, ahogy a kurzus írja; nem ismeri a \
+             teljes visszaverődést) vagy \"schlick-rarer\" (a ritkább közegbeli szög \
+             koszinusza; a teljes visszaverődés helyes) adható meg",
         ),
         (
             &["reflect", "--wi", "0,1", "--normal", "0,0,1"],

@@ -23,11 +23,14 @@ fn law_evaluators_print_the_documented_json_record() {
     assert_eq!(number(&tir["answer"]), 1.0);
     assert_eq!(tir["details"]["total_internal_reflection"], true);
 
-    let schlick = json(&[
-        "fresnel", "--eta", "1.5", "--cos-i", "1", "--model", "schlick",
-    ]);
-    assert!((number(&schlick["answer"]) - 0.04).abs() < 1e-15);
-    assert!(schlick["details"]["exact"].is_number() && schlick["details"]["error"].is_number());
+    for model in ["schlick-incident", "schlick-rarer"] {
+        let schlick = json(&["fresnel", "--eta", "1.5", "--cos-i", "1", "--model", model]);
+        assert!((number(&schlick["answer"]) - 0.04).abs() < 1e-15);
+        assert_eq!(schlick["inputs"]["model"], model);
+        let details = &schlick["details"];
+        assert!(details["exact"].is_number() && details["error"].is_number());
+        assert!(details["schlick-incident"].is_number() && details["schlick-rarer"].is_number());
+    }
 
     let gold = json(&["fresnel", "--eta", "0.17", "--kappa", "3.1", "--cos-i", "1"]);
     let f0 = (0.83f64.powi(2) + 3.1f64.powi(2)) / (1.17f64.powi(2) + 3.1f64.powi(2));

@@ -8,7 +8,9 @@
 //! | [`dielectric_polarized`], [`dielectric`], [`dielectric_transmittance`] | exact, real index, either side | Born & Wolf, *Principles of Optics*, §1.5.2 |
 //! | [`conductor_polarized`], [`conductor`] | exact, complex index `n + i·kappa` | Born & Wolf §14.2; pbrt-v4 §9.5 |
 //! | [`f0`] | normal-incidence reflectance `((n−1)² + κ²) / ((n+1)² + κ²)` | course text `003`, Born & Wolf §14.2 eq. 15 |
-//! | [`schlick`], [`schlick_dielectric`] | Schlick's approximation | C. Schlick, *Computer Graphics Forum* 13(3), 1994 |
+//! | [`schlick`] | Schlick's approximation at a given cosine | C. Schlick, *Computer Graphics Forum* 13(3), 1994 |
+//! | [`schlick_dielectric`] | Schlick's, rarer-medium form: `cos θ_t` from the denser side, total internal reflection right | Schlick 1994 |
+//! | [`schlick_dielectric_incident`] | Schlick's, incident form: `cos θ_i` from either side, as the course writes it; misses total internal reflection | course text `003` |
 //!
 //! # What the dielectric laws hand back
 //!
@@ -35,8 +37,9 @@ pub use dielectric::{
 };
 pub use normal_incidence::{f0, f0_rgb};
 pub use schlick::{
-    schlick, schlick_dielectric, schlick_dielectric_resolved, schlick_dielectric_working,
-    schlick_rgb, SchlickCosine, SchlickDielectric,
+    schlick, schlick_dielectric, schlick_dielectric_incident, schlick_dielectric_incident_resolved,
+    schlick_dielectric_resolved, schlick_dielectric_working, schlick_rgb, SchlickCosine,
+    SchlickDielectric,
 };
 pub use slice::{
     conductor_slice, conductor_slice_on, dielectric_slice, dielectric_slice_on, Lanes,

@@ -1,6 +1,10 @@
 //! Schlick's approximation, `F ≈ F0 + (1 − F0)(1 − cos θ)⁵` (C. Schlick,
-//! *Computer Graphics Forum* 13(3), 1994), for any interface and, taking the
-//! cosine in the rarer medium, for a dielectric seen from either side.
+//! *Computer Graphics Forum* 13(3), 1994), for any interface, and in two
+//! forms for a dielectric seen from either side, each named by the cosine
+//! it takes: the rarer medium's ([`schlick_dielectric`], Schlick's own, which
+//! knows total internal reflection) and the incident one
+//! ([`schlick_dielectric_incident`], the course's and most renderers', which
+//! misses it).
 
 #[allow(unused_imports)]
 use num_traits::{Float, FloatConst, One, Zero};
@@ -35,12 +39,13 @@ pub fn schlick_rgb<T: Real>(cos_i: T, f0: [T; 3]) -> [T; 3] {
     f0.map(|f0| schlick(cos_i, f0))
 }
 
-/// Which cosine Schlick's approximation took at a dielectric interface: the
-/// one in the less dense medium.
+/// Which cosine Schlick's approximation took at a dielectric interface.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum SchlickCosine<T> {
-    /// `|cos θ_i|`: the light arrives from the less dense side (or the
-    /// indices match), and `cos θ_t` was not needed.
+    /// `|cos θ_i|`: the incident form took it whichever side the light
+    /// arrives from; the rarer-medium form took it because the light
+    /// arrives from the less dense side (or the indices match), and
+    /// `cos θ_t` was not needed.
     Incident,
     /// `cos θ_t`, given: the light arrives from the denser side, and the
     /// angle in the rarer medium is the transmitted one.
@@ -98,7 +103,9 @@ impl<T: Real> SchlickDielectric<T> {
         T::one() - self.reflectance
     }
 
-    /// Whether Snell's law has no solution and all light is reflected.
+    /// Whether the form decided that Snell's law has no solution and all
+    /// light is reflected: the rarer-medium form past the critical angle;
+    /// never the incident form, which misses it.
     #[inline]
     pub fn is_total_internal_reflection(&self) -> bool {
         matches!(self.cosine, SchlickCosine::TotalInternalReflection)
@@ -121,9 +128,9 @@ impl<T: Real> SchlickDielectric<T> {
     }
 }
 
-/// Schlick's approximation for a dielectric interface seen from either side,
-/// with `F0 = ((η − 1)/(η + 1))²` and the cosine taken in the less dense
-/// medium: from the denser side it uses `cos θ_t`, and under total internal
+/// Schlick's approximation in its rarer-medium form, for a dielectric
+/// interface seen from either side, with `F0 = ((η − 1)/(η + 1))²` and the
+/// cosine taken in the less dense medium: from the denser side it uses `cos θ_t`, and under total internal
 /// reflection it returns exactly 1. NaN for input that describes no
 /// interface (a NaN cosine, `eta` not positive and finite).
 ///
@@ -131,7 +138,8 @@ impl<T: Real> SchlickDielectric<T> {
 /// rarer medium; applied with `cos θ_i` from inside glass it misses total
 /// internal reflection entirely (by up to 0.975 for water, measured by
 /// `cargo run --release -p radiometry --example schlick_error`), while with
-/// `cos θ_t` it is as close as from the outside.
+/// `cos θ_t` it is as close as from the outside. That other form is
+/// [`schlick_dielectric_incident`].
 ///
 /// This is [`schlick_dielectric_working`]'s reflectance.
 #[inline(always)]
@@ -195,6 +203,57 @@ pub fn schlick_dielectric_resolved<T: Real>(incidence: &Incidence<T>) -> Schlick
         reflectance,
         f0,
         cosine,
+        incidence: *incidence,
+    }
+}
+
+/// Schlick's approximation in its incident form, for a dielectric interface
+/// seen from either side: `F0 = ((η − 1)/(η + 1))²` and `|cos θ_i|`
+/// wherever the light arrives from, as the course (`003`) and most real-time
+/// renderers write it. NaN for input that describes no interface.
+///
+/// From the rarer side it is [`schlick_dielectric`] to the bit. From the
+/// denser side it misses total internal reflection: beyond the critical
+/// angle it reflects less than 1 where nothing can be transmitted (inside
+/// glass at 60°, 0.0700 where the exact law gives 1), and a renderer using
+/// it loses the rest.
+///
+/// ```
+/// use radiometry::fresnel::{dielectric, schlick_dielectric_incident};
+/// // Entering glass at normal incidence it is exact: F0 = 0.04.
+/// assert!((schlick_dielectric_incident(1.0_f64, 1.5) - 0.04).abs() < 1e-16);
+/// // Inside glass at 60°, past the critical angle (41.8°), it reflects 7 %.
+/// let (exact, incident) = (dielectric(-0.5_f64, 1.5), schlick_dielectric_incident(-0.5_f64, 1.5));
+/// assert_eq!(exact, 1.0);
+/// assert!((incident - 0.0700).abs() < 1e-4);
+/// ```
+#[inline]
+pub fn schlick_dielectric_incident<T: Real>(cos_i: T, eta: T) -> T {
+    match Incidence::resolve(cos_i, eta) {
+        Some(incidence) => schlick_dielectric_incident_resolved(&incidence).reflectance,
+        None => T::nan(),
+    }
+}
+
+/// [`schlick_dielectric_incident`] with its working at an incidence already
+/// resolved: its cosine is always [`SchlickCosine::Incident`], and under
+/// total internal reflection its reflectance is below 1 while
+/// [`SchlickDielectric::cos_t`] and [`SchlickDielectric::refraction`] are
+/// `None` (Snell's law, evaluated when asked, has no solution).
+#[inline]
+pub fn schlick_dielectric_incident_resolved<T: Real>(
+    incidence: &Incidence<T>,
+) -> SchlickDielectric<T> {
+    let eta = if incidence.from_inside {
+        incidence.n_i
+    } else {
+        incidence.n_t
+    };
+    let f0 = f0(eta, T::zero());
+    SchlickDielectric {
+        reflectance: schlick(incidence.abs_cos_i, f0),
+        f0,
+        cosine: SchlickCosine::Incident,
         incidence: *incidence,
     }
 }

@@ -178,8 +178,9 @@ impl Tracer<'_> {
     /// Fresnel weight cancels (`u`'s number, uniform in `[0, 1)`, picks it). With the
     /// mirror lobe alone (a conductor, or total internal reflection) it is
     /// certain and carries its weight itself (under total internal
-    /// reflection 1 for the exact law and Schlick; the course's formula
-    /// gives less), and `u`'s number is not worked out.
+    /// reflection 1 for the exact law and Schlick's rarer-medium form; the
+    /// incident form and the course's formula give less), and `u`'s number
+    /// is not worked out.
     fn one_lobe(
         &self,
         hit: &Hit,

@@ -43,7 +43,7 @@ pub mod validate;
 pub mod values;
 
 pub use crate::kinds::{
-    FresnelModel, GlassShortcut, IntegratorKind, PixelFilter, Precision, RayOffset,
+    FresnelModel, FresnelName, GlassShortcut, IntegratorKind, PixelFilter, Precision, RayOffset,
 };
 pub use crate::kinds::{MAX_DEPTH, MAX_PHOTONS, MAX_PHOTON_PASSES, MAX_SPP};
 pub use crate::kinds::{MAX_IMAGE_SIDE, MAX_PIXELS, SCHEMA_VERSION};

@@ -9,8 +9,8 @@ use serde::{Deserialize, Serialize};
 use super::error::{ErrorKind, SceneError};
 use super::values::{count, positive};
 use crate::kinds::{
-    FresnelModel, GlassShortcut, IntegratorKind, PixelFilter, Precision, RayOffset, MAX_DEPTH,
-    MAX_PHOTONS, MAX_PHOTON_PASSES, MAX_SPP,
+    FresnelModel, FresnelName, GlassShortcut, IntegratorKind, PixelFilter, Precision, RayOffset,
+    MAX_DEPTH, MAX_PHOTONS, MAX_PHOTON_PASSES, MAX_SPP,
 };
 
 /// Render settings as given, all optional: a scene file's `render`, or a
@@ -25,8 +25,8 @@ pub struct RenderSpec {
     pub spp: Option<f64>,
     /// Maximum number of bounces after the primary hit, 0 to [`MAX_DEPTH`].
     pub max_depth: Option<f64>,
-    /// Fresnel model.
-    pub fresnel: Option<FresnelModel>,
+    /// Fresnel model, as named: the bare `schlick` is refused when settled.
+    pub fresnel: Option<FresnelName>,
     /// Throughput below which a path is cut (whitted) or rouletted (path).
     pub throughput_cutoff: Option<f64>,
     /// Seed of the path tracer's random numbers.
@@ -147,7 +147,9 @@ impl Settings {
             settled.max_depth = count(&field("max_depth"), depth, 0, MAX_DEPTH)?;
         }
         if let Some(fresnel) = spec.fresnel {
-            settled.fresnel = fresnel;
+            settled.fresnel = fresnel
+                .model()
+                .ok_or_else(|| SceneError::new(field("fresnel"), ErrorKind::SchlickFormUnnamed))?;
         }
         if let Some(cutoff) = spec.throughput_cutoff {
             settled.throughput_cutoff =

@@ -6,6 +6,7 @@ use super::field::{
 };
 use super::thresholds::NOISE_SIGMAS;
 use crate::tradeoff::record::{Point, Record};
+use crate::tradeoff::sweep::SCHLICK_SWEPT;
 use crate::tradeoff::verdict::JUST_NOTICEABLE;
 
 /// Whether `p` does `base`'s work: as many rays, and a render that is
@@ -97,7 +98,8 @@ pub(super) fn bounces(base: &Point, rest: &[Point]) -> Option<Bounces> {
     })
 }
 
-/// The `fresnel schlick` point against a scene whose own law is exact.
+/// The point of Schlick's form the sweep measures ([`SCHLICK_SWEPT`])
+/// against a scene whose own law is exact.
 pub(super) fn schlick(
     base: &Point,
     rest: &[Point],
@@ -108,7 +110,7 @@ pub(super) fn schlick(
     }
     let p = rest
         .iter()
-        .find(|p| p.axis == "fresnel" && p.settings.fresnel == "schlick")?;
+        .find(|p| p.axis == "fresnel" && p.settings.fresnel == SCHLICK_SWEPT.to_string())?;
     Some(Schlick {
         shortcut: Shortcut {
             label: p.label.clone(),

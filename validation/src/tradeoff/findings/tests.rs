@@ -175,7 +175,14 @@ fn the_eleventh_bounce_is_read_against_the_tenth() {
 /// scene whose own law is not exact has no such reading.
 #[test]
 fn schlicks_cost_is_read_against_the_exact_laws_render() {
-    let mut schlick = point("fresnel", ("whitted", 11, "schlick"), 0.8, 0.31, 0.8, 1.25);
+    let mut schlick = point(
+        "fresnel",
+        ("whitted", 11, "schlick-rarer"),
+        0.8,
+        0.31,
+        0.8,
+        1.25,
+    );
     schlick.grazing = Some(Grazing {
         pixels: 42,
         errors: schlick.errors,
@@ -210,7 +217,7 @@ fn schlicks_cost_is_read_against_the_exact_laws_render() {
         (42, 3.5, 7.25, 0.125)
     );
     let mut schlick_scene = points;
-    schlick_scene[0].settings.fresnel = "schlick".to_owned();
+    schlick_scene[0].settings.fresnel = "schlick-rarer".to_owned();
     assert!(Findings::of(&record(schlick_scene)).schlick.is_none());
 }
 
@@ -266,7 +273,14 @@ fn shortcuts_are_sorted_by_the_verdicts_rule_fastest_first() {
         photon,
         point("max_depth", ("whitted", 8, "exact"), 0.85, 0.3, 0.8, 0.5),
         point("max_depth", ("whitted", 6, "exact"), 0.5, 0.3, 0.8, 0.9),
-        point("fresnel", ("whitted", 11, "schlick"), 0.7, 0.3, 0.8, 1.5),
+        point(
+            "fresnel",
+            ("whitted", 11, "schlick-rarer"),
+            0.7,
+            0.3,
+            0.8,
+            1.5,
+        ),
         fast_but_worse,
         path,
         point("max_depth", ("whitted", 64, "exact"), 1.05, 0.3, 0.8, 0.0),
@@ -279,7 +293,10 @@ fn shortcuts_are_sorted_by_the_verdicts_rule_fastest_first() {
     );
     assert_eq!(
         labels(&findings.seen),
-        ["max_depth whitted 0 exact", "fresnel whitted 11 schlick"]
+        [
+            "max_depth whitted 0 exact",
+            "fresnel whitted 11 schlick-rarer"
+        ]
     );
     assert_eq!(labels(&findings.no_gain), ["max_depth whitted 32 exact"]);
     let upgrades: Vec<&str> = findings.upgrades.iter().map(|u| u.label.as_str()).collect();
@@ -322,7 +339,14 @@ fn renders_of_the_scenes_own_work_are_the_timing_noise() {
         own(0.3, 0.8),
         same_fast,
         same_slow,
-        point("fresnel", ("whitted", 11, "schlick"), 0.5, 0.3, 0.8, 0.5),
+        point(
+            "fresnel",
+            ("whitted", 11, "schlick-rarer"),
+            0.5,
+            0.3,
+            0.8,
+            0.5,
+        ),
         point("max_depth", ("whitted", 8, "exact"), 0.7, 0.3, 0.8, 0.5),
         point("max_depth", ("whitted", 32, "exact"), 1.2, 0.3, 0.8, 0.0),
         point("max_depth", ("whitted", 63, "exact"), 1.4, 0.3, 0.8, 0.0),
@@ -337,6 +361,9 @@ fn renders_of_the_scenes_own_work_are_the_timing_noise() {
     );
     assert!((noise.ratios[0] - 0.6).abs() < EXACT && (noise.ratios[1] - 1.3).abs() < EXACT);
     let labels = |list: &[Shortcut]| list.iter().map(|s| s.label.clone()).collect::<Vec<_>>();
-    assert_eq!(labels(&findings.worth_it), ["fresnel whitted 11 schlick"]);
+    assert_eq!(
+        labels(&findings.worth_it),
+        ["fresnel whitted 11 schlick-rarer"]
+    );
     assert_eq!(labels(&findings.no_gain), ["max_depth whitted 63 exact"]);
 }

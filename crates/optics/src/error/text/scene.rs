@@ -8,7 +8,7 @@ use std::path::Path;
 use record::Lang;
 use techniques::bump::{FieldError, MAX_SLOPE, MIN_PERIOD};
 use tracer::scene::error::{ImageProblem, JsonType, SizeRule};
-use tracer::scene::{ErrorKind as Scene, SceneError, MAX_PIXELS, SCHEMA_VERSION};
+use tracer::scene::{ErrorKind as Scene, FresnelModel, SceneError, MAX_PIXELS, SCHEMA_VERSION};
 
 use super::domain::domain;
 
@@ -134,6 +134,22 @@ pub(super) fn scene_kind_hu(kind: &Scene) -> String {
                                              és az environment közül csak az egyiket kell \
                                              megadni"
             .to_owned(),
+        Scene::SchlickFormUnnamed => schlick_form_unnamed(Lang::Hu),
+    }
+}
+
+/// The bare `schlick` refused, with both forms named: the tracer's
+/// English, and its Hungarian; `optics fresnel --model` says the same.
+pub(super) fn schlick_form_unnamed(lang: Lang) -> String {
+    let [incident, rarer] = FresnelModel::SCHLICK_FORMS;
+    match lang {
+        Lang::En => Scene::SchlickFormUnnamed.to_string(),
+        Lang::Hu => format!(
+            "a \"schlick\" Schlick két alakja közül egyiket sem nevezi meg: \"{incident}\" (a \
+             beesési szög koszinusza, ahogy a kurzus írja; nem ismeri a teljes visszaverődést) \
+             vagy \"{rarer}\" (a ritkább közegbeli szög koszinusza; a teljes visszaverődés \
+             helyes) adható meg"
+        ),
     }
 }
 

@@ -119,6 +119,17 @@ fn every_kind() -> Vec<(Error, Vec<String>)> {
             },
             vec!["--n-outside".into(), "--n".into()],
         ),
+        (
+            ErrorKind::SchlickFormUnnamed {
+                name: "--model".into(),
+            },
+            vec![
+                "--model".into(),
+                "schlick-incident".into(),
+                "schlick-rarer".into(),
+                "schlick".into(),
+            ],
+        ),
         (ErrorKind::EmptyLine, vec![]),
         (
             ErrorKind::MalformedJson {
@@ -228,6 +239,7 @@ fn slot(kind: &ErrorKind) -> usize {
         ErrorKind::NotUtf8 { .. } => 20,
         ErrorKind::Overflow { .. } => 21,
         ErrorKind::LineTooLong { .. } => 22,
+        ErrorKind::SchlickFormUnnamed { .. } => 23,
         ErrorKind::Scene { error, .. } => CALCULATOR + render_kinds::scene_slot(error.kind()),
         ErrorKind::Output(error) => CALCULATOR + render_kinds::output_slot(error),
         ErrorKind::Threads(_) => CALCULATOR + render_kinds::THREADS,
@@ -288,7 +300,7 @@ fn slot(kind: &ErrorKind) -> usize {
 }
 
 /// The calculator's own kinds' slots.
-const CALCULATOR: usize = 23;
+const CALCULATOR: usize = 24;
 
 #[cfg(feature = "harness")]
 const SLOTS: usize = CALCULATOR

@@ -1,22 +1,24 @@
-//! `optics fresnel`: Fresnel reflectance, exact or by Schlick's
-//! approximation, of a dielectric or a conductor.
+//! `optics fresnel`: Fresnel reflectance, exact or by either form of
+//! Schlick's approximation, of a dielectric or a conductor.
 //!
 //! The incidence is resolved once, here, and every law is evaluated once at
 //! it; the working is narrated from what the laws returned: the side and
 //! indices of the [`Incidence`], the exact law's `cos θt`, and the cosine
-//! Schlick took (`SchlickDielectric::cosine`); [`working`] narrates them.
+//! each Schlick form took (`SchlickDielectric::cosine`); [`working`]
+//! narrates them.
 
 use crate::error::Result;
 use crate::error::{Error, ErrorKind};
 use crate::input::Via;
 use radiometry::fresnel::{
-    conductor_polarized, dielectric_resolved, f0, schlick_dielectric_resolved,
+    conductor_polarized, dielectric_resolved, f0, schlick_dielectric_incident_resolved,
+    schlick_dielectric_resolved,
 };
 use radiometry::snell::Incidence;
 use record::{say, Lang};
 use record::{Answer, Record, Steps};
 use serde::Deserialize;
-pub use tracer::scene::FresnelModel;
+pub use tracer::scene::{FresnelModel, FresnelName};
 use working::{
     course_form, exact_conductor, exact_dielectric, narrate_incidence, schlick_for_conductor,
     schlick_for_dielectric,
@@ -36,7 +38,8 @@ mod working;
   optics fresnel --eta 1.5 --theta-i-deg 60
   optics fresnel --eta 1.5 --cos-i -0.5           (from inside the glass: total internal reflection)
   optics fresnel --eta 0.17 --kappa 3.1 --cos-i 1 (gold, red channel, at normal incidence)
-  optics fresnel --eta 1.5 --cos-i 0.3 --model schlick --json"
+  optics fresnel --eta 1.5 --theta-i-deg 120 --model schlick-incident (misses total internal reflection)
+  optics fresnel --eta 1.5 --cos-i 0.3 --model schlick-rarer --json"
 )]
 pub struct FresnelArgs {
     /// Relative index n_inside / n_outside (= n_t / n_i for light from outside).
@@ -54,10 +57,10 @@ pub struct FresnelArgs {
     #[arg(long, allow_hyphen_values = true)]
     #[serde(default)]
     pub theta_i_deg: Option<f64>,
-    /// The law: exact, Schlick's approximation, or the course shader's reversed form.
+    /// The law: exact, Schlick's approximation in either form, or the course shader's reversed form.
     #[arg(long, value_enum, default_value_t)]
     #[serde(default)]
-    pub model: FresnelModel,
+    pub model: FresnelName,
 }
 
 impl FresnelArgs {
@@ -66,22 +69,31 @@ impl FresnelArgs {
         let eta = via.index("eta", self.eta)?;
         let kappa = via.extinction("kappa", self.kappa)?;
         let cos_i = self.signed_cosine(via, kappa)?;
-        let mut record = self.record(eta, kappa, cos_i, lang).with_steps(steps);
+        let model = self.model.model().ok_or_else(|| {
+            let name = via.name("model");
+            Error::from(ErrorKind::SchlickFormUnnamed { name })
+        })?;
+        let mut record = self
+            .record(model, eta, kappa, cos_i, lang)
+            .with_steps(steps);
         // The one place the side is decided; each law below takes it.
         let incidence = Incidence::resolve(cos_i, eta)
             .expect("cos_i and eta were validated by radiometry::domain above");
         narrate_incidence(&mut record, lang, &incidence, eta, kappa);
-        let reflectance = match (self.model, kappa > 0.0) {
+        let reflectance = match (model, kappa > 0.0) {
             (FresnelModel::Exact, false) => {
                 exact_dielectric(&mut record, lang, &dielectric_resolved(&incidence))
             }
             (FresnelModel::Exact, true) => exact_conductor(&mut record, &incidence, eta, kappa),
-            (FresnelModel::Schlick, false) => {
-                let working = schlick_dielectric_resolved(&incidence);
-                let exact = dielectric_resolved(&incidence).reflectance();
-                schlick_for_dielectric(&mut record, lang, &working, exact)
+            (FresnelModel::SchlickIncident | FresnelModel::SchlickRarer, false) => {
+                let forms = [
+                    schlick_dielectric_incident_resolved(&incidence),
+                    schlick_dielectric_resolved(&incidence),
+                ];
+                let exact = dielectric_resolved(&incidence);
+                schlick_for_dielectric(&mut record, lang, model, &forms, &exact)
             }
-            (FresnelModel::Schlick, true) => {
+            (FresnelModel::SchlickIncident | FresnelModel::SchlickRarer, true) => {
                 schlick_for_conductor(&mut record, lang, &incidence, eta, kappa)
             }
             (FresnelModel::Course, conductor) => {
@@ -132,16 +144,19 @@ impl FresnelArgs {
     }
 
     /// The record with its title and inputs, before any working.
-    fn record(&self, eta: f64, kappa: f64, cos_i: f64, lang: Lang) -> Record {
+    fn record(&self, model: FresnelModel, eta: f64, kappa: f64, cos_i: f64, lang: Lang) -> Record {
         let kind = if kappa > 0.0 {
             lang.pick("conductor", "vezető")
         } else {
             lang.pick("dielectric", "dielektrikum")
         };
-        let model = match (self.model, lang) {
+        let label = match (model, lang) {
             (FresnelModel::Exact, Lang::En) => "exact",
             (FresnelModel::Exact, Lang::Hu) => "pontos",
-            (FresnelModel::Schlick, _) => "Schlick",
+            (FresnelModel::SchlickIncident, Lang::En) => "Schlick at cos θi",
+            (FresnelModel::SchlickIncident, Lang::Hu) => "Schlick a beesési cos θi-vel",
+            (FresnelModel::SchlickRarer, Lang::En) => "Schlick at the rarer medium's cosine",
+            (FresnelModel::SchlickRarer, Lang::Hu) => "Schlick a ritkább közegbeli koszinusszal",
             (FresnelModel::Course, Lang::En) => "the course shader's form",
             (FresnelModel::Course, Lang::Hu) => "a kurzus shaderének alakja",
         };
@@ -149,8 +164,8 @@ impl FresnelArgs {
             Self::LAW,
             say!(
                 lang,
-                "Fresnel reflectance, {model}, {kind}",
-                "Fresnel-függvény, {model}, {kind}"
+                "Fresnel reflectance, {label}, {kind}",
+                "Fresnel-függvény, {label}, {kind}"
             ),
             "1",
         );
@@ -159,7 +174,7 @@ impl FresnelArgs {
             Some(deg) => record.input("theta_i_deg", deg),
             None => record.input("cos_i", cos_i),
         };
-        record.input("model", self.model);
+        record.input("model", model);
         record
     }
 }

@@ -12,7 +12,7 @@ fn solve(eta: f64, cos_i: f64, model: FresnelModel) -> Record {
         kappa: 0.0,
         cos_i: Some(cos_i),
         theta_i_deg: None,
-        model,
+        model: model.into(),
     };
     args.solve(Via::Flags, Lang::En, Steps::Wanted)
         .expect("a valid request")
@@ -84,7 +84,7 @@ fn schlick_working_narrates_the_cosine_the_law_took() {
     for (eta, cos_i) in CASES {
         let working = schlick_dielectric_working(cos_i, eta).expect("a valid interface");
         let exact = dielectric_polarized(cos_i, eta).reflectance();
-        let record = solve(eta, cos_i, FresnelModel::Schlick);
+        let record = solve(eta, cos_i, FresnelModel::SchlickRarer);
         let at = format!("eta {eta}, cos_i {cos_i}");
         assert_eq!(
             answer(&record).to_bits(),
@@ -140,5 +140,79 @@ fn course_working_reports_the_course_shaders_own_numbers() {
             "{at}"
         );
         assert!(has_step(&record, "course − exact"), "{at}");
+    }
+}
+
+/// The incident form's working reports its own number, and the comparison
+/// names both forms beside the exact law with a verdict each: inside glass
+/// at 60° (θi = 120°) the exact law and the rarer-medium form give 1, the
+/// incident form 0.07; entering glass at 30° both forms lie within 0.01 of
+/// the exact law (0.0415 against 0.0400).
+#[test]
+fn the_comparison_names_both_schlick_forms_with_a_verdict_each() {
+    let record = solve(1.5, -0.5, FresnelModel::SchlickIncident);
+    assert!(
+        (answer(&record) - 0.07).abs() <= 1e-12,
+        "{}",
+        answer(&record)
+    );
+    assert!((detail(&record, "schlick-incident").unwrap() - 0.07).abs() <= 1e-12);
+    assert_eq!(detail(&record, "schlick-rarer"), Some(1.0));
+    assert_eq!(detail(&record, "exact"), Some(1.0));
+    let line = "schlick-incident R = 0.07: misses total internal reflection here; \
+                schlick-rarer R = 1: within 0.01 of exact here";
+    assert!(has_step(&record, line), "{:#?}", record.steps);
+    let rarer = solve(1.5, -0.5, FresnelModel::SchlickRarer);
+    assert_eq!(answer(&rarer), 1.0);
+    assert!(has_step(&rarer, line), "{:#?}", rarer.steps);
+    let entering = solve(
+        1.5,
+        30_f64.to_radians().cos(),
+        FresnelModel::SchlickIncident,
+    );
+    let close = "within 0.01 of exact here";
+    assert_eq!(
+        entering.steps.last().unwrap().matches(close).count(),
+        2,
+        "{:#?}",
+        entering.steps
+    );
+    // Inside glass at 40°, below the critical angle: the incident form is
+    // off by more than 0.01, and says by how much.
+    let below = solve(
+        1.5,
+        -40_f64.to_radians().cos(),
+        FresnelModel::SchlickIncident,
+    );
+    let off =
+        (detail(&below, "schlick-incident").unwrap() - detail(&below, "exact").unwrap()).abs();
+    assert!(off > 0.01, "{off}");
+    assert!(
+        has_step(&below, &format!("off by {} here", number(off))),
+        "{:#?}",
+        below.steps
+    );
+}
+
+/// The bare `schlick` names no form: it is refused, naming the flag (or
+/// the request's field) and both forms, whatever else the request says.
+#[test]
+fn a_bare_schlick_model_is_refused_naming_the_field() {
+    for (via, name) in [(Via::Flags, "--model"), (Via::Json, "model")] {
+        let args = FresnelArgs {
+            eta: 1.5,
+            kappa: 0.0,
+            cos_i: Some(0.5),
+            theta_i_deg: None,
+            model: FresnelName::UnnamedSchlick,
+        };
+        let error = args.solve(via, Lang::En, Steps::Wanted).unwrap_err();
+        assert!(matches!(error.kind(), ErrorKind::SchlickFormUnnamed { name: n } if n == name));
+        let message = error.kind().message(Lang::En);
+        assert!(message.starts_with(&format!("{name}: ")), "{message}");
+        assert!(
+            message.contains("schlick-incident") && message.contains("schlick-rarer"),
+            "{message}"
+        );
     }
 }

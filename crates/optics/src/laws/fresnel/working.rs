@@ -7,6 +7,7 @@ use radiometry::fresnel::{
 use radiometry::snell::Incidence;
 use record::{number, Record};
 use record::{say, Lang};
+use tracer::scene::FresnelModel;
 
 /// The side and angle of incidence, as resolved.
 pub(super) fn narrate_incidence(
@@ -142,14 +143,23 @@ pub(super) fn exact_conductor(
     r
 }
 
-/// Schlick's working at a dielectric, from the cosine it says it took,
-/// compared with the exact law's `exact`; its `R`.
+/// Schlick's working at a dielectric in the form `model` names, from the
+/// cosine it says it took; both `forms` (`[incident, rarer]`, as
+/// [`FresnelModel::SCHLICK_FORMS`] orders them) compared with the `exact`
+/// law; its `R`.
 pub(super) fn schlick_for_dielectric(
     record: &mut Record,
     lang: Lang,
-    working: &SchlickDielectric<f64>,
-    exact: f64,
+    model: FresnelModel,
+    forms: &[SchlickDielectric<f64>; 2],
+    exact: &DielectricFresnel<f64>,
 ) -> f64 {
+    let [incident, rarer] = forms;
+    let working = if model == FresnelModel::SchlickIncident {
+        incident
+    } else {
+        rarer
+    };
     step_f0(record, working.f0);
     match working.cosine {
         SchlickCosine::Transmitted(cos_t) => {
@@ -171,23 +181,36 @@ pub(super) fn schlick_for_dielectric(
                 )
             });
         }
+        SchlickCosine::Incident if working.incidence.from_inside => {
+            record.step(|| {
+                say!(
+                    lang,
+                    "the incident form takes cos θi from the denser side too",
+                    "a beesési alak a sűrűbb oldalról is a cos θi-t használja"
+                )
+            });
+        }
         SchlickCosine::Incident => {}
     }
     if let Some(cos) = working.cosine_used() {
         step_schlick(record, working.f0, cos, working.reflectance);
     }
-    compare_with_exact(
+    let both = [incident.reflectance, rarer.reflectance];
+    let exact_tir = exact.is_total_internal_reflection();
+    let r = working.reflectance;
+    compare_forms(
         record,
         lang,
-        "Schlick",
         working.f0,
-        working.reflectance,
-        exact,
+        both,
+        r,
+        exact.reflectance(),
+        exact_tir,
     )
 }
 
-/// Schlick's approximation at a conductor, with the incident cosine,
-/// compared with the exact law; its `R`.
+/// Schlick's approximation at a conductor, with the incident cosine (lit
+/// from outside, both forms take it), compared with the exact law; its `R`.
 pub(super) fn schlick_for_conductor(
     record: &mut Record,
     lang: Lang,
@@ -200,7 +223,7 @@ pub(super) fn schlick_for_conductor(
     let r = schlick(incidence.abs_cos_i, f_0);
     step_schlick(record, f_0, incidence.abs_cos_i, r);
     let exact = conductor_polarized(incidence.abs_cos_i, eta, kappa).reflectance();
-    compare_with_exact(record, lang, "Schlick", f_0, r, exact)
+    compare_forms(record, lang, f_0, [r, r], r, exact, false)
 }
 
 /// The course shader's Fresnel (`000`'s GLSL `Fresnel`), `F0 + (1 − F0)
@@ -243,6 +266,76 @@ fn step_schlick(record: &mut Record, f_0: f64, cos: f64, r: f64) {
             number(r)
         )
     });
+}
+
+/// How close a Schlick form must come to the exact law to be called close.
+const CLOSE: f64 = 0.01;
+
+/// `r`, the chosen form's `R`, and both Schlick `forms` (in
+/// [`FresnelModel::SCHLICK_FORMS`]' order) beside the exact law's, each
+/// with a verdict; the exact law's `exact_tir` says whether it decided
+/// total internal reflection.
+fn compare_forms(
+    record: &mut Record,
+    lang: Lang,
+    f_0: f64,
+    forms: [f64; 2],
+    r: f64,
+    exact: f64,
+    exact_tir: bool,
+) -> f64 {
+    record.step(|| {
+        let each: Vec<String> = FresnelModel::SCHLICK_FORMS
+            .iter()
+            .zip(forms)
+            .map(|(model, form)| {
+                let verdict = verdict(form, exact, exact_tir, lang);
+                format!("{model} R = {}: {verdict}", number(form))
+            })
+            .collect();
+        say!(
+            lang,
+            "for comparison, the exact law gives R = {}; {}",
+            "összevetésül a pontos képlet: R = {}; {}",
+            number(exact),
+            each.join("; ")
+        )
+    });
+    let named: std::collections::BTreeMap<String, f64> = FresnelModel::SCHLICK_FORMS
+        .iter()
+        .zip(forms)
+        .map(|(model, form)| (model.to_string(), form))
+        .collect();
+    record
+        .detail("f0", f_0)
+        .detail("exact", exact)
+        .detail("error", r - exact)
+        .details_from(named);
+    r
+}
+
+/// A Schlick form's `R` against the exact law's, in plain words.
+fn verdict(form: f64, exact: f64, exact_tir: bool, lang: Lang) -> String {
+    if exact_tir && form < 1.0 {
+        say!(
+            lang,
+            "misses total internal reflection here",
+            "itt nem ismeri a teljes visszaverődést"
+        )
+    } else if (form - exact).abs() <= CLOSE {
+        say!(
+            lang,
+            "within {CLOSE} of exact here",
+            "itt legfeljebb {CLOSE} az eltérése a pontostól"
+        )
+    } else {
+        let off = number((form - exact).abs());
+        say!(
+            lang,
+            "off by {off} here",
+            "itt {off} az eltérése a pontostól"
+        )
+    }
 }
 
 /// `R` of an approximation (`label`) beside the exact law's, and its error.

@@ -3,7 +3,7 @@
 use std::fmt;
 
 use super::kind::ErrorKind;
-use crate::kinds::{IntegratorKind, Precision, MAX_PIXELS, MAX_RAYS, SCHEMA_VERSION};
+use crate::kinds::{FresnelModel, IntegratorKind, Precision, MAX_PIXELS, MAX_RAYS, SCHEMA_VERSION};
 
 impl fmt::Display for ErrorKind {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
@@ -87,6 +87,16 @@ impl fmt::Display for ErrorKind {
             ErrorKind::BackgroundWithEnvironment => f.write_str(
                 "the environment replaces the background: give one of background and environment",
             ),
+            ErrorKind::SchlickFormUnnamed => {
+                let [incident, rarer] = FresnelModel::SCHLICK_FORMS;
+                write!(
+                    f,
+                    "\"schlick\" names neither of Schlick's forms: give \"{incident}\" (the \
+                     cosine of incidence, as the course writes it; misses total internal \
+                     reflection) or \"{rarer}\" (the cosine in the rarer medium; total internal \
+                     reflection right)"
+                )
+            }
         }
     }
 }

@@ -5,6 +5,8 @@ use techniques::bump::FieldError;
 
 use super::image::ImageProblem;
 use super::json_type::JsonType;
+#[cfg(doc)]
+use crate::kinds::FresnelModel;
 use crate::kinds::{IntegratorKind, Precision};
 
 /// What is wrong with a scene file or a render setting. Every message the
@@ -158,4 +160,7 @@ pub enum ErrorKind {
     },
     /// A `background` given beside an `environment`, which replaces it.
     BackgroundWithEnvironment,
+    /// A Fresnel law named by the bare `schlick`, which names neither of
+    /// Schlick's forms ([`FresnelModel::SCHLICK_FORMS`]).
+    SchlickFormUnnamed,
 }

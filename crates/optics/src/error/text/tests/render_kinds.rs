@@ -43,6 +43,7 @@ pub fn scene_slot(kind: &Scene) -> usize {
         Scene::EnvironmentImage { .. } => 36,
         Scene::BackgroundWithEnvironment => 37,
         Scene::PrecisionNotServed { .. } => 38,
+        Scene::SchlickFormUnnamed => 40,
     }
 }
 
@@ -230,6 +231,11 @@ pub fn examples() -> Vec<(ErrorKind, Vec<String>)> {
                 "whitted",
                 "path",
             ],
+        ),
+        scene(
+            "render.fresnel",
+            Scene::SchlickFormUnnamed,
+            &["schlick", "schlick-incident", "schlick-rarer"],
         ),
         scene(
             "overrides.precision",
