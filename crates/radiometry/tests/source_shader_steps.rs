@@ -235,3 +235,36 @@ fn course_002_point_light_does_not_fall_off_with_distance() {
     let ratio = e(near) / e(far);
     assert!((ratio - 4.0).abs() <= 4.0 * EPS * 4.0, "{ratio}");
 }
+
+/// `002` lines 230–247: the reflection is mixed in by the material's
+/// constant `reflectance`, whatever the angle. A half-mirror seen head-on
+/// and at 85° from its normal mixes in the same share of what it reflects,
+/// where the Fresnel reflectance of glass (`n = 1.5`) is 4 % head-on and
+/// several times that at 85°. Exact for the course's mix: the same
+/// arithmetic at both angles; the law's values within 1e−12 of the
+/// references `radiometry::fresnel::dielectric` is checked against.
+#[test]
+fn course_002_reflection_is_weighted_alike_at_every_angle() {
+    use radiometry::fresnel::dielectric;
+    let mirror = |_: DVec3| Hit002 {
+        position: DVec3::ZERO,
+        normal: DVec3::Y,
+        colour: DVec3::new(0.2, 0.2, 0.2),
+        reflectance: 0.5,
+    };
+    let beyond = Hit002 {
+        position: DVec3::new(0.0, 10.0, 0.0),
+        normal: -DVec3::Y,
+        colour: DVec3::new(1.0, 0.0, 0.0),
+        reflectance: 0.0,
+    };
+    let grazing = 85.0_f64.to_radians();
+    let shown: Vec<DVec3> = [-DVec3::Y, DVec3::new(grazing.sin(), -grazing.cos(), 0.0)]
+        .into_iter()
+        .map(|d| course::reflection_loop_002(d, mirror(d), 1, 1e-4, |_, _| Some(beyond)))
+        .collect();
+    assert_eq!(shown[0], shown[1], "the same mix head-on and at 85°");
+    let (head_on, at_85): (f64, f64) = (dielectric(1.0, 1.5), dielectric(grazing.cos(), 1.5));
+    assert!((head_on - 0.04).abs() < 1e-12, "{head_on}");
+    assert!(at_85 > 5.0 * head_on, "{at_85}");
+}
