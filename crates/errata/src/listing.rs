@@ -23,10 +23,12 @@ pub fn ranking(class: Option<Class>, lang: Lang) -> Record {
     if let Some(class) = class {
         record.input("class", class.name());
     }
+    // The widest place of either language's form, so the ids line up.
+    let width = lang.pick("000:1249–1251", "000, 1249–1251. sor").chars().count();
     for &(rank, erratum) in &chosen {
         record.step(|| {
             format!(
-                "{rank:>2}. {:<10} {:<14} {}",
+                "{rank:>2}. {:<10} {:<width$} {}",
                 erratum.class.word(lang),
                 erratum.place(lang),
                 erratum.id
@@ -52,9 +54,8 @@ pub fn one(id: &str, lang: Lang) -> Result<Record, LookupError> {
     let title = format!("{} — {}", erratum.id, erratum.title.pick(lang));
     let mut record = Record::new(LAW, title, "");
     record.input("id", &erratum.id);
-    let (place, class) = (erratum.place(lang), erratum.class.word(lang));
+    let place = erratum.place(lang);
     record.step(|| say!(lang, "place: {place}", "hely: {place}"));
-    record.step(|| say!(lang, "class: {class} (rank {rank})", "osztály: {class} ({rank}. a rangsorban)"));
     let written = &erratum.written;
     record.step(|| say!(lang, "written: {written}", "írva: {written}"));
     let right = erratum.right.pick(lang);
@@ -65,7 +66,13 @@ pub fn one(id: &str, lang: Lang) -> Result<Record, LookupError> {
     }
     let tests = erratum.tests.join(", ");
     record.step(|| say!(lang, "tests: {tests}", "tesztek: {tests}"));
-    record.set_answer(Answer::List(vec![as_json(rank, erratum)]), Some(erratum.right.pick(lang).to_owned()));
+    let (class, total) = (erratum.class.word(lang), ranked().len());
+    let standing = say!(
+        lang,
+        "{class}, rank {rank} of {total}",
+        "{class}, a rangsorban {rank}. a(z) {total} közül"
+    );
+    record.set_answer(Answer::List(vec![as_json(rank, erratum)]), Some(standing));
     Ok(record)
 }
 

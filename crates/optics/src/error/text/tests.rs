@@ -47,6 +47,7 @@ fn every_kind() -> Vec<(Error, Vec<String>)> {
     let our_usage = usage(&["optics", "reflect", "--wi", "0,1", "--normal", "0,0,1"]);
     let json_error = || serde_json::from_str::<serde_json::Value>("{").unwrap_err();
     let named = |name: &str| vec![name.to_owned()];
+    let named_all = |names: &[&str]| names.iter().map(|&n| n.to_owned()).collect::<Vec<_>>();
     let laws = crate::law_table::LAWS.join(", ");
     let mut kinds: Vec<(ErrorKind, Vec<String>)> = vec![
         (
@@ -172,6 +173,18 @@ fn every_kind() -> Vec<(Error, Vec<String>)> {
             ErrorKind::Encode(json_error()),
             vec![json_error().to_string()],
         ),
+        (
+            ErrorKind::Errata(::errata::LookupError::UnknownId {
+                id: "003-teleport".into(),
+            }),
+            vec!["ID".into(), "\"003-teleport\"".into(), "optics errata".into()],
+        ),
+        (
+            ErrorKind::Errata(::errata::LookupError::UnknownClass {
+                class: "severe".into(),
+            }),
+            named_all(&["--class", "\"severe\"", "physics", "picture", "cosmetic"]),
+        ),
     ];
     kinds.extend(render_kinds::examples());
     #[cfg(feature = "harness")]
@@ -228,6 +241,8 @@ fn slot(kind: &ErrorKind) -> usize {
         ErrorKind::NotUtf8 { .. } => 20,
         ErrorKind::Overflow { .. } => 21,
         ErrorKind::LineTooLong { .. } => 22,
+        ErrorKind::Errata(::errata::LookupError::UnknownId { .. }) => 23,
+        ErrorKind::Errata(::errata::LookupError::UnknownClass { .. }) => 24,
         ErrorKind::Scene { error, .. } => CALCULATOR + render_kinds::scene_slot(error.kind()),
         ErrorKind::Output(error) => CALCULATOR + render_kinds::output_slot(error),
         ErrorKind::Threads(_) => CALCULATOR + render_kinds::THREADS,
@@ -288,7 +303,7 @@ fn slot(kind: &ErrorKind) -> usize {
 }
 
 /// The calculator's own kinds' slots.
-const CALCULATOR: usize = 23;
+const CALCULATOR: usize = 25;
 
 #[cfg(feature = "harness")]
 const SLOTS: usize = CALCULATOR
