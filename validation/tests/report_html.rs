@@ -425,7 +425,9 @@ fn the_first_screen_gives_the_verdict_and_a_card_per_area() {
     );
     // The course texts' card: the errata by class, from their table, the
     // worst three, and where the rest are.
-    let course = &cards[cards.find("id=course-texts").expect("the course texts' card")..];
+    let course = &cards[cards
+        .find("id=course-texts")
+        .expect("the course texts' card")..];
     let tally = errata::listing::tally(record::Lang::En);
     assert!(course.contains(&tally), "{tally} not on the card");
     assert_eq!(course.matches("<li>").count(), 3, "the worst three");

@@ -24,7 +24,10 @@ pub fn ranking(class: Option<Class>, lang: Lang) -> Record {
         record.input("class", class.name());
     }
     // The widest place of either language's form, so the ids line up.
-    let width = lang.pick("000:1249–1251", "000, 1249–1251. sor").chars().count();
+    let width = lang
+        .pick("000:1249–1251", "000, 1249–1251. sor")
+        .chars()
+        .count();
     for &(rank, erratum) in &chosen {
         record.step(|| {
             format!(

@@ -134,14 +134,20 @@ fn every_erratum_is_worded_in_both_languages() {
     let same = planted(|e| e.right.hu = e.right.en.clone());
     assert_eq!(unworded(&same[0]), ["right"], "a copied English is caught");
     let empty = planted(|e| e.title.hu = " ".into());
-    assert_eq!(unworded(&empty[0]), ["title"], "an empty Hungarian is caught");
+    assert_eq!(
+        unworded(&empty[0]),
+        ["title"],
+        "an empty Hungarian is caught"
+    );
 }
 
 #[test]
 fn every_erratum_has_exactly_one_class() {
     let rows: Vec<serde_json::Value> = serde_json::from_str(TABLE).unwrap();
     for row in &rows {
-        let class = row["class"].as_str().unwrap_or_else(|| panic!("{row}: one class"));
+        let class = row["class"]
+            .as_str()
+            .unwrap_or_else(|| panic!("{row}: one class"));
         assert!(parse_class(class).is_ok(), "{class}");
     }
     // The table is the ranking: its classes in order, worst first.
@@ -156,7 +162,11 @@ fn every_erratum_points_at_lines_of_its_text() {
     let counts = line_counts();
     assert_eq!(bad_places(all(), &counts), Vec::<String>::new());
     let past = planted(|e| e.lines = [1, 100_000]);
-    assert_eq!(bad_places(&past, &counts).len(), 1, "a line past the end is caught");
+    assert_eq!(
+        bad_places(&past, &counts).len(),
+        1,
+        "a line past the end is caught"
+    );
     let backwards = planted(|e| e.lines = [20, 10]);
     assert_eq!(bad_places(&backwards, &counts).len(), 1);
 }
@@ -202,7 +212,10 @@ fn a_lookup_names_what_it_did_not_find() {
     assert!(error.to_string().contains("\"severe\""), "{error}");
     let record = one("003-boxed-refraction", Lang::Hu).unwrap();
     let text = record.to_text(Lang::Hu);
-    assert!(text.contains("helyesen:") && text.contains("003, 246. sor"), "{text}");
+    assert!(
+        text.contains("helyesen:") && text.contains("003, 246. sor"),
+        "{text}"
+    );
 }
 
 #[test]

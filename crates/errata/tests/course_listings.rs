@@ -59,13 +59,29 @@ fn course_002_listing_declares_one_sphere_and_a_field_ray_lacks() {
 #[test]
 fn course_000_early_shaders_add_the_ambient_without_the_material() {
     let text = lines(Text::Tutorial);
-    assert!(text[448].contains("lightAmbient * mat.ambient"), "{}", text[448]);
+    assert!(
+        text[448].contains("lightAmbient * mat.ambient"),
+        "{}",
+        text[448]
+    );
     for line in [624, 871] {
-        assert_eq!(text[line - 1].trim(), "totalRadiance += lightAmbient;", "line {line}");
+        assert_eq!(
+            text[line - 1].trim(),
+            "totalRadiance += lightAmbient;",
+            "line {line}"
+        );
     }
     for line in [490, 731] {
-        assert!(text[line - 1].trim().starts_with("vec3 ambient;"), "line {line}");
+        assert!(
+            text[line - 1].trim().starts_with("vec3 ambient;"),
+            "line {line}"
+        );
     }
-    let read = (449..1153).filter(|&i| text[i].contains(".ambient")).count();
-    assert_eq!(read, 0, "a material's ambient read between lines 450 and 1153");
+    let read = (449..1153)
+        .filter(|&i| text[i].contains(".ambient"))
+        .count();
+    assert_eq!(
+        read, 0,
+        "a material's ambient read between lines 450 and 1153"
+    );
 }

@@ -888,7 +888,10 @@ fn course_003_point_light_intensity_is_constant_its_irradiance_falls_as_inverse_
         let light = DVec3::new(0.0, 0.0, r);
         let e = point_irradiance(intensity, light, DVec3::ZERO, DVec3::Z).unwrap();
         let back = e.irradiance * r * r;
-        assert!((back / intensity - 1.0).abs() <= 8.0 * EPS, "r = {r}: {back}");
+        assert!(
+            (back / intensity - 1.0).abs() <= 8.0 * EPS,
+            "r = {r}: {back}"
+        );
         let written = intensity / (r * r);
         if r > 1.0 {
             assert!((back - written).abs() > 0.5 * intensity, "r = {r}");

@@ -230,8 +230,15 @@ fn course_002_point_light_does_not_fall_off_with_distance() {
     let (near, far) = (DVec3::new(0.0, 3.0, 0.0), DVec3::new(0.0, 2.0, 0.0));
     let shown_near = course::shade_002(grey, near, DVec3::Y, light, false);
     let shown_far = course::shade_002(grey, far, DVec3::Y, light, false);
-    assert_eq!(shown_near, shown_far, "the course's shading ignores distance");
-    let e = |p| point_irradiance(1.0, light, p, DVec3::Y).unwrap().irradiance;
+    assert_eq!(
+        shown_near, shown_far,
+        "the course's shading ignores distance"
+    );
+    let e = |p| {
+        point_irradiance(1.0, light, p, DVec3::Y)
+            .unwrap()
+            .irradiance
+    };
     let ratio = e(near) / e(far);
     assert!((ratio - 4.0).abs() <= 4.0 * EPS * 4.0, "{ratio}");
 }

@@ -45,7 +45,14 @@ fn id() -> impl Strategy<Value = String> {
 /// A class: named in either language, in another case, or hostile.
 fn class() -> impl Strategy<Value = String> {
     let names = vec![
-        "physics", "picture", "cosmetic", "fizika", "kép", "kozmetikai", "PHYSICS", "Kép",
+        "physics",
+        "picture",
+        "cosmetic",
+        "fizika",
+        "kép",
+        "kozmetikai",
+        "PHYSICS",
+        "Kép",
     ];
     prop_oneof![
         3 => prop::sample::select(names).prop_map(str::to_owned),
@@ -90,7 +97,10 @@ fn check_line(
         Err(usage) => {
             let json = crate::Error::from(crate::ErrorKind::Usage(usage)).to_json(Lang::En);
             coverage.error(&json);
-            let flag_like = [id, class].into_iter().flatten().any(|v| v.starts_with('-'));
+            let flag_like = [id, class]
+                .into_iter()
+                .flatten()
+                .any(|v| v.starts_with('-'));
             prop_assert!(flag_like, "{args:?} refused: {json}");
             prop_assert!(json["field"].is_string(), "{json} names no argument");
             return Ok(());
@@ -101,7 +111,12 @@ fn check_line(
     };
     let outcome = crate::errata::record(errata_args, Lang::Hu)
         .map(|record| serde_json::to_value(&record).expect("a record is JSON"));
-    check_outcome(outcome.map_err(|e| e.to_json(Lang::En)), id, class, coverage)
+    check_outcome(
+        outcome.map_err(|e| e.to_json(Lang::En)),
+        id,
+        class,
+        coverage,
+    )
 }
 
 /// The promises of the command's outcome: an answer for a known id and
@@ -117,14 +132,20 @@ fn check_outcome(
     match outcome {
         Ok(record) => {
             coverage.answer();
-            prop_assert!(known_class && known_id, "{id:?} {class:?} answered: {record}");
+            prop_assert!(
+                known_class && known_id,
+                "{id:?} {class:?} answered: {record}"
+            );
             prop_assert!(record["answer"].as_array().is_some_and(|a| !a.is_empty()));
         }
         Err(error) => {
             coverage.error(&error);
             let (kind, field) = (error["kind"].as_str(), error["field"].as_str());
             if !known_class {
-                prop_assert_eq!((kind, field), (Some("errata.unknown_class"), Some("--class")));
+                prop_assert_eq!(
+                    (kind, field),
+                    (Some("errata.unknown_class"), Some("--class"))
+                );
             } else {
                 prop_assert!(!known_id, "{id:?} {class:?} refused: {error}");
                 prop_assert_eq!((kind, field), (Some("errata.unknown_id"), Some("ID")));

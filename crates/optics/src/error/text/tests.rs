@@ -177,7 +177,11 @@ fn every_kind() -> Vec<(Error, Vec<String>)> {
             ErrorKind::Errata(::errata::LookupError::UnknownId {
                 id: "003-teleport".into(),
             }),
-            vec!["ID".into(), "\"003-teleport\"".into(), "optics errata".into()],
+            vec![
+                "ID".into(),
+                "\"003-teleport\"".into(),
+                "optics errata".into(),
+            ],
         ),
         (
             ErrorKind::Errata(::errata::LookupError::UnknownClass {
