@@ -423,6 +423,15 @@ fn the_first_screen_gives_the_verdict_and_a_card_per_area() {
         cards.contains("0 of 1 pass"),
         "the failed render check's card"
     );
+    // The course texts' card: the errata by class, from their table, the
+    // worst three, and where the rest are.
+    let course = &cards[cards
+        .find("id=course-texts")
+        .expect("the course texts' card")..];
+    let tally = errata::listing::tally(record::Lang::En);
+    assert!(course.contains(&tally), "{tally} not on the card");
+    assert_eq!(course.matches("<li>").count(), 3, "the worst three");
+    assert!(course.contains("href=\"docs/errata.md\""));
     assert!(words(&html).contains("1 of 9 checks FAIL."));
     assert!(words(&html).contains("8 passed; 1 findings about the references"));
     // Numbers for reading, a request's fields as inputs.

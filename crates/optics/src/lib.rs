@@ -37,6 +37,7 @@ mod checkout;
 #[cfg(feature = "harness")]
 mod compare;
 mod envmap;
+mod errata;
 pub mod error;
 #[cfg(test)]
 mod fuzz;
@@ -102,6 +103,8 @@ enum Command {
     Render(render::RenderArgs),
     /// Report which effects a scene needs and what the renderer skips.
     Inspect(inspect::InspectArgs),
+    /// The errata of the course texts, ranked by class, or one by its id.
+    Errata(errata::ErrataArgs),
     /// Cross-check the laws, spectra and renders against the references.
     #[cfg(feature = "harness")]
     Validate(validate::ValidateArgs),
@@ -192,6 +195,7 @@ fn run(command: &Command, ui: &Ui) -> error::Result<ExitCode> {
         }
         Command::Render(args) => render::run(args, ui)?,
         Command::Inspect(args) => inspect::run(args, ui)?,
+        Command::Errata(args) => errata::run(args, ui)?,
         #[cfg(feature = "harness")]
         Command::Validate(args) => return validate::run(args, ui),
         #[cfg(feature = "harness")]

@@ -23,7 +23,7 @@ use crate::{Real, Vector3};
 
 pub mod shader_steps;
 pub use shader_steps::{
-    intersect_mirrors_000, reflection_loop_002, rough_hit_000, Hit002, MirrorHit000,
+    intersect_mirrors_000, reflection_loop_002, rough_hit_000, shade_002, Hit002, MirrorHit000,
 };
 
 /// `000` lines 1249, 1410, 1868, `vec3 Fresnel(vec3 F0, float cosTheta)`:

@@ -872,3 +872,88 @@ fn course_001_water_reflects_little_at_a_low_angle_from_the_normal() {
     // Above a third at 80°: more than fifteen times the 10° value.
     assert!(high > 15.0 * low && high > 0.33, "80°: {high}");
 }
+
+/// `003` line 56: of a point light "the intensity falls with the square of
+/// the distance". Its radiant intensity `I` (W/sr) is the same at every
+/// distance; what falls is the irradiance it delivers, `E = I cos θ / r²`
+/// (`radiometry::radiance::point_irradiance`). Read back from the
+/// irradiance at 1, 2 and 5 m, the intensity is 100 W/sr each time, where
+/// the sentence has it a quarter at 2 m. Tolerance 8ε relative: a division
+/// and a product by an exact square.
+#[test]
+fn course_003_point_light_intensity_is_constant_its_irradiance_falls_as_inverse_square() {
+    use radiometry::radiance::point_irradiance;
+    let intensity = 100.0_f64;
+    for r in [1.0_f64, 2.0, 5.0] {
+        let light = DVec3::new(0.0, 0.0, r);
+        let e = point_irradiance(intensity, light, DVec3::ZERO, DVec3::Z).unwrap();
+        let back = e.irradiance * r * r;
+        assert!(
+            (back / intensity - 1.0).abs() <= 8.0 * EPS,
+            "r = {r}: {back}"
+        );
+        let written = intensity / (r * r);
+        if r > 1.0 {
+            assert!((back - written).abs() > 0.5 * intensity, "r = {r}");
+        }
+    }
+}
+
+/// `003` line 114: `κ` "shows how much the radiance falls in the material
+/// over a distance of one wavelength". A plane wave in a medium of index
+/// `n + iκ` goes as `exp(i 2π (n + iκ) z / λ)`, so its radiance falls by
+/// `exp(−4π κ z / λ)` (Born & Wolf, §14.1): over one wavelength by the
+/// factor `exp(−4πκ)`, not by `κ`. The course's own gold has `κ` of 3.1,
+/// 2.7, 1.9 (`000` line 1386), which no fraction is, and keeps 1.2·10⁻¹⁷
+/// of red light after one wavelength; a weak absorber of `κ = 0.01` loses
+/// 11.8 %, not 1 %. Tolerances: 1e−3 relative on the printed figures.
+#[test]
+fn course_003_kappa_is_not_the_fraction_lost_per_wavelength() {
+    use std::f64::consts::PI;
+    let kept = |kappa: f64| (-4.0 * PI * kappa).exp();
+    for kappa in [3.1, 2.7, 1.9] {
+        assert!(kappa > 1.0, "gold's κ = {kappa} is no fraction");
+    }
+    let red = kept(3.1);
+    assert!((red / 1.207e-17 - 1.0).abs() < 1e-3, "{red}");
+    let lost = 1.0 - kept(0.01);
+    assert!((lost / 0.1181 - 1.0).abs() < 1e-3, "{lost}");
+    assert!((lost - 0.01).abs() > 0.1, "κ = 0.01 loses {lost}, not 1 %");
+}
+
+/// `003` line 309 (and line 488): `Ψ = cos(θ^in · f_r(L, r, V)`, the
+/// bracket after `θ^in` never closed, reads as the cosine of the product.
+/// With quiz 3's numbers (`L^in` = 5, `cos θ` = 0.8, the course's
+/// `f_r = k_d = 0.6`) the meant `L^in cos θ f_r` is 2.4; as bracketed,
+/// `L^in cos(θ · f_r)` is 4.63. Tolerance 1e−3 absolute on the printed
+/// figures.
+#[test]
+fn course_003_psi_as_bracketed_is_the_cosine_of_a_product() {
+    let (l_in, cos, f_r) = (5.0_f64, 0.8_f64, 0.6);
+    let meant = l_in * cos * f_r;
+    let bracketed = l_in * (cos.acos() * f_r).cos();
+    assert!((meant - 2.4).abs() < 1e-3, "{meant}");
+    assert!((bracketed - 4.632).abs() < 1e-3, "{bracketed}");
+}
+
+/// `003` line 375: `cos⁴(x)` drawn as the approximation of a Gaussian of
+/// `s = 0.4`. Near the peak `cosⁿ x = 1 − n x²/2 + …` and
+/// `exp(−x²/2s²) = 1 − x²/2s² + …`, so the matching power is `n = 1/s²`:
+/// 6.25 for `s = 0.4`, while `cos⁴` is the Gaussian of `s = 0.5`. Over the
+/// figure's `[−2, 2]` (with `cos⁺`) `cos⁴` strays 0.140 from the `s = 0.4`
+/// curve, `cos^6.25` 0.031, and `cos⁴` from `s = 0.5` 0.050. Sampled at
+/// 4001 points; tolerances 1e−3 on those maxima.
+#[test]
+fn course_003_cos4_matches_a_gauss_of_s_0_5_not_0_4() {
+    let gap = |power: f64, s: f64| {
+        (0..=4000)
+            .map(|i| -2.0 + 4.0 * f64::from(i) / 4000.0)
+            .map(|x: f64| (x.cos().max(0.0).powf(power) - (-x * x / (2.0 * s * s)).exp()).abs())
+            .fold(0.0, f64::max)
+    };
+    let written = gap(4.0, 0.4);
+    assert!((written - 0.1401).abs() < 1e-3, "{written}");
+    assert!((gap(6.25, 0.4) - 0.0309).abs() < 1e-3);
+    assert!((gap(4.0, 0.5) - 0.0502).abs() < 1e-3);
+    assert!(written > 4.0 * gap(6.25, 0.4));
+}

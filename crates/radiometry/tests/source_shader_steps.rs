@@ -196,3 +196,82 @@ fn course_000_mirror_search_depends_on_an_uninitialised_hit() {
     };
     assert_eq!(search(leftover), leftover, "the mirrors are hidden");
 }
+
+/// `002` line 193, "Phong shading with 0.2 min. ambient contribution",
+/// `s = max(0.2, dot(L, N))`: a floor, not an added term. A lit point
+/// whose light comes in at `cos θ = 0.1` is shown exactly as its own shadow
+/// (line 198, `s = 0.2`), and a point lit head-on gets its diffuse colour
+/// with no ambient added, where "ambient + diffuse" gives `0.2 + cos θ`.
+/// Exact: one product by the same factor on both sides.
+#[test]
+fn course_002_ambient_floor_is_a_max_not_an_added_term() {
+    let red = DVec3::new(0.7, 0.0, 0.0); // the first sphere, line 134
+    let light = |cos: f64| DVec3::new((1.0 - cos * cos).sqrt(), cos, 0.0) * 10.0;
+    let grazing = course::shade_002(red, DVec3::ZERO, DVec3::Y, light(0.1), false);
+    let shadowed = course::shade_002(red, DVec3::ZERO, DVec3::Y, light(0.1), true);
+    assert_eq!(grazing, shadowed, "lit at cos θ = 0.1 and in shadow");
+    let head_on = course::shade_002(red, DVec3::ZERO, DVec3::Y, DVec3::Y * 10.0, false);
+    assert_eq!(head_on, red, "no ambient added to a lit point");
+    let added = red * (0.2 + 1.0);
+    assert!((added - head_on).length() > 0.1, "{added} vs {head_on}");
+}
+
+/// `002` lines 186–193: the point light `light0` sets only the direction
+/// `L`; nothing divides by the distance. Two points on one normal, 1 m and
+/// 2 m below the light, are shaded alike, where the inverse-square law
+/// (`radiometry::radiance::point_irradiance`) gives the nearer four times
+/// the irradiance. Tolerance 4ε on the law's ratio: two divisions by a
+/// squared distance that is exact here.
+#[test]
+fn course_002_point_light_does_not_fall_off_with_distance() {
+    use radiometry::radiance::point_irradiance;
+    let grey = DVec3::splat(0.6); // the ground, line 154
+    let light = DVec3::new(0.0, 4.0, 0.0);
+    let (near, far) = (DVec3::new(0.0, 3.0, 0.0), DVec3::new(0.0, 2.0, 0.0));
+    let shown_near = course::shade_002(grey, near, DVec3::Y, light, false);
+    let shown_far = course::shade_002(grey, far, DVec3::Y, light, false);
+    assert_eq!(
+        shown_near, shown_far,
+        "the course's shading ignores distance"
+    );
+    let e = |p| {
+        point_irradiance(1.0, light, p, DVec3::Y)
+            .unwrap()
+            .irradiance
+    };
+    let ratio = e(near) / e(far);
+    assert!((ratio - 4.0).abs() <= 4.0 * EPS * 4.0, "{ratio}");
+}
+
+/// `002` lines 230–247: the reflection is mixed in by the material's
+/// constant `reflectance`, whatever the angle. A half-mirror seen head-on
+/// and at 85° from its normal mixes in the same share of what it reflects,
+/// where the Fresnel reflectance of glass (`n = 1.5`) is 4 % head-on and
+/// several times that at 85°. Exact for the course's mix: the same
+/// arithmetic at both angles; the law's values within 1e−12 of the
+/// references `radiometry::fresnel::dielectric` is checked against.
+#[test]
+fn course_002_reflection_is_weighted_alike_at_every_angle() {
+    use radiometry::fresnel::dielectric;
+    let mirror = |_: DVec3| Hit002 {
+        position: DVec3::ZERO,
+        normal: DVec3::Y,
+        colour: DVec3::new(0.2, 0.2, 0.2),
+        reflectance: 0.5,
+    };
+    let beyond = Hit002 {
+        position: DVec3::new(0.0, 10.0, 0.0),
+        normal: -DVec3::Y,
+        colour: DVec3::new(1.0, 0.0, 0.0),
+        reflectance: 0.0,
+    };
+    let grazing = 85.0_f64.to_radians();
+    let shown: Vec<DVec3> = [-DVec3::Y, DVec3::new(grazing.sin(), -grazing.cos(), 0.0)]
+        .into_iter()
+        .map(|d| course::reflection_loop_002(d, mirror(d), 1, 1e-4, |_, _| Some(beyond)))
+        .collect();
+    assert_eq!(shown[0], shown[1], "the same mix head-on and at 85°");
+    let (head_on, at_85): (f64, f64) = (dielectric(1.0, 1.5), dielectric(grazing.cos(), 1.5));
+    assert!((head_on - 0.04).abs() < 1e-12, "{head_on}");
+    assert!(at_85 > 5.0 * head_on, "{at_85}");
+}

@@ -5,6 +5,7 @@
 use std::fmt;
 use std::path::PathBuf;
 
+use ::errata::LookupError;
 use radiometry::domain::DomainError;
 use record::Lang;
 use tracer::output::OutputError;
@@ -206,6 +207,9 @@ pub enum ErrorKind {
         /// Row, from 0 at the top.
         y: u32,
     },
+    /// An erratum id or a class of errata that `optics errata` does not
+    /// know.
+    Errata(::errata::LookupError),
     /// A failure of the cross-check harness, the trade-off sweep or the
     /// budget (the `harness` feature's commands).
     #[cfg(feature = "harness")]
@@ -244,6 +248,8 @@ impl ErrorKind {
             ErrorKind::Output(error) => render::output_name(error),
             ErrorKind::Threads(_) => "threads",
             ErrorKind::RadianceNotFinite { .. } => "render.not_finite",
+            ErrorKind::Errata(LookupError::UnknownId { .. }) => "errata.unknown_id",
+            ErrorKind::Errata(LookupError::UnknownClass { .. }) => "errata.unknown_class",
             #[cfg(feature = "harness")]
             ErrorKind::Harness(kind) => kind.name(),
         }
@@ -277,6 +283,8 @@ impl ErrorKind {
             | ErrorKind::RadianceNotFinite { .. } => None,
             ErrorKind::Scene { error, .. } => Some(error.field().to_owned()),
             ErrorKind::Output(_) => Some("--output".to_owned()),
+            ErrorKind::Errata(LookupError::UnknownId { .. }) => Some("ID".to_owned()),
+            ErrorKind::Errata(LookupError::UnknownClass { .. }) => Some("--class".to_owned()),
             #[cfg(feature = "harness")]
             ErrorKind::Harness(kind) => kind.field(),
         }

@@ -26,6 +26,7 @@ mod checkout;
 #[cfg(feature = "harness")]
 mod compare;
 mod domain;
+mod errata;
 #[cfg(feature = "harness")]
 mod harness;
 mod input;
@@ -102,6 +103,7 @@ impl ErrorKind {
                 "a(z) ({x}, {y}) képpont sugársűrűsége nem véges f32-ben: az utak erősítése ott \
                  meghaladja az f32 tartományát; semmi sem íródott ki"
             ),
+            ErrorKind::Errata(error) => errata::lookup(error, lang),
             #[cfg(feature = "harness")]
             ErrorKind::Harness(kind) => kind.message(lang),
         }

@@ -4,8 +4,9 @@
 //! compare` reads (`compare_images`), `optics tradeoff`'s numeric flags
 //! (`tradeoff_flags`), the accuracy budget's flags of `optics render`
 //! (`budget_flags`), the job and result lines of a sweep spread over
-//! machines (`tradeoff_jobs`) and the vectors of `optics envmap`,
-//! `reflection-matrix` and `shadow-matrix` (`technique_flags`).
+//! machines (`tradeoff_jobs`), the vectors of `optics envmap`,
+//! `reflection-matrix` and `shadow-matrix` (`technique_flags`) and the
+//! ids and classes of `optics errata` (`errata_args`).
 //!
 //! Each target generates inputs from the course's own requests, mutates
 //! them (numbers at the edges of `f64`, wrong types, missing and unknown
@@ -22,6 +23,7 @@ mod batch_lines;
 mod budget_flags;
 #[cfg(feature = "harness")]
 mod compare_images;
+mod errata_args;
 mod flag_values;
 mod render_flags;
 mod technique_flags;

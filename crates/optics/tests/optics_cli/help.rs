@@ -10,6 +10,7 @@ fn every_subcommand_has_help_with_an_example() {
         &["batch"],
         &["render"],
         &["inspect"],
+        &["errata"],
         &["validate"],
     ];
     let laws = optics::law_table::LAWS

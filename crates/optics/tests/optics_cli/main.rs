@@ -9,6 +9,7 @@
 mod batch;
 mod common;
 mod edge_numbers;
+mod errata;
 mod errors;
 mod help;
 mod laws;

@@ -113,6 +113,30 @@ pub fn reflection_loop_002<V: Vector3>(
     color
 }
 
+/// `002` lines 181–204, the shading function (its signature elided): the
+/// hit's `diffuse` colour times `s = max(0.2, dot(L, N))`, and `s = 0.2`
+/// when a sphere stops the ray towards the point light `light0`
+/// (`occluded`), with `L = normalize(light0 − position)` and `N` the unit
+/// `normal`. Returns `color`.
+///
+/// **Wrong** twice. The "0.2 min. ambient contribution" (line 192) is a
+/// floor, not an added ambient term: a lit point whose `cos θ` is below 0.2
+/// gets exactly what its own shadow gets, and a lit point above it no
+/// ambient at all. And `light0` is a point light whose light does not fall
+/// off: `s` depends on the direction to the light, never on its distance,
+/// where the irradiance of a point light is `I cos θ / r²`
+/// ([`crate::radiance::point_irradiance`]).
+pub fn shade_002<V: Vector3>(diffuse: V, position: V, normal: V, light0: V, occluded: bool) -> V {
+    let floor = V::Scalar::lit(0.2);
+    let to_light = (light0 - position).normalize();
+    let s = if occluded {
+        floor
+    } else {
+        floor.max(to_light.dot(normal))
+    };
+    diffuse * s
+}
+
 /// What `intersectMirrors` reads of `000`'s `Hit` (lines 1787–1795):
 /// whether it hit, and how far along the ray.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -316,3 +316,48 @@ fn the_reflection_factors_are_the_slides_f_s_and_f_inverse() {
         .abs_diff_eq(r.from_floor * r.mirror * r.to_floor, 0.0));
     assert_eq!(r.mirror.determinant(), -1.0);
 }
+
+/// One pixel of a depth-buffered framebuffer, drawn as OpenGL draws: with
+/// `GL_DEPTH_TEST` on a fragment is kept only if nearer than what is
+/// there (and writes its depth); with it off every fragment is kept and
+/// no depth is written (OpenGL 2.1 §4.1.6).
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Pixel {
+    colour: &'static str,
+    depth: f64,
+}
+
+impl Pixel {
+    fn draw(&mut self, colour: &'static str, depth: f64, depth_test: bool) {
+        if !depth_test {
+            self.colour = colour;
+        } else if depth < self.depth {
+            *self = Pixel { colour, depth };
+        }
+    }
+}
+
+/// `001` lines 609–680: the listing draws the ground, the lit jet (line
+/// 627), then the shadow with `glDisable(GL_DEPTH_TEST)` (lines 642–654).
+/// At a pixel where the jet (5 m away) stands in front of the shadow on
+/// the ground (10 m away), the shadow drawn last without the depth test
+/// covers the jet; in the order of lines 601–603 (ground, shadow without
+/// the depth test, then everything else with it) the jet stays in front.
+/// Exact: a comparison of depths.
+#[test]
+fn course_001_shadow_drawn_last_without_depth_test_covers_the_jet() {
+    let cleared = Pixel {
+        colour: "clear",
+        depth: f64::INFINITY,
+    };
+    let mut listing = cleared;
+    listing.draw("ground", 10.0, true);
+    listing.draw("jet", 5.0, true);
+    listing.draw("shadow", 10.0, false);
+    assert_eq!(listing.colour, "shadow", "the listing's order");
+    let mut slides = cleared;
+    slides.draw("ground", 10.0, true);
+    slides.draw("shadow", 10.0, false);
+    slides.draw("jet", 5.0, true);
+    assert_eq!(slides.colour, "jet", "the order of lines 601–603");
+}

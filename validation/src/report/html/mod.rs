@@ -1,6 +1,7 @@
 //! `report.html`: the report for people, section by section.
 
 mod areas;
+mod course_texts;
 mod figures;
 mod format;
 mod renders;
@@ -12,6 +13,7 @@ use std::fmt::Write as _;
 use super::document::Report;
 use crate::check::{Check, Metric};
 use areas::{gather, Gathered};
+use course_texts::course_texts_card;
 use figures::{figure, REGENERATE};
 use format::{escape, number, quote, readable, readable_at, status};
 use renders::render_gallery;
@@ -123,7 +125,8 @@ figcaption{font-size:.85em;color:#444;overflow-wrap:anywhere}\
 .trade td,.trade th{overflow-wrap:normal}.trade td:first-child{min-width:9em}.trade td:last-child{white-space:nowrap}.plot{max-width:48em}\
 .ramp{display:inline-block;width:8em;height:1em;border:1px solid #888;vertical-align:middle}code{background:#f4f4f4;overflow-wrap:anywhere}";
 
-/// One card per area: its pass count, its headline, its figure.
+/// One card per area: its pass count, its headline, its figure; then the
+/// course texts' card.
 fn cards(h: &mut String, areas: &[Gathered]) {
     h.push_str("<div class=cards>\n");
     for a in areas {
@@ -149,6 +152,7 @@ fn cards(h: &mut String, areas: &[Gathered]) {
         }
         h.push_str("</div>\n");
     }
+    course_texts_card(h);
     h.push_str("</div>\n");
 }
 

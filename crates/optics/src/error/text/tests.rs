@@ -47,6 +47,7 @@ fn every_kind() -> Vec<(Error, Vec<String>)> {
     let our_usage = usage(&["optics", "reflect", "--wi", "0,1", "--normal", "0,0,1"]);
     let json_error = || serde_json::from_str::<serde_json::Value>("{").unwrap_err();
     let named = |name: &str| vec![name.to_owned()];
+    let named_all = |names: &[&str]| names.iter().map(|&n| n.to_owned()).collect::<Vec<_>>();
     let laws = crate::law_table::LAWS.join(", ");
     let mut kinds: Vec<(ErrorKind, Vec<String>)> = vec![
         (
@@ -183,6 +184,22 @@ fn every_kind() -> Vec<(Error, Vec<String>)> {
             ErrorKind::Encode(json_error()),
             vec![json_error().to_string()],
         ),
+        (
+            ErrorKind::Errata(::errata::LookupError::UnknownId {
+                id: "003-teleport".into(),
+            }),
+            vec![
+                "ID".into(),
+                "\"003-teleport\"".into(),
+                "optics errata".into(),
+            ],
+        ),
+        (
+            ErrorKind::Errata(::errata::LookupError::UnknownClass {
+                class: "severe".into(),
+            }),
+            named_all(&["--class", "\"severe\"", "physics", "picture", "cosmetic"]),
+        ),
     ];
     kinds.extend(render_kinds::examples());
     #[cfg(feature = "harness")]
@@ -240,6 +257,8 @@ fn slot(kind: &ErrorKind) -> usize {
         ErrorKind::Overflow { .. } => 21,
         ErrorKind::LineTooLong { .. } => 22,
         ErrorKind::SchlickFormUnnamed { .. } => 23,
+        ErrorKind::Errata(::errata::LookupError::UnknownId { .. }) => 24,
+        ErrorKind::Errata(::errata::LookupError::UnknownClass { .. }) => 25,
         ErrorKind::Scene { error, .. } => CALCULATOR + render_kinds::scene_slot(error.kind()),
         ErrorKind::Output(error) => CALCULATOR + render_kinds::output_slot(error),
         ErrorKind::Threads(_) => CALCULATOR + render_kinds::THREADS,
@@ -300,7 +319,7 @@ fn slot(kind: &ErrorKind) -> usize {
 }
 
 /// The calculator's own kinds' slots.
-const CALCULATOR: usize = 24;
+const CALCULATOR: usize = 26;
 
 #[cfg(feature = "harness")]
 const SLOTS: usize = CALCULATOR
