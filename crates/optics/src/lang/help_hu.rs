@@ -16,6 +16,7 @@
 #[cfg(feature = "harness")]
 mod harness;
 mod laws;
+mod quiz;
 mod scene;
 mod slot;
 
@@ -24,11 +25,13 @@ pub(crate) use slot::Slot;
 /// Every slot, by the family of commands it belongs to.
 pub(crate) static SLOTS: &[&[Slot]] = &[
     SHARED,
-    laws::QUIZ,
+    quiz::QUIZ,
     laws::LAWS,
     scene::SCENE,
     #[cfg(feature = "harness")]
     harness::HARNESS,
+    #[cfg(feature = "harness")]
+    harness::BUDGET,
 ];
 
 /// The program's own texts, its global and built-in flags, clap's `help`
@@ -107,7 +110,6 @@ const SHARED: &[Slot] = &[
         "height",
         "A kép magassága képpontban (alapértelmezés: a színtéré)",
     ),
-    (&[], "threads", "Munkaszálak száma (alapértelmezés: minden mag)"),
     (&[], "integrator=local", "Csak közvetlen fény; a tükrökben és az üvegben a háttér látszik"),
     (&[], "integrator=whitted", "Whitted-féle sugárkövetés: rekurzív tükrös visszaverődés és törés, árnyéksugarak"),
     (&[], "integrator=path", "Útkövetés: Monte Carlo globális megvilágítás"),

@@ -1,10 +1,12 @@
-//! The Hungarian of the cross-check harness's commands: `validate`,
-//! `compare`, `tradeoff` and `tradeoff-job` (feature `harness`).
+//! The Hungarian of what the cross-check harness (feature `harness`)
+//! adds: the commands `validate`, `compare`, `tradeoff` and
+//! `tradeoff-job`, and `render`'s error budget.
 
 use super::slot::Slot;
 
 /// `validate`, `compare`, `tradeoff`, `tradeoff-job`.
 pub(super) const HARNESS: &[Slot] = &[
+    (&[], "threads", "Munkaszálak száma (alapértelmezés: minden mag)"),
     (
         &["validate"],
         "#about",
@@ -234,5 +236,73 @@ Lásd: docs/cli.md, `Spread a sweep over machines` fejezet.",
         &["tradeoff-job"],
         "out",
         "Az eredmény könyvtára (ha hiányzik, létrejön)",
+    ),
+];
+
+/// `render`'s error budget (`--tolerance` and the flags that go with it).
+pub(super) const BUDGET: &[Slot] = &[
+    (
+        &["render"],
+        "tolerance",
+        "A legolcsóbb beállítások választása, amelyek becsült hibája (--metric) ez alatt marad: \
+         pozitív, véges szám (0.05 relatív négyzetes középhiba 5 %). A költségkeret választja a \
+         módszert, a mintaszámot, a max_depth értékét, a Fresnel-modellt és a képpontszűrőt: \
+         ezek egyikét se adja meg",
+    ),
+    (
+        &["render"],
+        "metric",
+        "Amire a tűrés vonatkozik: a lineáris sugársűrűség relatív négyzetes középhibája, a \
+         megjelenített kép ΔE2000 színkülönbségének átlaga vagy 99. percentilise, vagy ꟻLIP-átlaga, \
+         ahogy az `optics tradeoff` méri őket",
+    ),
+    (
+        &["render"],
+        "metric=rel_rmse",
+        "A lineáris sugársűrűség relatív négyzetes középhibája a felületi képpontokon",
+    ),
+    (
+        &["render"],
+        "metric=delta_e_mean",
+        "A megjelenített kép ΔE2000 színkülönbségének átlaga",
+    ),
+    (
+        &["render"],
+        "metric=delta_e_p99",
+        "A megjelenített kép ΔE2000 színkülönbségének 99. percentilise",
+    ),
+    (
+        &["render"],
+        "metric=flip_mean",
+        "A megjelenített kép ꟻLIP-átlaga",
+    ),
+    (
+        &["render"],
+        "verify",
+        "Az elért hiba mérése a referenciaképhez képest (amely --truth-spp mintával készül, vagy a \
+         gyorsítótárból jön)",
+    ),
+    (
+        &["render"],
+        "lambert",
+        "A színtér mérése és renderelése úgy, hogy course_rough anyagai kd albedójú \
+         Lambert-anyagok legyenek, ahogy az `optics tradeoff --lambert` helyettesíti őket (a \
+         kurzus kd-je 1/sr egységű: π kd albedója 1 fölé megy, és egyetlen referenciakép sem \
+         konvergál); a --verify ekkor a megfelelő referenciaképet használja",
+    ),
+    (
+        &["render"],
+        "pilot_spp",
+        "Minta képpontonként a próbamenetben, két félben",
+    ),
+    (
+        &["render"],
+        "truth_spp",
+        "Minta képpontonként a --verify referenciaképéhez (két félben)",
+    ),
+    (
+        &["render"],
+        "truth_cache",
+        "A referenciaképek gyorsítótára (közös az `optics tradeoff` paranccsal)",
     ),
 ];
