@@ -245,7 +245,7 @@ pub(super) const BUDGET: &[Slot] = &[
         &["render"],
         "tolerance",
         "A legolcsóbb beállítások választása, amelyek becsült hibája (--metric) ez alatt marad: \
-         pozitív, véges szám (0.05 relatív négyzetes középhiba 5 %). A költségkeret választja a \
+         pozitív, véges szám (a 0.05-ös relatív négyzetes középhiba 5 %). A költségkeret választja a \
          módszert, a mintaszámot, a max_depth értékét, a Fresnel-modellt és a képpontszűrőt: \
          ezek egyikét se adja meg",
     ),
