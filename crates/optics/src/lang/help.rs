@@ -5,10 +5,11 @@
 //! Every text a help page shows has a slot, named by the command's path
 //! (`["quiz", "f0"]`) and a key: an argument's id (`"n"`), a possible
 //! value as `"arg=value"`, or the command's own `"#about"`,
-//! `"#long_about"` and `"#after_help"`. A slot declared on a command
-//! also serves the same key in every command below it: the global flags
-//! and the built-in `help` and `version` are declared once, on the root.
-//! [`english_texts`] lists every slot the English help fills, so that a
+//! `"#long_about"` and `"#after_help"`. An argument's or a value's slot
+//! declared on a command also serves the same key in every command below
+//! it: the global flags and the built-in `help` and `version` are
+//! declared once, on the root.
+//! `english_texts` lists every slot the English help fills, so that a
 //! test can name each one the table lacks.
 //!
 //! clap writes a few words of its own ("Usage:", "Options:", "[default:
@@ -21,7 +22,7 @@ use clap::Arg;
 use super::help_hu::{Slot, SLOTS};
 use crate::law_table::LAWS;
 
-/// A slot's key on a command: its own about, long about and after-help.
+/// The key of a command's about (its one-line description).
 pub(crate) const ABOUT: &str = "#about";
 /// The key of a command's long about (a doc comment of two paragraphs or more).
 pub(crate) const LONG_ABOUT: &str = "#long_about";
