@@ -34,8 +34,7 @@ mod usage;
 #[cfg(feature = "harness")]
 pub use harness::HarnessKind;
 pub use kind::{Error, ErrorKind};
-pub(crate) use text::decimal_comma;
-pub(crate) use usage::decimal_comma_fixed;
+pub(crate) use text::usage_rendered;
 
 /// The outcome of a step that can fail with one of the suite's own errors.
 pub type Result<T, E = Error> = std::result::Result<T, E>;

@@ -212,9 +212,13 @@ fn run(command: &Command, ui: &Ui) -> error::Result<ExitCode> {
 
 /// Parses the command line, runs the command, prints any error; the exit status.
 pub fn main_entry() -> ExitCode {
-    let cli = match Cli::try_parse() {
+    let args: Vec<std::ffi::OsString> = std::env::args_os().collect();
+    // The form asked for, read before parsing: a help page or a syntax
+    // error is already in it.
+    let asked = Ui::from_raw_args(args.iter().cloned());
+    let cli = match parse(args, asked.lang) {
         Ok(cli) => cli,
-        Err(usage) => return usage_failure(usage),
+        Err(usage) => return usage_failure(usage, &asked),
     };
     let ui = Ui {
         json: cli.json,
@@ -230,8 +234,19 @@ pub fn main_entry() -> ExitCode {
     }
 }
 
+/// The command line parsed by the parser whose help speaks `lang`.
+fn parse(args: Vec<std::ffi::OsString>, lang: Lang) -> Result<Cli, clap::Error> {
+    use clap::{CommandFactory, FromArgMatches};
+    let mut command = match lang {
+        Lang::En => Cli::command(),
+        Lang::Hu => lang::help::hungarian(Cli::command()),
+    };
+    let mut matches = command.try_get_matches_from_mut(args)?;
+    Cli::from_arg_matches_mut(&mut matches).map_err(|error| error.format(&mut command))
+}
+
 /// A command line that did not parse, or asked for help or the version.
-fn usage_failure(usage: clap::Error) -> ExitCode {
+fn usage_failure(usage: clap::Error, ui: &Ui) -> ExitCode {
     use clap::error::ErrorKind as Clap;
     let code = ExitCode::from(u8::try_from(usage.exit_code()).unwrap_or(2));
     match usage.kind() {
@@ -241,7 +256,7 @@ fn usage_failure(usage: clap::Error) -> ExitCode {
             // Help is what was asked for, not a failure to report.
             let _ = usage.print();
         }
-        _ => Ui::from_raw_args(std::env::args_os()).report(&ErrorKind::Usage(usage).into()),
+        _ => ui.report(&ErrorKind::Usage(usage).into()),
     }
     code
 }

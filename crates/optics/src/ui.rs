@@ -74,18 +74,9 @@ impl Ui {
             let json = serde_json::json!({ "error": error.to_json(self.lang) });
             let _ = print_out(&format!("{json}\n"));
         }
-        let text = match (error.kind(), self.lang) {
-            // The parser's own rendering, with its usage line and hint.
-            (ErrorKind::Usage(usage), Lang::En) => {
-                let rendered = usage.render().to_string();
-                match (error::decimal_comma_fixed(usage), rendered.split_once('\n')) {
-                    (Some(fixed), Some((first, rest))) => format!(
-                        "{first}\n\n  tip: {}\n{rest}",
-                        error::decimal_comma(&fixed, Lang::En)
-                    ),
-                    _ => rendered,
-                }
-            }
+        let text = match error.kind() {
+            // The parser's own layout, with its usage line and tips.
+            ErrorKind::Usage(usage) => error::usage_rendered(usage, self.lang),
             _ => format!(
                 "{}: {}\n",
                 self.lang.pick("error", "hiba"),

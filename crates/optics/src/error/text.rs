@@ -37,8 +37,9 @@ mod output;
 mod pipeline;
 mod scene;
 mod usage;
+mod usage_hu;
 
-pub(crate) use usage::decimal_comma;
+pub(crate) use usage::rendered as usage_rendered;
 
 impl ErrorKind {
     /// The kind's message in `lang`.

@@ -197,8 +197,9 @@ fn json_errors_are_typed_objects_naming_the_field() {
 }
 
 /// Through the binary, a few of every family of kinds in Hungarian: the
-/// suite's own messages wholly translated, the argument parser's kept
-/// behind a Hungarian lead-in naming the argument.
+/// suite's own messages wholly translated, the argument parser's written
+/// in Hungarian behind a lead-in naming the argument (the first line of
+/// what stderr shows).
 #[test]
 fn hungarian_errors_leave_no_english_of_the_suites_own() {
     let cases: &[(&[&str], &str)] = &[
@@ -227,7 +228,7 @@ fn hungarian_errors_leave_no_english_of_the_suites_own() {
         ),
         (
             &["fresnel", "--eta", "glass", "--cos-i", "0.3"],
-            "hiba: hibás parancssori argumentum (--eta <ETA>): invalid value 'glass' for '--eta <ETA>': invalid float literal",
+            "hiba: hibás parancssori argumentum (--eta <ETA>): érvénytelen érték: 'glass' (nem szám)",
         ),
     ];
     for (args, message) in cases {
@@ -235,7 +236,8 @@ fn hungarian_errors_leave_no_english_of_the_suites_own() {
         all.extend_from_slice(args);
         let output = optics(&all);
         assert!(!output.status.success(), "optics {all:?} succeeded");
-        assert_eq!(stderr(&output).trim(), *message, "optics {all:?}");
+        let text = stderr(&output);
+        assert_eq!(text.lines().next(), Some(*message), "optics {all:?}");
     }
     let batch = crate::common::batch_in(&["--lang", "hu"], "not json\n");
     let error = &batch.0[0]["error"];
@@ -327,4 +329,23 @@ fn a_decimal_comma_is_refused_with_the_number_it_meant() {
     assert!(message.contains("not a comma: 1.5"), "{message}");
     let neither = stderr(&optics(&["quiz", "critical-angle", "--n", "1,4,5"]));
     assert!(!neither.contains("decimal point"), "{neither}");
+}
+
+/// Under `--lang hu` a command line that does not parse is refused in
+/// Hungarian with clap's layout kept: the tip, the usage line, where to
+/// read more, exit status 2, and with `--json` the error object.
+#[test]
+fn a_hungarian_parser_error_keeps_its_tip_and_usage() {
+    let output = optics(&["--lang", "hu", "rendr"]);
+    assert_eq!(output.status.code(), Some(2));
+    assert_eq!(
+        stderr(&output),
+        "hiba: ismeretlen alparancs: 'rendr'\n\n  tipp: van hasonló alparancs: 'render'\n\n\
+         Használat: optics [OPTIONS] <COMMAND>\n\nBővebben: '--help'.\n"
+    );
+    let json = optics(&["--json", "--lang", "hu", "rendr"]);
+    assert_eq!(json.status.code(), Some(2));
+    let error: Value = serde_json::from_slice(&json.stdout).unwrap();
+    assert_eq!(error["error"]["kind"], "usage");
+    assert_eq!(error["error"]["message"], "ismeretlen alparancs: 'rendr'");
 }

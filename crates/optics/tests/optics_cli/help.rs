@@ -1,4 +1,4 @@
-//! Every subcommand's `--help` shows an example.
+//! Every subcommand's `--help` shows an example, in the language asked for.
 
 use crate::common::{optics, stdout};
 
@@ -29,5 +29,27 @@ fn every_subcommand_has_help_with_an_example() {
             text.contains("Example") && text.contains("optics "),
             "no example in optics {args:?}:\n{text}"
         );
+    }
+}
+
+/// `--lang hu` rewrites the help before parsing: the about, clap's own
+/// headings and the flags' help are Hungarian, the examples verbatim.
+#[test]
+fn hungarian_help_is_hungarian_and_keeps_its_examples() {
+    let output = optics(&["--lang", "hu", "quiz", "f0", "--help"]);
+    assert!(output.status.success());
+    let text = stdout(&output);
+    let expected = [
+        "Merőleges beesésű visszaverődés (F0) a törésmutatóból\n\nHasználat: optics quiz f0",
+        "Kapcsolók:",
+        "Törésmutató (a külső közeghez viszonyítva)",
+        "[alapértelmezett: 0]",
+        "Példa (a kvíz 2. kérdése):\n  optics quiz f0 --n 1.4",
+    ];
+    for part in expected {
+        assert!(text.contains(part), "no {part:?} in\n{text}");
+    }
+    for english in ["Usage:", "Options:", "[default:", "Print help"] {
+        assert!(!text.contains(english), "{english:?} in\n{text}");
     }
 }

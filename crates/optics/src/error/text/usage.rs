@@ -1,14 +1,13 @@
 //! A command-line error in both languages: the argument parser's message
-//! in English (with the decimal point's advice), and in Hungarian a
-//! lead-in naming the argument, then the suite's own message translated,
-//! or else the parser's as it wrote it.
-
-use std::error::Error as _;
+//! in English (with the decimal point's advice), and in Hungarian the same
+//! written from the error's context (`usage_hu`), a refused value behind
+//! a lead-in naming the argument.
 
 use record::{say, Lang};
 
+use super::usage_hu;
+
 use crate::error::usage::{decimal_comma_fixed, usage_argument, usage_message};
-use crate::error::Error;
 
 /// The advice after a number refused for its decimal comma.
 pub(crate) fn decimal_comma(fixed: &str, lang: Lang) -> String {
@@ -19,19 +18,54 @@ pub(crate) fn decimal_comma(fixed: &str, lang: Lang) -> String {
     )
 }
 
-/// The parser's error in `lang`.
+/// The parser's error in `lang`, on one line (the JSON error's message).
 pub(super) fn usage(error: &clap::Error, lang: Lang) -> String {
-    let ours = error.source().and_then(|e| e.downcast_ref::<Error>());
-    let mut message = match (lang, ours) {
-        (Lang::Hu, Some(ours)) => ours.kind().message(lang),
-        (Lang::En, _) | (Lang::Hu, None) => usage_message(error),
+    let mut message = match lang {
+        Lang::En => usage_message(error),
+        Lang::Hu => hungarian(error).replace("\n  ", " "),
     };
     if let Some(fixed) = decimal_comma_fixed(error) {
         message += &format!(" ({})", decimal_comma(&fixed, lang));
     }
-    match (lang, usage_argument(error)) {
-        (Lang::En, _) => message,
-        (Lang::Hu, Some(arg)) => format!("hibás parancssori argumentum ({arg}): {message}"),
-        (Lang::Hu, None) => format!("hibás parancssor: {message}"),
+    message
+}
+
+/// The parser's error in Hungarian: a lead-in naming the argument whose
+/// value was refused, then what was wrong (the suite's own message where
+/// the value was refused by the suite's parser).
+fn hungarian(error: &clap::Error) -> String {
+    use clap::error::ErrorKind as Clap;
+    let message = usage_hu::message(error);
+    match (error.kind(), usage_argument(error)) {
+        (Clap::InvalidValue | Clap::ValueValidation, Some(arg)) => {
+            format!("hibás parancssori argumentum ({arg}): {message}")
+        }
+        _ => message,
     }
+}
+
+/// The parser's error as stderr shows it: in English clap's own
+/// rendering, in Hungarian the same layout in Hungarian; both with the
+/// decimal point's advice among the tips.
+pub(crate) fn rendered(error: &clap::Error, lang: Lang) -> String {
+    let fixed = decimal_comma_fixed(error).map(|fixed| decimal_comma(&fixed, lang));
+    if lang == Lang::En {
+        let rendered = error.render().to_string();
+        return match (fixed, rendered.split_once('\n')) {
+            (Some(fixed), Some((first, rest))) => format!("{first}\n\n  tip: {fixed}\n{rest}"),
+            _ => rendered,
+        };
+    }
+    let mut text = format!("hiba: {}", hungarian(error));
+    let tips: Vec<String> = usage_hu::tips(error).into_iter().chain(fixed).collect();
+    if !tips.is_empty() {
+        text += "\n";
+    }
+    for tip in tips {
+        text += &format!("\n  tipp: {tip}");
+    }
+    if let Some(usage) = usage_hu::usage_line(error) {
+        text += &format!("\n\n{usage}");
+    }
+    format!("{text}\n\n{}\n", usage_hu::MORE)
 }
