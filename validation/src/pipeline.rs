@@ -74,10 +74,9 @@ pub fn run(options: &Options, mut progress: impl FnMut(Step)) -> Result<Outcome,
         .clone()
         .unwrap_or_else(|| checkout.root().join("validation/out"));
     check_outputs(&out)?;
-    let python = match &options.python {
-        Some(setup) => Some(set_up_python(checkout, setup, &mut progress)?),
-        None => None,
-    };
+    let python = (options.python.as_ref())
+        .map(|setup| set_up_python(checkout, setup, &mut progress))
+        .transpose()?;
     let (reference_dir, mut first_checks) =
         references(options, python.as_deref(), &out, &mut progress)?;
     let context = Context {
@@ -101,15 +100,10 @@ pub fn run(options: &Options, mut progress: impl FnMut(Step)) -> Result<Outcome,
         let mut drawing = None;
         suite::schedule::run_merged(&kinds, &context, &mut report, |step| {
             match step {
-                Merge::Awaiting {
-                    index,
-                    name,
-                    name_hu,
-                } => progress(Step::Checks {
+                Merge::Awaiting { index, names } => progress(Step::Checks {
                     index,
                     total,
-                    name,
-                    name_hu,
+                    names,
                 }),
                 Merge::FigureData { report } => {
                     if let Some(python) = &python {

@@ -379,8 +379,8 @@ pub fn run(
 ) -> Result<Report, ReferenceError> {
     let mut report = Report::new(context.quick, command);
     schedule::run_merged(kinds, context, &mut report, |step| {
-        if let Merge::Awaiting { index, name, .. } = step {
-            progress(index, name);
+        if let Merge::Awaiting { index, names } = step {
+            progress(index, names[0]);
         }
         Ok::<(), ReferenceError>(())
     })?;

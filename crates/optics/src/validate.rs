@@ -141,8 +141,7 @@ fn progress(ui: &Ui, bar: Option<&ProgressBar>, step: Step) {
         Step::Checks {
             index,
             total,
-            name,
-            name_hu,
+            names: [name, name_hu],
         } => match bar {
             Some(bar) => {
                 bar.set_length(total as u64);

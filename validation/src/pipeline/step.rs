@@ -16,10 +16,8 @@ pub enum Step<'a> {
         index: usize,
         /// How many kinds.
         total: usize,
-        /// Its name.
-        name: &'a str,
-        /// Its name in Hungarian.
-        name_hu: &'a str,
+        /// Its name in English and in Hungarian.
+        names: [&'a str; 2],
     },
     /// Every kind of check has run.
     ChecksDone,

@@ -17,10 +17,8 @@ pub enum Merge<'a> {
     Awaiting {
         /// Which kind, from 0.
         index: usize,
-        /// Its name.
-        name: &'static str,
-        /// Its name in Hungarian.
-        name_hu: &'static str,
+        /// Its name in English and in Hungarian.
+        names: [&'static str; 2],
     },
     /// Every kind that [feeds the figures](CheckKind::feeds_figures) has
     /// finished: `report` holds their [figure data](Report::figure_data),
@@ -81,8 +79,7 @@ pub fn run_merged<E: From<ReferenceError>>(
         for (index, kind) in kinds.iter().enumerate() {
             step(Merge::Awaiting {
                 index,
-                name: kind.name(),
-                name_hu: kind.name_hu(),
+                names: [kind.name(), kind.name_hu()],
             })?;
             let part = if kind.measures_time() {
                 for (later, handle) in running.iter_mut().enumerate().skip(index + 1) {

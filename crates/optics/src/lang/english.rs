@@ -154,7 +154,12 @@ pub(crate) fn english_left(
     let prose = prose(hungarian);
     let left: BTreeSet<String> = prose
         .split_whitespace()
-        .filter(|token| !names.contains(&token.to_lowercase()))
+        .filter(|token| {
+            // A name keeps its own hyphens and underscores, not the
+            // sentence's commas and brackets.
+            let bare = token.trim_matches(|c: char| !c.is_alphanumeric() && c != '-' && c != '_');
+            !names.contains(&token.to_lowercase()) && !names.contains(&bare.to_lowercase())
+        })
         .flat_map(words)
         .filter(|word| english.contains(word) || COMMON.contains(&word.as_str()))
         .filter(|word| !NAMES.contains(&word.as_str()))

@@ -26,6 +26,7 @@ pub(crate) use slot::Slot;
 pub(crate) static SLOTS: &[&[Slot]] = &[
     SHARED,
     quiz::QUIZ,
+    quiz::ERRATA,
     laws::LAWS,
     scene::SCENE,
     #[cfg(feature = "harness")]

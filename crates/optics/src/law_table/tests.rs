@@ -2,7 +2,7 @@
 //! reader, the fields, and the table in `docs/cli.md`.
 
 use super::schema::{self, Kind};
-use super::{command_words, docs, Law, LAWS, QUIZ_LAWS};
+use super::{command_words, Law, LAWS, QUIZ_LAWS};
 use clap::CommandFactory;
 use record::{Lang, Steps};
 
@@ -101,7 +101,11 @@ fn batch_reads_every_law_the_table_lists() {
 #[test]
 fn docs_table_of_laws_is_current() {
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../docs/cli.md");
-    let section = results::Section::deterministic(docs::SECTION, docs::COMMAND, &docs::table());
+    let section = results::Section::deterministic(
+        super::docs::SECTION,
+        super::docs::COMMAND,
+        &super::docs::table(),
+    );
     if let Err(e) = results::settle_in(&path, &section) {
         panic!("{e}");
     }

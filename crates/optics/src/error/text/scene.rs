@@ -54,11 +54,7 @@ pub(super) fn scene_kind_hu(kind: &Scene) -> String {
         Scene::NotUtf8 { line, column } => {
             format!("nem UTF-8 szöveg: nem UTF-8 bájt a(z) {line}. sor {column}. oszlopában")
         }
-        Scene::WrongShape { expected, got } => format!(
-            "a várt JSON-típus: {}, a kapott: {}",
-            json_type_hu(*expected),
-            json_type_hu(*got)
-        ),
+        Scene::WrongShape { expected, got } => wrong_shape_hu(*expected, *got),
         Scene::Syntax {
             message,
             line,
@@ -101,12 +97,7 @@ pub(super) fn scene_kind_hu(kind: &Scene) -> String {
             distance,
             rounding,
             widest,
-        } => format!(
-            "a pontfényforrás {distance:.3e} m-re van a legközelebbi felülettől, a \
-             metszéspontok f32-kerekítésén belül ({rounding:.3e} m, ezt a(z) {widest}. objektum \
-             koordinátái szabják meg): a megvilágítása ott korlátlan; a fényt távolabb kell \
-             vinni a felülettől, vagy a(z) {widest}. objektumot közelebb az origóhoz"
-        ),
+        } => light_within_rounding_hu(*distance, *rounding, *widest),
         Scene::TooExpensive { rays } => too_expensive_hu(*rays),
         Scene::DielectricWithoutInside => "a dielektrikumhoz belső térrel bíró zárt felület \
                                            kell: csak gömb lehet dielektrikum"
@@ -170,6 +161,23 @@ fn bump_hu(error: &FieldError) -> String {
 }
 
 /// The scene's numbers bound a radiance past f32's range, in Hungarian.
+fn light_within_rounding_hu(distance: f64, rounding: f64, widest: usize) -> String {
+    format!(
+        "a pontfényforrás {distance:.3e} m-re van a legközelebbi felülettől, a \
+         metszéspontok f32-kerekítésén belül ({rounding:.3e} m, ezt a(z) {widest}. objektum \
+         koordinátái szabják meg): a megvilágítása ott korlátlan; a fényt távolabb kell \
+         vinni a felülettől, vagy a(z) {widest}. objektumot közelebb az origóhoz"
+    )
+}
+
+fn wrong_shape_hu(expected: JsonType, got: JsonType) -> String {
+    format!(
+        "a várt JSON-típus: {}, a kapott: {}",
+        json_type_hu(expected),
+        json_type_hu(got)
+    )
+}
+
 fn radiance_overflow_hu(bound: f64) -> String {
     format!(
         "a jelenet számai együtt legfeljebb {bound:.3e} W/(sr·m²) sugársűrűséget adnak, \

@@ -5,7 +5,10 @@ use super::slot::Slot;
 /// The Fresnel models: values of `fresnel --model` and of the scene
 /// flags' `--fresnel`.
 pub(super) const FRESNEL_EXACT: &str = "A pontos Fresnel-egyenletek";
-pub(super) const FRESNEL_SCHLICK: &str = "Schlick-közelítés";
+pub(super) const FRESNEL_SCHLICK_INCIDENT: &str =
+    "Schlick-közelítés a beesési szög koszinuszával, ahogy a kurzus írja: nem ismeri a teljes visszaverődést";
+pub(super) const FRESNEL_SCHLICK_RARER: &str =
+    "Schlick-közelítés a ritkább közegbeli szög koszinuszával: a teljes visszaverődés helyes";
 pub(super) const FRESNEL_COURSE: &str =
     "A kurzus árnyalójának fordított alakja, hogy ennek a hibának (erratum) a hatása külön mérhető legyen";
 
@@ -51,7 +54,8 @@ pub(super) const LAWS: &[Slot] = &[
         "A törvény: a pontos, a Schlick-közelítés, vagy a kurzus árnyalójának fordított alakja",
     ),
     (&["fresnel"], "model=exact", FRESNEL_EXACT),
-    (&["fresnel"], "model=schlick", FRESNEL_SCHLICK),
+    (&["fresnel"], "model=schlick-incident", FRESNEL_SCHLICK_INCIDENT),
+    (&["fresnel"], "model=schlick-rarer", FRESNEL_SCHLICK_RARER),
     (&["fresnel"], "model=course", FRESNEL_COURSE),
     (
         &["fresnel-bulk"],

@@ -1,4 +1,5 @@
-//! The Hungarian of the quiz's help (`optics quiz …`).
+//! The Hungarian of the help of the course's quiz and errata (`optics quiz
+//! …`, `optics errata`).
 
 use super::slot::Slot;
 
@@ -112,4 +113,36 @@ pub(super) const QUIZ: &[Slot] = &[
         "A kamera felé mutató irány (hossza tetszőleges)",
     ),
     (&["quiz", "blinn-phong"], "kd", "Diffúz együttható"),
+];
+
+/// `optics errata`.
+pub(super) const ERRATA: &[Slot] = &[
+    (
+        &["errata"],
+        "#about",
+        "A kurzus szövegeinek hibái osztály szerint rangsorolva, vagy egy közülük az azonosítója szerint",
+    ),
+    (
+        &["errata"],
+        "#after_help",
+        "Példák:
+  optics errata                              (minden hiba, a fizikaiak elöl)
+  optics errata --class physics
+  optics --lang hu errata 003-boxed-refraction   (ami helyes, magyarul)
+  optics --json errata --class cosmetic      (egyetlen JSON-objektum; a hibák a válaszmezőben)
+
+Osztályok: physics (fizika: hibás fizika, amit a hallgató megtanulna), picture (kép: megváltoztatja
+a programlista vagy az árnyaló rajzolta képet), cosmetic (kozmetikai: szedés, kerekítés, nevek).
+A táblázat: crates/errata/errata.json; a docs/errata.md ebből készül.",
+    ),
+    (
+        &["errata"],
+        "id",
+        "Egy hiba azonosítója, ahogy a lista mutatja (`003-boxed-refraction`); nélküle minden hiba, rangsorban",
+    ),
+    (
+        &["errata"],
+        "class",
+        "Csak ennek az osztálynak a hibái: physics, picture vagy cosmetic (vagy fizika, kép, kozmetikai)",
+    ),
 ];

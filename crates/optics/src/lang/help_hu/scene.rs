@@ -2,7 +2,7 @@
 //! flags (`--integrator`, `--spp`, …) are declared once, on the root, for
 //! both.
 
-use super::laws::{FRESNEL_COURSE, FRESNEL_EXACT, FRESNEL_SCHLICK};
+use super::laws::{FRESNEL_COURSE, FRESNEL_EXACT, FRESNEL_SCHLICK_INCIDENT, FRESNEL_SCHLICK_RARER};
 use super::slot::Slot;
 
 /// `render`, `inspect` and the scene flags they share.
@@ -24,7 +24,8 @@ pub(super) const SCENE: &[Slot] = &[
     ),
     (&[], "fresnel", "A tükrök és az üveg Fresnel-modellje"),
     (&[], "fresnel=exact", FRESNEL_EXACT),
-    (&[], "fresnel=schlick", FRESNEL_SCHLICK),
+    (&[], "fresnel=schlick-incident", FRESNEL_SCHLICK_INCIDENT),
+    (&[], "fresnel=schlick-rarer", FRESNEL_SCHLICK_RARER),
     (&[], "fresnel=course", FRESNEL_COURSE),
     (
         &[],

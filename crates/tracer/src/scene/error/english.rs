@@ -59,13 +59,7 @@ impl fmt::Display for ErrorKind {
                 distance,
                 rounding,
                 widest,
-            } => write!(
-                f,
-                "a point light {distance:.3e} m from the nearest surface, within the f32 \
-                 rounding of hit points ({rounding:.3e} m, set by objects[{widest}]'s \
-                 coordinates): its irradiance has no bound there; move the light away from \
-                 the surface, or bring objects[{widest}] nearer the origin"
-            ),
+            } => light_within_rounding(f, *distance, *rounding, *widest),
             ErrorKind::TooExpensive { rays } => too_expensive(f, *rays),
             ErrorKind::DielectricWithoutInside => f.write_str(
                 "a dielectric needs a closed surface with an inside: only spheres may be dielectric",
@@ -87,18 +81,21 @@ impl fmt::Display for ErrorKind {
             ErrorKind::BackgroundWithEnvironment => f.write_str(
                 "the environment replaces the background: give one of background and environment",
             ),
-            ErrorKind::SchlickFormUnnamed => {
-                let [incident, rarer] = FresnelModel::SCHLICK_FORMS;
-                write!(
-                    f,
-                    "\"schlick\" names neither of Schlick's forms: give \"{incident}\" (the \
-                     cosine of incidence, as the course writes it; misses total internal \
-                     reflection) or \"{rarer}\" (the cosine in the rarer medium; total internal \
-                     reflection right)"
-                )
-            }
+            ErrorKind::SchlickFormUnnamed => schlick_form_unnamed(f),
         }
     }
+}
+
+/// The text of [`ErrorKind::SchlickFormUnnamed`].
+fn schlick_form_unnamed(f: &mut fmt::Formatter<'_>) -> fmt::Result {
+    let [incident, rarer] = FresnelModel::SCHLICK_FORMS;
+    write!(
+        f,
+        "\"schlick\" names neither of Schlick's forms: give \"{incident}\" (the \
+         cosine of incidence, as the course writes it; misses total internal \
+         reflection) or \"{rarer}\" (the cosine in the rarer medium; total internal \
+         reflection right)"
+    )
 }
 
 /// The text of [`ErrorKind::RadianceOverflow`].
@@ -108,6 +105,22 @@ fn radiance_overflow(f: &mut fmt::Formatter<'_>, bound: f64) -> fmt::Result {
         "the scene's numbers together give radiance up to {bound:.3e} W/(sr·m²), \
          beyond f32 ({:.3e}): scale the lights or the coefficients down",
         f32::MAX
+    )
+}
+
+/// The text of [`ErrorKind::LightWithinRounding`].
+fn light_within_rounding(
+    f: &mut fmt::Formatter<'_>,
+    distance: f64,
+    rounding: f64,
+    widest: usize,
+) -> fmt::Result {
+    write!(
+        f,
+        "a point light {distance:.3e} m from the nearest surface, within the f32 \
+         rounding of hit points ({rounding:.3e} m, set by objects[{widest}]'s \
+         coordinates): its irradiance has no bound there; move the light away from \
+         the surface, or bring objects[{widest}] nearer the origin"
     )
 }
 

@@ -58,8 +58,8 @@ const CASES: &[Case] = &[
             "fresnel", "--eta", "1.5", "--cos-i", "1", "--model", "schlik",
         ],
         "hiba: hibás parancssori argumentum (--model <MODEL>): érvénytelen érték: 'schlik'\n  \
-         [lehetséges értékek: exact, schlick, course]\n",
-        Some("  tipp: van hasonló érték: 'schlick'\n"),
+         [lehetséges értékek: exact, schlick-incident, schlick-rarer, course]\n",
+        Some("  tipp: van hasonló érték: 'schlick-rarer'\n"),
         None,
     ),
     (
