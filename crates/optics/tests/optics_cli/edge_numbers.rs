@@ -131,3 +131,31 @@ fn an_overflowing_product_is_an_error_not_a_null_answer() {
     assert_eq!(error["kind"], "overflow", "{}", results[0]);
     assert_eq!(error["field"], "radiance, kd", "{}", results[0]);
 }
+
+/// Grazing incidence given as 90° is exactly grazing: R = 1 and T = 0 to
+/// the bit, for glass and for gold, not the 1 − 3.6e-16 that the rounding
+/// of 90° in radians (a cosine of 6.1e-17) gave.
+#[test]
+fn fresnel_at_ninety_degrees_is_exactly_grazing() {
+    for kappa in ["0", "3.1"] {
+        let record = json(&[
+            "fresnel",
+            "--eta",
+            "1.5",
+            "--kappa",
+            kappa,
+            "--theta-i-deg",
+            "90",
+        ]);
+        assert_eq!(record["answer"].as_f64(), Some(1.0), "{record}");
+        let steps = record["steps"].to_string();
+        assert!(steps.contains("|cos θi| = 0,"), "{steps}");
+        if kappa == "0" {
+            assert_eq!(
+                record["details"]["transmittance"].as_f64(),
+                Some(0.0),
+                "{record}"
+            );
+        }
+    }
+}

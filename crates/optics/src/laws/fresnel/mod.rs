@@ -120,7 +120,13 @@ impl FresnelArgs {
                     let name = via.name("theta_i_deg");
                     return Err(Error::from(ErrorKind::AngleDegrees { name, value: deg }));
                 }
-                deg.to_radians().cos()
+                // Grazing incidence exactly: the rounding of 90° in
+                // radians would leave a cosine of 6.1e-17.
+                if deg == 90.0 {
+                    0.0
+                } else {
+                    deg.to_radians().cos()
+                }
             }
             _ => {
                 let (cosine, angle) = (via.name("cos_i"), via.name("theta_i_deg"));
