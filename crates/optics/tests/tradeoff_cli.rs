@@ -86,7 +86,7 @@ fn the_sweep_of_a_scene_is_versioned_and_its_fronts_are_its_own_numbers() {
     );
     let sweep = read(&dir.path().join("shadow-lambert.json"));
     assert_eq!(sweep["schema"], "optics.tradeoff");
-    assert_eq!(sweep["version"], 1);
+    assert_eq!(sweep["version"], 2);
     assert!(dir.path().join("shadow-lambert.md").is_file());
     let points = sweep["points"].as_array().unwrap();
     assert_eq!(points[0]["axis"], "scene");
@@ -410,7 +410,7 @@ fn a_metal_scene_carries_its_metals_rgb_error_and_its_depth_and_schlick_findings
         "{findings}"
     );
     assert!(
-        findings["schlick"]["shortcut"]["label"] == "fresnel schlick",
+        findings["schlick"]["shortcut"]["label"] == "fresnel schlick-rarer",
         "{findings}"
     );
 }

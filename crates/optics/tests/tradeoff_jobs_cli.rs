@@ -172,7 +172,7 @@ fn collected_jobs_give_the_errors_of_a_sweep_in_one_run() {
     let collected = read(&dir.path().join("collected/shadow-lambert.json"));
     let single = read(&dir.path().join("one/shadow-lambert.json"));
     assert_eq!(collected["schema"], "optics.tradeoff");
-    assert_eq!(collected["version"], 1);
+    assert_eq!(collected["version"], 2);
     // The same seeds, the same images: every measure equal to the last
     // bit, against the truth and against the scene's own render; the
     // truth's own noise too. Times differ, and with them fronts and

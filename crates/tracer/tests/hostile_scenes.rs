@@ -219,8 +219,9 @@ fn a_read_error_gives_the_reason_once() {
     );
 }
 
-/// The cases: products of accepted numbers beyond `f32`, refused
-/// at validation and named by the material that reaches them.
+/// Products of accepted numbers beyond `f32`, refused at validation and
+/// named by the material that reaches them; a point light on a surface,
+/// whose irradiance there has no bound, named as the light.
 #[test]
 fn products_of_scene_numbers_beyond_f32_are_refused_at_the_material() {
     let mut lit = course_file("kaleidoscope_lit");
@@ -235,7 +236,6 @@ fn products_of_scene_numbers_beyond_f32_are_refused_at_the_material() {
     let (c, r) = (&sphere["center"], sphere["radius"].as_f64().unwrap());
     let on = json!([c[0], c[1].as_f64().unwrap() + r, c[2]]);
     near["lights"] = json!([{ "type": "point", "position": on, "intensity": [1, 1, 1] }]);
-    let near_material = format!("materials.{}", sphere["material"].as_str().unwrap());
     for (name, file, field) in [
         (
             "kd 3.4e38 under a point light",
@@ -247,7 +247,6 @@ fn products_of_scene_numbers_beyond_f32_are_refused_at_the_material() {
             ambient,
             format!("materials.{rough}"),
         ),
-        ("a point light on a lit sphere", near, near_material),
     ] {
         let error = refused(&file.to_string());
         assert_eq!(error.field(), field, "{name}: {error}");
@@ -257,6 +256,14 @@ fn products_of_scene_numbers_beyond_f32_are_refused_at_the_material() {
             error.kind()
         );
     }
+    // The light on the sphere is the cause, not the sphere's material.
+    let error = refused(&near.to_string());
+    assert_eq!(error.field(), "lights[0]", "{error}");
+    assert!(
+        matches!(error.kind(), ErrorKind::LightWithinRounding { distance, rounding, .. } if distance <= rounding),
+        "{:?}",
+        error.kind()
+    );
 }
 
 fn first_rough(file: &Value) -> String {
