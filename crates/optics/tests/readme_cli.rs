@@ -75,12 +75,19 @@ fn documented_transcripts_print_what_they_show() {
         "the README's try-it block shows {readme_commands} commands"
     );
     let transcripts = [blocks(&readme(), "console"), blocks(&cli, "console")].concat();
+    // The transcripts name the checkout's files by relative path and write
+    // their outputs beside them: they run in a scratch folder that sees the
+    // checkout's `crates`, so nothing they write lands in the checkout.
+    let scratch = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("transcripts");
+    let _ = std::fs::remove_dir_all(&scratch);
+    std::fs::create_dir_all(&scratch).unwrap();
+    std::os::unix::fs::symlink(root().join("crates"), scratch.join("crates")).unwrap();
     let mut commands = 0;
     for block in transcripts {
         for (args, shown) in transcript(&block) {
             let output = Command::new(env!("CARGO_BIN_EXE_optics"))
                 .args(&args)
-                .current_dir(root())
+                .current_dir(&scratch)
                 .output()
                 .expect("optics runs");
             let printed = String::from_utf8_lossy(&output.stdout).into_owned()
