@@ -41,13 +41,13 @@ pub const FILE: &str = "metals.json";
 pub const SCHEMA: &str = "metals/1";
 
 /// The course's three-wavelength gold (seed `000`): `n` per channel.
-pub const COURSE_GOLD_N: [f64; 3] = [0.17, 0.35, 1.5];
+pub const COURSE_GOLD_N: [f64; 3] = radiometry::course::GOLD_000_N;
 /// The course's three-wavelength gold: `κ` per channel.
-pub const COURSE_GOLD_KAPPA: [f64; 3] = [3.1, 2.7, 1.9];
+pub const COURSE_GOLD_KAPPA: [f64; 3] = radiometry::course::GOLD_000_KAPPA;
 
 /// Wavelength choices for the per-channel shortcut: a label and `[R, G, B]` in nm.
 pub const WAVELENGTH_CHOICES: [(&str, [f64; 3]); 2] = [
-    ("n, κ at 650/550/450 nm", [650.0, 550.0, 450.0]),
+    ("n, κ at 650/550/450 nm", spectrum::RGB_WAVELENGTHS_NM),
     (
         "n, κ at 700/546.1/435.8 nm (CIE RGB primaries)",
         [700.0, 546.1, 435.8],

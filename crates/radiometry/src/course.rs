@@ -38,6 +38,13 @@ pub fn fresnel_000_glsl<T: Real>(f0: T, cos_theta: T) -> T {
     f0 + (T::one() - f0) * cos_theta.powi(5)
 }
 
+/// `000` lines 1385–1386 (again 1843–1844): the course's gold, `n` per
+/// RGB channel. Paired with [`GOLD_000_KAPPA`], a complex index
+/// `n + iκ` per channel, the three-wavelength shortcut the course takes.
+pub const GOLD_000_N: [f64; 3] = [0.17, 0.35, 1.5];
+/// `000` lines 1386 and 1844: the course's gold, `κ` per RGB channel.
+pub const GOLD_000_KAPPA: [f64; 3] = [3.1, 2.7, 1.9];
+
 /// GLSL's `pow(x, y)` as GPU compilers commonly lower it, `exp2(y · log2 x)`.
 ///
 /// The specification defines `pow` only for `x > 0`, and for `x = 0` with

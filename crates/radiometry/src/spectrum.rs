@@ -24,6 +24,11 @@
 pub use crate::cie_tables::{CMF_XYZ, D65, SAMPLES, START_NM, STEP_NM};
 use crate::colour::Xyz;
 
+/// One wavelength per RGB channel, red first, in nanometres: where a
+/// three-wavelength renderer reads a measured index for its red, green and
+/// blue (the course texts name none; these are a common choice).
+pub const RGB_WAVELENGTHS_NM: [f64; 3] = [650.0, 550.0, 450.0];
+
 /// The wavelength of sample `i`, in nanometres.
 #[inline]
 pub fn wavelength_nm(i: usize) -> f64 {

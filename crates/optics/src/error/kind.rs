@@ -101,6 +101,21 @@ pub enum ErrorKind {
         /// The angle's name as the user writes it.
         angle: String,
     },
+    /// Neither or both of a material's index and its name (or a name with
+    /// an extinction coefficient beside it).
+    IndexOrMetal {
+        /// The index's name as the user writes it.
+        eta: String,
+        /// The extinction coefficient's name.
+        kappa: String,
+        /// The metal's name.
+        metal: String,
+    },
+    /// A list that must hold a value holds none.
+    EmptyList {
+        /// The list's name as the user writes it.
+        name: String,
+    },
     /// Light from inside a conductor, which has no transmitted side.
     ConductorFromInside {
         /// The name of the input that gave the incidence.
@@ -228,6 +243,8 @@ impl ErrorKind {
             ErrorKind::VectorComponent { .. } => "vector_component",
             ErrorKind::AngleDegrees { .. } => "angle_degrees",
             ErrorKind::CosineOrAngle { .. } => "cosine_or_angle",
+            ErrorKind::IndexOrMetal { .. } => "index_or_metal",
+            ErrorKind::EmptyList { .. } => "empty_list",
             ErrorKind::ConductorFromInside { .. } => "conductor_from_inside",
             ErrorKind::NoCriticalAngle { .. } => "no_critical_angle",
             ErrorKind::SchlickFormUnnamed { .. } => "schlick_form_unnamed",
@@ -262,7 +279,11 @@ impl ErrorKind {
             ErrorKind::AngleDegrees { name, .. }
             | ErrorKind::ConductorFromInside { name, .. }
             | ErrorKind::NoCriticalAngle { name, .. }
-            | ErrorKind::SchlickFormUnnamed { name } => Some(name.clone()),
+            | ErrorKind::SchlickFormUnnamed { name }
+            | ErrorKind::EmptyList { name } => Some(name.clone()),
+            ErrorKind::IndexOrMetal { eta, kappa, metal } => {
+                Some(format!("{eta}, {kappa}, {metal}"))
+            }
             ErrorKind::LawMissing | ErrorKind::LawNotString | ErrorKind::UnknownLaw { .. } => {
                 Some("law".to_owned())
             }

@@ -53,6 +53,10 @@ impl ErrorKind {
             ErrorKind::CosineOrAngle { cosine, angle } => {
                 input::cosine_or_angle(cosine, angle, lang)
             }
+            ErrorKind::IndexOrMetal { eta, kappa, metal } => {
+                input::index_or_metal([eta, kappa, metal], lang)
+            }
+            ErrorKind::EmptyList { name } => input::empty_list(name, lang),
             ErrorKind::ConductorFromInside {
                 name,
                 cos_i,

@@ -116,6 +116,14 @@ fn any_law() -> impl Strategy<Value = Line> {
                         None => optional_given,
                     };
                     if wanted {
+                        // A field given drops one it excludes given
+                        // before it (a metal named drops `--kappa`).
+                        for excluded in &field.excludes {
+                            if let Some(at) = args.iter().position(|a| *a == flag(excluded)) {
+                                args.drain(at..at + 2);
+                                given.retain(|g| g != excluded);
+                            }
+                        }
                         args.extend([flag(&field.name), text]);
                         given.push(field.name);
                     }

@@ -30,6 +30,9 @@ pub struct Field {
     /// The fields of the group, one of which every request must give,
     /// that this one belongs to (Fresnel's `cos_i` and `theta_i_deg`).
     pub one_of: Option<Vec<String>>,
+    /// The fields it cannot be given with: the others of a group at most
+    /// one of which is given (Fresnel's `metal` and `kappa`).
+    pub excludes: Vec<String>,
     /// What it holds.
     pub kind: Kind,
     /// The flag's help line, in English.
@@ -59,11 +62,18 @@ pub fn fields(law: &str) -> Vec<Field> {
     let Some(command) = command(law) else {
         return Vec::new();
     };
-    let groups: Vec<Vec<String>> = command
-        .get_groups()
-        .filter(|group| group.is_required_set())
-        .map(|group| group.get_args().map(|id| id.as_str().to_owned()).collect())
-        .collect();
+    let members = |required: bool| -> Vec<Vec<String>> {
+        command
+            .get_groups()
+            // The group clap derives for the arguments' struct holds all
+            // of them, any number at once: it excludes nothing.
+            .filter(|group| {
+                group.is_required_set() == required && !clap::ArgGroup::clone(group).is_multiple()
+            })
+            .map(|group| group.get_args().map(|id| id.as_str().to_owned()).collect())
+            .collect()
+    };
+    let (groups, at_most_one) = (members(true), members(false));
     command
         .get_arguments()
         .filter(|arg| arg.get_long().is_some())
@@ -100,10 +110,18 @@ pub fn fields(law: &str) -> Vec<Field> {
                 .iter()
                 .find(|members| members.contains(&name))
                 .cloned();
+            let excludes = at_most_one
+                .iter()
+                .filter(|members| members.contains(&name))
+                .flatten()
+                .filter(|member| **member != name)
+                .cloned()
+                .collect();
             Field {
                 name,
                 required: arg.is_required_set(),
                 one_of,
+                excludes,
                 kind,
                 help: arg.get_help().map(ToString::to_string).unwrap_or_default(),
             }

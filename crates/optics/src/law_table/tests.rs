@@ -51,7 +51,14 @@ fn every_law_has_named_typed_and_documented_fields() {
             .map(|f| (f.kind, f.required))
     };
     assert_eq!(kind("reflect", "wi"), Some((Kind::Vector, true)));
-    assert_eq!(kind("fresnel", "eta"), Some((Kind::Number, true)));
+    assert_eq!(kind("fresnel", "eta"), Some((Kind::Number, false)));
+    assert_eq!(
+        schema::fields("fresnel")
+            .into_iter()
+            .find(|f| f.name == "eta")
+            .and_then(|f| f.one_of),
+        Some(vec!["eta".to_owned(), "metal".to_owned()])
+    );
     assert_eq!(kind("fresnel", "kappa"), Some((Kind::Number, false)));
     assert!(
         matches!(kind("envmap", "map"), Some((Kind::Choice(c), false)) if c.contains(&"lat-long".to_owned()))

@@ -48,6 +48,10 @@ impl FresnelBulkArgs {
     pub fn solve(&self, via: Via, lang: Lang, steps: Steps) -> Result<Record> {
         let eta = via.index("eta", self.eta)?;
         let kappa = via.extinction("kappa", self.kappa)?;
+        if self.cos_i.is_empty() {
+            let name = via.name("cos_i");
+            return Err(Error::from(ErrorKind::EmptyList { name }));
+        }
         for (k, &c) in self.cos_i.iter().enumerate() {
             let field = format!("cos_i[{k}]");
             let c = via.cosine(&field, c)?;
@@ -136,8 +140,9 @@ mod tests {
             assert_eq!(answers.len(), count);
             for (&c, r) in cos_i.iter().zip(&answers) {
                 let scalar = FresnelArgs {
-                    eta,
+                    eta: Some(eta),
                     kappa,
+                    metal: None,
                     cos_i: Some(c),
                     theta_i_deg: None,
                     model: FresnelModel::Exact.into(),
@@ -156,5 +161,20 @@ mod tests {
                 );
             }
         }
+    }
+
+    /// No cosine is not an empty answer: the list is refused, naming it.
+    #[test]
+    fn an_empty_list_of_cosines_is_refused_naming_it() {
+        let bulk = FresnelBulkArgs {
+            eta: 1.5,
+            kappa: 0.0,
+            cos_i: Vec::new(),
+        };
+        let error = bulk.solve(Via::Json, Lang::En, Steps::Wanted).unwrap_err();
+        assert!(
+            matches!(error.kind(), crate::error::ErrorKind::EmptyList { name } if name == "cos_i"),
+            "{error:?}"
+        );
     }
 }

@@ -40,6 +40,24 @@ pub(super) fn cosine_or_angle(cosine: &str, angle: &str, lang: Lang) -> String {
     )
 }
 
+/// A material given twice or not at all.
+pub(super) fn index_or_metal([eta, kappa, metal]: [&str; 3], lang: Lang) -> String {
+    say!(
+        lang,
+        "give the material once: {eta} (with {kappa} for a conductor), or {metal} by name",
+        "az anyagot egyszer kell megadni: {eta} (vezetőnél {kappa} is), vagy {metal} néven"
+    )
+}
+
+/// A list given with nothing in it.
+pub(super) fn empty_list(name: &str, lang: Lang) -> String {
+    say!(
+        lang,
+        "{name} is empty: give at least one value",
+        "{name} üres: legalább egy értéket kell megadni"
+    )
+}
+
 /// Light from inside a conductor, in the quantity it was given as: an
 /// angle in degrees, or a signed cosine.
 pub(super) fn conductor_from_inside(

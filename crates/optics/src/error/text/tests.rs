@@ -96,6 +96,20 @@ fn every_kind() -> Vec<(Error, Vec<String>)> {
             vec!["cos_i".into(), "theta_i_deg".into()],
         ),
         (
+            ErrorKind::IndexOrMetal {
+                eta: "--eta".into(),
+                kappa: "--kappa".into(),
+                metal: "--metal".into(),
+            },
+            vec!["--eta".into(), "--kappa".into(), "--metal".into()],
+        ),
+        (
+            ErrorKind::EmptyList {
+                name: "cos_i".into(),
+            },
+            named("cos_i"),
+        ),
+        (
             ErrorKind::ConductorFromInside {
                 name: "--cos-i".into(),
                 cos_i: -0.5,
@@ -259,6 +273,8 @@ fn slot(kind: &ErrorKind) -> usize {
         ErrorKind::SchlickFormUnnamed { .. } => 23,
         ErrorKind::Errata(::errata::LookupError::UnknownId { .. }) => 24,
         ErrorKind::Errata(::errata::LookupError::UnknownClass { .. }) => 25,
+        ErrorKind::IndexOrMetal { .. } => 26,
+        ErrorKind::EmptyList { .. } => 27,
         ErrorKind::Scene { error, .. } => CALCULATOR + render_kinds::scene_slot(error.kind()),
         ErrorKind::Output(error) => CALCULATOR + render_kinds::output_slot(error),
         ErrorKind::Threads(_) => CALCULATOR + render_kinds::THREADS,
@@ -319,7 +335,7 @@ fn slot(kind: &ErrorKind) -> usize {
 }
 
 /// The calculator's own kinds' slots.
-const CALCULATOR: usize = 26;
+const CALCULATOR: usize = 28;
 
 #[cfg(feature = "harness")]
 const SLOTS: usize = CALCULATOR

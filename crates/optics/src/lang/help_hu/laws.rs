@@ -26,7 +26,9 @@ pub(super) const LAWS: &[Slot] = &[
   optics fresnel --eta 1.5 --theta-i-deg 60
   optics fresnel --eta 1.5 --cos-i -0.5           (az üveg belsejéből: teljes visszaverődés)
   optics fresnel --eta 0.17 --kappa 3.1 --cos-i 1 (arany, vörös csatorna, merőleges beesésnél)
-  optics fresnel --eta 1.5 --cos-i 0.3 --model schlick --json",
+  optics fresnel --metal course-gold --theta-i-deg 60 (mindhárom csatorna: R, G, B)
+  optics fresnel --eta 1.5 --theta-i-deg 120 --model schlick-incident (nem ismeri a teljes visszaverődést)
+  optics fresnel --eta 1.5 --cos-i 0.3 --model schlick-rarer --json",
     ),
     (
         &["fresnel"],
@@ -38,6 +40,20 @@ pub(super) const LAWS: &[Slot] = &[
         "kappa",
         "A belső közeg extinkciós együtthatója; ha > 0, a közeg vezető (komplex törésmutató: eta + i·kappa)",
     ),
+    (
+        &["fresnel"],
+        "metal",
+        "Egy fém a nevével, --eta és --kappa helyett: a válasz RGB-csatornánként",
+    ),
+    (
+        &["fresnel"],
+        "metal=course-gold",
+        "A kurzus aranya, `n = (0.17, 0.35, 1.5)`, `κ = (3.1, 2.7, 1.9)` (`000` forrás)",
+    ),
+    (&["fresnel"], "metal=gold", "Arany, mért érték"),
+    (&["fresnel"], "metal=silver", "Ezüst, mért érték"),
+    (&["fresnel"], "metal=copper", "Réz, mért érték"),
+    (&["fresnel"], "metal=aluminium", "Alumínium, mért érték"),
     (
         &["fresnel"],
         "cos_i",

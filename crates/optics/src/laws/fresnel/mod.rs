@@ -24,6 +24,9 @@ use working::{
     schlick_for_dielectric,
 };
 
+pub use metal::MetalName;
+
+mod metal;
 #[cfg(test)]
 mod tests;
 mod working;
@@ -34,21 +37,29 @@ mod working;
 #[command(
     allow_negative_numbers = true,
     group = clap::ArgGroup::new("incidence").required(true).args(["cos_i", "theta_i_deg"]),
+    group = clap::ArgGroup::new("material").required(true).args(["eta", "metal"]),
+    group = clap::ArgGroup::new("extinction").args(["kappa", "metal"]),
     after_help = "Examples:
   optics fresnel --eta 1.5 --theta-i-deg 60
   optics fresnel --eta 1.5 --cos-i -0.5           (from inside the glass: total internal reflection)
   optics fresnel --eta 0.17 --kappa 3.1 --cos-i 1 (gold, red channel, at normal incidence)
+  optics fresnel --metal course-gold --theta-i-deg 60 (all three channels: R, G, B)
   optics fresnel --eta 1.5 --theta-i-deg 120 --model schlick-incident (misses total internal reflection)
   optics fresnel --eta 1.5 --cos-i 0.3 --model schlick-rarer --json"
 )]
 pub struct FresnelArgs {
     /// Relative index n_inside / n_outside (= n_t / n_i for light from outside).
     #[arg(long, allow_hyphen_values = true)]
-    pub eta: f64,
+    #[serde(default)]
+    pub eta: Option<f64>,
     /// Extinction coefficient of the inside; > 0 makes it a conductor (complex index eta + i·kappa).
     #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
     #[serde(default)]
     pub kappa: f64,
+    /// A metal by name, instead of --eta and --kappa: answered per RGB channel.
+    #[arg(long, value_enum)]
+    #[serde(default)]
+    pub metal: Option<MetalName>,
     /// Signed cosine of incidence, n·wi: > 0 from outside, < 0 from inside.
     #[arg(long, allow_hyphen_values = true)]
     #[serde(default)]
@@ -66,7 +77,70 @@ pub struct FresnelArgs {
 impl FresnelArgs {
     /// Evaluates the law: its inputs checked (named as `via` gives them), the working in `lang`.
     pub fn solve(&self, via: Via, lang: Lang, steps: Steps) -> Result<Record> {
-        let eta = via.index("eta", self.eta)?;
+        match (self.eta, self.metal) {
+            (Some(eta), None) => self.solve_at(eta, via, lang, steps),
+            (None, Some(metal)) if self.kappa == 0.0 => self.solve_metal(metal, via, lang, steps),
+            _ => Err(Error::from(ErrorKind::IndexOrMetal {
+                eta: via.name("eta"),
+                kappa: via.name("kappa"),
+                metal: via.name("metal"),
+            })),
+        }
+    }
+
+    /// The law per RGB channel of a metal named, each channel's working
+    /// beneath its index; the answer `[R, G, B]`.
+    fn solve_metal(&self, metal: MetalName, via: Via, lang: Lang, steps: Steps) -> Result<Record> {
+        let channels = metal.channels();
+        let mut solved = Vec::with_capacity(3);
+        for (&n, &kappa) in channels.n.iter().zip(&channels.kappa) {
+            let one = FresnelArgs {
+                eta: Some(n),
+                kappa,
+                metal: None,
+                ..self.clone()
+            };
+            solved.push(one.solve_at(n, via, lang, steps)?);
+        }
+        let mut record = Record::new(
+            Self::LAW,
+            say!(
+                lang,
+                "{}: {}, per RGB channel",
+                "{}: {}, RGB-csatornánként",
+                solved[0].title,
+                metal.word(lang)
+            ),
+            "1",
+        )
+        .with_steps(steps);
+        record
+            .input("metal", metal)
+            .input("eta", channels.n)
+            .input("kappa", channels.kappa);
+        for name in ["theta_i_deg", "cos_i", "model"] {
+            if let Some(value) = solved[0].inputs.get(name) {
+                record.input(name, value.clone());
+            }
+        }
+        record.step(|| metal.source(lang));
+        let mut rgb = [0.0; 3];
+        for ((channel, one), slot) in ["R", "G", "B"].iter().zip(&solved).zip(&mut rgb) {
+            record.step(|| say!(lang, "{channel} channel:", "{channel} csatorna:"));
+            for line in &one.steps {
+                record.step(|| format!("  {line}"));
+            }
+            if let Answer::Number(r) = one.answer {
+                *slot = r;
+            }
+        }
+        record.answer = Answer::Vector(rgb);
+        Ok(record)
+    }
+
+    /// The law at the relative index `eta` (with `self.kappa`).
+    fn solve_at(&self, eta: f64, via: Via, lang: Lang, steps: Steps) -> Result<Record> {
+        let eta = via.index("eta", eta)?;
         let kappa = via.extinction("kappa", self.kappa)?;
         let cos_i = self.signed_cosine(via, kappa)?;
         let model = self.model.model().ok_or_else(|| {

@@ -8,8 +8,9 @@ use record::Steps;
 
 fn solve(eta: f64, cos_i: f64, model: FresnelModel) -> Record {
     let args = FresnelArgs {
-        eta,
+        eta: Some(eta),
         kappa: 0.0,
+        metal: None,
         cos_i: Some(cos_i),
         theta_i_deg: None,
         model: model.into(),
@@ -200,8 +201,9 @@ fn the_comparison_names_both_schlick_forms_with_a_verdict_each() {
 fn a_bare_schlick_model_is_refused_naming_the_field() {
     for (via, name) in [(Via::Flags, "--model"), (Via::Json, "model")] {
         let args = FresnelArgs {
-            eta: 1.5,
+            eta: Some(1.5),
             kappa: 0.0,
+            metal: None,
             cos_i: Some(0.5),
             theta_i_deg: None,
             model: FresnelName::UnnamedSchlick,
@@ -213,6 +215,76 @@ fn a_bare_schlick_model_is_refused_naming_the_field() {
         assert!(
             message.contains("schlick-incident") && message.contains("schlick-rarer"),
             "{message}"
+        );
+    }
+}
+
+/// A metal named is the law per channel at its index: each channel's
+/// reflectance is, to the bit, the scalar law's at that channel's `n + iκ`.
+#[test]
+fn a_named_metal_is_the_conductor_law_per_channel() {
+    for metal in [MetalName::CourseGold, MetalName::Silver] {
+        let args = FresnelArgs {
+            eta: None,
+            kappa: 0.0,
+            metal: Some(metal),
+            cos_i: None,
+            theta_i_deg: Some(60.0),
+            model: FresnelModel::Exact.into(),
+        };
+        let record = args.solve(Via::Flags, Lang::En, Steps::Wanted).unwrap();
+        let Answer::Vector(rgb) = record.answer else {
+            panic!("an RGB triple, got {:?}", record.answer)
+        };
+        let c = metal.channels();
+        for i in 0..3 {
+            let one = FresnelArgs {
+                eta: Some(c.n[i]),
+                kappa: c.kappa[i],
+                metal: None,
+                ..args.clone()
+            };
+            let scalar = answer(&one.solve(Via::Flags, Lang::En, Steps::Wanted).unwrap());
+            assert_eq!(rgb[i].to_bits(), scalar.to_bits(), "{metal:?} channel {i}");
+        }
+        assert!(
+            record.steps.iter().any(|s| s == "B channel:"),
+            "{:?}",
+            record.steps
+        );
+    }
+}
+
+/// The material is given once: an index and a name together, a name with
+/// an extinction coefficient, or neither, are refused naming all three.
+#[test]
+fn a_material_given_twice_or_not_at_all_is_refused_naming_the_fields() {
+    let base = FresnelArgs {
+        eta: None,
+        kappa: 0.0,
+        metal: None,
+        cos_i: Some(1.0),
+        theta_i_deg: None,
+        model: FresnelModel::Exact.into(),
+    };
+    for args in [
+        base.clone(),
+        FresnelArgs {
+            eta: Some(1.5),
+            metal: Some(MetalName::Gold),
+            ..base.clone()
+        },
+        FresnelArgs {
+            kappa: 3.0,
+            metal: Some(MetalName::Gold),
+            ..base.clone()
+        },
+    ] {
+        let error = args.solve(Via::Json, Lang::En, Steps::Wanted).unwrap_err();
+        assert!(
+            matches!(error.kind(), ErrorKind::IndexOrMetal { eta, kappa, metal }
+                if eta == "eta" && kappa == "kappa" && metal == "metal"),
+            "{args:?}: {error:?}"
         );
     }
 }

@@ -75,7 +75,7 @@ const CASES: &[Case] = &[
         "hiba: '--theta-i-deg <THETA_I_DEG>' nem adható meg együtt ezzel: '--cos-i <COS_I>'\n",
         None,
         Some(
-            "Használat: optics fresnel --eta <ETA> <--cos-i <COS_I>|--theta-i-deg <THETA_I_DEG>>\n",
+            "Használat: optics fresnel <--cos-i <COS_I>|--theta-i-deg <THETA_I_DEG>> <--eta <ETA>|--metal <METAL>>\n",
         ),
     ),
     (
