@@ -237,7 +237,7 @@ fn a_named_metal_is_the_conductor_law_per_channel() {
             panic!("an RGB triple, got {:?}", record.answer)
         };
         let c = metal.channels();
-        for i in 0..3 {
+        for (i, channel) in rgb.iter().enumerate() {
             let one = FresnelArgs {
                 eta: Some(c.n[i]),
                 kappa: c.kappa[i],
@@ -245,7 +245,7 @@ fn a_named_metal_is_the_conductor_law_per_channel() {
                 ..args.clone()
             };
             let scalar = answer(&one.solve(Via::Flags, Lang::En, Steps::Wanted).unwrap());
-            assert_eq!(rgb[i].to_bits(), scalar.to_bits(), "{metal:?} channel {i}");
+            assert_eq!(channel.to_bits(), scalar.to_bits(), "{metal:?} channel {i}");
         }
         assert!(
             record.steps.iter().any(|s| s == "B channel:"),
