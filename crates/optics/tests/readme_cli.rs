@@ -203,3 +203,107 @@ fn readme_python_snippet_prints_what_it_says_through_optics_batch() {
     let printed = String::from_utf8_lossy(&output.stdout);
     assert_eq!(printed.trim_end(), says_it_prints(&snippet));
 }
+
+/// A row of `docs/time.md`'s answer table whose first cell starts with
+/// `what`: its "measured" cell's numbers of seconds (`104 s to build, 112
+/// s to run` is `[104, 112]`).
+fn measured_seconds(time_md: &str, what: &str) -> Vec<f64> {
+    let row = time_md
+        .lines()
+        .find(|line| line.starts_with(&format!("| {what}")))
+        .unwrap_or_else(|| panic!("docs/time.md has no row `{what}`"));
+    let measured = row.split('|').nth(3).expect("a measured cell");
+    let words: Vec<&str> = measured.split_whitespace().collect();
+    words
+        .windows(2)
+        .filter(|w| w[1] == "s" || w[1] == "s)")
+        .filter_map(|w| w[0].trim_start_matches('(').parse().ok())
+        .collect()
+}
+
+/// The seconds of a stage of `docs/time.md`'s table of CI's stages.
+fn stage_seconds(time_md: &str, stage: &str) -> f64 {
+    let row = time_md
+        .lines()
+        .find(|line| line.starts_with(&format!("| {stage}")))
+        .unwrap_or_else(|| panic!("docs/time.md has no stage `{stage}`"));
+    row.trim_end_matches('|')
+        .rsplit('|')
+        .next()
+        .and_then(|cell| cell.trim().parse().ok())
+        .unwrap_or_else(|| panic!("no seconds in {row}"))
+}
+
+/// Seconds in words, to the nearest half minute.
+fn about(seconds: f64) -> String {
+    const WORDS: [&str; 13] = [
+        "no", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten",
+        "eleven", "twelve",
+    ];
+    let halves = (seconds / 30.0).round() as usize;
+    match halves {
+        0..=2 => "about a minute".to_owned(),
+        3 => "about a minute and a half".to_owned(),
+        h if h % 2 == 1 => format!("about {} and a half minutes", WORDS[h / 2]),
+        h => format!("about {} minutes", WORDS[h / 2]),
+    }
+}
+
+/// The README's set-up times, download size and Rust version are the
+/// measured ones: each phrase is computed from `docs/time.md`'s tables
+/// (where the command that measured it is named) and the workspace's
+/// `rust-version`, and must stand in the README as computed. A new
+/// measurement that moves a time by half a minute fails here until the
+/// README says it.
+#[test]
+fn readme_set_up_numbers_are_the_measured_ones() {
+    let time_md = std::fs::read_to_string(root().join("docs/time.md")).unwrap();
+    let cargo = std::fs::read_to_string(root().join("Cargo.toml")).unwrap();
+    let rust = cargo
+        .lines()
+        .find_map(|l| l.strip_prefix("rust-version = "))
+        .expect("the workspace's rust-version")
+        .trim_matches('"');
+    let first = measured_seconds(&time_md, "the first run on a fresh machine");
+    let later = measured_seconds(&time_md, "`optics validate`, the references current");
+    let tests =
+        stage_seconds(&time_md, "the tests built") + stage_seconds(&time_md, "the tests run");
+    let megabytes = time_md
+        .split(" MB installed")
+        .next()
+        .and_then(|before| before.rsplit(['(', ' ']).next())
+        .expect("docs/time.md states the download");
+    let phrases = [
+        format!("Rust {rust} or newer"),
+        format!("builds the suite ({} on 2 cores)", about(first[0])),
+        format!("downloads about {megabytes} MB of Python packages"),
+        format!("then checks ({})", about(first[1])),
+        format!("later runs take {}", about(later[0])),
+        format!("{} on 2 cores from a clean checkout", about(tests)),
+    ];
+    let prose = readme().split_whitespace().collect::<Vec<_>>().join(" ");
+    for phrase in phrases {
+        assert!(
+            prose.contains(&phrase),
+            "the README should say \"{phrase}\", as docs/time.md measures it"
+        );
+    }
+}
+
+/// Seconds read as words: the rounding the README's phrases take.
+#[test]
+fn seconds_are_said_to_the_nearest_half_minute() {
+    for (seconds, words) in [
+        (40.0, "about a minute"),
+        (95.0, "about a minute and a half"),
+        (112.0, "about two minutes"),
+        (540.0, "about nine minutes"),
+        (555.0, "about nine and a half minutes"),
+        (590.0, "about ten minutes"),
+        (165.0, "about three minutes"),
+        (170.0, "about three minutes"),
+        (200.0, "about three and a half minutes"),
+    ] {
+        assert_eq!(about(seconds), words, "{seconds} s");
+    }
+}
