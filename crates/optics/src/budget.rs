@@ -19,6 +19,7 @@ use validation::tradeoff::engine::{self, BudgetRequest};
 
 pub use validation::tradeoff::engine::{Budget, Metric};
 
+use crate::error::usage::{flag_number, FlagNumber};
 use crate::error::{self, ErrorKind};
 use crate::ui::Ui;
 
@@ -69,12 +70,17 @@ pub struct BudgetArgs {
 }
 
 /// `--tolerance`: a finite number above 0.
-fn tolerance_flag(text: &str) -> Result<f64, String> {
-    match text.parse::<f64>() {
-        Ok(t) if (t.is_finite() && t > 0.0) || tolerance_unchecked() => Ok(t),
-        Ok(t) => Err(format!("{t} is not a positive, finite tolerance")),
-        Err(e) => Err(e.to_string()),
-    }
+fn tolerance_flag(text: &str) -> FlagNumber {
+    flag_number(
+        text,
+        |t| (t.is_finite() && t > 0.0) || tolerance_unchecked(),
+        |t| {
+            (
+                format!("{t} is not a positive, finite tolerance"),
+                format!("a(z) {t} nem pozitív, véges tűréshatár"),
+            )
+        },
+    )
 }
 
 #[cfg(test)]

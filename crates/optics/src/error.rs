@@ -29,7 +29,7 @@ pub mod jobs;
 mod kind;
 pub mod render;
 mod text;
-mod usage;
+pub(crate) mod usage;
 
 #[cfg(feature = "harness")]
 pub use harness::HarnessKind;

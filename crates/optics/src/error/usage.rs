@@ -48,3 +48,42 @@ pub(crate) fn usage_message(error: &clap::Error) -> String {
         .unwrap_or(&message)
         .to_owned()
 }
+
+/// A flag's value its own parser refused, said in both languages: the
+/// parser runs before the language is known, so it hands both on and the
+/// error's rendering picks one (English is its `Display`).
+#[derive(Debug)]
+pub(crate) struct FlagRefusal {
+    /// Why, in English.
+    pub en: String,
+    /// Why, in Hungarian.
+    pub hu: String,
+}
+
+impl std::fmt::Display for FlagRefusal {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.en)
+    }
+}
+
+impl std::error::Error for FlagRefusal {}
+
+/// What a flag's own number parser returns: a number that is not one is
+/// refused as the standard parser refuses it (so a decimal comma gets its
+/// hint), one outside the flag's range as a [`FlagRefusal`].
+pub(crate) type FlagNumber = Result<f64, Box<dyn std::error::Error + Send + Sync>>;
+
+/// `text` as a number that `accept` takes, else refused with `why`'s
+/// two sentences about it.
+pub(crate) fn flag_number(
+    text: &str,
+    accept: impl Fn(f64) -> bool,
+    why: impl Fn(f64) -> (String, String),
+) -> FlagNumber {
+    let value: f64 = text.parse()?;
+    if accept(value) {
+        return Ok(value);
+    }
+    let (en, hu) = why(value);
+    Err(Box::new(FlagRefusal { en, hu }))
+}

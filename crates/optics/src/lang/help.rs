@@ -100,7 +100,14 @@ fn rewrite(command: Command, path: &[String]) -> Command {
         .map(|s| s.get_name().to_owned())
         .collect();
     let hu = |key: &str| hungarian_text(path, key);
+    let mut command = command.subcommand_value_name("ALPARANCS");
+    // clap writes "[OPTIONS]" into the usage line itself: the line is
+    // taken as clap renders it, that word replaced, and handed back.
+    let usage = command.render_usage().to_string();
+    let usage = usage.strip_prefix("Usage: ").unwrap_or(&usage);
+    let usage = usage.replace("[OPTIONS]", "[KAPCSOLÓK]");
     let mut command = command
+        .override_usage(usage)
         .help_template(TEMPLATE)
         .subcommand_help_heading("Alparancsok");
     if let (Some(_), Some(about)) = (command.get_about(), hu(ABOUT)) {

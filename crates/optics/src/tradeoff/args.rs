@@ -2,6 +2,7 @@
 
 use std::path::{Path, PathBuf};
 
+use crate::error::usage::{flag_number, FlagNumber};
 use crate::image_size::ImageSize;
 use serde::Serialize;
 use tracer::scene::MAX_SPP;
@@ -116,12 +117,17 @@ impl TradeoffArgs {
 }
 
 /// `--min-seconds`: a finite number of seconds, 0 to 60.
-fn seconds_flag(text: &str) -> Result<f64, String> {
-    match text.parse::<f64>() {
-        Ok(s) if (0.0..=60.0).contains(&s) || seconds_unchecked() => Ok(s),
-        Ok(s) => Err(format!("{s} is not between 0 and 60 seconds")),
-        Err(e) => Err(e.to_string()),
-    }
+fn seconds_flag(text: &str) -> FlagNumber {
+    flag_number(
+        text,
+        |s| (0.0..=60.0).contains(&s) || seconds_unchecked(),
+        |s| {
+            (
+                format!("{s} is not between 0 and 60 seconds"),
+                format!("a(z) {s} nem 0 és 60 másodperc közé esik"),
+            )
+        },
+    )
 }
 
 #[cfg(test)]

@@ -8,6 +8,7 @@ use std::fmt::Write as _;
 
 use clap::error::{ContextKind, ContextValue, ErrorKind as Clap};
 
+use crate::error::usage::FlagRefusal;
 use crate::error::Error;
 
 /// What was wrong, on the error's first line (and, for a choice of
@@ -123,7 +124,9 @@ fn refused(error: &clap::Error, value: &str) -> String {
     if let Some(ours) = source.downcast_ref::<Error>() {
         return ours.kind().message(record::Lang::Hu);
     }
-    let reason = if source.is::<std::num::ParseFloatError>() {
+    let reason = if let Some(refusal) = source.downcast_ref::<FlagRefusal>() {
+        refusal.hu.clone()
+    } else if source.is::<std::num::ParseFloatError>() {
         String::from("nem szám")
     } else if let Some(int) = source.downcast_ref::<std::num::ParseIntError>() {
         use std::num::IntErrorKind as Int;

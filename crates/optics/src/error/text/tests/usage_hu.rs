@@ -18,8 +18,12 @@ fn refused(args: &[&str]) -> (String, String) {
         Ok(_) => panic!("{args:?} parses"),
     };
     assert_eq!(error.exit_code(), 2, "{args:?}");
+    // The English, as `--lang en` has it, from the English command.
+    let english = crate::Cli::command()
+        .try_get_matches_from(["optics"].iter().chain(args))
+        .expect_err("refused in English too");
     (
-        usage_rendered(&error, Lang::En),
+        usage_rendered(&english, Lang::En),
         usage_rendered(&error, Lang::Hu),
     )
 }
@@ -39,19 +43,19 @@ const CASES: &[Case] = &[
         &["rendr"],
         "hiba: ismeretlen alparancs: 'rendr'\n",
         Some("  tipp: van hasonló alparancs: 'render'\n"),
-        Some("Használat: optics [OPTIONS] <COMMAND>\n"),
+        Some("Használat: optics [KAPCSOLÓK] <ALPARANCS>\n"),
     ),
     (
         &["reflect", "--wii", "0,0,1", "--normal", "0,0,1"],
         "hiba: váratlan argumentum: '--wii'\n",
         Some("  tipp: van hasonló kapcsoló: '--wi'\n"),
-        Some("Használat: optics reflect --wi <WI> --normal <NORMAL>\n"),
+        Some("Használat: optics reflect [KAPCSOLÓK] --wi <WI> --normal <NORMAL>\n"),
     ),
     (
         &["quiz", "f0"],
         "hiba: hiányzik a kötelező argumentum:\n  --n <N>\n",
         None,
-        Some("Használat: optics quiz f0 --n <N>\n"),
+        Some("Használat: optics quiz f0 [KAPCSOLÓK] --n <N>\n"),
     ),
     (
         &[
@@ -75,13 +79,27 @@ const CASES: &[Case] = &[
         "hiba: '--theta-i-deg <THETA_I_DEG>' nem adható meg együtt ezzel: '--cos-i <COS_I>'\n",
         None,
         Some(
-            "Használat: optics fresnel <--cos-i <COS_I>|--theta-i-deg <THETA_I_DEG>> <--eta <ETA>|--metal <METAL>>\n",
+            "Használat: optics fresnel [KAPCSOLÓK] <--cos-i <COS_I>|--theta-i-deg <THETA_I_DEG>> <--eta <ETA>|--metal <METAL>>\n",
         ),
     ),
     (
         &["quiz", "critical-angle", "--n", "1,4"],
         "hiba: hibás parancssori argumentum (--n <N>): érvénytelen érték: '1,4' (nem szám)\n",
         Some("  tipp: a számokban tizedespont áll, nem vessző: 1.4\n"),
+        None,
+    ),
+    (
+        &["tradeoff", "s.json", "--min-seconds=-1"],
+        "hiba: hibás parancssori argumentum (--min-seconds <MIN_SECONDS>): érvénytelen érték: \
+         '-1' (a(z) -1 nem 0 és 60 másodperc közé esik)",
+        None,
+        None,
+    ),
+    (
+        &["tradeoff", "s.json", "--min-seconds", "0,5"],
+        "hiba: hibás parancssori argumentum (--min-seconds <MIN_SECONDS>): érvénytelen érték: \
+         '0,5' (nem szám)",
+        Some("tipp: a számokban tizedespont áll, nem vessző: 0.5"),
         None,
     ),
     (
