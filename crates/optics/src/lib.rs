@@ -177,7 +177,13 @@ fn run(command: &Command, ui: &Ui) -> error::Result<ExitCode> {
                     ui.show(question)?;
                 }
             }
-            _ => ui.show(&quiz::list(lang))?,
+            _ => {
+                let command = parser_command(lang);
+                let quiz = command
+                    .find_subcommand("quiz")
+                    .expect("the command line has quiz");
+                ui.show(&quiz::list(lang, quiz))?
+            }
         },
         Command::Batch(args) => {
             let stdin = std::io::stdin().lock();
@@ -234,13 +240,19 @@ pub fn main_entry() -> ExitCode {
     }
 }
 
-/// The command line parsed by the parser whose help speaks `lang`.
-fn parse(args: Vec<std::ffi::OsString>, lang: Lang) -> Result<Cli, clap::Error> {
-    use clap::{CommandFactory, FromArgMatches};
-    let mut command = match lang {
+/// The parser's command, its help in `lang`.
+fn parser_command(lang: Lang) -> clap::Command {
+    use clap::CommandFactory;
+    match lang {
         Lang::En => Cli::command(),
         Lang::Hu => lang::help::hungarian(Cli::command()),
-    };
+    }
+}
+
+/// The command line parsed by the parser whose help speaks `lang`.
+fn parse(args: Vec<std::ffi::OsString>, lang: Lang) -> Result<Cli, clap::Error> {
+    use clap::FromArgMatches;
+    let mut command = parser_command(lang);
     let mut matches = command.try_get_matches_from_mut(args)?;
     Cli::from_arg_matches_mut(&mut matches).map_err(|error| error.format(&mut command))
 }

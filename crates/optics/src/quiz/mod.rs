@@ -19,42 +19,10 @@ use record::{say, Lang};
 use record::{Answer, Record};
 use serde_json::Value;
 
-/// The exercises, for `optics quiz` without one: name, what it solves, example.
-const EXERCISES: [(&str, &str, &str, &str); 5] = [
-    (
-        "seed",
-        "every question of the course's quiz (003), printed answers checked",
-        "a kurzus kvízének (003) minden kérdése, a közölt megoldások ellenőrzésével",
-        "optics quiz seed",
-    ),
-    (
-        "f0",
-        "reflectance at normal incidence from n (and kappa)",
-        "merőleges beesésű visszaverődés n-ből (és kappából)",
-        "optics quiz f0 --n 1.4",
-    ),
-    (
-        "lambert",
-        "radiance from the course's diffuse surface",
-        "a kurzus diffúz felületéről visszavert sugársűrűség",
-        "optics quiz lambert --normal 0,0,1 --light-dir 0,3,4 --view-dir 1,2,3 --radiance 5 --kd 0.6",
-    ),
-    (
-        "critical-angle",
-        "the critical angle from a medium of index n into air",
-        "a teljes visszaverődés határszöge n törésmutatójú közegből levegőbe",
-        "optics quiz critical-angle --n 10",
-    ),
-    (
-        "blinn-phong",
-        "radiance from the course's Phong-Blinn surface",
-        "a kurzus Phong–Blinn-felületéről visszavert sugársűrűség",
-        "optics quiz blinn-phong --normal 0,0,1 --light-dir 0,3,4 --view-dir 0,4,3 --radiance 5 --ks 1.41421356 --shine 3",
-    ),
-];
-
-/// The list of exercises, as a record.
-pub fn list(lang: Lang) -> Record {
+/// The list of exercises, as a record: each of `quiz`'s subcommands (the
+/// command as the parser for `lang` built it), its description and the
+/// first example of its help.
+pub fn list(lang: Lang, quiz: &clap::Command) -> Record {
     let mut record = Record::new(
         "quiz",
         say!(
@@ -64,14 +32,34 @@ pub fn list(lang: Lang) -> Record {
         ),
         "",
     );
-    for (name, en, hu, example) in EXERCISES {
-        record.step(|| {
-            format!(
-                "{name:<15} {}\n                    {example}",
-                lang.pick(en, hu)
-            )
-        });
+    let exercises: Vec<&clap::Command> = quiz
+        .get_subcommands()
+        .filter(|exercise| exercise.get_name() != "help")
+        .collect();
+    for exercise in &exercises {
+        let name = exercise.get_name();
+        let about = exercise
+            .get_about()
+            .map(ToString::to_string)
+            .unwrap_or_default();
+        let words = format!("optics quiz {name}");
+        let help = exercise
+            .get_after_help()
+            .map(ToString::to_string)
+            .unwrap_or_default();
+        let example = help
+            .lines()
+            .map(str::trim)
+            .find(|line| line.starts_with(&words))
+            .map(|line| line.split("  (").next().unwrap_or(line).trim_end())
+            .unwrap_or(&words);
+        record.step(|| format!("{name:<15} {about}\n                    {example}"));
     }
-    record.answer = Answer::List(EXERCISES.iter().map(|e| Value::from(e.0)).collect());
+    record.answer = Answer::List(
+        exercises
+            .iter()
+            .map(|e| Value::from(e.get_name()))
+            .collect(),
+    );
     record
 }

@@ -341,7 +341,7 @@ fn a_hungarian_parser_error_keeps_its_tip_and_usage() {
     assert_eq!(
         stderr(&output),
         "hiba: ismeretlen alparancs: 'rendr'\n\n  tipp: van hasonló alparancs: 'render'\n\n\
-         Használat: optics [OPTIONS] <COMMAND>\n\nBővebben: '--help'.\n"
+         Használat: optics [KAPCSOLÓK] <ALPARANCS>\n\nBővebben: '--help'.\n"
     );
     let json = optics(&["--json", "--lang", "hu", "rendr"]);
     assert_eq!(json.status.code(), Some(2));
