@@ -61,6 +61,9 @@ pub struct Point {
 pub struct Skipped {
     /// The setting.
     pub axis: &'static str,
+    /// The same in Hungarian (text output only): a setting's name stays.
+    #[serde(skip)]
+    pub axis_hu: &'static str,
     /// Why it is not swept here.
     pub why: &'static str,
     /// The same in Hungarian (text output only).
@@ -91,7 +94,7 @@ pub fn plan(job: &RenderJob, spp: u32) -> Plan {
     planner.ray_offsets(needs);
     planner.precisions();
     planner.skip(
-        "RGB against spectrum",
+        ["RGB against spectrum", "RGB a spektrum helyett"],
         "in the image: the tracer has no spectral mode; what three channels cost the colour of the scene's metals, by the harness's measure (metals.*), is stated apart",
         "a képen: a követőnek nincs spektrális módja; hogy mennyibe kerül a három csatorna a jelenet fémeinek színében, azt a mérőcsomag mércéje (metals.*) külön mondja",
     );
@@ -147,8 +150,18 @@ impl<'a> Planner<'a> {
     }
 
     /// Leaves `axis` out, for the reason `why` (`why_hu` in Hungarian).
-    fn skip(&mut self, axis: &'static str, why: &'static str, why_hu: &'static str) {
-        self.skipped.push(Skipped { axis, why, why_hu });
+    fn skip(
+        &mut self,
+        [axis, axis_hu]: [&'static str; 2],
+        why: &'static str,
+        why_hu: &'static str,
+    ) {
+        self.skipped.push(Skipped {
+            axis,
+            axis_hu,
+            why,
+            why_hu,
+        });
     }
 
     /// `003`'s ladder of integrators, photon only where the scene has
@@ -184,7 +197,7 @@ impl<'a> Planner<'a> {
         }
         if !caustics {
             self.skip(
-                "integrator photon",
+                ["integrator photon"; 2],
                 "no delta light reaches a rough surface through mirrors or glass: photon renders what path does",
                 "egyetlen pont- vagy irányfény sem ér érdes felületet tükrön vagy üvegen át: a photon ugyanazt rajzolja, mint a path",
             );
@@ -197,7 +210,7 @@ impl<'a> Planner<'a> {
             || self.base.integrator.samples();
         if !recursive {
             self.skip(
-                "max_depth, throughput_cutoff",
+                ["max_depth, throughput_cutoff"; 2],
                 "no mirror or glass sees another or itself, and the integrator does not bounce diffusely: depth never binds",
                 "egyik tükör vagy üveg sem látja a másikat vagy önmagát, és az integrátor nem pattan diffúzan: a mélység sosem korlátoz",
             );
@@ -227,7 +240,7 @@ impl<'a> Planner<'a> {
     fn fresnel(&mut self, needs: &Needs) {
         if !(needs.conductors || needs.refraction) {
             self.skip(
-                "fresnel",
+                ["fresnel"; 2],
                 "no mirror or glass: no Fresnel law is evaluated",
                 "nincs tükör vagy üveg: egyetlen Fresnel-törvény sem értékelődik ki",
             );
@@ -275,7 +288,7 @@ impl<'a> Planner<'a> {
         let secondary = needs.shadows || !matches!(needs.reflection_depth, ReflectionDepth::None);
         if !secondary {
             self.skip(
-                "ray_offset",
+                ["ray_offset"; 2],
                 "no secondary ray leaves a surface: no shadow ray, no mirror or glass",
                 "egyetlen másodlagos sugár sem hagy el felületet: nincs árnyéksugár, tükör vagy üveg",
             );
@@ -304,7 +317,7 @@ impl<'a> Planner<'a> {
     fn precisions(&mut self) {
         if !Precision::F64.serves(self.base.integrator) {
             self.skip(
-                "f32 against f64",
+                ["f32 against f64", "f32 az f64 helyett"],
                 "the scene's integrator computes in f32 only: the f64 tier is local's and whitted's (their rows on the ladder are f32)",
                 "a jelenet integrátora csak f32-ben számol: az f64-es szint a local és a whitted integrátoré (a létrán f32-ben szerepelnek)",
             );

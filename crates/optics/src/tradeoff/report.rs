@@ -149,7 +149,7 @@ pub fn write_and_show(
             lang,
             "not swept: {}: {}",
             "nem mért: {}: {}",
-            skipped.axis,
+            lang.pick(skipped.axis, skipped.axis_hu),
             lang.pick(skipped.why, skipped.why_hu)
         ));
     }
