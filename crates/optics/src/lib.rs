@@ -41,6 +41,7 @@ mod errata;
 pub mod error;
 #[cfg(test)]
 mod fuzz;
+mod help_example;
 mod image_size;
 pub mod input;
 mod inspect;

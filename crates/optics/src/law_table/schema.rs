@@ -137,20 +137,9 @@ pub fn fields(law: &str) -> Vec<Field> {
 pub fn example(law: &str) -> (serde_json::Map<String, serde_json::Value>, Vec<String>) {
     let command = command(law).unwrap_or_else(|| panic!("{law} is not a law"));
     let words = format!("optics {} ", command_words(law).join(" "));
-    let help = command
-        .get_after_help()
-        .map(ToString::to_string)
-        .unwrap_or_default();
-    let line = help
-        .lines()
-        .map(str::trim)
-        .find_map(|line| line.strip_prefix(&words))
+    let line = crate::help_example::first_example(&command, &words)
         .unwrap_or_else(|| panic!("`{words}--help` shows no example"));
-    // A remark may follow, in parentheses.
-    let flags: Vec<String> = line
-        .split("  (")
-        .next()
-        .unwrap_or_default()
+    let flags: Vec<String> = line[words.len()..]
         .split_whitespace()
         .map(str::to_owned)
         .collect();

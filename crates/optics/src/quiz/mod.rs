@@ -15,6 +15,7 @@ mod statements;
 pub use exercises::{BlinnPhongArgs, CriticalAngleArgs, F0Args, LambertArgs};
 pub use seed::{seed, seed_record};
 
+use crate::help_example::first_example;
 use record::{say, Lang};
 use record::{Answer, Record};
 use serde_json::Value;
@@ -43,16 +44,7 @@ pub fn list(lang: Lang, quiz: &clap::Command) -> Record {
             .map(ToString::to_string)
             .unwrap_or_default();
         let words = format!("optics quiz {name}");
-        let help = exercise
-            .get_after_help()
-            .map(ToString::to_string)
-            .unwrap_or_default();
-        let example = help
-            .lines()
-            .map(str::trim)
-            .find(|line| line.starts_with(&words))
-            .map(|line| line.split("  (").next().unwrap_or(line).trim_end())
-            .unwrap_or(&words);
+        let example = first_example(exercise, &words).unwrap_or(words);
         record.step(|| format!("{name:<15} {about}\n                    {example}"));
     }
     record.answer = Answer::List(
