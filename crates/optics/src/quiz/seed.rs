@@ -197,3 +197,28 @@ pub fn seed_record(lang: Lang) -> Result<Record> {
     record.detail("questions", values);
     Ok(record)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::seed;
+    use record::Lang;
+
+    /// What the quiz says reads as sentences in either language: no test's
+    /// name (an identifier of two underscores or more) stands in one.
+    #[test]
+    fn the_quiz_names_no_test_in_its_sentences() {
+        for lang in [Lang::En, Lang::Hu] {
+            for record in seed(lang).expect("the quiz is worked") {
+                let text = [record.title.clone()]
+                    .into_iter()
+                    .chain(record.steps.iter().cloned())
+                    .chain(record.notes.iter().cloned())
+                    .collect::<Vec<_>>()
+                    .join("\n");
+                for word in text.split(|c: char| !(c.is_alphanumeric() || c == '_')) {
+                    assert!(word.matches('_').count() < 2, "{lang:?}: {word} in\n{text}");
+                }
+            }
+        }
+    }
+}

@@ -92,8 +92,8 @@ const STATEMENTS: [Statement; 9] = [
         en: "The range of the Fresnel function is [0, 1].",
         printed: true,
         correct: true,
-        why_en: "it is the reflected fraction of the incident power, and energy conservation bounds it (property test fresnel_is_a_fraction)",
-        why_hu: "a beeső teljesítmény visszavert hányada, az energiamegmaradás korlátozza (fresnel_is_a_fraction tulajdonságteszt)",
+        why_en: "it is the reflected fraction of the incident power, and energy conservation bounds it (the suite's property tests check it over random inputs)",
+        why_hu: "a beeső teljesítmény visszavert hányada, az energiamegmaradás korlátozza (a csomag tulajdonságtesztjei véletlen bemeneteken ellenőrzik)",
     },
     Statement {
         hu: "Csak a 444, 526 és 645 nm hullámhosszú fényből állítható elő bármilyen színérzet additív keveréssel.",
