@@ -21,6 +21,7 @@ use record::{Answer, Record};
 #[command(after_help = "Examples:
   optics inspect crates/tracer/scenes/shadow.json
   optics --json inspect crates/tracer/scenes/kaleidoscope.json --integrator path --spp 16
+  optics inspect crates/tracer/scenes/gold_spheres.json --integrator path --spp 16 --measure
 
 The costs are measured by rendering the scene twice or more at its own size
 (or --width/--height): with only the machinery it needs, and with each
@@ -35,6 +36,11 @@ pub struct InspectArgs {
     #[command(flatten)]
     #[serde(flatten)]
     pub job: JobArgs,
+    /// Measure the share of the light the path integrator misses on this
+    /// scene, by rendering it with path and photon (four times each, at
+    /// its settings): where the scene has light that path cannot find.
+    #[arg(long)]
+    pub measure: bool,
 }
 
 pub fn run(args: &InspectArgs, ui: &Ui) -> error::Result<()> {
@@ -92,7 +98,8 @@ pub fn run(args: &InspectArgs, ui: &Ui) -> error::Result<()> {
             base.rays.total()
         )
     });
-    let (missing, missing_detail) = crate::missing_light::report(&job, &args.scene, lang);
+    let (missing, missing_detail) =
+        crate::missing_light::report(&job, &args.scene, lang, args.measure)?;
     for line in crate::render::steps(needs, job.machinery(), settings, lang)
         .into_iter()
         .chain(lines)

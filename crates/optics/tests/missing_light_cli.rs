@@ -131,3 +131,48 @@ fn the_json_record_carries_the_chains_and_the_measured_share() {
         assert!(share > 0.01 && share < 0.5, "{share}");
     }
 }
+
+/// `--measure` renders the scene as written with path and photon and
+/// states the share path misses, with its standard error, in either
+/// language; without it the record holds no such measurement.
+#[cfg(feature = "harness")]
+#[test]
+fn inspect_measure_states_the_share_path_misses_on_the_scene_itself() {
+    let path = scene("gold_spheres");
+    let args = [
+        "--json",
+        "inspect",
+        &path,
+        "--width",
+        "32",
+        "--height",
+        "24",
+        "--integrator",
+        "path",
+        "--spp",
+        "8",
+    ];
+    let record = |extra: &[&str]| -> Value {
+        let out = optics(&[&args[..], extra].concat());
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        serde_json::from_slice(&out.stdout).unwrap()
+    };
+    assert!(record(&[])["details"]["missing_light"]["measured_here"].is_null());
+    let here = record(&["--measure"])["details"]["missing_light"]["measured_here"].clone();
+    let diffuse = &here["diffuse"];
+    let (share, se) = (
+        diffuse["share"].as_f64().unwrap(),
+        diffuse["standard_error"].as_f64().unwrap(),
+    );
+    // A share with its noise (that it is well above its noise on this
+    // scene is `validation`'s `path_misses_the_gold_spheres_caustic`).
+    assert!(se > 0.0 && share.abs() < 1.0, "{here}");
+    assert_eq!(here["passes"], 4);
+    let out = optics(&[&args[1..], &["--measure", "--lang", "hu"]].concat());
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.contains("a photon által talált fény"), "{text}");
+}

@@ -33,6 +33,7 @@
 
 mod checks;
 mod estimates;
+mod measure;
 mod reference;
 mod statistics;
 mod thresholds;
@@ -43,6 +44,7 @@ pub use checks::{
     check_missing_share, check_same_missing_light, TracerRender,
 };
 pub use estimates::{Estimate, Region};
+pub use measure::{missing_share, MissingShare, PASSES};
 pub use reference::{
     decode, DecodedLight, EstimateRender, FullLight, RegionMask, SceneLight, FILE, SCHEMA,
 };

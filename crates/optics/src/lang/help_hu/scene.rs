@@ -121,10 +121,18 @@ pedig azonos néven PFM-ként a lineáris sugársűrűséget.",
         "Példák:
   optics inspect crates/tracer/scenes/shadow.json
   optics --json inspect crates/tracer/scenes/kaleidoscope.json --integrator path --spp 16
+  optics inspect crates/tracer/scenes/gold_spheres.json --integrator path --spp 16 --measure
 
 A költségeket a színtér kétszeri vagy többszöri renderelése méri, a saját méretében (vagy
 --width/--height méretben): csak a szükséges részekkel, majd egyenként minden kihagyott
 rész visszakapcsolásával. A képeket összeveti: a kihagyás egyetlen képpontot sem változtathat meg.",
     ),
     (&["inspect"], "scene", "A színtérfájl (JSON)"),
+    (
+        &["inspect"],
+        "measure",
+        "Méri, a fény mekkora részét nem látja a path integrátor ezen a színtéren: a path és a \
+         photon integrátorral is négyszer rendereli a saját beállításaival (ahol a színtérben van \
+         olyan fény, amelyet a path nem talál)",
+    ),
 ];
