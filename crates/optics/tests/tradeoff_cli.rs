@@ -193,6 +193,25 @@ fn the_truth_is_cached_and_rendered_again_on_request() {
     assert_eq!(truth(&second)["key"], truth(&first)["key"]);
     let fresh = sweep("blinn_phong", dir.path(), &["--lambert", "--fresh"]);
     assert_eq!(truth(&fresh)["cached"], false);
+    // A cached image cut short is not used: the truth is rendered again,
+    // and the record and the notes say why.
+    let file = truth(&fresh)["file"].as_str().unwrap().to_owned();
+    let bytes = std::fs::read(&file).unwrap();
+    std::fs::write(&file, &bytes[..bytes.len() / 2]).unwrap();
+    let cut = sweep("blinn_phong", dir.path(), &["--lambert"]);
+    assert_eq!(truth(&cut)["cached"], false);
+    assert_eq!(truth(&cut)["replaced"]["why"], "image", "{}", truth(&cut));
+    let record: Value = serde_json::from_slice(&cut.stdout).unwrap();
+    assert!(
+        record["notes"]
+            .to_string()
+            .contains("the cached truth was not used"),
+        "{record}"
+    );
+    assert_eq!(
+        truth(&sweep("blinn_phong", dir.path(), &["--lambert"]))["cached"],
+        true
+    );
     // Another size is another truth.
     let other = sweep("blinn_phong", dir.path(), &["--lambert", "--width", "20"]);
     assert_eq!(truth(&other)["cached"], false);

@@ -202,18 +202,21 @@ pub fn read_pfm(bytes: &[u8]) -> Option<Image> {
     let mut size = fields[1].split(' ').map(|s| s.parse::<u32>());
     let (width, height) = (size.next()?.ok()?, size.next()?.ok()?);
     let data = &bytes[start..];
-    if data.len() != width as usize * height as usize * 12 {
+    // A header's size is trusted only as far as the bytes that follow it:
+    // its product is checked, not wrapped.
+    let (w, h) = (width as usize, height as usize);
+    let count = w.checked_mul(h)?;
+    if Some(data.len()) != count.checked_mul(12) {
         return None;
     }
     let float =
         |i: usize| f32::from_le_bytes(data[4 * i..4 * i + 4].try_into().unwrap_or_default());
-    let mut pixels = vec![glam::Vec3::ZERO; (width * height) as usize];
-    for row in 0..height {
-        let y = height - 1 - row;
-        for x in 0..width {
-            let i = ((row * width + x) * 3) as usize;
-            pixels[(y * width + x) as usize] =
-                glam::Vec3::new(float(i), float(i + 1), float(i + 2));
+    let mut pixels = vec![glam::Vec3::ZERO; count];
+    for row in 0..h {
+        let y = h - 1 - row;
+        for x in 0..w {
+            let i = (row * w + x) * 3;
+            pixels[y * w + x] = glam::Vec3::new(float(i), float(i + 1), float(i + 2));
         }
     }
     Some(Image {
@@ -226,6 +229,20 @@ pub fn read_pfm(bytes: &[u8]) -> Option<Image> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A header whose size's byte count passes `usize` is refused, not
+    /// wrapped (the truth cache's fuzz target found the overflow).
+    #[test]
+    fn a_pfm_whose_size_overflows_is_refused() {
+        for header in [
+            "PF\n4294967295 4294967295\n-1.0\n",
+            "PF\n65536 65536\n-1.0\n",
+        ] {
+            let mut bytes = header.as_bytes().to_vec();
+            bytes.extend_from_slice(&[0; 12]);
+            assert!(read_pfm(&bytes).is_none(), "{header}");
+        }
+    }
     use glam::Vec3;
 
     /// Runs of equal pixels take the first one's bytes: the result is each

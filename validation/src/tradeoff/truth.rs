@@ -17,6 +17,11 @@ use super::measure::{Mask, Truth};
 use super::render::render;
 use super::sweep;
 
+/// The tracer's and the laws' source as this build compiled them (FNV-1a
+/// of every `.rs` file under `crates/tracer/src` and `crates/radiometry/src`,
+/// by `build.rs`): a truth rendered by other code is of another key.
+pub const TRACER_SOURCE: &str = env!("OPTICS_TRACER_SOURCE");
+
 /// What the sweep's JSON says of its truth.
 #[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct TruthRecord {
@@ -38,6 +43,11 @@ pub struct TruthRecord {
     /// Whether it was read from the cache rather than rendered now.
     #[serde(default)]
     pub cached: bool,
+    /// Why a cache entry found under its key was not used and the truth
+    /// rendered again (the entry unreadable, cut short, of another key or
+    /// size, or holding a radiance that is not a number).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub replaced: Option<Stale>,
     /// The cache key: FNV-1a of the scene file, the size, the settings
     /// and the tracer's version.
     pub key: String,
@@ -86,7 +96,7 @@ impl Cache {
                 },
                 format!("{}x{}", job.scene().width, job.scene().height).as_bytes(),
                 settings_json.to_string().as_bytes(),
-                env!("CARGO_PKG_VERSION").as_bytes(),
+                TRACER_SOURCE.as_bytes(),
             ])
         );
         let stem = request
@@ -125,6 +135,7 @@ impl Cache {
             noise: truth.noise,
             light_noise_relative: None,
             cached: false,
+            replaced: None,
             key: self.key,
             file: self.image_path.display().to_string(),
         };
@@ -148,9 +159,20 @@ pub fn obtain(
     threads: Option<usize>,
 ) -> Result<(Truth, TruthRecord), TradeoffError> {
     let cache = Cache::new(job, request)?;
+    let mut replaced = None;
     if !request.fresh {
-        if let Some(found) = cached(&cache.image_path, &cache.meta_path, &cache.key, mask, job) {
-            return Ok(found);
+        let files = (
+            std::fs::read(&cache.image_path),
+            std::fs::read(&cache.meta_path),
+        );
+        if let (Ok(pfm), Ok(meta)) = files {
+            match read_cached(&pfm, &meta, &cache.key, job) {
+                Ok((image, mut record)) => {
+                    record.cached = true;
+                    return Ok((Truth::new(image, record.noise, mask), record));
+                }
+                Err(stale) => replaced = Some(stale),
+            }
         }
     }
     let half = cache.half;
@@ -161,26 +183,95 @@ pub fn obtain(
     };
     let b = render(job, request.scene_file, second, threads)?;
     let seconds = (a.elapsed + b.elapsed).as_secs_f64();
-    cache.store(a.image, b.image, seconds, mask)
+    let (truth, mut record) = cache.store(a.image, b.image, seconds, mask)?;
+    record.replaced = replaced;
+    Ok((truth, record))
 }
 
-/// The cached truth, if both its files read back whole and match `key`
-/// and the job's size.
-fn cached(
-    image_path: &Path,
-    meta_path: &Path,
-    key: &str,
-    mask: &Mask,
-    job: &RenderJob,
-) -> Option<(Truth, TruthRecord)> {
-    let image = read_pfm(&std::fs::read(image_path).ok()?)?;
-    let mut record: TruthRecord = serde_json::from_slice(&std::fs::read(meta_path).ok()?).ok()?;
-    let fits = image.width == job.scene().width && image.height == job.scene().height;
-    if record.key != key || !fits || !record.noise.is_finite() || record.noise < 0.0 {
-        return None;
+/// Why a cached truth is not used; its `Display` is the English.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error, Serialize, Deserialize)]
+#[serde(tag = "why", rename_all = "snake_case")]
+pub enum Stale {
+    /// The image is not a PFM read back whole (cut short, or not one).
+    #[error("its image is not a whole PFM")]
+    Image,
+    /// The record is not a truth's record.
+    #[error("its record does not read as a truth's")]
+    Record,
+    /// The record is of another key: another scene, size, settings or tracer.
+    #[error("its record is of another key ({found})")]
+    Key {
+        /// The key the record holds.
+        found: String,
+    },
+    /// The image is of another size than the job's.
+    #[error("its image is {width}×{height}, not the scene's size")]
+    Size {
+        /// Its width.
+        width: u32,
+        /// Its height.
+        height: u32,
+    },
+    /// A radiance, or the recorded noise, is not a finite number (≥ 0).
+    #[error("it holds a value that is not a finite number")]
+    NotFinite,
+}
+
+impl Stale {
+    /// The reason in Hungarian.
+    pub fn hu(&self) -> String {
+        match self {
+            Stale::Image => "a képe nem teljes PFM".to_owned(),
+            Stale::Record => "a leírása nem egy referencia leírása".to_owned(),
+            Stale::Key { found } => format!("a leírása más kulcsú ({found})"),
+            Stale::Size { width, height } => {
+                format!("a képe {width}×{height} méretű, nem a színtéré")
+            }
+            Stale::NotFinite => "olyan értéket tartalmaz, amely nem véges szám".to_owned(),
+        }
     }
-    record.cached = true;
-    Some((Truth::new(image, record.noise, mask), record))
+}
+
+/// The cached truth of `job` under `key`, from its files' bytes, if both
+/// read back whole, are of that key and of the job's size, and hold only
+/// finite numbers; else why not.
+pub fn read_cached(
+    pfm: &[u8],
+    meta: &[u8],
+    key: &str,
+    job: &RenderJob,
+) -> Result<(Image, TruthRecord), Stale> {
+    let image = read_pfm(pfm).ok_or(Stale::Image)?;
+    let record: TruthRecord = serde_json::from_slice(meta).map_err(|_| Stale::Record)?;
+    if record.key != key {
+        return Err(Stale::Key { found: record.key });
+    }
+    if (image.width, image.height) != (job.scene().width, job.scene().height) {
+        let (width, height) = (image.width, image.height);
+        return Err(Stale::Size { width, height });
+    }
+    let finite = image.pixels.iter().all(|p| p.is_finite()) || finite_unchecked();
+    if !finite || !record.noise.is_finite() || record.noise < 0.0 {
+        return Err(Stale::NotFinite);
+    }
+    Ok((image, record))
+}
+
+#[cfg(test)]
+thread_local! {
+    /// A test-only switch that reverts the check of the cached image's
+    /// radiances, for the cache's fuzz target to find.
+    pub(crate) static FINITE_UNCHECKED: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+}
+
+#[cfg(test)]
+fn finite_unchecked() -> bool {
+    FINITE_UNCHECKED.get()
+}
+
+#[cfg(not(test))]
+fn finite_unchecked() -> bool {
+    false
 }
 
 /// FNV-1a, 64 bits, over the parts in order, each followed by a 0 byte.
@@ -195,6 +286,8 @@ pub fn fnv1a(parts: &[&[u8]]) -> u64 {
     hash
 }
 
+#[cfg(test)]
+mod fuzz;
 #[cfg(test)]
 mod tests {
     use super::fnv1a;

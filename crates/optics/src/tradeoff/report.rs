@@ -144,6 +144,14 @@ pub fn write_and_show(
             UNCONVERGED
         ));
     }
+    if let Some(stale) = &sweep.truth.replaced {
+        record.note(say!(
+            lang,
+            "the cached truth was not used: {}; it was rendered again",
+            "a gyorsítótárban talált referencia nem használható: {}; újra renderelve",
+            lang.pick(&stale.to_string(), &stale.hu())
+        ));
+    }
     for skipped in &sweep.skipped {
         record.note(say!(
             lang,
