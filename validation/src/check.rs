@@ -5,9 +5,14 @@
 //! laws beyond the stated tolerance of a reference. A **finding** is a
 //! disagreement between two references (Mitsuba's float32 evaluation against
 //! the exact value, say) that the suite reports without failing for it.
+//!
+//! What a check says to a reader (its title, the gist of its findings) it
+//! says in English and in Hungarian, both given where the check is
+//! declared; `report.json` carries the English.
 
+use errata::Words;
 use radiometry::Real;
-use serde::Serialize;
+use serde::{Serialize, Serializer};
 
 /// One check's result, as it appears in `report.json`.
 #[derive(Clone, Debug, Serialize)]
@@ -15,7 +20,8 @@ pub struct Check {
     /// A stable identifier, `group.reference.law`, e.g. `laws.mitsuba.fresnel`.
     pub id: String,
     /// What is compared, in words.
-    pub title: String,
+    #[serde(serialize_with = "english")]
+    pub title: Words,
     /// The reference the law is compared with, and its version.
     pub reference: String,
     /// The tolerance and why it is that.
@@ -30,8 +36,31 @@ pub struct Check {
     pub findings: Vec<String>,
     /// The findings in one plain sentence, the worst of them named, for a
     /// reader who will not read them all; set by the check that found them.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub gist: Option<String>,
+    #[serde(
+        skip_serializing_if = "Option::is_none",
+        serialize_with = "english_if_any"
+    )]
+    pub gist: Option<Words>,
+}
+
+/// A text as `report.json` carries it: its English.
+fn english<S: Serializer>(words: &Words, serializer: S) -> Result<S::Ok, S::Error> {
+    serializer.serialize_str(&words.en)
+}
+
+fn english_if_any<S: Serializer>(words: &Option<Words>, serializer: S) -> Result<S::Ok, S::Error> {
+    match words {
+        Some(words) => english(words, serializer),
+        None => serializer.serialize_none(),
+    }
+}
+
+/// `[English, Hungarian]` as [`Words`].
+fn words([en, hu]: [&str; 2]) -> Words {
+    Words {
+        en: en.to_owned(),
+        hu: hu.to_owned(),
+    }
 }
 
 /// The worst value of one measured quantity and where it occurred.
@@ -46,11 +75,12 @@ pub struct Metric {
 }
 
 impl Check {
-    /// A check with no cases compared yet.
-    pub fn new(id: &str, title: &str, reference: &str, tolerance: &str) -> Self {
+    /// A check with no cases compared yet; its `title` in English and in
+    /// Hungarian.
+    pub fn new(id: &str, title: [&str; 2], reference: &str, tolerance: &str) -> Self {
         Self {
             id: id.to_owned(),
-            title: title.to_owned(),
+            title: words(title),
             reference: reference.to_owned(),
             tolerance: tolerance.to_owned(),
             cases: 0,
@@ -105,11 +135,13 @@ impl Check {
         self.findings.push(message);
     }
 
-    /// Sums the findings up in one plain sentence, `gist`, where there are
-    /// any (a check without findings keeps none).
-    pub fn sum_up(&mut self, gist: impl FnOnce(&Self) -> String) {
+    /// Sums the findings up in one plain sentence, `gist`, in English and
+    /// in Hungarian, where there are any (a check without findings keeps
+    /// none).
+    pub fn sum_up(&mut self, gist: impl FnOnce(&Self) -> [String; 2]) {
         if !self.findings.is_empty() {
-            self.gist = Some(gist(self));
+            let [en, hu] = gist(self);
+            self.gist = Some(Words { en, hu });
         }
     }
 }
@@ -138,7 +170,7 @@ mod tests {
 
     #[test]
     fn measure_keeps_the_worst_and_where() {
-        let mut check = Check::new("t", "t", "t", "t");
+        let mut check = Check::new("t", ["t", "t"], "t", "t");
         check.measure("err", 1.0, "a");
         check.measure("err", 3.0, "b");
         check.measure("err", 2.0, "c");
@@ -149,6 +181,6 @@ mod tests {
 
     #[test]
     fn a_check_without_cases_does_not_pass() {
-        assert!(!Check::new("t", "t", "t", "t").passed());
+        assert!(!Check::new("t", ["t", "t"], "t", "t").passed());
     }
 }

@@ -138,7 +138,10 @@ pub fn check_against_nvidia(flip: ErrorMap, reference: &FlipReference) -> Check 
     use base64::Engine as _;
     let mut check = Check::new(
         "images.flip.nvidia",
-        "LDR ꟻLIP error maps (nv-flip) of image pairs of known character",
+        [
+            "LDR ꟻLIP error maps (nv-flip) of image pairs of known character",
+            "Ismert jellegű képpárok LDR ꟻLIP-hibatérképei (nv-flip)",
+        ],
         &format!(
             "NVIDIA's flip-evaluator {} at {} pixels per degree",
             reference.flip_evaluator_version, reference.pixels_per_degree

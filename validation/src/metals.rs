@@ -183,7 +183,10 @@ pub struct MetalColour {
 pub fn check_spectral_colours(laws: &MetalLaws, reference: &MetalsReference) -> Check {
     let mut check = Check::new(
         "colour.colour-science.metals",
-        "Exact reflectance spectra of gold, silver, copper, aluminium (Mitsuba's measured n, κ) and their colour",
+        [
+            "Exact reflectance spectra of gold, silver, copper, aluminium (Mitsuba's measured n, κ) and their colour",
+            "Az arany, az ezüst, a réz és az alumínium pontos visszaverődési spektruma (a Mitsuba mért n, κ értékeivel) és színük",
+        ],
         &format!(
             "colour-science {} on mpmath reflectances; indices from Mitsuba {}",
             reference.colour_science_version, reference.mitsuba_version

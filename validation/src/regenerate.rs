@@ -98,7 +98,10 @@ pub fn regenerate(
     let scripts = checkout.python_checks();
     let mut check = Check::new(
         "references.regenerated",
-        "Every committed reference is current by its key, or regenerates with the pinned tools",
+        [
+            "Every committed reference is current by its key, or regenerates with the pinned tools",
+            "Minden tárolt referencia naprakész a kulcsa szerint, vagy újragenerálódik a rögzített eszközökkel",
+        ],
         "python-checks/reference_keys.py (the key: generator, inputs, pinned tools) and the \
          python-checks/ generators in the pinned environment",
         "the rule of python-checks/reproduce.py: byte-identical, but for the files written \

@@ -247,7 +247,10 @@ impl CheckKind for TradeoffChecks {
         if records.is_empty() {
             let mut none = Check::new(
                 "tradeoff.records",
-                "The speed/accuracy trade-off records",
+                [
+                    "The speed/accuracy trade-off records",
+                    "A sebesség és a pontosság cseréjének feljegyzései",
+                ],
                 tradeoff::checks::DIR,
                 "one record a lit course scene",
             );

@@ -11,6 +11,7 @@ use std::path::Path;
 
 use glam::Vec3;
 use radiometry::specular::{self, Refraction};
+use record::Lang;
 use validation::checkout::Checkout;
 use validation::colorimetry::ColourLaws;
 use validation::exchange::{self, LawCase, LawResult};
@@ -94,7 +95,7 @@ fn a_broken_law_fails_its_check_in_the_report() {
         .collect();
     assert_eq!(failed, ["laws.mitsuba.directions"]);
     assert_eq!(report.summary.failed, 1);
-    let html = to_html(&report, &[]);
+    let html = to_html(&report, &[], Lang::En);
     let verdict = format!("1 of {} checks FAIL.", report.summary.checks);
     assert!(words(&html).contains(&verdict), "the page says so");
 }

@@ -22,9 +22,14 @@ pub fn check_random(
 ) -> Check {
     let mut check = Check::new(
         "laws.mitsuba.random",
-        "Fresnel (dielectric, conductor), reflection and refraction at random inputs exported by the harness, \
-         against Mitsuba, with our f64 laws standing in for the exact value (the random cases against \
-         50 digits are laws.mpmath.random.*)",
+        [
+            "Fresnel (dielectric, conductor), reflection and refraction at random inputs exported by the harness, \
+             against Mitsuba, with our f64 laws standing in for the exact value (the random cases against \
+             50 digits are laws.mpmath.random.*)",
+            "Fresnel (dielektrikum, vezető), visszaverődés és törés a keretrendszer exportálta véletlen \
+             bemeneteken, a Mitsuba ellen, a pontos érték helyén f64 törvényeinkkel (az 50 jegy elleni \
+             véletlen esetek: laws.mpmath.random.*)",
+        ],
         &format!("{} on cases.json (seed {})", results.evaluator, cases.seed),
         &format!(
             "ours (f32) within {OURS_ULPS} f32 ulps of our f64 law (itself within 8 f64 ulps of exact), directions within {DIRECTION_ABS:.1e} plus the refraction allowance near the critical angle; Mitsuba beyond {MITSUBA_ABS:.1e} is a finding; ours and Mitsuba within {GROSS_ABS:e}"

@@ -58,7 +58,10 @@ pub fn check_independent(name: &str, decoded: &DecodedLight) -> Option<Check> {
     let area = summed(decoded, Estimate::Area, Region::Diffuse)?;
     let mut check = Check::new(
         &format!("full_light.mitsuba.{name}.independent"),
-        &format!("{name}: Mitsuba's light tracer against its path tracer with area lights, where the camera sees a diffuse surface"),
+        [
+            &format!("{name}: Mitsuba's light tracer against its path tracer with area lights, where the camera sees a diffuse surface"),
+            &format!("{name}: a Mitsuba fénykövetője az útkövetője ellen felületi fényforrásokkal, ahol a kamera diffúz felületet lát"),
+        ],
         "Mitsuba 3 ptracer and path (scalar_rgb), mitsuba_full_light.json",
         &format!("Welch's t on the region's mean per pass (R + G + B): fails when p < α = {ALPHA}"),
     );
@@ -94,9 +97,10 @@ pub fn check_missing_share(name: &str, decoded: &DecodedLight) -> Check {
     let control = !has_delta_surface(&decoded.scene);
     let mut check = Check::new(
         &format!("full_light.mitsuba.{name}.missing_share"),
-        &format!(
-            "{name}: the share of the light Mitsuba's path integrator misses, 1 − path / full"
-        ),
+        [
+            &format!("{name}: the share of the light Mitsuba's path integrator misses, 1 − path / full"),
+            &format!("{name}: a fény része, amelyet a Mitsuba útkövető integrátora nem talál meg, 1 − út / teljes"),
+        ],
         "Mitsuba 3 ptracer and path with area lights (scalar_rgb), mitsuba_full_light.json",
         &format!(
             "measured; {}",
@@ -160,7 +164,10 @@ pub fn check_all_the_light_in(
 ) -> Check {
     let mut check = Check::new(
         &format!("full_light.tracer.{name}.{integrator}.all_the_light"),
-        &format!("{name}: the tracer's {integrator} against all the light (Mitsuba's light tracer and area lights)"),
+        [
+            &format!("{name}: the tracer's {integrator} against all the light (Mitsuba's light tracer and area lights)"),
+            &format!("{name}: a sugárkövető {integrator} integrátora a teljes fény ellen (a Mitsuba fénykövetője és felületi fényforrások)"),
+        ],
         "Mitsuba 3 ptracer and path with area lights (scalar_rgb), mitsuba_full_light.json",
         &tolerance_text(),
     );
@@ -193,7 +200,10 @@ pub fn check_same_missing_light(
 ) -> Check {
     let mut check = Check::new(
         &format!("full_light.tracer.{name}.{integrator}.missing_share"),
-        &format!("{name}: the tracer's {integrator} misses what Mitsuba's path misses"),
+        [
+            &format!("{name}: the tracer's {integrator} misses what Mitsuba's path misses"),
+            &format!("{name}: a sugárkövető {integrator} integrátora ugyanazt nem találja meg, amit a Mitsuba útkövetője"),
+        ],
         "Mitsuba 3 path (scalar_rgb), mitsuba_full_light.json",
         &tolerance_text(),
     );
@@ -224,17 +234,32 @@ pub fn check_same_missing_light(
 /// The findings of a comparison of region means in one sentence: the
 /// largest relative difference, significant but within the finding's
 /// margin past the allowance.
-fn beyond_the_allowance(check: &Check) -> String {
+fn beyond_the_allowance(check: &Check) -> [String; 2] {
     match check.worst("|ours − Mitsuba| / Mitsuba") {
-        Some(m) => format!(
-            "Mitsuba's estimate and ours differ significantly by up to {:.2} %, at {}: past the \
-             {} % allowance by less than {} %, so reported, not failed.",
-            100.0 * m.worst,
-            m.at,
-            100.0 * TOLERANCE_RELATIVE,
-            100.0 * FINDING_RELATIVE
-        ),
-        None => "Mitsuba's estimate and ours differ significantly.".to_owned(),
+        Some(m) => {
+            let (worst, allowed, more) = (
+                100.0 * m.worst,
+                100.0 * TOLERANCE_RELATIVE,
+                100.0 * FINDING_RELATIVE,
+            );
+            [
+                format!(
+                    "Mitsuba's estimate and ours differ significantly by up to {worst:.2} %, at {}: \
+                     past the {allowed} % allowance by less than {more} %, so reported, not failed.",
+                    m.at
+                ),
+                format!(
+                    "A Mitsuba becslése és a miénk szignifikánsan eltér, legfeljebb {worst:.2} %-kal, \
+                     itt: `{}`; a {allowed} %-os engedményt kevesebb mint {more} %-kal lépi túl, \
+                     ezért jelentjük, de nem számít kudarcnak.",
+                    m.at
+                ),
+            ]
+        }
+        None => [
+            "Mitsuba's estimate and ours differ significantly.".to_owned(),
+            "A Mitsuba becslése és a miénk szignifikánsan eltér.".to_owned(),
+        ],
     }
 }
 

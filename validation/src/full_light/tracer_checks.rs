@@ -135,7 +135,10 @@ const PHOTON_PASSES: u32 = 4;
 fn render_failed(name: &str, what: &str, error: &str) -> Check {
     let mut check = Check::new(
         &format!("full_light.tracer.{name}.{what}"),
-        &format!("{name}: the tracer's render"),
+        [
+            &format!("{name}: the tracer's render"),
+            &format!("{name}: a sugárkövető képe"),
+        ],
         "mitsuba_full_light.json",
         "the render succeeds",
     );

@@ -57,7 +57,10 @@ pub(crate) fn vec3(v: [f64; 3]) -> Vec3 {
 pub fn check_directions(laws: &Laws, reference: &MitsubaLaws) -> Check {
     let mut check = Check::new(
         "laws.mitsuba.directions",
-        "Mirror and refracted directions, both sides, tilted normals, TIR",
+        [
+            "Mirror and refracted directions, both sides, tilted normals, TIR",
+            "Tükrözött és megtört irányok, mindkét oldalról, döntött normálisokkal, teljes visszaverődéssel",
+        ],
         &reference.version(),
         &format!(
             "ours within {DIRECTION_ABS:.1e} of exact per component, plus the refraction_allowance for the conditioning near the critical angle; Mitsuba beyond {MITSUBA_ABS:.1e} is a finding; ours and Mitsuba within {GROSS_ABS:e}"

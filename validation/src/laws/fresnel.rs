@@ -75,7 +75,10 @@ fn compare_polarised(
 pub fn check_dielectric(laws: &Laws, reference: &MitsubaLaws) -> Check {
     let mut check = Check::new(
         "laws.mitsuba.fresnel_dielectric",
-        "Dielectric Fresnel R, R_s, R_p, both sides, normal to grazing, TIR",
+        [
+            "Dielectric Fresnel R, R_s, R_p, both sides, normal to grazing, TIR",
+            "Dielektrikum Fresnel-egyenletei: R, R_s, R_p, mindkét oldalról, merőlegestől súrolóig, teljes visszaverődéssel",
+        ],
         &reference.version(),
         &format!(
             "ours within {OURS_ULPS} f32 ulps of exact; Mitsuba beyond {MITSUBA_ABS:.1e} of exact is a finding; ours and Mitsuba within {GROSS_ABS:e}"
@@ -125,7 +128,10 @@ pub fn check_dielectric(laws: &Laws, reference: &MitsubaLaws) -> Check {
 pub fn check_conductor(laws: &Laws, reference: &MitsubaLaws) -> Check {
     let mut check = Check::new(
         "laws.mitsuba.fresnel_conductor",
-        "Conductor Fresnel R, R_s, R_p (n + iκ), normal to grazing",
+        [
+            "Conductor Fresnel R, R_s, R_p (n + iκ), normal to grazing",
+            "Vezető Fresnel-egyenletei: R, R_s, R_p (n + iκ), merőlegestől súrolóig",
+        ],
         &reference.version(),
         &format!(
             "ours within {OURS_ULPS} f32 ulps of exact; Mitsuba beyond {MITSUBA_ABS:.1e} of exact is a finding; ours and Mitsuba within {GROSS_ABS:e}"
@@ -149,20 +155,29 @@ pub fn check_conductor(laws: &Laws, reference: &MitsubaLaws) -> Check {
 
 /// The findings of a law check in one sentence: how far Mitsuba's float32
 /// `law` strays from the exact law at worst, and where.
-fn mitsuba_gist(check: &Check, law: &str) -> String {
+fn mitsuba_gist(check: &Check, law: &str) -> [String; 2] {
     let worst = ["R", "R_s", "R_p"]
         .iter()
         .filter_map(|q| check.worst(&format!("{q}: |Mitsuba − exact|")))
         .max_by(|a, b| a.worst.total_cmp(&b.worst));
+    let n = check.findings.len();
     match worst {
-        Some(m) => format!(
-            "Mitsuba's float32 `{law}` departs from the exact law by up to {:.1e}, at {} \
-             ({} values beyond {MITSUBA_ABS:.1e}).",
-            m.worst,
-            m.at,
-            check.findings.len()
-        ),
-        None => format!("Mitsuba's float32 `{law}` departs from the exact law."),
+        Some(m) => [
+            format!(
+                "Mitsuba's float32 `{law}` departs from the exact law by up to {:.1e}, at {} \
+                 ({n} values beyond {MITSUBA_ABS:.1e}).",
+                m.worst, m.at
+            ),
+            format!(
+                "A Mitsuba float32 `{law}` függvénye legfeljebb {:.1e} eltéréssel tér el a pontos \
+                 törvénytől, itt: `{}` ({n} érték {MITSUBA_ABS:.1e} fölött).",
+                m.worst, m.at
+            ),
+        ],
+        None => [
+            format!("Mitsuba's float32 `{law}` departs from the exact law."),
+            format!("A Mitsuba float32 `{law}` függvénye eltér a pontos törvénytől."),
+        ],
     }
 }
 
@@ -171,7 +186,10 @@ fn mitsuba_gist(check: &Check, law: &str) -> String {
 pub fn check_schlick(laws: &Laws, reference: &MitsubaLaws) -> Check {
     let mut check = Check::new(
         "laws.mpmath.schlick",
-        "Schlick's approximation F0 + (1 − F0)(1 − cos)⁵ against its definition",
+        [
+            "Schlick's approximation F0 + (1 − F0)(1 − cos)⁵ against its definition",
+            "A Schlick-közelítés, F0 + (1 − F0)(1 − cos)⁵, a definíciója ellen",
+        ],
         "mpmath, 50 digits",
         &format!("within {OURS_ULPS} f32 ulps: five products and a sum, each rounded once"),
     );

@@ -34,7 +34,10 @@ pub fn transmitted_angle_bound_ulps(cond_theta: f64) -> f64 {
 pub fn check_angles(laws: &Laws, laws64: &Laws64, reference: &FresnelMpmath) -> Check {
     let mut check = Check::new(
         "laws.mpmath.angles",
-        "Snell's law for angles, the critical and Brewster angles, in f64 and f32",
+        [
+            "Snell's law for angles, the critical and Brewster angles, in f64 and f32",
+            "A Snellius–Descartes-törvény a szögekre, a határszög és a Brewster-szög, f64-ben és f32-ben",
+        ],
         &format!("mpmath {}, 50 digits", reference.mpmath_version),
         &format!(
             "transmitted_angle within {BOUND_ULPS} + (8/π)·cond_θ ulps of the tier, cond_θ its \

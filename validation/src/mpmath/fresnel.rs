@@ -19,7 +19,10 @@ fn widen(f: DielectricFresnel<f32>) -> [f64; 4] {
 pub fn check_dielectric(laws: &Laws, laws64: &Laws64, reference: &FresnelMpmath) -> Check {
     let mut check = Check::new(
         "laws.mpmath.fresnel_dielectric",
-        "Dielectric Fresnel R_s, R_p, R, T in f64 and f32, extremes included",
+        [
+            "Dielectric Fresnel R_s, R_p, R, T in f64 and f32, extremes included",
+            "Dielektrikum Fresnel-egyenletei: R_s, R_p, R, T f64-ben és f32-ben, a szélsőségekkel együtt",
+        ],
         &format!("mpmath {}, 50 digits", reference.mpmath_version),
         &format!(
             "within {DIELECTRIC_F64_BOUND_ULPS} ulps in f64 and {BOUND_ULPS} in f32: a handful of \
@@ -60,7 +63,10 @@ pub fn check_dielectric(laws: &Laws, laws64: &Laws64, reference: &FresnelMpmath)
 pub fn check_conductor(laws: &Laws, laws64: &Laws64, reference: &FresnelMpmath) -> Check {
     let mut check = Check::new(
         "laws.mpmath.fresnel_conductor",
-        "Conductor Fresnel R_s, R_p, R in f64 and f32, extremes included",
+        [
+            "Conductor Fresnel R_s, R_p, R in f64 and f32, extremes included",
+            "Vezető Fresnel-egyenletei: R_s, R_p, R f64-ben és f32-ben, a szélsőségekkel együtt",
+        ],
         &format!("mpmath {}, 50 digits", reference.mpmath_version),
         &format!(
             "within {CONDUCTOR_BOUND_ULPS} ulps of the tier: about ten roundings, squared in R_p"

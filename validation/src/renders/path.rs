@@ -101,7 +101,10 @@ pub fn compare_path(
 fn new_check(name: &str) -> Check {
     Check::new(
         &format!("renders.mitsuba.{name}.path"),
-        &format!("{name}: the tracer's path against Mitsuba's path integrator, per-pixel Welch t-test"),
+        [
+            &format!("{name}: the tracer's path against Mitsuba's path integrator, per-pixel Welch t-test"),
+            &format!("{name}: a sugárkövető útkövetése a Mitsuba útkövető integrátora ellen, képpontonkénti Welch-féle t-próba"),
+        ],
         "Mitsuba 3 path integrator through mi.render (scalar_rgb), box filter (mitsuba_renders.json)",
         &format!(
             "a pixel-channel fails when p < α/m, α = {ALPHA} over the m t-tests (Bonferroni: one correct \
@@ -133,15 +136,23 @@ fn record_findings(check: &mut Check, name: &str, verdicts: &Verdicts) {
         ));
     }
     check.sum_up(|c| {
-        format!(
-            "In {name}, Mitsuba's path render departs from ours only where its own ray offsets \
-             move light: {} pixel-channels and {} of the image's mean channels, each explained \
-             by those offsets.",
-            verdicts.offset_findings + verdicts.rule_findings,
-            c.findings
-                .iter()
-                .filter(|f| f.starts_with("the image's mean"))
-                .count()
-        )
+        let pixels = verdicts.offset_findings + verdicts.rule_findings;
+        let means = c
+            .findings
+            .iter()
+            .filter(|f| f.starts_with("the image's mean"))
+            .count();
+        [
+            format!(
+                "In {name}, Mitsuba's path render departs from ours only where its own ray offsets \
+                 move light: {pixels} pixel-channels and {means} of the image's mean channels, each \
+                 explained by those offsets."
+            ),
+            format!(
+                "A `{name}` jelenetben a Mitsuba útkövetéses képe csak ott tér el a miénktől, ahol \
+                 a saját sugáreltolásai fényt mozdítanak el: {pixels} képpont-csatorna és a kép \
+                 {means} átlagos csatornája, mindegyiket ezek az eltolások magyarázzák."
+            ),
+        ]
     });
 }

@@ -62,7 +62,10 @@ pub fn check_bump_render(
 ) -> Check {
     let mut check = Check::new(
         "techniques.bump.render",
-        "Bump mapping in a render: shading changes, silhouettes and shadows do not",
+        [
+            "Bump mapping in a render: shading changes, silhouettes and shadows do not",
+            "Buckaleképzés egy képen: az árnyalás változik, a körvonalak és az árnyékok nem",
+        ],
         "the same scene without its bump field (Whitted, bump_sphere.json)",
         &format!(
             "exact: a flat field changes no bit, the first object seen changes at no pixel, no \

@@ -27,7 +27,10 @@ pub fn sphere_round_trip(m: f64) -> f64 {
 pub fn check_envmap() -> Check {
     let mut check = Check::new(
         "techniques.envmap.round_trip",
-        "Environment maps (lat-long, cube, sphere): a direction back from its texel",
+        [
+            "Environment maps (lat-long, cube, sphere): a direction back from its texel",
+            "Környezeti térképek (lat-long, kocka, gömb): egy irány vissza a texeléből",
+        ],
         "the direction itself; the slides' cube-map example worked by hand (−Z, u = 29/42, v = 11/56)",
         &format!(
             "{ENVMAP_ROUND_TRIP:.2e} rad (lat-long, cube), 32 ε / m rad up to 4 √ε (sphere, m = |r + e|), the example to 4 ε"

@@ -25,7 +25,10 @@ pub const DATA_SHEET_ABS: f64 = 5e-6;
 pub fn check_sellmeier(glass: &Sellmeier) -> Check {
     let mut check = Check::new(
         "techniques.dispersion.n_bk7",
-        "N-BK7's refractive index by the Sellmeier equation at the Fraunhofer lines",
+        [
+            "N-BK7's refractive index by the Sellmeier equation at the Fraunhofer lines",
+            "Az N-BK7 törésmutatója a Sellmeier-egyenletből a Fraunhofer-vonalaknál",
+        ],
         "Schott's N-BK7 data sheet (five printed decimals)",
         &format!("within {DATA_SHEET_ABS:e}, half a unit in the last printed digit"),
     );
@@ -57,7 +60,10 @@ pub const PRISM_ABS: f64 = 1e-12;
 pub fn check_prism(glass: &Sellmeier) -> Check {
     let mut check = Check::new(
         "techniques.dispersion.prism",
-        "A 60° prism: the traced deviation at symmetric incidence is the analytic minimum deviation",
+        [
+            "A 60° prism: the traced deviation at symmetric incidence is the analytic minimum deviation",
+            "Egy 60°-os prizma: a szimmetrikus beesésnél követett eltérítés az analitikus legkisebb eltérítés",
+        ],
         "δ_min = 2 asin(n sin(A/2)) − A (Snell's law at both faces of a symmetric passage)",
         &format!("within {PRISM_ABS:e} rad; any other incidence deviates more"),
     );
@@ -125,7 +131,10 @@ pub const FLAT_SPECTRUM_RELATIVE: f64 = 2e-4;
 pub fn check_dispersion_render(three: fn(&tracer::scene::Scene) -> tracer::render::Image) -> Check {
     let mut check = Check::new(
         "techniques.dispersion.sphere",
-        "A glass sphere of N-BK7: the slides' three etas and one index against the spectral render",
+        [
+            "A glass sphere of N-BK7: the slides' three etas and one index against the spectral render",
+            "N-BK7 üveggömb: a diák három eta-értéke és egyetlen törésmutatója a spektrális kép ellen",
+        ],
         "85 Whitted renders at the Sellmeier index, integrated with the CIE 1931 tables under D65",
         &format!(
             "the three etas closer than one index in ΔE2000 mean and relative RMSE; away from the \

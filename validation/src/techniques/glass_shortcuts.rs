@@ -175,7 +175,10 @@ pub fn check_cheap_refraction_render(
     let (centre, rim) = RINGS;
     let mut check = Check::new(
         "techniques.refraction.render",
-        "The slides' cheap refraction (c = η − 1) rendered through a glass sphere against Snell's law",
+        [
+            "The slides' cheap refraction (c = η − 1) rendered through a glass sphere against Snell's law",
+            "A diák olcsó fénytörése (c = η − 1) üveggömbön át leképezve, a Snellius–Descartes-törvény ellen",
+        ],
         "the same tracer (Whitted) with Snell's refracted direction, the dispersion sphere at n_d",
         &format!(
             "relative RMSE at most {CHEAP_CENTRE_RMSE} where sin θi < {centre}; expected to fail as \
@@ -246,7 +249,10 @@ pub fn check_empirical_fresnel_render(
     let (lo, hi) = EMPIRICAL_RMSE;
     let mut check = Check::new(
         "techniques.empirical_fresnel.render",
-        "The slides' empirical Fresnel form, fitted to the glass, rendered on a glass sphere against the exact law",
+        [
+            "The slides' empirical Fresnel form, fitted to the glass, rendered on a glass sphere against the exact law",
+            "A diák empirikus Fresnel-alakja az üveghez illesztve, üveggömbön leképezve, a pontos törvény ellen",
+        ],
         "the same tracer (Whitted) with the exact Fresnel equations, the dispersion sphere at n_d",
         &format!(
             "expected to show the fit's error: relative RMSE over the sphere within [{lo}, {hi}], \

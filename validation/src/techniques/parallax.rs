@@ -76,7 +76,10 @@ pub fn check_distance(
 ) -> Check {
     let mut check = Check::new(
         "techniques.envmap.distance",
-        "Environment mapping against ray tracing: a mirror sphere's error as its surroundings move away",
+        [
+            "Environment mapping against ray tracing: a mirror sphere's error as its surroundings move away",
+            "Környezetleképzés a sugárkövetés ellen: egy tükörgömb hibája, ahogy a környezete távolodik",
+        ],
         "the same mirror traced among the same surroundings (Whitted); the map captured from its centre by the tracer (cube, 48² a face), 48 × 48 pixels",
         &SWEEPS
             .iter()
@@ -166,7 +169,10 @@ pub fn check_self_reflection(
 ) -> Check {
     let mut check = Check::new(
         "techniques.envmap.self_reflection",
-        "Environment mapping against ray tracing: two mirrors side by side cannot show each other",
+        [
+            "Environment mapping against ray tracing: two mirrors side by side cannot show each other",
+            "Környezetleképzés a sugárkövetés ellen: két egymás melletti tükör nem mutathatja egymást",
+        ],
         "the pair traced (Whitted), each mirror's map captured from its centre; a lone mirror under the same sky",
         &format!(
             "expected to fail as a shortcut: the pair's relative RMSE above {PAIR_RATIO} × a lone \

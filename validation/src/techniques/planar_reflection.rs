@@ -199,7 +199,10 @@ pub fn check_planar_reflection(
 ) -> Check {
     let mut check = Check::new(
         "techniques.planar.reflection_render",
-        "Planar reflection (the reflection matrix, two passes) against the traced mirror floor",
+        [
+            "Planar reflection (the reflection matrix, two passes) against the traced mirror floor",
+            "Síktükrözés (a tükrözési mátrix, két menet) a követett tükörpadló ellen",
+        ],
         "the same tracer (Whitted) with the floor a conductor, every reflected ray traced",
         &format!(
             "weighted by the exact Fresnel law, the mirrored pass within {GEOMETRY_RELATIVE:e} \

@@ -211,7 +211,10 @@ pub fn check_planar_shadow(
 ) -> Check {
     let mut check = Check::new(
         "techniques.planar.shadow_render",
-        "Projected planar shadows (the shadow matrix) against the traced shadows",
+        [
+            "Projected planar shadows (the shadow matrix) against the traced shadows",
+            "Síkra vetített árnyékok (az árnyékmátrix) a követett árnyékok ellen",
+        ],
         "the same tracer (Whitted) with its shadow rays",
         &format!(
             "on the floor all but {FLOOR_EDGE_SHARE} of the pixels agree (the shadows' edges); \

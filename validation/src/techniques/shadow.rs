@@ -15,7 +15,10 @@ pub fn check_projected_shadow() -> Check {
     const RELATIVE: f64 = 1e-4;
     let mut check = Check::new(
         "techniques.planar.shadow",
-        "The slides' projected-shadow matrix against the tracer's ray–plane intersection",
+        [
+            "The slides' projected-shadow matrix against the tracer's ray–plane intersection",
+            "A diák vetítettárnyék-mátrixa a sugárkövető sugár–sík metszése ellen",
+        ],
         "tracer::geometry::Plane::intersect (f32) on the ray from the light through the vertex",
         &format!("the points within {RELATIVE:e} of the distance, relative; Cast exactly when the vertex comes first"),
     );

@@ -17,7 +17,10 @@ use crate::check::Check;
 pub fn check_cheap_refraction(curves: &mut Vec<RefractionCurve>) -> Check {
     let mut check = Check::new(
         "techniques.refraction.cheap",
-        "The slides' cheap refraction against Snell's law, entering water and glass",
+        [
+            "The slides' cheap refraction against Snell's law, entering water and glass",
+            "A diák olcsó fénytörése a Snellius–Descartes-törvény ellen, vízbe és üvegbe lépve",
+        ],
         "Snell's law in vector form (radiometry::specular::refract)",
         "c = 1 bends by exactly half the incidence angle (to 1e-12 rad); the angles from Snell's law measured",
     );
@@ -78,7 +81,10 @@ pub fn check_cheap_refraction(curves: &mut Vec<RefractionCurve>) -> Check {
 pub fn check_empirical_fresnel(curves: &mut Vec<FitCurve>) -> Check {
     let mut check = Check::new(
         "techniques.empirical_fresnel.fit",
-        "The slides' bias + scale (1 + I·N)^power fitted to the exact Fresnel law, beside Schlick",
+        [
+            "The slides' bias + scale (1 + I·N)^power fitted to the exact Fresnel law, beside Schlick",
+            "A diák eltolás + skála · (1 + I·N)^power alakja a pontos Fresnel-törvényhez illesztve, a Schlick-közelítés mellett",
+        ],
         "the exact dielectric and conductor laws (radiometry), every 0.1° from 0° to 90°",
         "the fit's RMS no larger than Schlick's (Schlick is one member of the form's family)",
     );

@@ -94,7 +94,10 @@ fn announced(file: &Path) -> Check {
         .map_or_else(String::new, |s| s.to_string_lossy().into_owned());
     Check::new(
         &format!("tradeoff.{stem}"),
-        &format!("{stem}: the speed/accuracy trade of every shortcut the scene allows, as recorded"),
+        [
+            &format!("{stem}: the speed/accuracy trade of every shortcut the scene allows, as recorded"),
+            &format!("{stem}: a jelenet minden megengedett rövidítésének sebesség–pontosság cseréje, ahogy feljegyezték"),
+        ],
         &format!("{}, written by `{REGENERATE}`", file.display()),
         &format!(
             "schema {SCHEMA} version {SCHEMA_VERSION}; every measure finite, ≥ 0 and ꟻLIP ≤ 1; \

@@ -127,11 +127,18 @@ pub fn check_random(
         .map(|&law| {
             let mut check = Check::new(
                 &format!("laws.mpmath.random.{}", law.name()),
-                &format!(
-                    "{} at seeded random inputs (seed {}), f64 and f32, uniform over the reals and over the floats",
-                    law.name(),
-                    reference.seed
-                ),
+                [
+                    &format!(
+                        "{} at seeded random inputs (seed {}), f64 and f32, uniform over the reals and over the floats",
+                        law.name(),
+                        reference.seed
+                    ),
+                    &format!(
+                        "{} rögzített magú véletlen bemeneteken (mag: {}), f64 és f32, egyenletesen a valós és a lebegőpontos számokon",
+                        law.name(),
+                        reference.seed
+                    ),
+                ],
                 &format!("mpmath {}, 50 digits, correctly rounded to the tier", reference.mpmath_version),
                 &format!(
                     "every case within {BOUND_ULPS} floating-point numbers of the correctly rounded value \
