@@ -7,7 +7,7 @@
 //! (`apt-get install chromium`; `CHROMIUM=/path` names another).
 
 mod page;
-use page::words;
+use page::{english_left_in, number_marks, words};
 
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -408,6 +408,25 @@ fn report_json_names_its_schema_and_version() {
     let (report, _) = sample();
     let json: serde_json::Value = serde_json::from_str(&to_json(&report)).unwrap();
     assert_eq!(json["schema"], "validation-report/2");
+}
+
+/// The sample's failed check and its verdict in Hungarian: the parts of
+/// the page a run without failures (`tests/harness.rs`) never shows.
+#[test]
+fn a_failing_report_in_hungarian_has_no_english_left() {
+    let (report, figures) = sample();
+    let [en, hu] = [Lang::En, Lang::Hu].map(|lang| to_html(&report, &figures, lang));
+    let names = report
+        .checks
+        .iter()
+        .flat_map(|c| c.id.split('.').map(str::to_owned))
+        .collect();
+    let left = english_left_in(&hu, &en, &names);
+    assert!(left.is_empty(), "English left:\n{}", left.join("\n"));
+    let verdict = format!("{} ellenőrzésből 1 HIBÁS.", report.summary.checks);
+    assert!(words(&hu).contains(&verdict), "the verdict in Hungarian");
+    assert!(hu.contains("<p>Sikertelen esetek (1):</p>"));
+    assert_eq!(number_marks(&hu), number_marks(&en));
 }
 
 #[test]

@@ -32,6 +32,13 @@ pub const NAMES: &[&str] = &[
     "albedó",
     "magyar",
     "erratum",
+    "brewster",
+    "sellmeier",
+    "fraunhofer",
+    "welch",
+    "sharma",
+    "dalal",
+    "flip",
 ];
 
 /// Common English words a translation might leave behind that the
