@@ -68,6 +68,10 @@ fn words([en, hu]: [&str; 2]) -> Words {
 pub struct Metric {
     /// What is measured, with its unit (`|ours − exact| in f32 ulps`).
     pub name: String,
+    /// [`Metric::name`] in Hungarian, where the check gave it
+    /// ([`Check::measure_in_both`]); not part of `report.json`.
+    #[serde(skip)]
+    pub name_hu: Option<String>,
     /// The worst value over the cases.
     pub worst: f64,
     /// The label of the case where it occurred (empty when no case was compared).
@@ -102,6 +106,15 @@ impl Check {
         self.measure_at(name, value, || at.to_owned());
     }
 
+    /// [`Check::measure`] with the quantity named in English and in
+    /// Hungarian, `[en, hu]`; the English names it in [`Check::worst`].
+    pub fn measure_in_both(&mut self, [en, hu]: [&str; 2], value: f64, at: &str) {
+        self.measure(en, value, at);
+        if let Some(m) = self.metrics.iter_mut().find(|m| m.name == en) {
+            m.name_hu.get_or_insert_with(|| hu.to_owned());
+        }
+    }
+
     /// [`Check::measure`] with the case named by `at`, called only when the
     /// value is a new worst: for a measure taken at every pixel.
     pub fn measure_at(&mut self, name: &str, value: f64, at: impl FnOnce() -> String) {
@@ -114,6 +127,7 @@ impl Check {
             Some(_) => {}
             None => self.metrics.push(Metric {
                 name: name.to_owned(),
+                name_hu: None,
                 worst: value,
                 at: at(),
             }),

@@ -158,14 +158,26 @@ fn max_abs(a: [f64; 3], b: [f64; 3]) -> f64 {
 /// Compares every representation of a colour with colour-science's, recording into `check`.
 pub fn compare_colour(check: &mut Check, label: &str, ours: &ColourValues, theirs: &ColourValues) {
     let rows = [
-        ("XYZ", ours.xyz, theirs.xyz, XYZ_ABS),
-        ("linear sRGB", ours.linear_srgb, theirs.linear_srgb, XYZ_ABS),
-        ("sRGB", ours.srgb, theirs.srgb, SRGB_ABS),
-        ("CIELAB", ours.lab, theirs.lab, LAB_ABS),
+        (["XYZ", "XYZ"], ours.xyz, theirs.xyz, XYZ_ABS),
+        (
+            ["linear sRGB", "lineáris sRGB"],
+            ours.linear_srgb,
+            theirs.linear_srgb,
+            XYZ_ABS,
+        ),
+        (["sRGB", "sRGB"], ours.srgb, theirs.srgb, SRGB_ABS),
+        (["CIELAB", "CIELAB"], ours.lab, theirs.lab, LAB_ABS),
     ];
-    for (name, a, b, tolerance) in rows {
+    for ([name, name_hu], a, b, tolerance) in rows {
         let d = max_abs(a, b);
-        check.measure(&format!("{name}: max |ours − colour-science|"), d, label);
+        check.measure_in_both(
+            [
+                &format!("{name}: max |ours − colour-science|"),
+                &format!("{name_hu}: max |miénk − colour-science|"),
+            ],
+            d,
+            label,
+        );
         if !(d <= tolerance) {
             check.fail(format!("{name} of {label}: ours {a:?}, colour-science {b:?} (off by {d:.2e} > {tolerance:e})"));
         }
@@ -248,8 +260,12 @@ pub fn check_delta_e(laws: &ColourLaws, reference: &Colorimetry) -> Check {
             (ours - case.delta_e_2000).abs(),
             (ours - case.printed).abs(),
         );
-        check.measure("|ours − colour-science|", d, &case.label);
-        check.measure("|ours − printed|", p, &case.label);
+        check.measure_in_both(
+            ["|ours − colour-science|", "|miénk − colour-science|"],
+            d,
+            &case.label,
+        );
+        check.measure_in_both(["|ours − printed|", "|miénk − nyomtatott|"], p, &case.label);
         if !(d <= DELTA_E_ABS && p <= PRINTED_ABS) {
             check.fail(format!(
                 "{}: ours {ours:.6}, colour-science {:.6}, printed {:.4}",

@@ -224,7 +224,14 @@ pub fn check_spectral_colours(laws: &MetalLaws, reference: &MetalsReference) -> 
                     0.0,
                     |m: f64, d| if d.is_nan() { f64::INFINITY } else { m.max(d) },
                 );
-            check.measure("reflectance: max |ours − exact|", worst, &label);
+            check.measure_in_both(
+                [
+                    "reflectance: max |ours − exact|",
+                    "visszaverődési tényező: max |miénk − pontos|",
+                ],
+                worst,
+                &label,
+            );
             if !(worst <= REFLECTANCE_ABS) {
                 check.fail(format!(
                     "reflectance of {label}: off by {worst:.2e} > {REFLECTANCE_ABS:e}"

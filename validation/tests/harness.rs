@@ -100,12 +100,13 @@ fn pages() -> [String; 2] {
 }
 
 /// What the page names rather than says: the checks' ids, part by part,
-/// the swept scenes' stems (`diffuse: …`, `diffuse-lambert: …`), and the
-/// environment maps' kind that the tracer calls `lat-long`.
+/// the swept scenes' stems (`diffuse: …`, `diffuse-lambert: …`), the
+/// environment maps' kind that the tracer calls `lat-long`, and the
+/// reference `colour-science`.
 fn names(report: &Report) -> BTreeSet<String> {
     let ids = report.checks.iter().flat_map(|c| c.id.split('.'));
     let stems = report.tradeoffs.iter().map(|r| r.stem());
-    let kinds = std::iter::once("lat-long".to_owned());
+    let kinds = ["lat-long", "colour-science"].map(str::to_owned);
     ids.map(str::to_owned).chain(stems).chain(kinds).collect()
 }
 
@@ -132,7 +133,8 @@ fn the_hungarian_report_of_every_check_has_no_english_left() {
 fn english_left_in_the_hungarian_report_is_found() {
     let [en, hu] = pages();
     let names = names(&standard_run().0);
-    let frame = hu.replacen("A teljes fény</", "All the light</", 1);
+    let frame = hu.replacen("Az összes fény</", "All the light</", 1);
+    assert_ne!(frame, hu, "the area's Hungarian title is on the page");
     let found = english_left_in(&frame, &en, &names);
     assert!(found.iter().any(|l| l.contains("light")), "{found:?}");
     let unmarked = hu.replacen("<span lang=en>", "<span>", 1);

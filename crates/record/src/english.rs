@@ -39,6 +39,7 @@ pub const NAMES: &[&str] = &[
     "sharma",
     "dalal",
     "flip",
+    "mpmath",
 ];
 
 /// Common English words a translation might leave behind that the
@@ -152,7 +153,8 @@ fn is_code(token: &str) -> bool {
 /// The English words left in `hungarian`: its words that are in
 /// `english` (the vocabulary of what it translates) or [`COMMON`], and
 /// neither in [`NAMES`] nor, as a whole token, in `names` (`reflect`,
-/// `shadow-matrix`, `lat-long`).
+/// `shadow-matrix`, `lat-long`), with or without the case ending
+/// Hungarian joins to a name by a hyphen (`colour-science-hez`).
 pub fn english_left(
     hungarian: &str,
     english: &BTreeSet<String>,
@@ -165,7 +167,10 @@ pub fn english_left(
             // A name keeps its own hyphens and underscores, not the
             // sentence's commas and brackets.
             let bare = token.trim_matches(|c: char| !c.is_alphanumeric() && c != '-' && c != '_');
-            !names.contains(&token.to_lowercase()) && !names.contains(&bare.to_lowercase())
+            let stem = bare.rsplit_once('-').map_or(bare, |(stem, _)| stem);
+            ![token, bare, stem]
+                .iter()
+                .any(|t| names.contains(&t.to_lowercase()))
         })
         .flat_map(words)
         .filter(|word| english.contains(word) || COMMON.contains(&word.as_str()))

@@ -27,7 +27,7 @@ pub fn check_random(
              against Mitsuba, with our f64 laws standing in for the exact value (the random cases against \
              50 digits are laws.mpmath.random.*)",
             "Fresnel (dielektrikum, vezető), visszaverődés és törés a keretrendszer exportálta véletlen \
-             bemeneteken, a Mitsuba ellen, a pontos érték helyén f64 törvényeinkkel (az 50 jegy elleni \
+             bemeneteken, a Mitsubához mérve, a pontos érték helyén f64 törvényeinkkel (az 50 jegyhez mért \
              véletlen esetek: laws.mpmath.random.*)",
         ],
         &format!("{} on cases.json (seed {})", results.evaluator, cases.seed),

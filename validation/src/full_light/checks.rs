@@ -60,7 +60,7 @@ pub fn check_independent(name: &str, decoded: &DecodedLight) -> Option<Check> {
         &format!("full_light.mitsuba.{name}.independent"),
         [
             &format!("{name}: Mitsuba's light tracer against its path tracer with area lights, where the camera sees a diffuse surface"),
-            &format!("{name}: a Mitsuba fénykövetője az útkövetője ellen felületi fényforrásokkal, ahol a kamera diffúz felületet lát"),
+            &format!("{name}: a Mitsuba fénykövetője az útkövetőjéhez mérve felületi fényforrásokkal, ahol a kamera diffúz felületet lát"),
         ],
         "Mitsuba 3 ptracer and path (scalar_rgb), mitsuba_full_light.json",
         &format!("Welch's t on the region's mean per pass (R + G + B): fails when p < α = {ALPHA}"),
@@ -166,7 +166,7 @@ pub fn check_all_the_light_in(
         &format!("full_light.tracer.{name}.{integrator}.all_the_light"),
         [
             &format!("{name}: the tracer's {integrator} against all the light (Mitsuba's light tracer and area lights)"),
-            &format!("{name}: a sugárkövető {integrator} integrátora a teljes fény ellen (a Mitsuba fénykövetője és felületi fényforrások)"),
+            &format!("{name}: a sugárkövető {integrator} integrátora az összes fényhez mérve (a Mitsuba fénykövetője és felületi fényforrások)"),
         ],
         "Mitsuba 3 ptracer and path with area lights (scalar_rgb), mitsuba_full_light.json",
         &tolerance_text(),

@@ -188,7 +188,7 @@ pub fn check_schlick(laws: &Laws, reference: &MitsubaLaws) -> Check {
         "laws.mpmath.schlick",
         [
             "Schlick's approximation F0 + (1 − F0)(1 − cos)⁵ against its definition",
-            "A Schlick-közelítés, F0 + (1 − F0)(1 − cos)⁵, a definíciója ellen",
+            "A Schlick-közelítés, F0 + (1 − F0)(1 − cos)⁵, a definíciójához mérve",
         ],
         "mpmath, 50 digits",
         &format!("within {OURS_ULPS} f32 ulps: five products and a sum, each rounded once"),

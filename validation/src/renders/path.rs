@@ -103,7 +103,7 @@ fn new_check(name: &str) -> Check {
         &format!("renders.mitsuba.{name}.path"),
         [
             &format!("{name}: the tracer's path against Mitsuba's path integrator, per-pixel Welch t-test"),
-            &format!("{name}: a sugárkövető útkövetése a Mitsuba útkövető integrátora ellen, képpontonkénti Welch-féle t-próba"),
+            &format!("{name}: a sugárkövető útkövetése a Mitsuba útkövető integrátorához mérve, képpontonkénti Welch-féle t-próba"),
         ],
         "Mitsuba 3 path integrator through mi.render (scalar_rgb), box filter (mitsuba_renders.json)",
         &format!(

@@ -16,7 +16,7 @@ pub fn compare_whitted(name: &str, reference: &Decoded, ours: &Image) -> Compare
         &format!("renders.mitsuba.{name}.whitted"),
         [
             &format!("{name}: the tracer's whitted against a Whitted integrator on Mitsuba's primitives, per pixel"),
-            &format!("{name}: a sugárkövető Whitted-féle képe egy Whitted-integrátor ellen a Mitsuba primitívjein, képpontonként"),
+            &format!("{name}: a sugárkövető Whitted-féle képe egy Whitted-integrátorhoz mérve a Mitsuba primitívjein, képpontonként"),
         ],
         "Mitsuba 3 (scalar_rgb, float32): ray_intersect, fresnel_conductor, reflect (mitsuba_renders.json)",
         &format!(

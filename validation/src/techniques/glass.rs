@@ -133,7 +133,7 @@ pub fn check_dispersion_render(three: fn(&tracer::scene::Scene) -> tracer::rende
         "techniques.dispersion.sphere",
         [
             "A glass sphere of N-BK7: the slides' three etas and one index against the spectral render",
-            "N-BK7 üveggömb: a diák három eta-értéke és egyetlen törésmutatója a spektrális kép ellen",
+            "N-BK7 üveggömb: a diák három eta-értéke és egyetlen törésmutatója a spektrális képhez mérve",
         ],
         "85 Whitted renders at the Sellmeier index, integrated with the CIE 1931 tables under D65",
         &format!(

@@ -177,7 +177,7 @@ pub fn check_cheap_refraction_render(
         "techniques.refraction.render",
         [
             "The slides' cheap refraction (c = η − 1) rendered through a glass sphere against Snell's law",
-            "A diák olcsó fénytörése (c = η − 1) üveggömbön át leképezve, a Snellius–Descartes-törvény ellen",
+            "A diák olcsó fénytörése (c = η − 1) üveggömbön át leképezve, a Snellius–Descartes-törvényhez mérve",
         ],
         "the same tracer (Whitted) with Snell's refracted direction, the dispersion sphere at n_d",
         &format!(
@@ -251,7 +251,7 @@ pub fn check_empirical_fresnel_render(
         "techniques.empirical_fresnel.render",
         [
             "The slides' empirical Fresnel form, fitted to the glass, rendered on a glass sphere against the exact law",
-            "A diák empirikus Fresnel-alakja az üveghez illesztve, üveggömbön leképezve, a pontos törvény ellen",
+            "A diák empirikus Fresnel-alakja az üveghez illesztve, üveggömbön leképezve, a pontos törvényhez mérve",
         ],
         "the same tracer (Whitted) with the exact Fresnel equations, the dispersion sphere at n_d",
         &format!(

@@ -78,7 +78,7 @@ pub fn check_distance(
         "techniques.envmap.distance",
         [
             "Environment mapping against ray tracing: a mirror sphere's error as its surroundings move away",
-            "Környezetleképzés a sugárkövetés ellen: egy tükörgömb hibája, ahogy a környezete távolodik",
+            "Környezetleképzés a sugárkövetéshez mérve: egy tükörgömb hibája, ahogy a környezete távolodik",
         ],
         "the same mirror traced among the same surroundings (Whitted); the map captured from its centre by the tracer (cube, 48² a face), 48 × 48 pixels",
         &SWEEPS
@@ -171,7 +171,7 @@ pub fn check_self_reflection(
         "techniques.envmap.self_reflection",
         [
             "Environment mapping against ray tracing: two mirrors side by side cannot show each other",
-            "Környezetleképzés a sugárkövetés ellen: két egymás melletti tükör nem mutathatja egymást",
+            "Környezetleképzés a sugárkövetéshez mérve: két egymás melletti tükör nem mutathatja egymást",
         ],
         "the pair traced (Whitted), each mirror's map captured from its centre; a lone mirror under the same sky",
         &format!(

@@ -201,7 +201,7 @@ pub fn check_planar_reflection(
         "techniques.planar.reflection_render",
         [
             "Planar reflection (the reflection matrix, two passes) against the traced mirror floor",
-            "Síktükrözés (a tükrözési mátrix, két menet) a követett tükörpadló ellen",
+            "Síktükrözés (a tükrözési mátrix, két menet) a követett tükörpadlóhoz mérve",
         ],
         "the same tracer (Whitted) with the floor a conductor, every reflected ray traced",
         &format!(

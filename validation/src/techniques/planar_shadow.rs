@@ -213,7 +213,7 @@ pub fn check_planar_shadow(
         "techniques.planar.shadow_render",
         [
             "Projected planar shadows (the shadow matrix) against the traced shadows",
-            "Síkra vetített árnyékok (az árnyékmátrix) a követett árnyékok ellen",
+            "Síkra vetített árnyékok (az árnyékmátrix) a követett árnyékokhoz mérve",
         ],
         "the same tracer (Whitted) with its shadow rays",
         &format!(

@@ -17,7 +17,7 @@ pub fn check_projected_shadow() -> Check {
         "techniques.planar.shadow",
         [
             "The slides' projected-shadow matrix against the tracer's ray–plane intersection",
-            "A diák vetítettárnyék-mátrixa a sugárkövető sugár–sík metszése ellen",
+            "A diák vetítettárnyék-mátrixa a sugárkövető sugár–sík metszéséhez mérve",
         ],
         "tracer::geometry::Plane::intersect (f32) on the ray from the light through the vertex",
         &format!("the points within {RELATIVE:e} of the distance, relative; Cast exactly when the vertex comes first"),

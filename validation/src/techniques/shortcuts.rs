@@ -19,7 +19,7 @@ pub fn check_cheap_refraction(curves: &mut Vec<RefractionCurve>) -> Check {
         "techniques.refraction.cheap",
         [
             "The slides' cheap refraction against Snell's law, entering water and glass",
-            "A diák olcsó fénytörése a Snellius–Descartes-törvény ellen, vízbe és üvegbe lépve",
+            "A diák olcsó fénytörése a Snellius–Descartes-törvényhez mérve, vízbe és üvegbe lépve",
         ],
         "Snell's law in vector form (radiometry::specular::refract)",
         "c = 1 bends by exactly half the incidence angle (to 1e-12 rad); the angles from Snell's law measured",

@@ -13,7 +13,7 @@ const AREAS: [Area; 9] = [
         key: "mpmath",
         title: [
             "Laws against 50-digit mpmath",
-            "A törvények az 50 jegyű mpmath ellen",
+            "A törvények az 50 jegyű mpmath-hoz mérve",
         ],
         checks: &["laws.mpmath."],
         figures: &["fresnel_errors"],
@@ -29,7 +29,10 @@ const AREAS: [Area; 9] = [
     },
     Area {
         key: "mitsuba-laws",
-        title: ["Laws against Mitsuba 3", "A törvények a Mitsuba 3 ellen"],
+        title: [
+            "Laws against Mitsuba 3",
+            "A törvények a Mitsuba 3-hoz mérve",
+        ],
         checks: &["laws.mitsuba."],
         figures: &["fresnel_curves"],
         headline: Some(Headline {
@@ -63,7 +66,7 @@ const AREAS: [Area; 9] = [
         key: "colour",
         title: [
             "Colour against colour-science",
-            "A színek a colour-science ellen",
+            "A színek a colour-science-hez mérve",
         ],
         checks: &["colour."],
         figures: &[],
@@ -79,7 +82,10 @@ const AREAS: [Area; 9] = [
     },
     Area {
         key: "renders",
-        title: ["Renders against Mitsuba 3", "A képek a Mitsuba 3 ellen"],
+        title: [
+            "Renders against Mitsuba 3",
+            "A renderelt képek a Mitsuba 3-hoz mérve",
+        ],
         checks: &["renders."],
         figures: &["render_kaleidoscope_lit_path", "render_"],
         headline: Some(Headline {
@@ -96,7 +102,7 @@ const AREAS: [Area; 9] = [
         key: "images",
         title: [
             "ꟻLIP against NVIDIA's evaluator",
-            "A ꟻLIP az NVIDIA kiértékelője ellen",
+            "A ꟻLIP az NVIDIA kiértékelőjéhez mérve",
         ],
         checks: &["images."],
         figures: &[],
@@ -112,7 +118,7 @@ const AREAS: [Area; 9] = [
     },
     Area {
         key: "full-light",
-        title: ["All the light", "A teljes fény"],
+        title: ["All the light", "Az összes fény"],
         checks: &["full_light."],
         figures: &[],
         headline: Some(Headline {
@@ -131,7 +137,7 @@ const AREAS: [Area; 9] = [
         key: "techniques",
         title: [
             "The slides' techniques against the exact answers",
-            "A diák technikái a pontos válaszok ellen",
+            "A diák technikái a pontos válaszokhoz mérve",
         ],
         checks: &["techniques."],
         figures: &["techniques"],
@@ -160,7 +166,7 @@ const AREAS: [Area; 9] = [
                 "A scene rendered with its own settings (Whitted) is off by up to {} relative \
                  RMSE from all the light: what a Whitted tracer leaves out, not a defect.",
                 "A saját beállításaival (Whitted) készült kép relatív négyzetes középhibája a \
-                 teljes fényhez képest legfeljebb {}: ennyit hagy ki a Whitted-féle \
+                 összes fényhez képest legfeljebb {}: ennyit hagy ki a Whitted-féle \
                  sugárkövetés, ez nem hiba.",
             ],
         }),

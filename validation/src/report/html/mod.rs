@@ -71,7 +71,7 @@ fn header(h: &mut String, report: &Report, lang: Lang) {
     let s = &report.summary;
     let title = lang.pick(
         "optics validation report",
-        "az optics ellenőrzési jelentése",
+        "Az optics ellenőrzési jelentése",
     );
     let _ = write!(
         h,
@@ -274,7 +274,10 @@ fn area_section(h: &mut String, a: &Gathered, lang: Lang) {
                 "<tr><td>{} {}</td><td>{}</td>{}<td>{}</td></tr>",
                 status(check, lang),
                 escape(short_id(&check.id)),
-                english(lang, &m.name),
+                match (lang, &m.name_hu) {
+                    (Lang::Hu, Some(hu)) => escape(hu),
+                    _ => english(lang, &m.name),
+                },
                 number(
                     "td",
                     &format!("/checks/{i}/metrics/{j}/worst"),
