@@ -95,12 +95,26 @@ fn angle(a: Direction, b: Direction) -> f64 {
 fn lat_long_and_cube_back(check: &mut Check, r: Direction, at: &str) {
     let lat = LatLong::from_direction(r);
     match LatLong::from_uv(lat.u(), lat.v()) {
-        Ok(back) => check.measure("lat-long: angle back (rad)", angle(r, back.direction()), at),
+        Ok(back) => check.measure_in_both(
+            [
+                "lat-long: angle back (rad)",
+                "lat-long: a visszakapott irány szöge (rad)",
+            ],
+            angle(r, back.direction()),
+            at,
+        ),
         Err(e) => check.fail(format!("lat-long {at}: its own texel refused: {e:?}")),
     }
     let cube = CubeTexel::from_direction(r);
     match CubeTexel::from_uv(cube.face(), cube.u(), cube.v()) {
-        Ok(back) => check.measure("cube: angle back (rad)", angle(r, back.direction()), at),
+        Ok(back) => check.measure_in_both(
+            [
+                "cube: angle back (rad)",
+                "kocka: a visszakapott irány szöge (rad)",
+            ],
+            angle(r, back.direction()),
+            at,
+        ),
         Err(e) => check.fail(format!("cube {at}: its own texel refused: {e:?}")),
     }
 }
@@ -112,7 +126,14 @@ fn sphere_back(check: &mut Check, r: Direction, at: &str) {
         SphereTexel::Disc(texel) => match SphereTexel::from_uv(texel.u(), texel.v()) {
             Ok(back) => {
                 let off = angle(r, back.direction());
-                check.measure("sphere: angle back (rad)", off, at);
+                check.measure_in_both(
+                    [
+                        "sphere: angle back (rad)",
+                        "gömb: a visszakapott irány szöge (rad)",
+                    ],
+                    off,
+                    at,
+                );
                 if !(off <= sphere_round_trip(texel.m())) {
                     check.fail(format!(
                         "sphere: {at} comes back {off:e} rad off (m = {})",
@@ -142,8 +163,11 @@ fn slides_example(check: &mut Check) {
     let off = (example.u() - 29.0 / 42.0)
         .abs()
         .max((example.v() - 11.0 / 56.0).abs());
-    check.measure(
-        "the slides' example: |uv − worked by hand|",
+    check.measure_in_both(
+        [
+            "the slides' example: |uv − worked by hand|",
+            "a diák példája: |uv − kézzel számolt|",
+        ],
         off,
         "(−3.2, 5.1, −8.4)",
     );

@@ -39,7 +39,11 @@ pub fn check_sellmeier(glass: &Sellmeier) -> Check {
             continue;
         };
         let err = (n - printed).abs();
-        check.measure("|Sellmeier − data sheet|", err, &format!("{line}, {nm} nm"));
+        check.measure_in_both(
+            ["|Sellmeier − data sheet|", "|Sellmeier − adatlap|"],
+            err,
+            &format!("{line}, {nm} nm"),
+        );
         if !(err <= DATA_SHEET_ABS) {
             check.fail(format!(
                 "{line} ({nm} nm): {n:.7}, the data sheet {printed}"
@@ -88,7 +92,11 @@ pub fn check_prism(glass: &Sellmeier) -> Check {
             check.fail(format!("{at}: the symmetric ray does not emerge"));
             continue;
         };
-        check.measure("|traced − analytic| (rad)", (traced - analytic).abs(), &at);
+        check.measure_in_both(
+            ["|traced − analytic| (rad)", "|követett − analitikus| (rad)"],
+            (traced - analytic).abs(),
+            &at,
+        );
         if !((traced - analytic).abs() <= PRISM_ABS) {
             check.fail(format!("{at}: traced {traced}, analytic {analytic}"));
         }
@@ -103,8 +111,11 @@ pub fn check_prism(glass: &Sellmeier) -> Check {
     let spread = [fraunhofer_nm::F, fraunhofer_nm::C]
         .map(|nm| glass.index_at(nm).and_then(|n| prism.minimum_deviation(n)));
     if let [Some(f), Some(c)] = spread {
-        check.measure(
-            "F − C spread of the minimum deviation (°)",
+        check.measure_in_both(
+            [
+                "F − C spread of the minimum deviation (°)",
+                "a legkisebb eltérítés F − C szórása (°)",
+            ],
             (f - c).to_degrees(),
             "",
         );
@@ -147,21 +158,35 @@ pub fn check_dispersion_render(three: fn(&tracer::scene::Scene) -> tracer::rende
         dispersion::measures(&r.three, &r),
         dispersion::measures(&r.single, &r),
     );
-    for (what, e) in [("three etas", three), ("one index", one)] {
-        check.measure(
-            &format!("{what}: ΔE2000 mean"),
+    let kinds = [
+        (["three etas", "három eta"], three),
+        (["one index", "egy törésmutató"], one),
+    ];
+    for ([what, what_hu], e) in kinds {
+        let at = "the sphere's pixels";
+        check.measure_in_both(
+            [
+                &format!("{what}: ΔE2000 mean"),
+                &format!("{what_hu}: ΔE2000 átlag"),
+            ],
             e.delta_e_mean,
-            "the sphere's pixels",
+            at,
         );
-        check.measure(
-            &format!("{what}: ΔE2000 p99"),
+        check.measure_in_both(
+            [
+                &format!("{what}: ΔE2000 p99"),
+                &format!("{what_hu}: ΔE2000 p99"),
+            ],
             e.delta_e_p99,
-            "the sphere's pixels",
+            at,
         );
-        check.measure(
-            &format!("{what}: relative RMSE"),
+        check.measure_in_both(
+            [
+                &format!("{what}: relative RMSE"),
+                &format!("{what_hu}: relatív négyzetes középhiba"),
+            ],
             e.rel_rmse,
-            "the sphere's pixels",
+            at,
         );
     }
     if !(three.delta_e_mean < one.delta_e_mean && three.rel_rmse < one.rel_rmse) {

@@ -64,6 +64,30 @@ pub struct DistanceCurve {
     pub fitted_exponent: f64,
 }
 
+/// Each distance's relative RMSE of the sweep named `[name, name_hu]`.
+fn record_rmse(check: &mut Check, [name, name_hu]: [&str; 2], rows: &[(f64, Errors)]) {
+    for (d, e) in rows {
+        let at = format!("{name}, d = {d}");
+        check.measure_in_both(
+            [
+                &format!("{name}: relative RMSE at d = {d}"),
+                &format!("{name_hu}: relatív négyzetes középhiba d = {d} esetén"),
+            ],
+            e.rel_rmse,
+            &at,
+        );
+    }
+}
+
+/// A sweep's surroundings ([`label`]) in Hungarian.
+fn label_hu(name: &str) -> &str {
+    match name {
+        "objects" => "tárgyak",
+        "sky" => "égbolt",
+        other => other,
+    }
+}
+
 /// The mapped mirror against the traced one over each sweep of
 /// [`SWEEPS`], made by `compare` ([`one_sphere`] in the suite; a
 /// parameter, so that a wrong map can be shown to be caught): the error
@@ -94,6 +118,7 @@ pub fn check_distance(
     );
     for sweep in SWEEPS {
         let name = label(sweep.surroundings);
+        let name_hu = label_hu(name);
         let rows: Vec<(f64, Errors)> = sweep
             .distances
             .iter()
@@ -111,14 +136,7 @@ pub fn check_distance(
             })
             .collect();
         check.cases += rows.len();
-        for (d, e) in &rows {
-            let at = format!("{name}, d = {d}");
-            check.measure(
-                &format!("{name}: relative RMSE at d = {d}"),
-                e.rel_rmse,
-                &at,
-            );
-        }
+        record_rmse(&mut check, [name, name_hu], &rows);
         for pair in rows.windows(2) {
             let ((d0, e0), (d1, e1)) = (pair[0], pair[1]);
             if !(e1.rel_rmse < e0.rel_rmse && e1.delta_e_mean < e0.delta_e_mean) {
@@ -130,7 +148,11 @@ pub fn check_distance(
         }
         let points: Vec<(f64, f64)> = rows.iter().map(|(d, e)| (*d, e.rel_rmse)).collect();
         let slope = log_log_slope(&points);
-        check.measure(&format!("{name}: fitted exponent of the RMSE"), slope, "");
+        let exponent = [
+            format!("{name}: fitted exponent of the RMSE"),
+            format!("{name_hu}: a középhiba illesztett kitevője"),
+        ];
+        check.measure_in_both([&exponent[0], &exponent[1]], slope, "");
         if !((slope - sweep.exponent).abs() <= sweep.within) {
             check.fail(format!(
                 "{name}: the RMSE falls as d^{slope:.3}, not d^({} ± {})",
@@ -189,8 +211,22 @@ pub fn check_self_reflection(
     ));
     check.cases = 2;
     let at = format!("sky at d = {PAIR_DISTANCE}");
-    check.measure("one mirror: relative RMSE", lone.rel_rmse, &at);
-    check.measure("two mirrors: relative RMSE", c.errors.rel_rmse, &at);
+    check.measure_in_both(
+        [
+            "one mirror: relative RMSE",
+            "egy tükör: relatív négyzetes középhiba",
+        ],
+        lone.rel_rmse,
+        &at,
+    );
+    check.measure_in_both(
+        [
+            "two mirrors: relative RMSE",
+            "két tükör: relatív négyzetes középhiba",
+        ],
+        c.errors.rel_rmse,
+        &at,
+    );
     if !(c.errors.rel_rmse > PAIR_RATIO * lone.rel_rmse) {
         check.fail(format!(
             "the pair's RMSE {:.4} is within {PAIR_RATIO} × a lone mirror's {:.4}",
@@ -200,13 +236,16 @@ pub fn check_self_reflection(
     match c.split {
         Some(split) if split.seeing_a_mirror_pixels > 0 => {
             let mean = split.seeing_a_mirror.delta_e_mean;
-            check.measure(
-                "where each shows the other: mean ΔE2000",
+            check.measure_in_both(
+                [
+                    "where each shows the other: mean ΔE2000",
+                    "ahol egymást mutatják: ΔE2000 átlag",
+                ],
                 mean,
                 &format!("{} px", split.seeing_a_mirror_pixels),
             );
-            check.measure(
-                "elsewhere: mean ΔE2000",
+            check.measure_in_both(
+                ["elsewhere: mean ΔE2000", "máshol: ΔE2000 átlag"],
                 split.elsewhere.delta_e_mean,
                 &format!("{} px", split.elsewhere_pixels),
             );

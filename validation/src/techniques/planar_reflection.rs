@@ -300,23 +300,35 @@ impl Disagreements {
 
     /// Measures each count, `at` naming the mirror's pixels.
     fn measure(&self, check: &mut Check, at: &str) {
-        check.measure(
-            "mirror, Fresnel-weighted: pixels beyond the rounding",
+        check.measure_in_both(
+            [
+                "mirror, Fresnel-weighted: pixels beyond the rounding",
+                "tükör, Fresnel-súlyozva: a kerekítésen túli képpontok",
+            ],
             self.off_geometry as f64,
             at,
         );
-        check.measure(
-            "pixels that disagree: the mirror's Fresnel",
+        check.measure_in_both(
+            [
+                "pixels that disagree: the mirror's Fresnel",
+                "eltérő képpontok: a tükör Fresnel-tagja",
+            ],
             self.fresnel as f64,
             at,
         );
-        check.measure(
-            "pixels that disagree: the object behind the plane",
+        check.measure_in_both(
+            [
+                "pixels that disagree: the object behind the plane",
+                "eltérő képpontok: a sík mögötti tárgy",
+            ],
             self.phantom as f64,
             at,
         );
-        check.measure(
-            "pixels that disagree: off the mirror",
+        check.measure_in_both(
+            [
+                "pixels that disagree: off the mirror",
+                "eltérő képpontok: a tükrön kívül",
+            ],
             self.elsewhere as f64,
             "",
         );
@@ -337,8 +349,19 @@ fn mirror_errors(check: &mut Check, r: &Reflections, at: &str) {
         &Truth::new(r.truth.clone(), 0.0, &mask),
         &mask,
     );
-    check.measure("mirror: relative RMSE", e.rel_rmse, at);
-    check.measure("mirror: mean ΔE2000", e.delta_e_mean, at);
+    check.measure_in_both(
+        [
+            "mirror: relative RMSE",
+            "tükör: relatív négyzetes középhiba",
+        ],
+        e.rel_rmse,
+        at,
+    );
+    check.measure_in_both(
+        ["mirror: mean ΔE2000", "tükör: ΔE2000 átlag"],
+        e.delta_e_mean,
+        at,
+    );
 }
 
 /// The reflection matrix of [`mirror_scene`]'s floor.

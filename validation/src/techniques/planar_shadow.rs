@@ -243,14 +243,27 @@ pub fn check_planar_shadow(
         }
     }
     let at = format!("{floor_pixels} floor pixels");
-    check.measure("pixels that disagree: the floor (edges)", floor as f64, &at);
-    check.measure(
-        "pixels that disagree: objects in another's shadow",
+    check.measure_in_both(
+        [
+            "pixels that disagree: the floor (edges)",
+            "eltérő képpontok: a padló (élek)",
+        ],
+        floor as f64,
+        &at,
+    );
+    check.measure_in_both(
+        [
+            "pixels that disagree: objects in another's shadow",
+            "eltérő képpontok: tárgyak egy másik árnyékában",
+        ],
         objects as f64,
         "",
     );
-    check.measure(
-        "triangles with a vertex not before the plane (on it: the sphere resting there)",
+    check.measure_in_both(
+        [
+            "triangles with a vertex not before the plane (on it: the sphere resting there)",
+            "háromszögek, amelyeknek egy csúcsa nem a sík előtt van (rajta: az ott nyugvó gömb)",
+        ],
         s.not_cast as f64,
         "",
     );

@@ -50,7 +50,14 @@ pub fn check_projected_shadow() -> Check {
                         let traced = hit.point.as_dvec3();
                         let distance = (traced - light).length();
                         let err = (p - traced).length() / distance.max(1.0);
-                        check.measure("|matrix − traced| / distance", err, &at);
+                        check.measure_in_both(
+                            [
+                                "|matrix − traced| / distance",
+                                "|mátrix − követett| / távolság",
+                            ],
+                            err,
+                            &at,
+                        );
                         if !(err <= RELATIVE) {
                             check.fail(format!(
                                 "{at}: the matrix puts it at {p}, the ray at {traced}"
