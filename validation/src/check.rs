@@ -108,16 +108,28 @@ impl Check {
 
     /// [`Check::measure`] with the quantity named in English and in
     /// Hungarian, `[en, hu]`; the English names it in [`Check::worst`].
-    pub fn measure_in_both(&mut self, [en, hu]: [&str; 2], value: f64, at: &str) {
-        self.measure(en, value, at);
-        if let Some(m) = self.metrics.iter_mut().find(|m| m.name == en) {
-            m.name_hu.get_or_insert_with(|| hu.to_owned());
-        }
+    pub fn measure_in_both(&mut self, names: [&str; 2], value: f64, at: &str) {
+        self.measure_at_in_both(names, value, || at.to_owned());
     }
 
     /// [`Check::measure`] with the case named by `at`, called only when the
     /// value is a new worst: for a measure taken at every pixel.
     pub fn measure_at(&mut self, name: &str, value: f64, at: impl FnOnce() -> String) {
+        self.record(name, None, value, at);
+    }
+
+    /// [`Check::measure_at`] with the quantity named in English and in
+    /// Hungarian, `[en, hu]`.
+    pub fn measure_at_in_both(
+        &mut self,
+        [en, hu]: [&str; 2],
+        value: f64,
+        at: impl FnOnce() -> String,
+    ) {
+        self.record(en, Some(hu), value, at);
+    }
+
+    fn record(&mut self, name: &str, hu: Option<&str>, value: f64, at: impl FnOnce() -> String) {
         let value = if value.is_nan() { f64::INFINITY } else { value };
         match self.metrics.iter_mut().find(|m| m.name == name) {
             Some(m) if value > m.worst => {
@@ -127,7 +139,7 @@ impl Check {
             Some(_) => {}
             None => self.metrics.push(Metric {
                 name: name.to_owned(),
-                name_hu: None,
+                name_hu: hu.map(str::to_owned),
                 worst: value,
                 at: at(),
             }),

@@ -101,12 +101,12 @@ fn pages() -> [String; 2] {
 
 /// What the page names rather than says: the checks' ids, part by part,
 /// the swept scenes' stems (`diffuse: …`, `diffuse-lambert: …`), the
-/// environment maps' kind that the tracer calls `lat-long`, and the
-/// reference `colour-science`.
+/// environment maps' kind that the tracer calls `lat-long`, the reference
+/// `colour-science`, and the laws' functions `reflect` and `refract`.
 fn names(report: &Report) -> BTreeSet<String> {
     let ids = report.checks.iter().flat_map(|c| c.id.split('.'));
     let stems = report.tradeoffs.iter().map(|r| r.stem());
-    let kinds = ["lat-long", "colour-science"].map(str::to_owned);
+    let kinds = ["lat-long", "colour-science", "reflect", "refract"].map(str::to_owned);
     ids.map(str::to_owned).chain(stems).chain(kinds).collect()
 }
 

@@ -40,6 +40,7 @@ pub const NAMES: &[&str] = &[
     "dalal",
     "flip",
     "mpmath",
+    "ulps",
 ];
 
 /// Common English words a translation might leave behind that the

@@ -148,7 +148,14 @@ fn scalar(check: &mut Check, law: &str, label: &str, ours: f64, mitsuba: Option<
         ((m - exact).abs(), (ours - m).abs())
     });
     let verdict = Verdict::of(ulps, OURS_ULPS, gap, err, MITSUBA_ABS);
-    check.measure(&format!("{law}: |ours − f64 law| (f32 ulps)"), ulps, label);
+    check.measure_in_both(
+        [
+            &format!("{law}: |ours − f64 law| (f32 ulps)"),
+            &format!("{law}: |miénk − f64 törvény| (f32 ulps)"),
+        ],
+        ulps,
+        label,
+    );
     if verdict.ours_off {
         check.fail(format!(
             "{law} at {label}: ours {ours:e}, f64 law {exact:e} ({ulps:.1} ulps)"
@@ -158,7 +165,14 @@ fn scalar(check: &mut Check, law: &str, label: &str, ours: f64, mitsuba: Option<
         check.fail(format!("{law} at {label}: no result from Mitsuba"));
         return;
     };
-    check.measure(&format!("{law}: |Mitsuba − f64 law|"), err, label);
+    check.measure_in_both(
+        [
+            &format!("{law}: |Mitsuba − f64 law|"),
+            &format!("{law}: |Mitsuba − f64 törvény|"),
+        ],
+        err,
+        label,
+    );
     if verdict.gross {
         check.fail(format!(
             "{law} at {label}: ours {ours:e}, Mitsuba {mitsuba:e}"
@@ -185,8 +199,11 @@ fn direction(
         (max_abs(m, exact), max_abs(ours, m))
     });
     let verdict = Verdict::of(err, bound, gap, m_err, MITSUBA_ABS + allowance);
-    check.measure(
-        &format!("{law}: max |ours − f64 law| per component"),
+    check.measure_in_both(
+        [
+            &format!("{law}: max |ours − f64 law| per component"),
+            &format!("{law}: max |miénk − f64 törvény| komponensenként"),
+        ],
         err,
         label,
     );
@@ -199,8 +216,11 @@ fn direction(
         check.fail(format!("{law} at {label}: no result from Mitsuba"));
         return;
     };
-    check.measure(
-        &format!("{law}: max |Mitsuba − f64 law| per component"),
+    check.measure_in_both(
+        [
+            &format!("{law}: max |Mitsuba − f64 law| per component"),
+            &format!("{law}: max |Mitsuba − f64 törvény| komponensenként"),
+        ],
         m_err,
         label,
     );

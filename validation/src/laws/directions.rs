@@ -126,18 +126,27 @@ fn compare_direction(
     let ours = ours.to_array().map(f64::from);
     let (ours_err, mitsuba_err) = (max_abs(ours, exact), max_abs(mitsuba, exact));
     let disagreement = max_abs(ours, mitsuba);
-    check.measure(
-        &format!("{law}: max |ours − exact| per component"),
+    check.measure_in_both(
+        [
+            &format!("{law}: max |ours − exact| per component"),
+            &format!("{law}: max |miénk − pontos| komponensenként"),
+        ],
         ours_err,
         label,
     );
-    check.measure(
-        &format!("{law}: max |Mitsuba − exact| per component"),
+    check.measure_in_both(
+        [
+            &format!("{law}: max |Mitsuba − exact| per component"),
+            &format!("{law}: max |Mitsuba − pontos| komponensenként"),
+        ],
         mitsuba_err,
         label,
     );
-    check.measure(
-        &format!("{law}: max |ours − Mitsuba| per component"),
+    check.measure_in_both(
+        [
+            &format!("{law}: max |ours − Mitsuba| per component"),
+            &format!("{law}: max |miénk − Mitsuba| komponensenként"),
+        ],
         disagreement,
         label,
     );

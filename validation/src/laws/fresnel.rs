@@ -24,18 +24,27 @@ fn compare_scalar(
     let ours_ulps = ulps_f32(ours, exact);
     let mitsuba_err = (mitsuba - exact).abs();
     let disagreement = (ours - mitsuba).abs();
-    check.measure(
-        &format!("{quantity}: |ours − exact| (f32 ulps)"),
+    check.measure_in_both(
+        [
+            &format!("{quantity}: |ours − exact| (f32 ulps)"),
+            &format!("{quantity}: |miénk − pontos| (f32 ulps)"),
+        ],
         ours_ulps,
         label,
     );
-    check.measure(
-        &format!("{quantity}: |Mitsuba − exact|"),
+    check.measure_in_both(
+        [
+            &format!("{quantity}: |Mitsuba − exact|"),
+            &format!("{quantity}: |Mitsuba − pontos|"),
+        ],
         mitsuba_err,
         label,
     );
-    check.measure(
-        &format!("{quantity}: |ours − Mitsuba|"),
+    check.measure_in_both(
+        [
+            &format!("{quantity}: |ours − Mitsuba|"),
+            &format!("{quantity}: |miénk − Mitsuba|"),
+        ],
         disagreement,
         label,
     );
@@ -197,7 +206,11 @@ pub fn check_schlick(laws: &Laws, reference: &MitsubaLaws) -> Check {
         let ours: f64 = (laws.schlick)(case.cos_i as f32, case.f0 as f32).into();
         let ulps = ulps_f32(ours, case.exact);
         check.cases += 1;
-        check.measure("|ours − exact| (f32 ulps)", ulps, &case.label);
+        check.measure_in_both(
+            ["|ours − exact| (f32 ulps)", "|miénk − pontos| (f32 ulps)"],
+            ulps,
+            &case.label,
+        );
         if !(ulps <= OURS_ULPS) {
             check.fail(format!(
                 "{}: ours {ours:e}, exact {:e} ({ulps:.1} ulps)",

@@ -75,8 +75,11 @@ pub fn compare_path(
     check.cases = compared / 3;
     record_metrics(&mut check, &sides, &tests, &verdicts, deterministic.len());
     let pixels = (scene.width * scene.height) as f64;
-    check.measure(
-        "compared pixel fraction",
+    check.measure_in_both(
+        [
+            "compared pixel fraction",
+            "összehasonlított képpontok aránya",
+        ],
         compared as f64 / 3.0 / pixels,
         "",
     );
@@ -87,8 +90,11 @@ pub fn compare_path(
         verdicts.threshold,
         image.least_shift,
     );
-    check.measure(
-        "mean |mean ours − mean Mitsuba|, W/(sr m²)",
+    check.measure_in_both(
+        [
+            "mean |mean ours − mean Mitsuba|, W/(sr m²)",
+            "|miénk átlaga − Mitsuba átlaga| átlaga, W/(sr m²)",
+        ],
         sum / compared.max(1) as f64,
         "",
     );

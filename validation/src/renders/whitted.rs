@@ -9,6 +9,19 @@ use super::reference::Decoded;
 use crate::check::Check;
 use crate::compare::{tolerance, Tolerance, TOLERANCE_ABSOLUTE, TOLERANCE_RELATIVE};
 
+// What a Whitted render measures, in English and in Hungarian.
+const DIFFERENCE: [&str; 2] = [
+    "|ours − Mitsuba|, W/(sr m²)",
+    "|miénk − Mitsuba|, W/(sr m²)",
+];
+const SCORE: [&str; 2] = ["|ours − Mitsuba| / tolerance", "|miénk − Mitsuba| / tűrés"];
+const MASKED: [&str; 2] = ["masked edge pixels", "maszkolt élképpontok"];
+const MASKED_SHARE: [&str; 2] = ["masked pixel fraction", "maszkolt képpontok aránya"];
+const MEAN: [&str; 2] = [
+    "mean |ours − Mitsuba|, W/(sr m²)",
+    "átlagos |miénk − Mitsuba|, W/(sr m²)",
+];
+
 /// Whitted against Whitted, per pixel away from edges.
 pub fn compare_whitted(name: &str, reference: &Decoded, ours: &Image) -> Compared {
     let scene = &reference.scene;
@@ -48,8 +61,8 @@ pub fn compare_whitted(name: &str, reference: &Decoded, ours: &Image) -> Compare
         sum += d;
         compared += 1;
         let at = || pixel_label(scene.width, i);
-        check.measure_at("|ours − Mitsuba|, W/(sr m²)", d, at);
-        check.measure_at("|ours − Mitsuba| / tolerance", verdicts.score[i], at);
+        check.measure_at_in_both(DIFFERENCE, d, at);
+        check.measure_at_in_both(SCORE, verdicts.score[i], at);
         if verdicts.disagrees(i) {
             check.fail(format!(
                 "{}: ours {:.7}, Mitsuba {:.7}, difference {d:.3e}",
@@ -60,17 +73,10 @@ pub fn compare_whitted(name: &str, reference: &Decoded, ours: &Image) -> Compare
         }
     }
     check.cases = compared / 3;
-    check.measure("masked edge pixels", masked as f64, "");
-    check.measure(
-        "masked pixel fraction",
-        masked as f64 / reference.edges.len().max(1) as f64,
-        "",
-    );
-    check.measure(
-        "mean |ours − Mitsuba|, W/(sr m²)",
-        sum / compared.max(1) as f64,
-        "",
-    );
+    let masked_share = masked as f64 / reference.edges.len().max(1) as f64;
+    check.measure_in_both(MASKED, masked as f64, "");
+    check.measure_in_both(MASKED_SHARE, masked_share, "");
+    check.measure_in_both(MEAN, sum / compared.max(1) as f64, "");
     summarise_failures(&mut check);
     let figure = triptych(
         name,
