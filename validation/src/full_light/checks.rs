@@ -67,14 +67,23 @@ pub fn check_independent(name: &str, decoded: &DecodedLight) -> Option<Check> {
     );
     check.cases = 1;
     let detectable = ptracer.detectable_difference(area, ALPHA, POWER) / area.0.mean;
-    check.measure(
-        &format!("smallest detectable difference (power {POWER}), share of all the light"),
+    check.measure_in_both(
+        [
+            &format!("smallest detectable difference (power {POWER}), share of all the light"),
+            &format!(
+                "a legkisebb kimutatható eltérés (próbaerő {POWER}), az összes fény arányában"
+            ),
+        ],
         detectable,
         "",
     );
-    check.measure("ptracer / area", ptracer.0.mean / area.0.mean, "");
+    check.measure_in_both(
+        ["ptracer / area", "fénykövetés / felületi fények"],
+        ptracer.0.mean / area.0.mean,
+        "",
+    );
     if let Some(w) = ptracer.welch(area) {
-        check.measure("|t|", w.t.abs(), "");
+        check.measure_in_both(["|t|", "|t|"], w.t.abs(), "");
         if w.p < ALPHA {
             check.fail(format!(
                 "ptracer {:.6} ± {:.6}, area {:.6} ± {:.6}: t = {:.2}, p = {:.2e} < {ALPHA}",
@@ -125,9 +134,20 @@ pub fn check_missing_share(name: &str, decoded: &DecodedLight) -> Check {
         };
         check.cases += 1;
         let s = share(path, full);
-        let at = format!("{} against {}", region.name(), estimate.name());
-        check.measure(&format!("missing share, {at}"), s.share, "");
-        check.measure(&format!("its standard error, {at}"), s.standard_error, "");
+        let ([region_en, region_hu], [estimate_en, estimate_hu]) =
+            (region.names(), estimate.names());
+        let at = format!("{region_en} against {estimate_en}");
+        let at_hu = format!("{region_hu}; viszonyítás: {estimate_hu}");
+        let share_names = [
+            format!("missing share, {at}"),
+            format!("hiányzó arány, {at_hu}"),
+        ];
+        check.measure_in_both([&share_names[0], &share_names[1]], s.share, "");
+        let error_names = [
+            format!("its standard error, {at}"),
+            format!("középhibája, {at_hu}"),
+        ];
+        check.measure_in_both([&error_names[0], &error_names[1]], s.standard_error, "");
         let Some(w) = path.welch(full) else { continue };
         if control && w.p < ALPHA / pairs.len() as f64 {
             check.fail(format!(
@@ -221,8 +241,11 @@ pub fn check_same_missing_light(
         summed(decoded, Estimate::Path, Region::Surface),
         summed(decoded, Estimate::Area, Region::Surface),
     ) {
-        check.measure(
-            "Mitsuba path's missing share, surface",
+        check.measure_in_both(
+            [
+                "Mitsuba path's missing share, surface",
+                "a Mitsuba útkövetésének hiányzó aránya, felület",
+            ],
             share(path, area).share,
             "",
         );
@@ -321,17 +344,31 @@ fn compare(
         let at = format!("{} {channel} against {}", region.name(), estimate.name());
         let relative = (mine.0.mean - reference.0.mean).abs() / reference.0.mean.abs();
         let allowance = TOLERANCE_RELATIVE + filter_shift(decoded, estimate, region, c);
-        check.measure("|ours − Mitsuba| / Mitsuba", relative, &at);
-        check.measure("allowed |ours − Mitsuba| / Mitsuba", allowance, &at);
-        check.measure(
-            &format!("smallest detectable relative difference (power {POWER})"),
+        check.measure_in_both(
+            ["|ours − Mitsuba| / Mitsuba", "|miénk − Mitsuba| / Mitsuba"],
+            relative,
+            &at,
+        );
+        check.measure_in_both(
+            [
+                "allowed |ours − Mitsuba| / Mitsuba",
+                "megengedett |miénk − Mitsuba| / Mitsuba",
+            ],
+            allowance,
+            &at,
+        );
+        check.measure_in_both(
+            [
+                &format!("smallest detectable relative difference (power {POWER})"),
+                &format!("a legkisebb kimutatható relatív eltérés (próbaerő {POWER})"),
+            ],
             mine.detectable_difference(reference, threshold, POWER) / reference.0.mean.abs(),
             &at,
         );
         let Some(w) = mine.welch(reference) else {
             continue;
         };
-        check.measure("|t|", w.t.abs(), &at);
+        check.measure_in_both(["|t|", "|t|"], w.t.abs(), &at);
         if w.p < threshold && relative > allowance {
             let message = format!(
                 "{at}: ours {:.6} ± {:.6}, Mitsuba {:.6} ± {:.6} (t = {:.2}, p = {:.2e} < {threshold:.2e}): \

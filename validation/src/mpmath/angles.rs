@@ -69,11 +69,8 @@ pub fn check_angles(laws: &Laws, laws64: &Laws64, reference: &FresnelMpmath) -> 
                     let bound = transmitted_angle_bound_ulps(case.cond_theta);
                     let ulps = measure(&mut check, tier, &case.law, &case.label, got, exact);
                     let conditioned = ulps / (1.0 + case.cond_theta);
-                    check.measure(
-                        &format!("{tier} {} (ulps / (1 + cond_θ))", case.law),
-                        conditioned,
-                        &case.label,
-                    );
+                    let name = format!("{tier} {} (ulps / (1 + cond_θ))", case.law);
+                    check.measure_in_both([&name, &name], conditioned, &case.label);
                     if !(ulps <= bound) {
                         check.fail(format!(
                             "{tier} {} at {}: got {got:e}, exact {:e} ({ulps:.1} ulps, bound {bound:.1})",

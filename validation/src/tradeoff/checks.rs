@@ -123,8 +123,8 @@ fn current_and_converged(check: &mut Check, record: &Record) {
             record.truth.spp, record.truth.noise_relative
         ));
     }
-    check.measure(
-        "the truth's relative noise",
+    check.measure_in_both(
+        ["the truth's relative noise", "a pontos kép relatív zaja"],
         record.truth.noise_relative,
         "",
     );
@@ -138,13 +138,19 @@ fn against_mitsuba(check: &mut Check, record: &Record) {
         check.fail(failure);
     }
     if let Some(super::mitsuba::MitsubaTruth::Measured(m)) = &record.mitsuba {
-        check.measure(
-            "our truth's light against Mitsuba's, the floor",
+        check.measure_in_both(
+            [
+                "our truth's light against Mitsuba's, the floor",
+                "pontos képünk fénye a Mitsubáéhoz mérve, a padló",
+            ],
             m.floor.light,
             &m.estimate,
         );
-        check.measure(
-            "our truth's relative RMSE against Mitsuba's, the floor",
+        check.measure_in_both(
+            [
+                "our truth's relative RMSE against Mitsuba's, the floor",
+                "pontos képünk relatív négyzetes középhibája a Mitsubáéhoz mérve, a padló",
+            ],
             m.floor.rel_rmse,
             &m.estimate,
         );
@@ -167,14 +173,20 @@ fn findings(check: &mut Check, record: &Record) {
 /// What the record says of the scene's own settings `base` and of the
 /// `shortcuts`, measured for the report.
 fn shortcuts(check: &mut Check, base: &Point, shortcuts: &[Point]) {
-    check.measure(
-        "the scene's own settings: relative RMSE from all the light",
+    check.measure_in_both(
+        [
+            "the scene's own settings: relative RMSE from all the light",
+            "a jelenet saját beállításai: relatív négyzetes középhiba az összes fényhez",
+        ],
         base.errors.rel_rmse,
         &base.label,
     );
     for p in shortcuts {
-        check.measure(
-            "a shortcut's ΔE p99 against the scene's own",
+        check.measure_in_both(
+            [
+                "a shortcut's ΔE p99 against the scene's own",
+                "egy rövidítés ΔE p99-e a jelenet sajátjához mérve",
+            ],
             p.against_scene.delta_e_p99,
             &p.label,
         );
@@ -183,8 +195,11 @@ fn shortcuts(check: &mut Check, base: &Point, shortcuts: &[Point]) {
         .iter()
         .filter(|p| p.verdict == Some(Verdict::WorthIt))
         .count();
-    check.measure(
-        "shortcuts worth taking (not seen, faster)",
+    check.measure_in_both(
+        [
+            "shortcuts worth taking (not seen, faster)",
+            "megérő rövidítések (nem látható, gyorsabb)",
+        ],
         worth as f64,
         "",
     );
