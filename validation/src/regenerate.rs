@@ -146,8 +146,11 @@ pub fn regenerate(
         }
     }
     let count = regenerated.len() as f64;
-    check.measure(
-        "references regenerated, their key having changed",
+    check.measure_in_both(
+        [
+            "references regenerated, their key having changed",
+            "újragenerált referenciák, mert a kulcsuk megváltozott",
+        ],
         count,
         &regenerated.join("; "),
     );

@@ -282,8 +282,11 @@ impl Disagreements {
                 r.fresnel_weighted.pixels[p].as_dvec3(),
             );
             let relative = (t - f).abs().max_element() / t.max_element().max(1e-3);
-            check.measure_at(
-                "mirror, Fresnel-weighted: |pass − traced| / traced",
+            check.measure_at_in_both(
+                [
+                    "mirror, Fresnel-weighted: |pass − traced| / traced",
+                    "tükör, Fresnel-súlyozva: |menet − követett| / követett",
+                ],
                 relative,
                 || format!("pixel {p}"),
             );
