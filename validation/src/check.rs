@@ -25,7 +25,8 @@ pub struct Check {
     /// The reference the law is compared with, and its version.
     pub reference: String,
     /// The tolerance and why it is that.
-    pub tolerance: String,
+    #[serde(serialize_with = "english")]
+    pub tolerance: Words,
     /// The number of cases compared.
     pub cases: usize,
     /// The worst disagreements measured, one per quantity.
@@ -79,14 +80,14 @@ pub struct Metric {
 }
 
 impl Check {
-    /// A check with no cases compared yet; its `title` in English and in
-    /// Hungarian.
-    pub fn new(id: &str, title: [&str; 2], reference: &str, tolerance: &str) -> Self {
+    /// A check with no cases compared yet; its `title` and `tolerance` in
+    /// English and in Hungarian.
+    pub fn new(id: &str, title: [&str; 2], reference: &str, tolerance: [&str; 2]) -> Self {
         Self {
             id: id.to_owned(),
             title: words(title),
             reference: reference.to_owned(),
-            tolerance: tolerance.to_owned(),
+            tolerance: words(tolerance),
             cases: 0,
             metrics: Vec::new(),
             failures: Vec::new(),
@@ -196,7 +197,7 @@ mod tests {
 
     #[test]
     fn measure_keeps_the_worst_and_where() {
-        let mut check = Check::new("t", ["t", "t"], "t", "t");
+        let mut check = Check::new("t", ["t", "t"], "t", ["t", "t"]);
         check.measure("err", 1.0, "a");
         check.measure("err", 3.0, "b");
         check.measure("err", 2.0, "c");
@@ -207,6 +208,6 @@ mod tests {
 
     #[test]
     fn a_check_without_cases_does_not_pass() {
-        assert!(!Check::new("t", ["t", "t"], "t", "t").passed());
+        assert!(!Check::new("t", ["t", "t"], "t", ["t", "t"]).passed());
     }
 }

@@ -191,11 +191,11 @@ pub fn check_spectral_colours(laws: &MetalLaws, reference: &MetalsReference) -> 
             "colour-science {} on mpmath reflectances; indices from Mitsuba {}",
             reference.colour_science_version, reference.mitsuba_version
         ),
-        &format!(
+        [&format!(
             "reflectance within {REFLECTANCE_ABS:e}; colour as in the colorimetry check ({:e} XYZ, {:e} CIELAB)",
             colorimetry::XYZ_ABS,
             colorimetry::LAB_ABS
-        ),
+        ), &format!("visszaverődési tényező legfeljebb {REFLECTANCE_ABS:e} eltéréssel; a szín úgy, mint a színmérés ellenőrzésében ({:e} XYZ, {:e} CIELAB)", colorimetry::XYZ_ABS, colorimetry::LAB_ABS)],
     );
     for metal in &reference.metals {
         let Some(index) = metal.index_on_grid() else {

@@ -104,9 +104,9 @@ pub fn regenerate(
         ],
         "python-checks/reference_keys.py (the key: generator, inputs, pinned tools) and the \
          python-checks/ generators in the pinned environment",
-        "the rule of python-checks/reproduce.py: byte-identical, but for the files written \
+        ["the rule of python-checks/reproduce.py: byte-identical, but for the files written \
          through colour-science's BLAS products, whose numbers may move within its stated \
-         tolerance",
+         tolerance", "a python-checks/reproduce.py szabálya: bájtra azonos, kivéve a colour-science BLAS-szorzatain át írt fájlokat, amelyek számai a megadott tűrésén belül mozoghatnak"],
     );
     let mut regenerated = Vec::new();
     for generator in states(python, checkout)? {

@@ -193,7 +193,7 @@ fn check(id: &str, cases: usize, worst: &[(&str, f64, &str)]) -> Check {
         id,
         [&format!("the check {id}"), &format!("az ellenőrzés: {id}")],
         "a reference",
-        "a tolerance",
+        ["a tolerance", "egy tűrés"],
     );
     check.cases = cases;
     for (name, value, at) in worst {

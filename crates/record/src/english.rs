@@ -41,6 +41,9 @@ pub const NAMES: &[&str] = &[
     "flip",
     "mpmath",
     "ulps",
+    "herbie",
+    "bonferroni",
+    "delta",
 ];
 
 /// Common English words a translation might leave behind that the

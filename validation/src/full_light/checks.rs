@@ -5,7 +5,9 @@
 use super::estimates::{Estimate, Region};
 use super::reference::DecodedLight;
 use super::statistics::{share, RegionMean};
-use super::thresholds::{ALPHA, FINDING_RELATIVE, POWER, TOLERANCE_RELATIVE};
+use super::thresholds::{
+    missing_share_tolerance, tolerance_text, ALPHA, FINDING_RELATIVE, POWER, TOLERANCE_RELATIVE,
+};
 use crate::check::Check;
 
 /// A tracer render as the checks read it: per-pixel mean and unbiased
@@ -63,7 +65,7 @@ pub fn check_independent(name: &str, decoded: &DecodedLight) -> Option<Check> {
             &format!("{name}: a Mitsuba fénykövetője az útkövetőjéhez mérve felületi fényforrásokkal, ahol a kamera diffúz felületet lát"),
         ],
         "Mitsuba 3 ptracer and path (scalar_rgb), mitsuba_full_light.json",
-        &format!("Welch's t on the region's mean per pass (R + G + B): fails when p < α = {ALPHA}"),
+        [&format!("Welch's t on the region's mean per pass (R + G + B): fails when p < α = {ALPHA}"), &format!("Welch-féle t a tartomány átlagára menetenként (R + G + B): hibás, ha p < α = {ALPHA}")],
     );
     check.cases = 1;
     let detectable = ptracer.detectable_difference(area, ALPHA, POWER) / area.0.mean;
@@ -111,14 +113,7 @@ pub fn check_missing_share(name: &str, decoded: &DecodedLight) -> Check {
             &format!("{name}: a fény része, amelyet a Mitsuba útkövető integrátora nem talál meg, 1 − út / teljes"),
         ],
         "Mitsuba 3 ptracer and path with area lights (scalar_rgb), mitsuba_full_light.json",
-        &format!(
-            "measured; {}",
-            if control {
-                format!("no delta surface, so zero: fails when path differs from a full estimate at p < α = {ALPHA} over the tests")
-            } else {
-                "delta surfaces: any share, reported".to_owned()
-            }
-        ),
+        missing_share_tolerance(control).each_ref().map(String::as_str),
     );
     let pairs: Vec<(Region, Estimate)> = Region::ALL
         .iter()
@@ -189,7 +184,7 @@ pub fn check_all_the_light_in(
             &format!("{name}: a sugárkövető {integrator} integrátora az összes fényhez mérve (a Mitsuba fénykövetője és felületi fényforrások)"),
         ],
         "Mitsuba 3 ptracer and path with area lights (scalar_rgb), mitsuba_full_light.json",
-        &tolerance_text(),
+        tolerance_text().each_ref().map(String::as_str),
     );
     let pairs: Vec<(Region, Estimate)> = regions
         .iter()
@@ -225,7 +220,7 @@ pub fn check_same_missing_light(
             &format!("{name}: a sugárkövető {integrator} integrátora ugyanazt nem találja meg, amit a Mitsuba útkövetője"),
         ],
         "Mitsuba 3 path (scalar_rgb), mitsuba_full_light.json",
-        &tolerance_text(),
+        tolerance_text().each_ref().map(String::as_str),
     );
     for region in Region::ALL {
         let tests = 3 * Region::ALL.len();
@@ -284,15 +279,6 @@ fn beyond_the_allowance(check: &Check) -> [String; 2] {
             "A Mitsuba becslése és a miénk szignifikánsan eltér.".to_owned(),
         ],
     }
-}
-
-fn tolerance_text() -> String {
-    format!(
-        "per region and channel, Welch's t of the region's mean: fails when p < α / tests (α = {ALPHA}) and \
-         the means differ by more than {TOLERANCE_RELATIVE} of Mitsuba's (float32), plus, against a \
-         box-filtered estimate, what the filter moves the region's mean (|path − path_centres|); a \
-         significant difference within {FINDING_RELATIVE} more is a finding"
-    )
 }
 
 /// The largest relative shift of a region's mean by Mitsuba's box filter,

@@ -140,7 +140,7 @@ fn render_failed(name: &str, what: &str, error: &str) -> Check {
             &format!("{name}: a sugárkövető képe"),
         ],
         "mitsuba_full_light.json",
-        "the render succeeds",
+        ["the render succeeds", "a kép sikeresen elkészül"],
     );
     check.cases = 1;
     check.fail(format!("the render failed: {error}"));

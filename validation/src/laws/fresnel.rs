@@ -89,9 +89,9 @@ pub fn check_dielectric(laws: &Laws, reference: &MitsubaLaws) -> Check {
             "Dielektrikum Fresnel-egyenletei: R, R_s, R_p, mindkét oldalról, merőlegestől súrolóig, teljes visszaverődéssel",
         ],
         &reference.version(),
-        &format!(
+        [&format!(
             "ours within {OURS_ULPS} f32 ulps of exact; Mitsuba beyond {MITSUBA_ABS:.1e} of exact is a finding; ours and Mitsuba within {GROSS_ABS:e}"
-        ),
+        ), &format!("a miénk legfeljebb {OURS_ULPS} f32 ulp-re a pontostól; a Mitsuba {MITSUBA_ABS:.1e} fölötti eltérése a pontostól megállapítás; a miénk és a Mitsubáé legfeljebb {GROSS_ABS:e} eltéréssel")],
     );
     for case in &reference.dielectric {
         let ours = (laws.dielectric)(case.cos_i as f32, case.eta as f32);
@@ -142,9 +142,9 @@ pub fn check_conductor(laws: &Laws, reference: &MitsubaLaws) -> Check {
             "Vezető Fresnel-egyenletei: R, R_s, R_p (n + iκ), merőlegestől súrolóig",
         ],
         &reference.version(),
-        &format!(
+        [&format!(
             "ours within {OURS_ULPS} f32 ulps of exact; Mitsuba beyond {MITSUBA_ABS:.1e} of exact is a finding; ours and Mitsuba within {GROSS_ABS:e}"
-        ),
+        ), &format!("a miénk legfeljebb {OURS_ULPS} f32 ulp-re a pontostól; a Mitsuba {MITSUBA_ABS:.1e} fölötti eltérése a pontostól megállapítás; a miénk és a Mitsubáé legfeljebb {GROSS_ABS:e} eltéréssel")],
     );
     for case in &reference.conductor {
         let ours = (laws.conductor)(case.cos_i as f32, case.n as f32, case.kappa as f32);
@@ -200,7 +200,7 @@ pub fn check_schlick(laws: &Laws, reference: &MitsubaLaws) -> Check {
             "A Schlick-közelítés, F0 + (1 − F0)(1 − cos)⁵, a definíciójához mérve",
         ],
         "mpmath, 50 digits",
-        &format!("within {OURS_ULPS} f32 ulps: five products and a sum, each rounded once"),
+        [&format!("within {OURS_ULPS} f32 ulps: five products and a sum, each rounded once"), &format!("legfeljebb {OURS_ULPS} f32 ulp: öt szorzat és egy összeg, mindegyik egyszer kerekítve")],
     );
     for case in &reference.schlick {
         let ours: f64 = (laws.schlick)(case.cos_i as f32, case.f0 as f32).into();

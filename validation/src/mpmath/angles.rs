@@ -39,12 +39,12 @@ pub fn check_angles(laws: &Laws, laws64: &Laws64, reference: &FresnelMpmath) -> 
             "A Snellius–Descartes-törvény a szögekre, a határszög és a Brewster-szög, f64-ben és f32-ben",
         ],
         &format!("mpmath {}, 50 digits", reference.mpmath_version),
-        &format!(
+        [&format!(
             "transmitted_angle within {BOUND_ULPS} + (8/π)·cond_θ ulps of the tier, cond_θ its \
              condition number over θ_i (the law reads a sine or cosine of θ_i, rounded once), \
              and the same decision on total internal reflection; critical_angle and \
              brewster_angle within {BOUND_ULPS} ulps"
-        ),
+        ), &format!("transmitted_angle legfeljebb {BOUND_ULPS} + (8/π)·cond_θ ulp-re a szint szerint, ahol cond_θ a θ_i szerinti kondíciószáma (a törvény θ_i szinuszát vagy koszinuszát olvassa, egyszer kerekítve), és ugyanaz a döntés a teljes visszaverődésről; critical_angle és brewster_angle legfeljebb {BOUND_ULPS} ulp-re")],
     );
     for (tier, cases) in reference.angles.by_tier() {
         for case in cases {

@@ -24,10 +24,10 @@ pub fn check_dielectric(laws: &Laws, laws64: &Laws64, reference: &FresnelMpmath)
             "Dielektrikum Fresnel-egyenletei: R_s, R_p, R, T f64-ben és f32-ben, a szélsőségekkel együtt",
         ],
         &format!("mpmath {}, 50 digits", reference.mpmath_version),
-        &format!(
+        [&format!(
             "within {DIELECTRIC_F64_BOUND_ULPS} ulps in f64 and {BOUND_ULPS} in f32: a handful of \
              roundings from correctly rounded, doubled in R_p's square"
-        ),
+        ), &format!("legfeljebb {DIELECTRIC_F64_BOUND_ULPS} ulp f64-ben és {BOUND_ULPS} f32-ben: néhány kerekítés a helyesen kerekítettől, R_p négyzetében megkétszerezve")],
     );
     for (tier, cases) in reference.dielectric.by_tier() {
         for case in cases {
@@ -68,9 +68,9 @@ pub fn check_conductor(laws: &Laws, laws64: &Laws64, reference: &FresnelMpmath) 
             "Vezető Fresnel-egyenletei: R_s, R_p, R f64-ben és f32-ben, a szélsőségekkel együtt",
         ],
         &format!("mpmath {}, 50 digits", reference.mpmath_version),
-        &format!(
+        [&format!(
             "within {CONDUCTOR_BOUND_ULPS} ulps of the tier: about ten roundings, squared in R_p"
-        ),
+        ), &format!("legfeljebb {CONDUCTOR_BOUND_ULPS} ulp a szint szerint: nagyjából tíz kerekítés, R_p-ben négyzetre emelve")],
     );
     for (tier, cases) in reference.conductor.by_tier() {
         for case in cases {

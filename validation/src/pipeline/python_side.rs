@@ -86,7 +86,7 @@ pub(super) fn figures_or_report(
                     "A jelentés ábrái, a python-checks/plot_report.py rajzolja",
                 ],
                 "matplotlib",
-                "the script succeeds",
+                ["the script succeeds", "a szkript sikeresen lefut"],
             );
             check.cases = 1;
             check.fail(error.to_string());

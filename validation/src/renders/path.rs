@@ -112,13 +112,13 @@ fn new_check(name: &str) -> Check {
             &format!("{name}: a sugárkövető útkövetése a Mitsuba útkövető integrátorához mérve, képpontonkénti Welch-féle t-próba"),
         ],
         "Mitsuba 3 path integrator through mi.render (scalar_rgb), box filter (mitsuba_renders.json)",
-        &format!(
+        [&format!(
             "a pixel-channel fails when p < α/m, α = {ALPHA} over the m t-tests (Bonferroni: one correct \
              render in {:.0} fails by chance), and its means differ by more than the Whitted tolerance \
              {TOLERANCE_ABSOLUTE:e} + {TOLERANCE_RELATIVE:e} · |Mitsuba| (float32 differences, which no \
              number of samples removes); every pixel, both sides box filtered",
             1.0 / ALPHA
-        ),
+        ), &format!("egy képpont-csatorna hibás, ha p < α/m, α = {ALPHA} az m t-próbán (Bonferroni: {:.0} helyes képből egy véletlenül elbukik), és átlagai jobban eltérnek a Whitted-féle tűrésnél, {TOLERANCE_ABSOLUTE:e} + {TOLERANCE_RELATIVE:e} · |Mitsuba| (float32-eltérések, amelyeket semennyi minta nem tüntet el); minden képpont, mindkét oldal dobozszűrővel", 1.0 / ALPHA)],
     )
 }
 

@@ -32,11 +32,11 @@ pub fn compare_whitted(name: &str, reference: &Decoded, ours: &Image) -> Compare
             &format!("{name}: a sugárkövető Whitted-féle képe egy Whitted-integrátorhoz mérve a Mitsuba primitívjein, képpontonként"),
         ],
         "Mitsuba 3 (scalar_rgb, float32): ray_intersect, fresnel_conductor, reflect (mitsuba_renders.json)",
-        &format!(
+        [&format!(
             "|ours − Mitsuba| ≤ {TOLERANCE_ABSOLUTE:e} + {TOLERANCE_RELATIVE:e} · |Mitsuba| per channel, \
              edge pixels masked: both float32, different intersections and ray offsets; the s = 100 lobe \
              and mirror chains amplify them"
-        ),
+        ), &format!("|miénk − Mitsuba| ≤ {TOLERANCE_ABSOLUTE:e} + {TOLERANCE_RELATIVE:e} · |Mitsuba| csatornánként, az élképpontok maszkolva: mindkettő float32, eltérő metszéspontokkal és sugáreltolásokkal; az s = 100 lebeny és a tükörláncok felnagyítják ezeket")],
     );
     let ours = flatten(ours);
     if ours.len() != reference.whitted.len() {

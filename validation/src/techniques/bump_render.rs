@@ -87,10 +87,10 @@ pub fn check_bump_render(
             "Buckaleképzés egy képen: az árnyalás változik, a körvonalak és az árnyékok nem",
         ],
         "the same scene without its bump field (Whitted, bump_sphere.json)",
-        &format!(
+        [&format!(
             "exact: a flat field changes no bit, the first object seen changes at no pixel, no \
              pixel off the bumped sphere changes; more than {CHANGED_SHARE:.3} of the bumped sphere's pixels change"
-        ),
+        ), &format!("pontos: egy sík mező egyetlen bitet sem változtat, az elsőként látott tárgy egy képpontban sem változik, a buckás gömbön kívül egy képpont sem változik; a buckás gömb képpontjainak több mint {CHANGED_SHARE:.3} része megváltozik")],
     );
     let (smooth, smooth_hits) = render(&with_bumps(scene, None));
     let (flat, _) = render(&with_bumps(scene, Some(HeightField::Flat)));

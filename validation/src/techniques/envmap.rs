@@ -32,9 +32,9 @@ pub fn check_envmap() -> Check {
             "Környezeti térképek (lat-long, kocka, gömb): egy irány vissza a texeléből",
         ],
         "the direction itself; the slides' cube-map example worked by hand (−Z, u = 29/42, v = 11/56)",
-        &format!(
+        [&format!(
             "{ENVMAP_ROUND_TRIP:.2e} rad (lat-long, cube), 32 ε / m rad up to 4 √ε (sphere, m = |r + e|), the example to 4 ε"
-        ),
+        ), &format!("{ENVMAP_ROUND_TRIP:.2e} rad (lat-long, kocka), 32 ε / m rad legfeljebb 4 √ε-ig (gömb, m = |r + e|), a példa 4 ε-ig")],
     );
     for v in directions() {
         let Ok(r) = Direction::new(v) else {

@@ -30,7 +30,10 @@ pub fn check_sellmeier(glass: &Sellmeier) -> Check {
             "Az N-BK7 törésmutatója a Sellmeier-egyenletből a Fraunhofer-vonalaknál",
         ],
         "Schott's N-BK7 data sheet (five printed decimals)",
-        &format!("within {DATA_SHEET_ABS:e}, half a unit in the last printed digit"),
+        [
+            &format!("within {DATA_SHEET_ABS:e}, half a unit in the last printed digit"),
+            &format!("legfeljebb {DATA_SHEET_ABS:e}, fél egység az utolsó nyomtatott jegyben"),
+        ],
     );
     for (line, nm, printed) in N_BK7_DATA_SHEET {
         check.cases += 1;
@@ -69,7 +72,7 @@ pub fn check_prism(glass: &Sellmeier) -> Check {
             "Egy 60°-os prizma: a szimmetrikus beesésnél követett eltérítés az analitikus legkisebb eltérítés",
         ],
         "δ_min = 2 asin(n sin(A/2)) − A (Snell's law at both faces of a symmetric passage)",
-        &format!("within {PRISM_ABS:e} rad; any other incidence deviates more"),
+        [&format!("within {PRISM_ABS:e} rad; any other incidence deviates more"), &format!("legfeljebb {PRISM_ABS:e} rad; minden más beesés jobban eltérít")],
     );
     let prism = Prism::new(60f64.to_radians()).expect("60° is an apex angle");
     let deviation = |n: f64, theta: f64| match prism.trace(n, theta) {
@@ -154,10 +157,10 @@ pub fn check_dispersion_render(three: fn(&tracer::scene::Scene) -> tracer::rende
             "N-BK7 üveggömb: a diák három eta-értéke és egyetlen törésmutatója a spektrális képhez mérve",
         ],
         "85 Whitted renders at the Sellmeier index, integrated with the CIE 1931 tables under D65",
-        &format!(
+        [&format!(
             "the three etas closer than one index in ΔE2000 mean and relative RMSE; away from the \
              sphere the spectral render equals the single-index one within {FLAT_SPECTRUM_RELATIVE:e}, relative"
-        ),
+        ), &format!("a három eta közelebb, mint egy törésmutató, ΔE2000 átlagban és relatív négyzetes középhibában; a gömbön kívül a spektrális kép legfeljebb {FLAT_SPECTRUM_RELATIVE:e} relatív eltéréssel egyezik az egy törésmutatós képpel")],
     );
     let r = dispersion::renders_with(three);
     check.cases = r.sphere.len();

@@ -200,11 +200,11 @@ pub fn check_cheap_refraction_render(
             "A diák olcsó fénytörése (c = η − 1) üveggömbön át leképezve, a Snellius–Descartes-törvényhez mérve",
         ],
         "the same tracer (Whitted) with Snell's refracted direction, the dispersion sphere at n_d",
-        &format!(
+        [&format!(
             "relative RMSE at most {CHEAP_CENTRE_RMSE} where sin θi < {centre}; expected to fail as \
              a shortcut at the rim (sin θi > {rim}): relative RMSE within [{lo}, {hi}]; no pixel off \
              the sphere changed"
-        ),
+        ), &format!("relatív négyzetes középhiba legfeljebb {CHEAP_CENTRE_RMSE}, ahol sin θi < {centre}; rövidítésként várhatóan elbukik a peremen (sin θi > {rim}): relatív négyzetes középhiba [{lo}, {hi}] között; a gömbön kívül egy képpont sem változik")],
     );
     let scene = glass_scene();
     let truth = render(&scene);
@@ -274,10 +274,10 @@ pub fn check_empirical_fresnel_render(
             "A diák empirikus Fresnel-alakja az üveghez illesztve, üveggömbön leképezve, a pontos törvényhez mérve",
         ],
         "the same tracer (Whitted) with the exact Fresnel equations, the dispersion sphere at n_d",
-        &format!(
+        [&format!(
             "expected to show the fit's error: relative RMSE over the sphere within [{lo}, {hi}], \
              below Schlick's; no pixel off the sphere changed"
-        ),
+        ), &format!("várhatóan megmutatja az illesztés hibáját: a gömbön a relatív négyzetes középhiba [{lo}, {hi}] között, a Schlick-közelítésé alatt; a gömbön kívül egy képpont sem változik")],
     );
     let scene = glass_scene();
     let truth = render(&scene);

@@ -88,6 +88,34 @@ fn label_hu(name: &str) -> &str {
     }
 }
 
+/// What each sweep of [`SWEEPS`] is held to, in English and in Hungarian.
+fn distance_tolerance() -> [String; 2] {
+    let each = |s: &Sweep| {
+        let name = label(s.surroundings);
+        [
+            format!(
+                "{name}: falls at every doubling of d (relative RMSE and mean ΔE2000), RMSE ∝ d^p \
+                 with p = {} ± {}",
+                s.exponent, s.within
+            ),
+            format!(
+                "{}: csökken d minden duplázásánál (relatív négyzetes középhiba és ΔE2000 átlag), \
+                 középhiba ∝ d^p, p = {} ± {}",
+                label_hu(name),
+                s.exponent,
+                s.within
+            ),
+        ]
+    };
+    let all: Vec<[String; 2]> = SWEEPS.iter().map(each).collect();
+    [0, 1].map(|k| {
+        all.iter()
+            .map(|t| t[k].as_str())
+            .collect::<Vec<_>>()
+            .join("; ")
+    })
+}
+
 /// The mapped mirror against the traced one over each sweep of
 /// [`SWEEPS`], made by `compare` ([`one_sphere`] in the suite; a
 /// parameter, so that a wrong map can be shown to be caught): the error
@@ -105,16 +133,7 @@ pub fn check_distance(
             "Környezetleképzés a sugárkövetéshez mérve: egy tükörgömb hibája, ahogy a környezete távolodik",
         ],
         "the same mirror traced among the same surroundings (Whitted); the map captured from its centre by the tracer (cube, 48² a face), 48 × 48 pixels",
-        &SWEEPS
-            .iter()
-            .map(|s| {
-                format!(
-                    "{}: falls at every doubling of d (relative RMSE and mean ΔE2000), RMSE ∝ d^p with p = {} ± {}",
-                    label(s.surroundings), s.exponent, s.within
-                )
-            })
-            .collect::<Vec<_>>()
-            .join("; "),
+        distance_tolerance().each_ref().map(String::as_str),
     );
     for sweep in SWEEPS {
         let name = label(sweep.surroundings);
@@ -196,10 +215,10 @@ pub fn check_self_reflection(
             "Környezetleképzés a sugárkövetéshez mérve: két egymás melletti tükör nem mutathatja egymást",
         ],
         "the pair traced (Whitted), each mirror's map captured from its centre; a lone mirror under the same sky",
-        &format!(
+        [&format!(
             "expected to fail as a shortcut: the pair's relative RMSE above {PAIR_RATIO} × a lone \
              mirror's, and a mean ΔE2000 above {SEEING_FLOOR} where each mirror shows the other"
-        ),
+        ), &format!("rövidítésként várhatóan elbukik: a pár relatív négyzetes középhibája nagyobb egy magányos tükörénél {PAIR_RATIO}-szer, és a ΔE2000 átlag {SEEING_FLOOR} fölött, ahol a tükrök egymást mutatják")],
     );
     let lone = one_sphere(Surroundings::Sky, PAIR_DISTANCE, RESOLUTION).errors;
     let c = pair(Surroundings::Sky, PAIR_DISTANCE, RESOLUTION);

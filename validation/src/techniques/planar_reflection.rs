@@ -204,12 +204,12 @@ pub fn check_planar_reflection(
             "Síktükrözés (a tükrözési mátrix, két menet) a követett tükörpadlóhoz mérve",
         ],
         "the same tracer (Whitted) with the floor a conductor, every reflected ray traced",
-        &format!(
+        [&format!(
             "weighted by the exact Fresnel law, the mirrored pass within {GEOMETRY_RELATIVE:e} \
              (relative) of the truth at all but {GEOMETRY_EDGE_SHARE} of the mirror's pixels; \
              expected to fail as a shortcut: the object below the floor shows at more than \
              {PHANTOM_FLOOR} pixels; pixels disagree beyond {CODES} displayed codes"
-        ),
+        ), &format!("a pontos Fresnel-törvénnyel súlyozva a tükrözött menet legfeljebb {GEOMETRY_RELATIVE:e} (relatív) eltéréssel egyezik a pontos képpel a tükör képpontjain, legfeljebb {GEOMETRY_EDGE_SHARE} részük kivételével; rövidítésként várhatóan elbukik: a padló alatti tárgy több mint {PHANTOM_FLOOR} képpontban látszik; a képpontok több mint {CODES} megjelenített kóddal térnek el")],
     );
     let r = reflections(scene, m);
     figures.push(strip(

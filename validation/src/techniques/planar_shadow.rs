@@ -216,11 +216,11 @@ pub fn check_planar_shadow(
             "Síkra vetített árnyékok (az árnyékmátrix) a követett árnyékokhoz mérve",
         ],
         "the same tracer (Whitted) with its shadow rays",
-        &format!(
+        [&format!(
             "on the floor all but {FLOOR_EDGE_SHARE} of the pixels agree (the shadows' edges); \
              expected to fail as a shortcut: more than {MISSED_FLOOR} pixels of an object in \
              another's shadow left lit; pixels disagree beyond {CODES} displayed codes"
-        ),
+        ), &format!("a padlón a képpontok legfeljebb {FLOOR_EDGE_SHARE} részét kivéve egyeznek (az árnyékok szélei); rövidítésként várhatóan elbukik: egy másik árnyékában álló tárgy több mint {MISSED_FLOOR} képpontja megvilágítva marad; a képpontok több mint {CODES} megjelenített kóddal térnek el")],
     );
     let s = shadows(scene, matrix);
     figures.push(strip(

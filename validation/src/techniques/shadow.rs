@@ -20,7 +20,7 @@ pub fn check_projected_shadow() -> Check {
             "A diák vetítettárnyék-mátrixa a sugárkövető sugár–sík metszéséhez mérve",
         ],
         "tracer::geometry::Plane::intersect (f32) on the ray from the light through the vertex",
-        &format!("the points within {RELATIVE:e} of the distance, relative; Cast exactly when the vertex comes first"),
+        [&format!("the points within {RELATIVE:e} of the distance, relative; Cast exactly when the vertex comes first"), &format!("a pontok legfeljebb {RELATIVE:e} relatív eltéréssel a távolsághoz képest; pontosan akkor vet árnyékot, ha a csúcs van elöl")],
     );
     let normals = [
         DVec3::Y,

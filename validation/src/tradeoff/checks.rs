@@ -58,6 +58,28 @@ pub fn read(dir: &Path) -> Result<Vec<Read>, ReferenceError> {
         .collect()
 }
 
+/// The check that fails where `dir` holds no record.
+pub fn none(dir: &Path) -> Check {
+    let mut none = Check::new(
+        "tradeoff.records",
+        [
+            "The speed/accuracy trade-off records",
+            "A sebesség és a pontosság cseréjének feljegyzései",
+        ],
+        DIR,
+        [
+            "one record a lit course scene",
+            "kurzusjelenetenként egy feljegyzés",
+        ],
+    );
+    none.cases = 1;
+    none.fail(format!(
+        "no record in {}: write them with `{REGENERATE}`",
+        dir.display()
+    ));
+    none
+}
+
 /// The check of one record, `file` named in it.
 pub fn check(file: &Path, record: &Result<Record, ReferenceError>) -> Check {
     let mut check = announced(file);
@@ -99,13 +121,13 @@ fn announced(file: &Path) -> Check {
             &format!("{stem}: a jelenet minden megengedett rövidítésének sebesség–pontosság cseréje, ahogy feljegyezték"),
         ],
         &format!("{}, written by `{REGENERATE}`", file.display()),
-        &format!(
+        [&format!(
             "schema {SCHEMA} version {SCHEMA_VERSION}; every measure finite, ≥ 0 and ꟻLIP ≤ 1; \
              the truth's relative noise ≤ {UNCONVERGED}; the fronts, verdicts and findings recorded \
              are those the recorded times and errors give; against Mitsuba's truth, where recorded, \
              every setting's light and relative RMSE finite and ≥ 0 and the ranking the one they give, \
              or a reason why there is no reference"
-        ),
+        ), &format!("séma: {SCHEMA}, {SCHEMA_VERSION}. változat; minden mérték véges, ≥ 0, és a ꟻLIP ≤ 1; a pontos kép relatív zaja ≤ {UNCONVERGED}; a feljegyzett frontok, ítéletek és megállapítások azok, amelyeket a feljegyzett idők és hibák adnak; a Mitsuba pontos képéhez mérve, ahol feljegyezték, minden beállítás fénye és relatív négyzetes középhibája véges és ≥ 0, és a sorrend az, amit ezek adnak, vagy indok, miért nincs referencia")],
     )
 }
 

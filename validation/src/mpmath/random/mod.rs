@@ -140,12 +140,12 @@ pub fn check_random(
                     ),
                 ],
                 &format!("mpmath {}, 50 digits, correctly rounded to the tier", reference.mpmath_version),
-                &format!(
+                [&format!(
                     "every case within {BOUND_ULPS} floating-point numbers of the correctly rounded value \
                      (dielectric in f64: {DIELECTRIC_F64_BOUND_ULPS}; conductor: {CONDUCTOR_BOUND_ULPS}; transmitted_angle: {BOUND_ULPS} + (8/π)·cond_θ), the same decision on total internal \
                      reflection and on a critical angle's existence; per set an average of at most \
                      {AVERAGE_BITS} bits of error (Herbie's log2(1 + numbers between))"
-                ),
+                ), &format!("minden eset legfeljebb {BOUND_ULPS} lebegőpontos számnyira a helyesen kerekített értéktől (dielektrikum f64-ben: {DIELECTRIC_F64_BOUND_ULPS}; vezető: {CONDUCTOR_BOUND_ULPS}; transmitted_angle: {BOUND_ULPS} + (8/π)·cond_θ), ugyanaz a döntés a teljes visszaverődésről és a határszög létezéséről; halmazonként átlagosan legfeljebb {AVERAGE_BITS} bit hiba (a Herbie-féle log2(1 + a köztes számok))")],
             );
             for tier in [Tier::F64, Tier::F32] {
                 for sampling in [Sampling::Reals, Sampling::Floats] {

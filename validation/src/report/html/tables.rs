@@ -136,7 +136,7 @@ pub(super) fn every_check(h: &mut String, report: &Report, lang: Lang) {
                 "Reference: {}.<br>Tolerance: {}.",
                 "Referencia: {}.<br>Tűrés: {}.",
                 english(lang, &check.reference),
-                english(lang, &check.tolerance)
+                escape(check.tolerance.pick(lang))
             )
         );
         let kinds = [
