@@ -268,7 +268,7 @@ mod tests {
             no_python: true,
             seed: 1,
         };
-        let message = args.options().unwrap_err().to_string();
+        let message = args.options(Lang::En).unwrap_err().to_string();
         assert!(
             message.starts_with("--checkout /nonexistent/checkout: not a checkout"),
             "{message}"
