@@ -5,9 +5,14 @@
 //! laws beyond the stated tolerance of a reference. A **finding** is a
 //! disagreement between two references (Mitsuba's float32 evaluation against
 //! the exact value, say) that the suite reports without failing for it.
+//!
+//! What a check says to a reader (its title, the gist of its findings) it
+//! says in English and in Hungarian, both given where the check is
+//! declared; `report.json` carries the English.
 
+use errata::Words;
 use radiometry::Real;
-use serde::Serialize;
+use serde::{Serialize, Serializer};
 
 /// One check's result, as it appears in `report.json`.
 #[derive(Clone, Debug, Serialize)]
@@ -15,11 +20,13 @@ pub struct Check {
     /// A stable identifier, `group.reference.law`, e.g. `laws.mitsuba.fresnel`.
     pub id: String,
     /// What is compared, in words.
-    pub title: String,
+    #[serde(serialize_with = "english")]
+    pub title: Words,
     /// The reference the law is compared with, and its version.
     pub reference: String,
     /// The tolerance and why it is that.
-    pub tolerance: String,
+    #[serde(serialize_with = "english")]
+    pub tolerance: Words,
     /// The number of cases compared.
     pub cases: usize,
     /// The worst disagreements measured, one per quantity.
@@ -30,8 +37,31 @@ pub struct Check {
     pub findings: Vec<String>,
     /// The findings in one plain sentence, the worst of them named, for a
     /// reader who will not read them all; set by the check that found them.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub gist: Option<String>,
+    #[serde(
+        skip_serializing_if = "Option::is_none",
+        serialize_with = "english_if_any"
+    )]
+    pub gist: Option<Words>,
+}
+
+/// A text as `report.json` carries it: its English.
+fn english<S: Serializer>(words: &Words, serializer: S) -> Result<S::Ok, S::Error> {
+    serializer.serialize_str(&words.en)
+}
+
+fn english_if_any<S: Serializer>(words: &Option<Words>, serializer: S) -> Result<S::Ok, S::Error> {
+    match words {
+        Some(words) => english(words, serializer),
+        None => serializer.serialize_none(),
+    }
+}
+
+/// `[English, Hungarian]` as [`Words`].
+fn words([en, hu]: [&str; 2]) -> Words {
+    Words {
+        en: en.to_owned(),
+        hu: hu.to_owned(),
+    }
 }
 
 /// The worst value of one measured quantity and where it occurred.
@@ -39,6 +69,10 @@ pub struct Check {
 pub struct Metric {
     /// What is measured, with its unit (`|ours − exact| in f32 ulps`).
     pub name: String,
+    /// [`Metric::name`] in Hungarian, where the check gave it
+    /// ([`Check::measure_in_both`]); not part of `report.json`.
+    #[serde(skip)]
+    pub name_hu: Option<String>,
     /// The worst value over the cases.
     pub worst: f64,
     /// The label of the case where it occurred (empty when no case was compared).
@@ -46,13 +80,14 @@ pub struct Metric {
 }
 
 impl Check {
-    /// A check with no cases compared yet.
-    pub fn new(id: &str, title: &str, reference: &str, tolerance: &str) -> Self {
+    /// A check with no cases compared yet; its `title` and `tolerance` in
+    /// English and in Hungarian.
+    pub fn new(id: &str, title: [&str; 2], reference: &str, tolerance: [&str; 2]) -> Self {
         Self {
             id: id.to_owned(),
-            title: title.to_owned(),
+            title: words(title),
             reference: reference.to_owned(),
-            tolerance: tolerance.to_owned(),
+            tolerance: words(tolerance),
             cases: 0,
             metrics: Vec::new(),
             failures: Vec::new(),
@@ -72,9 +107,30 @@ impl Check {
         self.measure_at(name, value, || at.to_owned());
     }
 
+    /// [`Check::measure`] with the quantity named in English and in
+    /// Hungarian, `[en, hu]`; the English names it in [`Check::worst`].
+    pub fn measure_in_both(&mut self, names: [&str; 2], value: f64, at: &str) {
+        self.measure_at_in_both(names, value, || at.to_owned());
+    }
+
     /// [`Check::measure`] with the case named by `at`, called only when the
     /// value is a new worst: for a measure taken at every pixel.
     pub fn measure_at(&mut self, name: &str, value: f64, at: impl FnOnce() -> String) {
+        self.record(name, None, value, at);
+    }
+
+    /// [`Check::measure_at`] with the quantity named in English and in
+    /// Hungarian, `[en, hu]`.
+    pub fn measure_at_in_both(
+        &mut self,
+        [en, hu]: [&str; 2],
+        value: f64,
+        at: impl FnOnce() -> String,
+    ) {
+        self.record(en, Some(hu), value, at);
+    }
+
+    fn record(&mut self, name: &str, hu: Option<&str>, value: f64, at: impl FnOnce() -> String) {
         let value = if value.is_nan() { f64::INFINITY } else { value };
         match self.metrics.iter_mut().find(|m| m.name == name) {
             Some(m) if value > m.worst => {
@@ -84,6 +140,7 @@ impl Check {
             Some(_) => {}
             None => self.metrics.push(Metric {
                 name: name.to_owned(),
+                name_hu: hu.map(str::to_owned),
                 worst: value,
                 at: at(),
             }),
@@ -105,11 +162,13 @@ impl Check {
         self.findings.push(message);
     }
 
-    /// Sums the findings up in one plain sentence, `gist`, where there are
-    /// any (a check without findings keeps none).
-    pub fn sum_up(&mut self, gist: impl FnOnce(&Self) -> String) {
+    /// Sums the findings up in one plain sentence, `gist`, in English and
+    /// in Hungarian, where there are any (a check without findings keeps
+    /// none).
+    pub fn sum_up(&mut self, gist: impl FnOnce(&Self) -> [String; 2]) {
         if !self.findings.is_empty() {
-            self.gist = Some(gist(self));
+            let [en, hu] = gist(self);
+            self.gist = Some(Words { en, hu });
         }
     }
 }
@@ -138,7 +197,7 @@ mod tests {
 
     #[test]
     fn measure_keeps_the_worst_and_where() {
-        let mut check = Check::new("t", "t", "t", "t");
+        let mut check = Check::new("t", ["t", "t"], "t", ["t", "t"]);
         check.measure("err", 1.0, "a");
         check.measure("err", 3.0, "b");
         check.measure("err", 2.0, "c");
@@ -149,6 +208,6 @@ mod tests {
 
     #[test]
     fn a_check_without_cases_does_not_pass() {
-        assert!(!Check::new("t", "t", "t", "t").passed());
+        assert!(!Check::new("t", ["t", "t"], "t", ["t", "t"]).passed());
     }
 }

@@ -158,14 +158,26 @@ fn max_abs(a: [f64; 3], b: [f64; 3]) -> f64 {
 /// Compares every representation of a colour with colour-science's, recording into `check`.
 pub fn compare_colour(check: &mut Check, label: &str, ours: &ColourValues, theirs: &ColourValues) {
     let rows = [
-        ("XYZ", ours.xyz, theirs.xyz, XYZ_ABS),
-        ("linear sRGB", ours.linear_srgb, theirs.linear_srgb, XYZ_ABS),
-        ("sRGB", ours.srgb, theirs.srgb, SRGB_ABS),
-        ("CIELAB", ours.lab, theirs.lab, LAB_ABS),
+        (["XYZ", "XYZ"], ours.xyz, theirs.xyz, XYZ_ABS),
+        (
+            ["linear sRGB", "lineáris sRGB"],
+            ours.linear_srgb,
+            theirs.linear_srgb,
+            XYZ_ABS,
+        ),
+        (["sRGB", "sRGB"], ours.srgb, theirs.srgb, SRGB_ABS),
+        (["CIELAB", "CIELAB"], ours.lab, theirs.lab, LAB_ABS),
     ];
-    for (name, a, b, tolerance) in rows {
+    for ([name, name_hu], a, b, tolerance) in rows {
         let d = max_abs(a, b);
-        check.measure(&format!("{name}: max |ours − colour-science|"), d, label);
+        check.measure_in_both(
+            [
+                &format!("{name}: max |ours − colour-science|"),
+                &format!("{name_hu}: max |miénk − colour-science|"),
+            ],
+            d,
+            label,
+        );
         if !(d <= tolerance) {
             check.fail(format!("{name} of {label}: ours {a:?}, colour-science {b:?} (off by {d:.2e} > {tolerance:e})"));
         }
@@ -176,9 +188,15 @@ pub fn compare_colour(check: &mut Check, label: &str, ours: &ColourValues, their
 pub fn check_tables(reference: &Colorimetry) -> Check {
     let mut check = Check::new(
         "colour.colour-science.tables",
-        "CIE 1931 2° colour-matching functions and D65, compiled into the radiometry crate",
+        [
+            "CIE 1931 2° colour-matching functions and D65, compiled into the radiometry crate",
+            "A CIE 1931 2°-os színillesztő függvények és a D65, a radiometriai könyvtárba fordítva",
+        ],
         &format!("colour-science {}", reference.colour_science_version),
-        "bit-identical: the tables are copied, not computed",
+        [
+            "bit-identical: the tables are copied, not computed",
+            "bitre azonos: a táblázatok másolatok, nem számítottak",
+        ],
     );
     if reference.cmf_xyz.len() != SAMPLES || reference.d65.len() != SAMPLES {
         check.fail(format!(
@@ -200,9 +218,12 @@ pub fn check_tables(reference: &Colorimetry) -> Check {
 pub fn check_spectra(laws: &ColourLaws, reference: &Colorimetry) -> Check {
     let mut check = Check::new(
         "colour.colour-science.spectra",
-        "Reflectance spectra to XYZ (D65), linear sRGB, sRGB and CIELAB: flat, smooth and the 24 ColorChecker patches",
+        [
+            "Reflectance spectra to XYZ (D65), linear sRGB, sRGB and CIELAB: flat, smooth and the 24 ColorChecker patches",
+            "Visszaverődési spektrumok XYZ-be (D65), lineáris sRGB-be, sRGB-be és CIELAB-ba: egyenletes, sima és a 24 ColorChecker-mező",
+        ],
         &format!("colour-science {}", reference.colour_science_version),
-        &format!("XYZ and linear sRGB within {XYZ_ABS:e}, sRGB within {SRGB_ABS:e}, CIELAB within {LAB_ABS:e} (summation order)"),
+        [&format!("XYZ and linear sRGB within {XYZ_ABS:e}, sRGB within {SRGB_ABS:e}, CIELAB within {LAB_ABS:e} (summation order)"), &format!("XYZ és lineáris sRGB legfeljebb {XYZ_ABS:e}, sRGB legfeljebb {SRGB_ABS:e}, CIELAB legfeljebb {LAB_ABS:e} eltéréssel (az összegzés sorrendje)")],
     );
     for case in &reference.spectra {
         check.cases += 1;
@@ -228,9 +249,12 @@ pub fn check_spectra(laws: &ColourLaws, reference: &Colorimetry) -> Check {
 pub fn check_delta_e(laws: &ColourLaws, reference: &Colorimetry) -> Check {
     let mut check = Check::new(
         "colour.colour-science.ciede2000",
-        "CIEDE2000 of the 34 test pairs of Sharma, Wu & Dalal (2005)",
+        [
+            "CIEDE2000 of the 34 test pairs of Sharma, Wu & Dalal (2005)",
+            "Sharma, Wu és Dalal (2005) 34 tesztpárjának CIEDE2000-értéke",
+        ],
         &format!("colour-science {} and the paper's printed values", reference.colour_science_version),
-        &format!("within {DELTA_E_ABS:e} of colour-science, {PRINTED_ABS:e} of the printed four decimals"),
+        [&format!("within {DELTA_E_ABS:e} of colour-science, {PRINTED_ABS:e} of the printed four decimals"), &format!("legfeljebb {DELTA_E_ABS:e} eltérés a colour-science értékétől, {PRINTED_ABS:e} a nyomtatott négy tizedestől")],
     );
     for case in &reference.delta_e_2000 {
         check.cases += 1;
@@ -239,8 +263,12 @@ pub fn check_delta_e(laws: &ColourLaws, reference: &Colorimetry) -> Check {
             (ours - case.delta_e_2000).abs(),
             (ours - case.printed).abs(),
         );
-        check.measure("|ours − colour-science|", d, &case.label);
-        check.measure("|ours − printed|", p, &case.label);
+        check.measure_in_both(
+            ["|ours − colour-science|", "|miénk − colour-science|"],
+            d,
+            &case.label,
+        );
+        check.measure_in_both(["|ours − printed|", "|miénk − nyomtatott|"], p, &case.label);
         if !(d <= DELTA_E_ABS && p <= PRINTED_ABS) {
             check.fail(format!(
                 "{}: ours {ours:.6}, colour-science {:.6}, printed {:.4}",

@@ -138,12 +138,15 @@ pub fn check_against_nvidia(flip: ErrorMap, reference: &FlipReference) -> Check 
     use base64::Engine as _;
     let mut check = Check::new(
         "images.flip.nvidia",
-        "LDR ꟻLIP error maps (nv-flip) of image pairs of known character",
+        [
+            "LDR ꟻLIP error maps (nv-flip) of image pairs of known character",
+            "Ismert jellegű képpárok LDR ꟻLIP-hibatérképei (nv-flip)",
+        ],
         &format!(
             "NVIDIA's flip-evaluator {} at {} pixels per degree",
             reference.flip_evaluator_version, reference.pixels_per_degree
         ),
-        &format!("mean within {MEAN_ABS:e}, maximum within {MAX_ABS:e} (NVIDIA sums the mean in single precision; the reference keeps seven digits)"),
+        [&format!("mean within {MEAN_ABS:e}, maximum within {MAX_ABS:e} (NVIDIA sums the mean in single precision; the reference keeps seven digits)"), &format!("átlag legfeljebb {MEAN_ABS:e}, a legnagyobb legfeljebb {MAX_ABS:e} eltéréssel (az NVIDIA egyszeres pontossággal összegzi az átlagot; a referencia hét jegyet őriz)")],
     );
     if reference.pixels_per_degree != PIXELS_PER_DEGREE {
         check.fail(format!(
@@ -174,8 +177,16 @@ pub fn check_against_nvidia(flip: ErrorMap, reference: &FlipReference) -> Check 
         let ours_max = map.iter().copied().fold(0.0_f32, f32::max);
         let mean_off = (ours_mean - pair.mean).abs();
         let max_off = (f64::from(ours_max) - pair.max).abs();
-        check.measure("mean: |ours − NVIDIA|", mean_off, &pair.name);
-        check.measure("maximum: |ours − NVIDIA|", max_off, &pair.name);
+        check.measure_in_both(
+            ["mean: |ours − NVIDIA|", "átlag: |miénk − NVIDIA|"],
+            mean_off,
+            &pair.name,
+        );
+        check.measure_in_both(
+            ["maximum: |ours − NVIDIA|", "legnagyobb: |miénk − NVIDIA|"],
+            max_off,
+            &pair.name,
+        );
         if !(mean_off <= MEAN_ABS) || map.iter().any(|v| !(0.0..=1.0).contains(v)) {
             check.fail(format!(
                 "{}: mean {ours_mean:.6} against NVIDIA's {:.6}",

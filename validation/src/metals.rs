@@ -183,16 +183,19 @@ pub struct MetalColour {
 pub fn check_spectral_colours(laws: &MetalLaws, reference: &MetalsReference) -> Check {
     let mut check = Check::new(
         "colour.colour-science.metals",
-        "Exact reflectance spectra of gold, silver, copper, aluminium (Mitsuba's measured n, κ) and their colour",
+        [
+            "Exact reflectance spectra of gold, silver, copper, aluminium (Mitsuba's measured n, κ) and their colour",
+            "Az arany, az ezüst, a réz és az alumínium pontos visszaverődési spektruma (a Mitsuba mért n, κ értékeivel) és színük",
+        ],
         &format!(
             "colour-science {} on mpmath reflectances; indices from Mitsuba {}",
             reference.colour_science_version, reference.mitsuba_version
         ),
-        &format!(
+        [&format!(
             "reflectance within {REFLECTANCE_ABS:e}; colour as in the colorimetry check ({:e} XYZ, {:e} CIELAB)",
             colorimetry::XYZ_ABS,
             colorimetry::LAB_ABS
-        ),
+        ), &format!("visszaverődési tényező legfeljebb {REFLECTANCE_ABS:e} eltéréssel; a szín úgy, mint a színmérés ellenőrzésében ({:e} XYZ, {:e} CIELAB)", colorimetry::XYZ_ABS, colorimetry::LAB_ABS)],
     );
     for metal in &reference.metals {
         let Some(index) = metal.index_on_grid() else {
@@ -221,7 +224,14 @@ pub fn check_spectral_colours(laws: &MetalLaws, reference: &MetalsReference) -> 
                     0.0,
                     |m: f64, d| if d.is_nan() { f64::INFINITY } else { m.max(d) },
                 );
-            check.measure("reflectance: max |ours − exact|", worst, &label);
+            check.measure_in_both(
+                [
+                    "reflectance: max |ours − exact|",
+                    "visszaverődési tényező: max |miénk − pontos|",
+                ],
+                worst,
+                &label,
+            );
             if !(worst <= REFLECTANCE_ABS) {
                 check.fail(format!(
                     "reflectance of {label}: off by {worst:.2e} > {REFLECTANCE_ABS:e}"

@@ -134,7 +134,7 @@ pub fn run(options: &Options, mut progress: impl FnMut(Step)) -> Result<Outcome,
     figures.extend(write_render_figures(&out, &report)?);
     figures.extend(copy_tradeoff_plots(checkout, &out, &report)?);
     report.word_tradeoffs();
-    let (json, html) = (to_json(&report), to_html(&report, &figures));
+    let (json, html) = (to_json(&report), to_html(&report, &figures, options.lang));
     write_all_atomically(&[
         (&out.join("report.json"), json.as_bytes()),
         (&out.join("report.html"), html.as_bytes()),

@@ -98,12 +98,15 @@ pub fn regenerate(
     let scripts = checkout.python_checks();
     let mut check = Check::new(
         "references.regenerated",
-        "Every committed reference is current by its key, or regenerates with the pinned tools",
+        [
+            "Every committed reference is current by its key, or regenerates with the pinned tools",
+            "Minden tárolt referencia naprakész a kulcsa szerint, vagy újragenerálódik a rögzített eszközökkel",
+        ],
         "python-checks/reference_keys.py (the key: generator, inputs, pinned tools) and the \
          python-checks/ generators in the pinned environment",
-        "the rule of python-checks/reproduce.py: byte-identical, but for the files written \
+        ["the rule of python-checks/reproduce.py: byte-identical, but for the files written \
          through colour-science's BLAS products, whose numbers may move within its stated \
-         tolerance",
+         tolerance", "a python-checks/reproduce.py szabálya: bájtra azonos, kivéve a colour-science BLAS-szorzatain át írt fájlokat, amelyek számai a megadott tűrésén belül mozoghatnak"],
     );
     let mut regenerated = Vec::new();
     for generator in states(python, checkout)? {
@@ -143,8 +146,11 @@ pub fn regenerate(
         }
     }
     let count = regenerated.len() as f64;
-    check.measure(
-        "references regenerated, their key having changed",
+    check.measure_in_both(
+        [
+            "references regenerated, their key having changed",
+            "újragenerált referenciák, mert a kulcsuk megváltozott",
+        ],
         count,
         &regenerated.join("; "),
     );

@@ -7,7 +7,6 @@
 //! takes for the progress display. Adding a kind (the renders against
 //! Mitsuba, say) is one more implementation in [`standard_kinds`].
 
-use crate::check::Check;
 use crate::colorimetry::{self, Colorimetry, ColourLaws};
 pub use crate::context::{Context, Samples};
 use crate::flip;
@@ -245,19 +244,7 @@ impl CheckKind for TradeoffChecks {
         let dir = context.checkout.join(tradeoff::checks::DIR);
         let records = tradeoff::checks::read(&dir)?;
         if records.is_empty() {
-            let mut none = Check::new(
-                "tradeoff.records",
-                "The speed/accuracy trade-off records",
-                tradeoff::checks::DIR,
-                "one record a lit course scene",
-            );
-            none.cases = 1;
-            none.fail(format!(
-                "no record in {}: write them with `{}`",
-                dir.display(),
-                tradeoff::checks::REGENERATE
-            ));
-            report.checks.push(none);
+            report.checks.push(tradeoff::checks::none(&dir));
         }
         for (file, record) in records {
             report.checks.push(tradeoff::checks::check(&file, &record));

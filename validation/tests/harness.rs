@@ -1,16 +1,20 @@
 //! The harness end to end: every kind of check against the committed
-//! references, the report it writes, a broken law reported as a failed
-//! check, and broken reference files refused with the file and field named.
+//! references, the report it writes (in English and in Hungarian), a
+//! broken law reported as a failed check, and broken reference files
+//! refused with the file and field named.
 
 mod page;
-use page::words;
+use page::{english_left_in, number_marks, words};
 
 mod caught;
 
+use std::collections::BTreeSet;
 use std::path::Path;
+use std::sync::OnceLock;
 
 use glam::Vec3;
 use radiometry::specular::{self, Refraction};
+use record::Lang;
 use validation::checkout::Checkout;
 use validation::colorimetry::ColourLaws;
 use validation::exchange::{self, LawCase, LawResult};
@@ -43,16 +47,27 @@ fn kinds(laws: Laws) -> Vec<Box<dyn CheckKind>> {
     ]
 }
 
+/// Every standard kind against the committed references, run once for
+/// the tests that read its report, and the progress calls it made.
+fn standard_run() -> &'static (Report, Vec<(usize, String)>) {
+    static RUN: OnceLock<(Report, Vec<(usize, String)>)> = OnceLock::new();
+    RUN.get_or_init(|| {
+        let mut seen = Vec::new();
+        let mut report = suite::run(
+            &suite::standard_kinds(),
+            &context(&committed_dir()),
+            "test",
+            |i, name| seen.push((i, name.to_owned())),
+        )
+        .expect("committed references load");
+        report.word_tradeoffs();
+        (report, seen)
+    })
+}
+
 #[test]
 fn every_check_passes_against_the_committed_references() {
-    let mut seen = Vec::new();
-    let report = suite::run(
-        &suite::standard_kinds(),
-        &context(&committed_dir()),
-        "test",
-        |i, name| seen.push((i, name.to_owned())),
-    )
-    .expect("committed references load");
+    let (report, seen) = standard_run();
     assert_eq!(seen.len(), 9, "one progress call per kind: {seen:?}");
     assert!(report.passed(), "{:#?}", report.checks);
     assert_eq!(report.summary.failed, 0);
@@ -70,8 +85,76 @@ fn every_check_passes_against_the_committed_references() {
         "a trade-off record a swept scene"
     );
     // The report is JSON the figure script can read.
-    let json: serde_json::Value = serde_json::from_str(&to_json(&report)).unwrap();
+    let json: serde_json::Value = serde_json::from_str(&to_json(report)).unwrap();
     assert_eq!(json["schema"], "validation-report/2");
+}
+
+/// The standard run's page in English and in Hungarian, with the render
+/// figures the command would write beside it.
+fn pages() -> [String; 2] {
+    let report = &standard_run().0;
+    let figures: Vec<String> = (report.render_figures.iter())
+        .map(|f| format!("figures/{}", f.file))
+        .collect();
+    [Lang::En, Lang::Hu].map(|lang| to_html(report, &figures, lang))
+}
+
+/// What the page names rather than says: the checks' ids, part by part,
+/// the swept scenes' stems (`diffuse: …`, `diffuse-lambert: …`), the
+/// environment maps' kind that the tracer calls `lat-long`, the reference
+/// `colour-science`, and the laws' functions `reflect` and `refract`.
+fn names(report: &Report) -> BTreeSet<String> {
+    let ids = report.checks.iter().flat_map(|c| c.id.split('.'));
+    let stems = report.tradeoffs.iter().map(|r| r.stem());
+    let kinds = ["lat-long", "colour-science", "reflect", "refract"].map(str::to_owned);
+    ids.map(str::to_owned).chain(stems).chain(kinds).collect()
+}
+
+#[test]
+fn the_hungarian_report_of_every_check_has_no_english_left() {
+    let [en, hu] = pages();
+    assert!(
+        hu.starts_with("<!doctype html>\n<html lang=hu>"),
+        "{}",
+        &hu[..40]
+    );
+    let left = english_left_in(&hu, &en, &names(&standard_run().0));
+    assert!(
+        left.is_empty(),
+        "{} lines of the Hungarian report have English left:\n{}",
+        left.len(),
+        left.join("\n")
+    );
+}
+
+/// The check above can fail: a frame text left in English, and a text
+/// the suite has only in English shown unmarked, are both found.
+#[test]
+fn english_left_in_the_hungarian_report_is_found() {
+    let [en, hu] = pages();
+    let names = names(&standard_run().0);
+    let frame = hu.replacen("Az összes fény</", "All the light</", 1);
+    assert_ne!(frame, hu, "the area's Hungarian title is on the page");
+    let found = english_left_in(&frame, &en, &names);
+    assert!(found.iter().any(|l| l.contains("light")), "{found:?}");
+    let unmarked = hu.replacen("<span lang=en>", "<span>", 1);
+    assert!(!english_left_in(&unmarked, &en, &names).is_empty());
+}
+
+#[test]
+fn both_languages_show_the_same_numbers_from_the_same_places() {
+    let [en, hu] = pages();
+    let marks = number_marks(&en);
+    assert!(marks.len() > 100, "{} numbers marked", marks.len());
+    assert_eq!(number_marks(&hu), marks);
+}
+
+/// The check above can fail: a number the Hungarian page drops is missed.
+#[test]
+fn a_number_the_hungarian_page_drops_is_caught() {
+    let [en, hu] = pages();
+    let dropped = hu.replacen(" data-quote=", " data-dropped=", 1);
+    assert_ne!(number_marks(&dropped), number_marks(&en));
 }
 
 fn refract_normal_flipped(wi: Vec3, n: Vec3, eta: f32) -> Option<Refraction<Vec3>> {
@@ -94,7 +177,7 @@ fn a_broken_law_fails_its_check_in_the_report() {
         .collect();
     assert_eq!(failed, ["laws.mitsuba.directions"]);
     assert_eq!(report.summary.failed, 1);
-    let html = to_html(&report, &[]);
+    let html = to_html(&report, &[], Lang::En);
     let verdict = format!("1 of {} checks FAIL.", report.summary.checks);
     assert!(words(&html).contains(&verdict), "the page says so");
 }

@@ -7,12 +7,13 @@
 //! (`apt-get install chromium`; `CHROMIUM=/path` names another).
 
 mod page;
-use page::words;
+use page::{english_left_in, number_marks, words};
 
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
+use record::Lang;
 use validation::check::Check;
 use validation::report::{to_html, to_json, Report, WorstDeltaE};
 use validation::speed::Timing;
@@ -188,7 +189,12 @@ const TRADEOFF: &str = r#"{"schema": "optics.tradeoff", "version": 2,
 
 /// A check of `cases` cases with its worst values `(quantity, value, at)`.
 fn check(id: &str, cases: usize, worst: &[(&str, f64, &str)]) -> Check {
-    let mut check = Check::new(id, &format!("the check {id}"), "a reference", "a tolerance");
+    let mut check = Check::new(
+        id,
+        [&format!("the check {id}"), &format!("az ellenőrzés: {id}")],
+        "a reference",
+        ["a tolerance", "egy tűrés"],
+    );
     check.cases = cases;
     for (name, value, at) in worst {
         check.measure(name, *value, at);
@@ -337,7 +343,7 @@ fn numbers_of(json: &str) -> BTreeMap<String, f64> {
 #[test]
 fn the_page_carries_every_number_of_report_json() {
     let (report, figures) = sample();
-    let html = to_html(&report, &figures);
+    let html = to_html(&report, &figures, Lang::En);
     let json = to_json(&report);
     assert_eq!(numbers_in(&html), numbers_of(&json));
     let quotes = quotes_in(&html);
@@ -361,7 +367,7 @@ fn the_page_carries_every_number_of_report_json() {
 #[test]
 fn a_page_with_a_row_dropped_is_caught() {
     let (report, figures) = sample();
-    let html = to_html(&report, &figures);
+    let html = to_html(&report, &figures, Lang::En);
     let row = html.find("<tr><td><span class=pass>").expect("a row");
     let end = row + html[row..].find("</tr>").expect("its end") + "</tr>".len();
     let dropped = format!("{}{}", &html[..row], &html[end..]);
@@ -371,7 +377,7 @@ fn a_page_with_a_row_dropped_is_caught() {
 #[test]
 fn a_page_with_a_timing_or_a_count_dropped_is_caught() {
     let (report, figures) = sample();
-    let html = to_html(&report, &figures);
+    let html = to_html(&report, &figures, Lang::En);
     let json = numbers_of(&to_json(&report));
     for pointer in [
         "/speed/1/ns_per_colour",
@@ -389,7 +395,7 @@ fn a_page_with_a_timing_or_a_count_dropped_is_caught() {
 #[test]
 fn a_page_showing_a_wrong_number_is_caught() {
     let (report, figures) = sample();
-    let html = to_html(&report, &figures).replacen(
+    let html = to_html(&report, &figures, Lang::En).replacen(
         "data-value=\"5.257051672420828e0\"",
         "data-value=\"5.26e0\"",
         1,
@@ -404,10 +410,29 @@ fn report_json_names_its_schema_and_version() {
     assert_eq!(json["schema"], "validation-report/2");
 }
 
+/// The sample's failed check and its verdict in Hungarian: the parts of
+/// the page a run without failures (`tests/harness.rs`) never shows.
+#[test]
+fn a_failing_report_in_hungarian_has_no_english_left() {
+    let (report, figures) = sample();
+    let [en, hu] = [Lang::En, Lang::Hu].map(|lang| to_html(&report, &figures, lang));
+    let names = report
+        .checks
+        .iter()
+        .flat_map(|c| c.id.split('.').map(str::to_owned))
+        .collect();
+    let left = english_left_in(&hu, &en, &names);
+    assert!(left.is_empty(), "English left:\n{}", left.join("\n"));
+    let verdict = format!("{} ellenőrzésből 1 HIBÁS.", report.summary.checks);
+    assert!(words(&hu).contains(&verdict), "the verdict in Hungarian");
+    assert!(hu.contains("<p>Sikertelen esetek (1):</p>"));
+    assert_eq!(number_marks(&hu), number_marks(&en));
+}
+
 #[test]
 fn the_first_screen_gives_the_verdict_and_a_card_per_area() {
     let (report, figures) = sample();
-    let html = to_html(&report, &figures);
+    let html = to_html(&report, &figures, Lang::En);
     let cards = &html[html.find("<div class=cards>").unwrap()..html.find("<h2").unwrap()];
     for title in [
         "Laws against 50-digit mpmath",
@@ -459,7 +484,7 @@ fn escaped(text: &str) -> String {
 #[test]
 fn each_swept_scene_shows_its_findings_in_words_its_settings_and_its_plot() {
     let (report, figures) = sample();
-    let html = to_html(&report, &figures);
+    let html = to_html(&report, &figures, Lang::En);
     for record in &report.tradeoffs {
         let section = tradeoff_section(&html, &record.stem());
         let findings = record.findings.as_ref().expect("the sample's findings");
@@ -643,7 +668,7 @@ fn the_report_fits_the_window_in_a_browser_at_1400_and_400_pixels() {
         return;
     };
     let (report, figures) = sample();
-    let html = to_html(&report, &figures);
+    let html = to_html(&report, &figures, Lang::En);
     let shot = std::env::temp_dir().join("optics-report-first-screen.png");
     let (_wide, path) = page(&html, 1400);
     let probe = open(&chromium, &path, 1400, Some(&shot));
@@ -669,7 +694,7 @@ fn the_browser_probe_finds_a_table_too_wide_and_a_broken_image() {
         return;
     };
     let (report, figures) = sample();
-    let faulty = to_html(&report, &figures).replacen(
+    let faulty = to_html(&report, &figures, Lang::En).replacen(
         "<h2",
         "<table><tr><td style=\"white-space:nowrap\">a row far wider than any window, which no box scrolls: \
          xxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxx</td></tr></table>\

@@ -3,8 +3,6 @@
 //! help in Hungarian (`help`, from the table `help_hu`). The errors' texts
 //! are the kinds' own (`crate::error`).
 
-#[cfg(test)]
-pub(crate) mod english;
 pub(crate) mod help;
 mod help_hu;
 pub mod needs;

@@ -64,7 +64,7 @@ pub struct ValidateArgs {
 
 impl ValidateArgs {
     /// The pipeline's options: the checkout found, the flags as they are.
-    fn options(&self) -> error::Result<Options> {
+    fn options(&self, lang: Lang) -> error::Result<Options> {
         let checkout = crate::checkout::lookup(self.checkout.as_deref())
             .find()
             .map_err(HarnessKind::CheckoutWithFlag)?;
@@ -83,6 +83,7 @@ impl ValidateArgs {
             }),
             seed: self.seed,
             command,
+            lang,
         })
     }
 }
@@ -91,7 +92,7 @@ impl ValidateArgs {
 /// `--json` the record is the whole answer, without it a failure is also
 /// reported as an error).
 pub fn run(args: &ValidateArgs, ui: &Ui) -> error::Result<ExitCode> {
-    let options = args.options()?;
+    let options = args.options(ui.lang)?;
     let bar = (std::io::stderr().is_terminal() && !ui.json).then(|| {
         let bar = ProgressBar::new(0);
         bar.set_style(
@@ -267,7 +268,7 @@ mod tests {
             no_python: true,
             seed: 1,
         };
-        let message = args.options().unwrap_err().to_string();
+        let message = args.options(Lang::En).unwrap_err().to_string();
         assert!(
             message.starts_with("--checkout /nonexistent/checkout: not a checkout"),
             "{message}"

@@ -1,7 +1,8 @@
 //! What a command of the suite says: its [`Record`] (the inputs, the
 //! working step by step, the answer and the notes), shown as text in a
 //! [`Lang`] or as one JSON object, and the [`say!`] macro that writes a
-//! line in both languages side by side.
+//! line in both languages side by side; and [`english`], which finds
+//! English left in a Hungarian text.
 //!
 //! This is the ground floor the features and the front ends share: it
 //! imports nothing of the suite, so a library can build the record a
@@ -18,6 +19,7 @@
 
 #![warn(missing_docs)]
 
+pub mod english;
 mod lang;
 mod record;
 

@@ -17,6 +17,12 @@ pub const LEGEND: &str =
     test allows): black 0, through red, to yellow at 1; magenta above 1 (disagrees); dark blue \
     not compared (masked)";
 
+/// [`LEGEND`] in Hungarian.
+pub const LEGEND_HU: &str =
+    "minden képpont legnagyobb értéke a csatornái közül (|eltérés| a teszt által megengedetthez \
+    képest): fekete 0, vörösön át sárga 1-nél; bíbor 1 fölött (nem egyezik); sötétkék: nincs \
+    összehasonlítva (maszkolt)";
+
 /// The colour of a pixel whose channels have `scores` (NaN: not compared).
 pub fn heat_colour(scores: &[f64]) -> Vec3 {
     let compared: Vec<f64> = scores.iter().copied().filter(|s| !s.is_nan()).collect();

@@ -22,13 +22,18 @@ pub fn check_random(
 ) -> Check {
     let mut check = Check::new(
         "laws.mitsuba.random",
-        "Fresnel (dielectric, conductor), reflection and refraction at random inputs exported by the harness, \
-         against Mitsuba, with our f64 laws standing in for the exact value (the random cases against \
-         50 digits are laws.mpmath.random.*)",
+        [
+            "Fresnel (dielectric, conductor), reflection and refraction at random inputs exported by the harness, \
+             against Mitsuba, with our f64 laws standing in for the exact value (the random cases against \
+             50 digits are laws.mpmath.random.*)",
+            "Fresnel (dielektrikum, vezető), visszaverődés és törés a keretrendszer exportálta véletlen \
+             bemeneteken, a Mitsubához mérve, a pontos érték helyén f64 törvényeinkkel (az 50 jegyhez mért \
+             véletlen esetek: laws.mpmath.random.*)",
+        ],
         &format!("{} on cases.json (seed {})", results.evaluator, cases.seed),
-        &format!(
+        [&format!(
             "ours (f32) within {OURS_ULPS} f32 ulps of our f64 law (itself within 8 f64 ulps of exact), directions within {DIRECTION_ABS:.1e} plus the refraction allowance near the critical angle; Mitsuba beyond {MITSUBA_ABS:.1e} is a finding; ours and Mitsuba within {GROSS_ABS:e}"
-        ),
+        ), &format!("a miénk (f32) legfeljebb {OURS_ULPS} f32 ulp-re az f64 törvényünktől (amely maga legfeljebb 8 f64 ulp-re a pontostól), az irányok legfeljebb {DIRECTION_ABS:.1e} eltéréssel, plusz a törés ráhagyása a határszög közelében; a Mitsuba {MITSUBA_ABS:.1e} fölötti eltérése megállapítás; a miénk és a Mitsubáé legfeljebb {GROSS_ABS:e} eltéréssel")],
     );
     if cases.cases.len() != results.results.len() {
         check.fail(format!(
@@ -143,7 +148,14 @@ fn scalar(check: &mut Check, law: &str, label: &str, ours: f64, mitsuba: Option<
         ((m - exact).abs(), (ours - m).abs())
     });
     let verdict = Verdict::of(ulps, OURS_ULPS, gap, err, MITSUBA_ABS);
-    check.measure(&format!("{law}: |ours − f64 law| (f32 ulps)"), ulps, label);
+    check.measure_in_both(
+        [
+            &format!("{law}: |ours − f64 law| (f32 ulps)"),
+            &format!("{law}: |miénk − f64 törvény| (f32 ulps)"),
+        ],
+        ulps,
+        label,
+    );
     if verdict.ours_off {
         check.fail(format!(
             "{law} at {label}: ours {ours:e}, f64 law {exact:e} ({ulps:.1} ulps)"
@@ -153,7 +165,14 @@ fn scalar(check: &mut Check, law: &str, label: &str, ours: f64, mitsuba: Option<
         check.fail(format!("{law} at {label}: no result from Mitsuba"));
         return;
     };
-    check.measure(&format!("{law}: |Mitsuba − f64 law|"), err, label);
+    check.measure_in_both(
+        [
+            &format!("{law}: |Mitsuba − f64 law|"),
+            &format!("{law}: |Mitsuba − f64 törvény|"),
+        ],
+        err,
+        label,
+    );
     if verdict.gross {
         check.fail(format!(
             "{law} at {label}: ours {ours:e}, Mitsuba {mitsuba:e}"
@@ -180,8 +199,11 @@ fn direction(
         (max_abs(m, exact), max_abs(ours, m))
     });
     let verdict = Verdict::of(err, bound, gap, m_err, MITSUBA_ABS + allowance);
-    check.measure(
-        &format!("{law}: max |ours − f64 law| per component"),
+    check.measure_in_both(
+        [
+            &format!("{law}: max |ours − f64 law| per component"),
+            &format!("{law}: max |miénk − f64 törvény| komponensenként"),
+        ],
         err,
         label,
     );
@@ -194,8 +216,11 @@ fn direction(
         check.fail(format!("{law} at {label}: no result from Mitsuba"));
         return;
     };
-    check.measure(
-        &format!("{law}: max |Mitsuba − f64 law| per component"),
+    check.measure_in_both(
+        [
+            &format!("{law}: max |Mitsuba − f64 law| per component"),
+            &format!("{law}: max |Mitsuba − f64 törvény| komponensenként"),
+        ],
         m_err,
         label,
     );

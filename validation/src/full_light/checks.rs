@@ -5,7 +5,9 @@
 use super::estimates::{Estimate, Region};
 use super::reference::DecodedLight;
 use super::statistics::{share, RegionMean};
-use super::thresholds::{ALPHA, FINDING_RELATIVE, POWER, TOLERANCE_RELATIVE};
+use super::thresholds::{
+    missing_share_tolerance, tolerance_text, ALPHA, FINDING_RELATIVE, POWER, TOLERANCE_RELATIVE,
+};
 use crate::check::Check;
 
 /// A tracer render as the checks read it: per-pixel mean and unbiased
@@ -58,20 +60,32 @@ pub fn check_independent(name: &str, decoded: &DecodedLight) -> Option<Check> {
     let area = summed(decoded, Estimate::Area, Region::Diffuse)?;
     let mut check = Check::new(
         &format!("full_light.mitsuba.{name}.independent"),
-        &format!("{name}: Mitsuba's light tracer against its path tracer with area lights, where the camera sees a diffuse surface"),
+        [
+            &format!("{name}: Mitsuba's light tracer against its path tracer with area lights, where the camera sees a diffuse surface"),
+            &format!("{name}: a Mitsuba fénykövetője az útkövetőjéhez mérve felületi fényforrásokkal, ahol a kamera diffúz felületet lát"),
+        ],
         "Mitsuba 3 ptracer and path (scalar_rgb), mitsuba_full_light.json",
-        &format!("Welch's t on the region's mean per pass (R + G + B): fails when p < α = {ALPHA}"),
+        [&format!("Welch's t on the region's mean per pass (R + G + B): fails when p < α = {ALPHA}"), &format!("Welch-féle t a tartomány átlagára menetenként (R + G + B): hibás, ha p < α = {ALPHA}")],
     );
     check.cases = 1;
     let detectable = ptracer.detectable_difference(area, ALPHA, POWER) / area.0.mean;
-    check.measure(
-        &format!("smallest detectable difference (power {POWER}), share of all the light"),
+    check.measure_in_both(
+        [
+            &format!("smallest detectable difference (power {POWER}), share of all the light"),
+            &format!(
+                "a legkisebb kimutatható eltérés (próbaerő {POWER}), az összes fény arányában"
+            ),
+        ],
         detectable,
         "",
     );
-    check.measure("ptracer / area", ptracer.0.mean / area.0.mean, "");
+    check.measure_in_both(
+        ["ptracer / area", "fénykövetés / felületi fények"],
+        ptracer.0.mean / area.0.mean,
+        "",
+    );
     if let Some(w) = ptracer.welch(area) {
-        check.measure("|t|", w.t.abs(), "");
+        check.measure_in_both(["|t|", "|t|"], w.t.abs(), "");
         if w.p < ALPHA {
             check.fail(format!(
                 "ptracer {:.6} ± {:.6}, area {:.6} ± {:.6}: t = {:.2}, p = {:.2e} < {ALPHA}",
@@ -94,18 +108,12 @@ pub fn check_missing_share(name: &str, decoded: &DecodedLight) -> Check {
     let control = !has_delta_surface(&decoded.scene);
     let mut check = Check::new(
         &format!("full_light.mitsuba.{name}.missing_share"),
-        &format!(
-            "{name}: the share of the light Mitsuba's path integrator misses, 1 − path / full"
-        ),
+        [
+            &format!("{name}: the share of the light Mitsuba's path integrator misses, 1 − path / full"),
+            &format!("{name}: a fény része, amelyet a Mitsuba útkövető integrátora nem talál meg, 1 − út / teljes"),
+        ],
         "Mitsuba 3 ptracer and path with area lights (scalar_rgb), mitsuba_full_light.json",
-        &format!(
-            "measured; {}",
-            if control {
-                format!("no delta surface, so zero: fails when path differs from a full estimate at p < α = {ALPHA} over the tests")
-            } else {
-                "delta surfaces: any share, reported".to_owned()
-            }
-        ),
+        missing_share_tolerance(control).each_ref().map(String::as_str),
     );
     let pairs: Vec<(Region, Estimate)> = Region::ALL
         .iter()
@@ -121,9 +129,20 @@ pub fn check_missing_share(name: &str, decoded: &DecodedLight) -> Check {
         };
         check.cases += 1;
         let s = share(path, full);
-        let at = format!("{} against {}", region.name(), estimate.name());
-        check.measure(&format!("missing share, {at}"), s.share, "");
-        check.measure(&format!("its standard error, {at}"), s.standard_error, "");
+        let ([region_en, region_hu], [estimate_en, estimate_hu]) =
+            (region.names(), estimate.names());
+        let at = format!("{region_en} against {estimate_en}");
+        let at_hu = format!("{region_hu}; viszonyítás: {estimate_hu}");
+        let share_names = [
+            format!("missing share, {at}"),
+            format!("hiányzó arány, {at_hu}"),
+        ];
+        check.measure_in_both([&share_names[0], &share_names[1]], s.share, "");
+        let error_names = [
+            format!("its standard error, {at}"),
+            format!("középhibája, {at_hu}"),
+        ];
+        check.measure_in_both([&error_names[0], &error_names[1]], s.standard_error, "");
         let Some(w) = path.welch(full) else { continue };
         if control && w.p < ALPHA / pairs.len() as f64 {
             check.fail(format!(
@@ -160,9 +179,12 @@ pub fn check_all_the_light_in(
 ) -> Check {
     let mut check = Check::new(
         &format!("full_light.tracer.{name}.{integrator}.all_the_light"),
-        &format!("{name}: the tracer's {integrator} against all the light (Mitsuba's light tracer and area lights)"),
+        [
+            &format!("{name}: the tracer's {integrator} against all the light (Mitsuba's light tracer and area lights)"),
+            &format!("{name}: a sugárkövető {integrator} integrátora az összes fényhez mérve (a Mitsuba fénykövetője és felületi fényforrások)"),
+        ],
         "Mitsuba 3 ptracer and path with area lights (scalar_rgb), mitsuba_full_light.json",
-        &tolerance_text(),
+        tolerance_text().each_ref().map(String::as_str),
     );
     let pairs: Vec<(Region, Estimate)> = regions
         .iter()
@@ -193,9 +215,12 @@ pub fn check_same_missing_light(
 ) -> Check {
     let mut check = Check::new(
         &format!("full_light.tracer.{name}.{integrator}.missing_share"),
-        &format!("{name}: the tracer's {integrator} misses what Mitsuba's path misses"),
+        [
+            &format!("{name}: the tracer's {integrator} misses what Mitsuba's path misses"),
+            &format!("{name}: a sugárkövető {integrator} integrátora ugyanazt nem találja meg, amit a Mitsuba útkövetője"),
+        ],
         "Mitsuba 3 path (scalar_rgb), mitsuba_full_light.json",
-        &tolerance_text(),
+        tolerance_text().each_ref().map(String::as_str),
     );
     for region in Region::ALL {
         let tests = 3 * Region::ALL.len();
@@ -211,8 +236,11 @@ pub fn check_same_missing_light(
         summed(decoded, Estimate::Path, Region::Surface),
         summed(decoded, Estimate::Area, Region::Surface),
     ) {
-        check.measure(
-            "Mitsuba path's missing share, surface",
+        check.measure_in_both(
+            [
+                "Mitsuba path's missing share, surface",
+                "a Mitsuba útkövetésének hiányzó aránya, felület",
+            ],
             share(path, area).share,
             "",
         );
@@ -224,27 +252,33 @@ pub fn check_same_missing_light(
 /// The findings of a comparison of region means in one sentence: the
 /// largest relative difference, significant but within the finding's
 /// margin past the allowance.
-fn beyond_the_allowance(check: &Check) -> String {
+fn beyond_the_allowance(check: &Check) -> [String; 2] {
     match check.worst("|ours − Mitsuba| / Mitsuba") {
-        Some(m) => format!(
-            "Mitsuba's estimate and ours differ significantly by up to {:.2} %, at {}: past the \
-             {} % allowance by less than {} %, so reported, not failed.",
-            100.0 * m.worst,
-            m.at,
-            100.0 * TOLERANCE_RELATIVE,
-            100.0 * FINDING_RELATIVE
-        ),
-        None => "Mitsuba's estimate and ours differ significantly.".to_owned(),
+        Some(m) => {
+            let (worst, allowed, more) = (
+                100.0 * m.worst,
+                100.0 * TOLERANCE_RELATIVE,
+                100.0 * FINDING_RELATIVE,
+            );
+            [
+                format!(
+                    "Mitsuba's estimate and ours differ significantly by up to {worst:.2} %, at {}: \
+                     past the {allowed} % allowance by less than {more} %, so reported, not failed.",
+                    m.at
+                ),
+                format!(
+                    "A Mitsuba becslése és a miénk szignifikánsan eltér, legfeljebb {worst:.2} %-kal, \
+                     itt: `{}`; a {allowed} %-os engedményt kevesebb mint {more} %-kal lépi túl, \
+                     ezért jelentjük, de nem számít kudarcnak.",
+                    m.at
+                ),
+            ]
+        }
+        None => [
+            "Mitsuba's estimate and ours differ significantly.".to_owned(),
+            "A Mitsuba becslése és a miénk szignifikánsan eltér.".to_owned(),
+        ],
     }
-}
-
-fn tolerance_text() -> String {
-    format!(
-        "per region and channel, Welch's t of the region's mean: fails when p < α / tests (α = {ALPHA}) and \
-         the means differ by more than {TOLERANCE_RELATIVE} of Mitsuba's (float32), plus, against a \
-         box-filtered estimate, what the filter moves the region's mean (|path − path_centres|); a \
-         significant difference within {FINDING_RELATIVE} more is a finding"
-    )
 }
 
 /// The largest relative shift of a region's mean by Mitsuba's box filter,
@@ -296,17 +330,31 @@ fn compare(
         let at = format!("{} {channel} against {}", region.name(), estimate.name());
         let relative = (mine.0.mean - reference.0.mean).abs() / reference.0.mean.abs();
         let allowance = TOLERANCE_RELATIVE + filter_shift(decoded, estimate, region, c);
-        check.measure("|ours − Mitsuba| / Mitsuba", relative, &at);
-        check.measure("allowed |ours − Mitsuba| / Mitsuba", allowance, &at);
-        check.measure(
-            &format!("smallest detectable relative difference (power {POWER})"),
+        check.measure_in_both(
+            ["|ours − Mitsuba| / Mitsuba", "|miénk − Mitsuba| / Mitsuba"],
+            relative,
+            &at,
+        );
+        check.measure_in_both(
+            [
+                "allowed |ours − Mitsuba| / Mitsuba",
+                "megengedett |miénk − Mitsuba| / Mitsuba",
+            ],
+            allowance,
+            &at,
+        );
+        check.measure_in_both(
+            [
+                &format!("smallest detectable relative difference (power {POWER})"),
+                &format!("a legkisebb kimutatható relatív eltérés (próbaerő {POWER})"),
+            ],
             mine.detectable_difference(reference, threshold, POWER) / reference.0.mean.abs(),
             &at,
         );
         let Some(w) = mine.welch(reference) else {
             continue;
         };
-        check.measure("|t|", w.t.abs(), &at);
+        check.measure_in_both(["|t|", "|t|"], w.t.abs(), &at);
         if w.p < threshold && relative > allowance {
             let message = format!(
                 "{at}: ours {:.6} ± {:.6}, Mitsuba {:.6} ± {:.6} (t = {:.2}, p = {:.2e} < {threshold:.2e}): \

@@ -25,11 +25,16 @@ impl Estimate {
 
     /// The reference's key.
     pub fn name(self) -> &'static str {
+        self.names()[0]
+    }
+
+    /// The reference's key, and the estimate in Hungarian.
+    pub fn names(self) -> [&'static str; 2] {
         match self {
-            Estimate::Path => "path",
-            Estimate::Ptracer => "ptracer",
-            Estimate::Area => "area",
-            Estimate::PathCentres => "path_centres",
+            Estimate::Path => ["path", "útkövetés"],
+            Estimate::Ptracer => ["ptracer", "fénykövetés"],
+            Estimate::Area => ["area", "felületi fények"],
+            Estimate::PathCentres => ["path_centres", "path_centres"],
         }
     }
 }
@@ -51,9 +56,14 @@ impl Region {
 
     /// The reference's key.
     pub fn name(self) -> &'static str {
+        self.names()[0]
+    }
+
+    /// The reference's key, and the region in Hungarian.
+    pub fn names(self) -> [&'static str; 2] {
         match self {
-            Region::Diffuse => "diffuse",
-            Region::Surface => "surface",
+            Region::Diffuse => ["diffuse", "diffúz"],
+            Region::Surface => ["surface", "felület"],
         }
     }
 

@@ -135,9 +135,12 @@ const PHOTON_PASSES: u32 = 4;
 fn render_failed(name: &str, what: &str, error: &str) -> Check {
     let mut check = Check::new(
         &format!("full_light.tracer.{name}.{what}"),
-        &format!("{name}: the tracer's render"),
+        [
+            &format!("{name}: the tracer's render"),
+            &format!("{name}: a sugárkövető képe"),
+        ],
         "mitsuba_full_light.json",
-        "the render succeeds",
+        ["the render succeeds", "a kép sikeresen elkészül"],
     );
     check.cases = 1;
     check.fail(format!("the render failed: {error}"));

@@ -57,11 +57,14 @@ pub(crate) fn vec3(v: [f64; 3]) -> Vec3 {
 pub fn check_directions(laws: &Laws, reference: &MitsubaLaws) -> Check {
     let mut check = Check::new(
         "laws.mitsuba.directions",
-        "Mirror and refracted directions, both sides, tilted normals, TIR",
+        [
+            "Mirror and refracted directions, both sides, tilted normals, TIR",
+            "Tükrözött és megtört irányok, mindkét oldalról, döntött normálisokkal, teljes visszaverődéssel",
+        ],
         &reference.version(),
-        &format!(
+        [&format!(
             "ours within {DIRECTION_ABS:.1e} of exact per component, plus the refraction_allowance for the conditioning near the critical angle; Mitsuba beyond {MITSUBA_ABS:.1e} is a finding; ours and Mitsuba within {GROSS_ABS:e}"
-        ),
+        ), &format!("a miénk komponensenként legfeljebb {DIRECTION_ABS:.1e} eltéréssel a pontostól, plusz a refraction_allowance a határszög közeli kondicionáltság miatt; a Mitsuba {MITSUBA_ABS:.1e} fölötti eltérése megállapítás; a miénk és a Mitsubáé legfeljebb {GROSS_ABS:e} eltéréssel")],
     );
     for case in &reference.directions {
         let (wi, n, label) = (vec3(case.wi), vec3(case.n), &case.label);
@@ -123,18 +126,27 @@ fn compare_direction(
     let ours = ours.to_array().map(f64::from);
     let (ours_err, mitsuba_err) = (max_abs(ours, exact), max_abs(mitsuba, exact));
     let disagreement = max_abs(ours, mitsuba);
-    check.measure(
-        &format!("{law}: max |ours − exact| per component"),
+    check.measure_in_both(
+        [
+            &format!("{law}: max |ours − exact| per component"),
+            &format!("{law}: max |miénk − pontos| komponensenként"),
+        ],
         ours_err,
         label,
     );
-    check.measure(
-        &format!("{law}: max |Mitsuba − exact| per component"),
+    check.measure_in_both(
+        [
+            &format!("{law}: max |Mitsuba − exact| per component"),
+            &format!("{law}: max |Mitsuba − pontos| komponensenként"),
+        ],
         mitsuba_err,
         label,
     );
-    check.measure(
-        &format!("{law}: max |ours − Mitsuba| per component"),
+    check.measure_in_both(
+        [
+            &format!("{law}: max |ours − Mitsuba| per component"),
+            &format!("{law}: max |miénk − Mitsuba| komponensenként"),
+        ],
         disagreement,
         label,
     );

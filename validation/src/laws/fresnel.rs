@@ -24,18 +24,27 @@ fn compare_scalar(
     let ours_ulps = ulps_f32(ours, exact);
     let mitsuba_err = (mitsuba - exact).abs();
     let disagreement = (ours - mitsuba).abs();
-    check.measure(
-        &format!("{quantity}: |ours − exact| (f32 ulps)"),
+    check.measure_in_both(
+        [
+            &format!("{quantity}: |ours − exact| (f32 ulps)"),
+            &format!("{quantity}: |miénk − pontos| (f32 ulps)"),
+        ],
         ours_ulps,
         label,
     );
-    check.measure(
-        &format!("{quantity}: |Mitsuba − exact|"),
+    check.measure_in_both(
+        [
+            &format!("{quantity}: |Mitsuba − exact|"),
+            &format!("{quantity}: |Mitsuba − pontos|"),
+        ],
         mitsuba_err,
         label,
     );
-    check.measure(
-        &format!("{quantity}: |ours − Mitsuba|"),
+    check.measure_in_both(
+        [
+            &format!("{quantity}: |ours − Mitsuba|"),
+            &format!("{quantity}: |miénk − Mitsuba|"),
+        ],
         disagreement,
         label,
     );
@@ -75,11 +84,14 @@ fn compare_polarised(
 pub fn check_dielectric(laws: &Laws, reference: &MitsubaLaws) -> Check {
     let mut check = Check::new(
         "laws.mitsuba.fresnel_dielectric",
-        "Dielectric Fresnel R, R_s, R_p, both sides, normal to grazing, TIR",
+        [
+            "Dielectric Fresnel R, R_s, R_p, both sides, normal to grazing, TIR",
+            "Dielektrikum Fresnel-egyenletei: R, R_s, R_p, mindkét oldalról, merőlegestől súrolóig, teljes visszaverődéssel",
+        ],
         &reference.version(),
-        &format!(
+        [&format!(
             "ours within {OURS_ULPS} f32 ulps of exact; Mitsuba beyond {MITSUBA_ABS:.1e} of exact is a finding; ours and Mitsuba within {GROSS_ABS:e}"
-        ),
+        ), &format!("a miénk legfeljebb {OURS_ULPS} f32 ulp-re a pontostól; a Mitsuba {MITSUBA_ABS:.1e} fölötti eltérése a pontostól megállapítás; a miénk és a Mitsubáé legfeljebb {GROSS_ABS:e} eltéréssel")],
     );
     for case in &reference.dielectric {
         let ours = (laws.dielectric)(case.cos_i as f32, case.eta as f32);
@@ -125,11 +137,14 @@ pub fn check_dielectric(laws: &Laws, reference: &MitsubaLaws) -> Check {
 pub fn check_conductor(laws: &Laws, reference: &MitsubaLaws) -> Check {
     let mut check = Check::new(
         "laws.mitsuba.fresnel_conductor",
-        "Conductor Fresnel R, R_s, R_p (n + iκ), normal to grazing",
+        [
+            "Conductor Fresnel R, R_s, R_p (n + iκ), normal to grazing",
+            "Vezető Fresnel-egyenletei: R, R_s, R_p (n + iκ), merőlegestől súrolóig",
+        ],
         &reference.version(),
-        &format!(
+        [&format!(
             "ours within {OURS_ULPS} f32 ulps of exact; Mitsuba beyond {MITSUBA_ABS:.1e} of exact is a finding; ours and Mitsuba within {GROSS_ABS:e}"
-        ),
+        ), &format!("a miénk legfeljebb {OURS_ULPS} f32 ulp-re a pontostól; a Mitsuba {MITSUBA_ABS:.1e} fölötti eltérése a pontostól megállapítás; a miénk és a Mitsubáé legfeljebb {GROSS_ABS:e} eltéréssel")],
     );
     for case in &reference.conductor {
         let ours = (laws.conductor)(case.cos_i as f32, case.n as f32, case.kappa as f32);
@@ -149,20 +164,29 @@ pub fn check_conductor(laws: &Laws, reference: &MitsubaLaws) -> Check {
 
 /// The findings of a law check in one sentence: how far Mitsuba's float32
 /// `law` strays from the exact law at worst, and where.
-fn mitsuba_gist(check: &Check, law: &str) -> String {
+fn mitsuba_gist(check: &Check, law: &str) -> [String; 2] {
     let worst = ["R", "R_s", "R_p"]
         .iter()
         .filter_map(|q| check.worst(&format!("{q}: |Mitsuba − exact|")))
         .max_by(|a, b| a.worst.total_cmp(&b.worst));
+    let n = check.findings.len();
     match worst {
-        Some(m) => format!(
-            "Mitsuba's float32 `{law}` departs from the exact law by up to {:.1e}, at {} \
-             ({} values beyond {MITSUBA_ABS:.1e}).",
-            m.worst,
-            m.at,
-            check.findings.len()
-        ),
-        None => format!("Mitsuba's float32 `{law}` departs from the exact law."),
+        Some(m) => [
+            format!(
+                "Mitsuba's float32 `{law}` departs from the exact law by up to {:.1e}, at {} \
+                 ({n} values beyond {MITSUBA_ABS:.1e}).",
+                m.worst, m.at
+            ),
+            format!(
+                "A Mitsuba float32 `{law}` függvénye legfeljebb {:.1e} eltéréssel tér el a pontos \
+                 törvénytől, itt: `{}` ({n} érték {MITSUBA_ABS:.1e} fölött).",
+                m.worst, m.at
+            ),
+        ],
+        None => [
+            format!("Mitsuba's float32 `{law}` departs from the exact law."),
+            format!("A Mitsuba float32 `{law}` függvénye eltér a pontos törvénytől."),
+        ],
     }
 }
 
@@ -171,15 +195,22 @@ fn mitsuba_gist(check: &Check, law: &str) -> String {
 pub fn check_schlick(laws: &Laws, reference: &MitsubaLaws) -> Check {
     let mut check = Check::new(
         "laws.mpmath.schlick",
-        "Schlick's approximation F0 + (1 − F0)(1 − cos)⁵ against its definition",
+        [
+            "Schlick's approximation F0 + (1 − F0)(1 − cos)⁵ against its definition",
+            "A Schlick-közelítés, F0 + (1 − F0)(1 − cos)⁵, a definíciójához mérve",
+        ],
         "mpmath, 50 digits",
-        &format!("within {OURS_ULPS} f32 ulps: five products and a sum, each rounded once"),
+        [&format!("within {OURS_ULPS} f32 ulps: five products and a sum, each rounded once"), &format!("legfeljebb {OURS_ULPS} f32 ulp: öt szorzat és egy összeg, mindegyik egyszer kerekítve")],
     );
     for case in &reference.schlick {
         let ours: f64 = (laws.schlick)(case.cos_i as f32, case.f0 as f32).into();
         let ulps = ulps_f32(ours, case.exact);
         check.cases += 1;
-        check.measure("|ours − exact| (f32 ulps)", ulps, &case.label);
+        check.measure_in_both(
+            ["|ours − exact| (f32 ulps)", "|miénk − pontos| (f32 ulps)"],
+            ulps,
+            &case.label,
+        );
         if !(ulps <= OURS_ULPS) {
             check.fail(format!(
                 "{}: ours {ours:e}, exact {:e} ({ulps:.1} ulps)",

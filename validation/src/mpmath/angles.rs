@@ -34,14 +34,17 @@ pub fn transmitted_angle_bound_ulps(cond_theta: f64) -> f64 {
 pub fn check_angles(laws: &Laws, laws64: &Laws64, reference: &FresnelMpmath) -> Check {
     let mut check = Check::new(
         "laws.mpmath.angles",
-        "Snell's law for angles, the critical and Brewster angles, in f64 and f32",
+        [
+            "Snell's law for angles, the critical and Brewster angles, in f64 and f32",
+            "A Snellius–Descartes-törvény a szögekre, a határszög és a Brewster-szög, f64-ben és f32-ben",
+        ],
         &format!("mpmath {}, 50 digits", reference.mpmath_version),
-        &format!(
+        [&format!(
             "transmitted_angle within {BOUND_ULPS} + (8/π)·cond_θ ulps of the tier, cond_θ its \
              condition number over θ_i (the law reads a sine or cosine of θ_i, rounded once), \
              and the same decision on total internal reflection; critical_angle and \
              brewster_angle within {BOUND_ULPS} ulps"
-        ),
+        ), &format!("transmitted_angle legfeljebb {BOUND_ULPS} + (8/π)·cond_θ ulp-re a szint szerint, ahol cond_θ a θ_i szerinti kondíciószáma (a törvény θ_i szinuszát vagy koszinuszát olvassa, egyszer kerekítve), és ugyanaz a döntés a teljes visszaverődésről; critical_angle és brewster_angle legfeljebb {BOUND_ULPS} ulp-re")],
     );
     for (tier, cases) in reference.angles.by_tier() {
         for case in cases {
@@ -66,11 +69,8 @@ pub fn check_angles(laws: &Laws, laws64: &Laws64, reference: &FresnelMpmath) -> 
                     let bound = transmitted_angle_bound_ulps(case.cond_theta);
                     let ulps = measure(&mut check, tier, &case.law, &case.label, got, exact);
                     let conditioned = ulps / (1.0 + case.cond_theta);
-                    check.measure(
-                        &format!("{tier} {} (ulps / (1 + cond_θ))", case.law),
-                        conditioned,
-                        &case.label,
-                    );
+                    let name = format!("{tier} {} (ulps / (1 + cond_θ))", case.law);
+                    check.measure_in_both([&name, &name], conditioned, &case.label);
                     if !(ulps <= bound) {
                         check.fail(format!(
                             "{tier} {} at {}: got {got:e}, exact {:e} ({ulps:.1} ulps, bound {bound:.1})",

@@ -19,12 +19,15 @@ fn widen(f: DielectricFresnel<f32>) -> [f64; 4] {
 pub fn check_dielectric(laws: &Laws, laws64: &Laws64, reference: &FresnelMpmath) -> Check {
     let mut check = Check::new(
         "laws.mpmath.fresnel_dielectric",
-        "Dielectric Fresnel R_s, R_p, R, T in f64 and f32, extremes included",
+        [
+            "Dielectric Fresnel R_s, R_p, R, T in f64 and f32, extremes included",
+            "Dielektrikum Fresnel-egyenletei: R_s, R_p, R, T f64-ben és f32-ben, a szélsőségekkel együtt",
+        ],
         &format!("mpmath {}, 50 digits", reference.mpmath_version),
-        &format!(
+        [&format!(
             "within {DIELECTRIC_F64_BOUND_ULPS} ulps in f64 and {BOUND_ULPS} in f32: a handful of \
              roundings from correctly rounded, doubled in R_p's square"
-        ),
+        ), &format!("legfeljebb {DIELECTRIC_F64_BOUND_ULPS} ulp f64-ben és {BOUND_ULPS} f32-ben: néhány kerekítés a helyesen kerekítettől, R_p négyzetében megkétszerezve")],
     );
     for (tier, cases) in reference.dielectric.by_tier() {
         for case in cases {
@@ -60,11 +63,14 @@ pub fn check_dielectric(laws: &Laws, laws64: &Laws64, reference: &FresnelMpmath)
 pub fn check_conductor(laws: &Laws, laws64: &Laws64, reference: &FresnelMpmath) -> Check {
     let mut check = Check::new(
         "laws.mpmath.fresnel_conductor",
-        "Conductor Fresnel R_s, R_p, R in f64 and f32, extremes included",
+        [
+            "Conductor Fresnel R_s, R_p, R in f64 and f32, extremes included",
+            "Vezető Fresnel-egyenletei: R_s, R_p, R f64-ben és f32-ben, a szélsőségekkel együtt",
+        ],
         &format!("mpmath {}, 50 digits", reference.mpmath_version),
-        &format!(
+        [&format!(
             "within {CONDUCTOR_BOUND_ULPS} ulps of the tier: about ten roundings, squared in R_p"
-        ),
+        ), &format!("legfeljebb {CONDUCTOR_BOUND_ULPS} ulp a szint szerint: nagyjából tíz kerekítés, R_p-ben négyzetre emelve")],
     );
     for (tier, cases) in reference.conductor.by_tier() {
         for case in cases {

@@ -23,8 +23,16 @@ pub(super) fn measure(
     } else {
         err / (exact.0 + exact.1).abs()
     };
-    check.measure(&format!("{tier} {quantity} (ulps)"), ulps, label);
-    check.measure(&format!("{tier} {quantity} (relative)"), relative, label);
+    let ulps_name = format!("{tier} {quantity} (ulps)");
+    check.measure_in_both([&ulps_name, &ulps_name], ulps, label);
+    check.measure_in_both(
+        [
+            &format!("{tier} {quantity} (relative)"),
+            &format!("{tier} {quantity} (relatív)"),
+        ],
+        relative,
+        label,
+    );
     ulps
 }
 
@@ -75,7 +83,7 @@ mod tests {
             f64::EPSILON / 2.0
         );
         assert_eq!(Exact(-1.0, -f64::EPSILON / 8.0).ulp("f64"), f64::EPSILON);
-        let mut check = Check::new("t", "t", "t", "t");
+        let mut check = Check::new("t", ["t", "t"], "t", ["t", "t"]);
         compare(
             &mut check,
             "f64",

@@ -3,6 +3,7 @@
 use std::path::PathBuf;
 
 use crate::checkout::Checkout;
+use record::Lang;
 
 /// Random cases of each law that Mitsuba evaluates: reduced set, full set.
 pub const RANDOM_CASES: [usize; 2] = [300, 3000];
@@ -25,6 +26,9 @@ pub struct Options {
     pub seed: u64,
     /// The command line recorded in the report.
     pub command: String,
+    /// The language `report.html` is written in (`report.json` is the
+    /// same in either).
+    pub lang: Lang,
 }
 
 /// The Python environment the references come from.
@@ -38,7 +42,7 @@ pub struct PythonOptions {
 
 impl Options {
     /// The reduced set against `checkout`'s committed references, no Python,
-    /// seed 1, the report in the checkout's `validation/out`.
+    /// seed 1, the report in the checkout's `validation/out`, in English.
     pub fn quick(checkout: Checkout, command: &str) -> Self {
         Self {
             checkout,
@@ -47,6 +51,7 @@ impl Options {
             python: None,
             seed: 1,
             command: command.to_owned(),
+            lang: Lang::En,
         }
     }
 }

@@ -81,9 +81,12 @@ pub(super) fn figures_or_report(
         Err(error) => {
             let mut check = Check::new(
                 "report.figures",
-                "The report's figures, drawn by python-checks/plot_report.py",
+                [
+                    "The report's figures, drawn by python-checks/plot_report.py",
+                    "A jelentés ábrái, a python-checks/plot_report.py rajzolja",
+                ],
                 "matplotlib",
-                "the script succeeds",
+                ["the script succeeds", "a szkript sikeresen lefut"],
             );
             check.cases = 1;
             check.fail(error.to_string());

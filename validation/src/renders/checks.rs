@@ -119,9 +119,12 @@ fn stale_scene(checkout: &Path, s: &SceneRenders, regenerate: &str) -> Option<St
 fn failed_render(name: &str, integrator: &str, error: String) -> Compared {
     let mut check = Check::new(
         &format!("renders.mitsuba.{name}.{integrator}"),
-        &format!("{name}: the tracer's {integrator} render"),
+        [
+            &format!("{name}: the tracer's {integrator} render"),
+            &format!("{name}: a sugárkövető {integrator} képe"),
+        ],
         "Mitsuba 3 (mitsuba_renders.json)",
-        "the render succeeds",
+        ["the render succeeds", "a kép sikeresen elkészül"],
     );
     check.cases = 1;
     check.fail(format!("the render failed: {error}"));

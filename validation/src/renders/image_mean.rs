@@ -71,7 +71,7 @@ pub(super) fn judge(
         let Some(w) = statistics::welch(a, b) else {
             continue;
         };
-        check.measure("image mean |t|", w.t.abs(), channel);
+        check.measure_in_both(["image mean |t|", "képátlag |t|"], w.t.abs(), channel);
         let standard_error = ((a.variance / a.count) + (b.variance / b.count)).sqrt();
         let critical = statistics::student_t_critical(threshold, w.dof.floor().max(1.0))
             .unwrap_or(f64::INFINITY);

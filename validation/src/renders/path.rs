@@ -75,8 +75,11 @@ pub fn compare_path(
     check.cases = compared / 3;
     record_metrics(&mut check, &sides, &tests, &verdicts, deterministic.len());
     let pixels = (scene.width * scene.height) as f64;
-    check.measure(
-        "compared pixel fraction",
+    check.measure_in_both(
+        [
+            "compared pixel fraction",
+            "összehasonlított képpontok aránya",
+        ],
         compared as f64 / 3.0 / pixels,
         "",
     );
@@ -87,8 +90,11 @@ pub fn compare_path(
         verdicts.threshold,
         image.least_shift,
     );
-    check.measure(
-        "mean |mean ours − mean Mitsuba|, W/(sr m²)",
+    check.measure_in_both(
+        [
+            "mean |mean ours − mean Mitsuba|, W/(sr m²)",
+            "|miénk átlaga − Mitsuba átlaga| átlaga, W/(sr m²)",
+        ],
         sum / compared.max(1) as f64,
         "",
     );
@@ -101,15 +107,18 @@ pub fn compare_path(
 fn new_check(name: &str) -> Check {
     Check::new(
         &format!("renders.mitsuba.{name}.path"),
-        &format!("{name}: the tracer's path against Mitsuba's path integrator, per-pixel Welch t-test"),
+        [
+            &format!("{name}: the tracer's path against Mitsuba's path integrator, per-pixel Welch t-test"),
+            &format!("{name}: a sugárkövető útkövetése a Mitsuba útkövető integrátorához mérve, képpontonkénti Welch-féle t-próba"),
+        ],
         "Mitsuba 3 path integrator through mi.render (scalar_rgb), box filter (mitsuba_renders.json)",
-        &format!(
+        [&format!(
             "a pixel-channel fails when p < α/m, α = {ALPHA} over the m t-tests (Bonferroni: one correct \
              render in {:.0} fails by chance), and its means differ by more than the Whitted tolerance \
              {TOLERANCE_ABSOLUTE:e} + {TOLERANCE_RELATIVE:e} · |Mitsuba| (float32 differences, which no \
              number of samples removes); every pixel, both sides box filtered",
             1.0 / ALPHA
-        ),
+        ), &format!("egy képpont-csatorna hibás, ha p < α/m, α = {ALPHA} az m t-próbán (Bonferroni: {:.0} helyes képből egy véletlenül elbukik), és átlagai jobban eltérnek a Whitted-féle tűrésnél, {TOLERANCE_ABSOLUTE:e} + {TOLERANCE_RELATIVE:e} · |Mitsuba| (float32-eltérések, amelyeket semennyi minta nem tüntet el); minden képpont, mindkét oldal dobozszűrővel", 1.0 / ALPHA)],
     )
 }
 
@@ -133,15 +142,23 @@ fn record_findings(check: &mut Check, name: &str, verdicts: &Verdicts) {
         ));
     }
     check.sum_up(|c| {
-        format!(
-            "In {name}, Mitsuba's path render departs from ours only where its own ray offsets \
-             move light: {} pixel-channels and {} of the image's mean channels, each explained \
-             by those offsets.",
-            verdicts.offset_findings + verdicts.rule_findings,
-            c.findings
-                .iter()
-                .filter(|f| f.starts_with("the image's mean"))
-                .count()
-        )
+        let pixels = verdicts.offset_findings + verdicts.rule_findings;
+        let means = c
+            .findings
+            .iter()
+            .filter(|f| f.starts_with("the image's mean"))
+            .count();
+        [
+            format!(
+                "In {name}, Mitsuba's path render departs from ours only where its own ray offsets \
+                 move light: {pixels} pixel-channels and {means} of the image's mean channels, each \
+                 explained by those offsets."
+            ),
+            format!(
+                "A `{name}` jelenetben a Mitsuba útkövetéses képe csak ott tér el a miénktől, ahol \
+                 a saját sugáreltolásai fényt mozdítanak el: {pixels} képpont-csatorna és a kép \
+                 {means} átlagos csatornája, mindegyiket ezek az eltolások magyarázzák."
+            ),
+        ]
     });
 }

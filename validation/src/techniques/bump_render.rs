@@ -47,6 +47,26 @@ fn same_bits(a: glam::Vec3, b: glam::Vec3) -> bool {
     a.to_array().map(f32::to_bits) == b.to_array().map(f32::to_bits)
 }
 
+/// What a bump render measures, in English and in Hungarian.
+const QUANTITIES: [[&str; 2]; 4] = [
+    [
+        "flat field: pixels changed",
+        "sík mező: megváltozott képpontok",
+    ],
+    [
+        "silhouette: pixels whose first object changed",
+        "körvonal: képpontok, amelyeknek első tárgya megváltozott",
+    ],
+    [
+        "off the bumped sphere: pixels changed",
+        "a buckás gömbön kívül: megváltozott képpontok",
+    ],
+    [
+        "on the bumped sphere: share of pixels changed",
+        "a buckás gömbön: a megváltozott képpontok aránya",
+    ],
+];
+
 /// The bump-mapped scene against the same scene smooth: a flat field
 /// renders bit for bit as none; which object each pixel sees (the
 /// silhouettes) is the same to the pixel; the shading changes on the
@@ -62,12 +82,15 @@ pub fn check_bump_render(
 ) -> Check {
     let mut check = Check::new(
         "techniques.bump.render",
-        "Bump mapping in a render: shading changes, silhouettes and shadows do not",
+        [
+            "Bump mapping in a render: shading changes, silhouettes and shadows do not",
+            "Buckaleképzés egy képen: az árnyalás változik, a körvonalak és az árnyékok nem",
+        ],
         "the same scene without its bump field (Whitted, bump_sphere.json)",
-        &format!(
+        [&format!(
             "exact: a flat field changes no bit, the first object seen changes at no pixel, no \
              pixel off the bumped sphere changes; more than {CHANGED_SHARE:.3} of the bumped sphere's pixels change"
-        ),
+        ), &format!("pontos: egy sík mező egyetlen bitet sem változtat, az elsőként látott tárgy egy képpontban sem változik, a buckás gömbön kívül egy képpont sem változik; a buckás gömb képpontjainak több mint {CHANGED_SHARE:.3} része megváltozik")],
     );
     let (smooth, smooth_hits) = render(&with_bumps(scene, None));
     let (flat, _) = render(&with_bumps(scene, Some(HeightField::Flat)));
@@ -96,16 +119,15 @@ pub fn check_bump_render(
         }
     }
     let share = changed_on as f64 / on.max(1) as f64;
-    for (name, value) in [
-        ("flat field: pixels changed", flat_changed as f64),
-        (
-            "silhouette: pixels whose first object changed",
-            outline_moved as f64,
-        ),
-        ("off the bumped sphere: pixels changed", changed_off as f64),
-        ("on the bumped sphere: share of pixels changed", share),
-    ] {
-        check.measure(name, value, &format!("{} × {}", scene.width, scene.height));
+    let values = [
+        flat_changed as f64,
+        outline_moved as f64,
+        changed_off as f64,
+        share,
+    ];
+    let at = format!("{} × {}", scene.width, scene.height);
+    for (name, value) in QUANTITIES.into_iter().zip(values) {
+        check.measure_in_both(name, value, &at);
     }
     if flat_changed > 0 {
         check.fail(format!("a flat field changes {flat_changed} pixels"));

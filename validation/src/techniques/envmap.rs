@@ -27,11 +27,14 @@ pub fn sphere_round_trip(m: f64) -> f64 {
 pub fn check_envmap() -> Check {
     let mut check = Check::new(
         "techniques.envmap.round_trip",
-        "Environment maps (lat-long, cube, sphere): a direction back from its texel",
+        [
+            "Environment maps (lat-long, cube, sphere): a direction back from its texel",
+            "Környezeti térképek (lat-long, kocka, gömb): egy irány vissza a texeléből",
+        ],
         "the direction itself; the slides' cube-map example worked by hand (−Z, u = 29/42, v = 11/56)",
-        &format!(
+        [&format!(
             "{ENVMAP_ROUND_TRIP:.2e} rad (lat-long, cube), 32 ε / m rad up to 4 √ε (sphere, m = |r + e|), the example to 4 ε"
-        ),
+        ), &format!("{ENVMAP_ROUND_TRIP:.2e} rad (lat-long, kocka), 32 ε / m rad legfeljebb 4 √ε-ig (gömb, m = |r + e|), a példa 4 ε-ig")],
     );
     for v in directions() {
         let Ok(r) = Direction::new(v) else {
@@ -92,12 +95,26 @@ fn angle(a: Direction, b: Direction) -> f64 {
 fn lat_long_and_cube_back(check: &mut Check, r: Direction, at: &str) {
     let lat = LatLong::from_direction(r);
     match LatLong::from_uv(lat.u(), lat.v()) {
-        Ok(back) => check.measure("lat-long: angle back (rad)", angle(r, back.direction()), at),
+        Ok(back) => check.measure_in_both(
+            [
+                "lat-long: angle back (rad)",
+                "lat-long: a visszakapott irány szöge (rad)",
+            ],
+            angle(r, back.direction()),
+            at,
+        ),
         Err(e) => check.fail(format!("lat-long {at}: its own texel refused: {e:?}")),
     }
     let cube = CubeTexel::from_direction(r);
     match CubeTexel::from_uv(cube.face(), cube.u(), cube.v()) {
-        Ok(back) => check.measure("cube: angle back (rad)", angle(r, back.direction()), at),
+        Ok(back) => check.measure_in_both(
+            [
+                "cube: angle back (rad)",
+                "kocka: a visszakapott irány szöge (rad)",
+            ],
+            angle(r, back.direction()),
+            at,
+        ),
         Err(e) => check.fail(format!("cube {at}: its own texel refused: {e:?}")),
     }
 }
@@ -109,7 +126,14 @@ fn sphere_back(check: &mut Check, r: Direction, at: &str) {
         SphereTexel::Disc(texel) => match SphereTexel::from_uv(texel.u(), texel.v()) {
             Ok(back) => {
                 let off = angle(r, back.direction());
-                check.measure("sphere: angle back (rad)", off, at);
+                check.measure_in_both(
+                    [
+                        "sphere: angle back (rad)",
+                        "gömb: a visszakapott irány szöge (rad)",
+                    ],
+                    off,
+                    at,
+                );
                 if !(off <= sphere_round_trip(texel.m())) {
                     check.fail(format!(
                         "sphere: {at} comes back {off:e} rad off (m = {})",
@@ -139,8 +163,11 @@ fn slides_example(check: &mut Check) {
     let off = (example.u() - 29.0 / 42.0)
         .abs()
         .max((example.v() - 11.0 / 56.0).abs());
-    check.measure(
-        "the slides' example: |uv − worked by hand|",
+    check.measure_in_both(
+        [
+            "the slides' example: |uv − worked by hand|",
+            "a diák példája: |uv − kézzel számolt|",
+        ],
         off,
         "(−3.2, 5.1, −8.4)",
     );

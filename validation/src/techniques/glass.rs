@@ -25,9 +25,15 @@ pub const DATA_SHEET_ABS: f64 = 5e-6;
 pub fn check_sellmeier(glass: &Sellmeier) -> Check {
     let mut check = Check::new(
         "techniques.dispersion.n_bk7",
-        "N-BK7's refractive index by the Sellmeier equation at the Fraunhofer lines",
+        [
+            "N-BK7's refractive index by the Sellmeier equation at the Fraunhofer lines",
+            "Az N-BK7 törésmutatója a Sellmeier-egyenletből a Fraunhofer-vonalaknál",
+        ],
         "Schott's N-BK7 data sheet (five printed decimals)",
-        &format!("within {DATA_SHEET_ABS:e}, half a unit in the last printed digit"),
+        [
+            &format!("within {DATA_SHEET_ABS:e}, half a unit in the last printed digit"),
+            &format!("legfeljebb {DATA_SHEET_ABS:e}, fél egység az utolsó nyomtatott jegyben"),
+        ],
     );
     for (line, nm, printed) in N_BK7_DATA_SHEET {
         check.cases += 1;
@@ -36,7 +42,11 @@ pub fn check_sellmeier(glass: &Sellmeier) -> Check {
             continue;
         };
         let err = (n - printed).abs();
-        check.measure("|Sellmeier − data sheet|", err, &format!("{line}, {nm} nm"));
+        check.measure_in_both(
+            ["|Sellmeier − data sheet|", "|Sellmeier − adatlap|"],
+            err,
+            &format!("{line}, {nm} nm"),
+        );
         if !(err <= DATA_SHEET_ABS) {
             check.fail(format!(
                 "{line} ({nm} nm): {n:.7}, the data sheet {printed}"
@@ -57,9 +67,12 @@ pub const PRISM_ABS: f64 = 1e-12;
 pub fn check_prism(glass: &Sellmeier) -> Check {
     let mut check = Check::new(
         "techniques.dispersion.prism",
-        "A 60° prism: the traced deviation at symmetric incidence is the analytic minimum deviation",
+        [
+            "A 60° prism: the traced deviation at symmetric incidence is the analytic minimum deviation",
+            "Egy 60°-os prizma: a szimmetrikus beesésnél követett eltérítés az analitikus legkisebb eltérítés",
+        ],
         "δ_min = 2 asin(n sin(A/2)) − A (Snell's law at both faces of a symmetric passage)",
-        &format!("within {PRISM_ABS:e} rad; any other incidence deviates more"),
+        [&format!("within {PRISM_ABS:e} rad; any other incidence deviates more"), &format!("legfeljebb {PRISM_ABS:e} rad; minden más beesés jobban eltérít")],
     );
     let prism = Prism::new(60f64.to_radians()).expect("60° is an apex angle");
     let deviation = |n: f64, theta: f64| match prism.trace(n, theta) {
@@ -82,7 +95,11 @@ pub fn check_prism(glass: &Sellmeier) -> Check {
             check.fail(format!("{at}: the symmetric ray does not emerge"));
             continue;
         };
-        check.measure("|traced − analytic| (rad)", (traced - analytic).abs(), &at);
+        check.measure_in_both(
+            ["|traced − analytic| (rad)", "|követett − analitikus| (rad)"],
+            (traced - analytic).abs(),
+            &at,
+        );
         if !((traced - analytic).abs() <= PRISM_ABS) {
             check.fail(format!("{at}: traced {traced}, analytic {analytic}"));
         }
@@ -97,8 +114,11 @@ pub fn check_prism(glass: &Sellmeier) -> Check {
     let spread = [fraunhofer_nm::F, fraunhofer_nm::C]
         .map(|nm| glass.index_at(nm).and_then(|n| prism.minimum_deviation(n)));
     if let [Some(f), Some(c)] = spread {
-        check.measure(
-            "F − C spread of the minimum deviation (°)",
+        check.measure_in_both(
+            [
+                "F − C spread of the minimum deviation (°)",
+                "a legkisebb eltérítés F − C szórása (°)",
+            ],
             (f - c).to_degrees(),
             "",
         );
@@ -114,6 +134,13 @@ pub fn check_prism(glass: &Sellmeier) -> Check {
 /// comes back as linear sRGB (0.99992, 1.00009, 0.99998).
 pub const FLAT_SPECTRUM_RELATIVE: f64 = 2e-4;
 
+/// How far the spectral render departs from the single-index one off
+/// the sphere, in English and in Hungarian.
+const AWAY: [&str; 2] = [
+    "away from the sphere: |spectral − one index|, relative",
+    "a gömbön kívül: |spektrális − egy törésmutató|, relatív",
+];
+
 /// A glass sphere of N-BK7 rendered with dispersion
 /// ([`dispersion`]): the three etas and one index measured against the
 /// spectral answer; the three etas must come closer than one index (a
@@ -125,12 +152,15 @@ pub const FLAT_SPECTRUM_RELATIVE: f64 = 2e-4;
 pub fn check_dispersion_render(three: fn(&tracer::scene::Scene) -> tracer::render::Image) -> Check {
     let mut check = Check::new(
         "techniques.dispersion.sphere",
-        "A glass sphere of N-BK7: the slides' three etas and one index against the spectral render",
+        [
+            "A glass sphere of N-BK7: the slides' three etas and one index against the spectral render",
+            "N-BK7 üveggömb: a diák három eta-értéke és egyetlen törésmutatója a spektrális képhez mérve",
+        ],
         "85 Whitted renders at the Sellmeier index, integrated with the CIE 1931 tables under D65",
-        &format!(
+        [&format!(
             "the three etas closer than one index in ΔE2000 mean and relative RMSE; away from the \
              sphere the spectral render equals the single-index one within {FLAT_SPECTRUM_RELATIVE:e}, relative"
-        ),
+        ), &format!("a három eta közelebb, mint egy törésmutató, ΔE2000 átlagban és relatív négyzetes középhibában; a gömbön kívül a spektrális kép legfeljebb {FLAT_SPECTRUM_RELATIVE:e} relatív eltéréssel egyezik az egy törésmutatós képpel")],
     );
     let r = dispersion::renders_with(three);
     check.cases = r.sphere.len();
@@ -138,21 +168,35 @@ pub fn check_dispersion_render(three: fn(&tracer::scene::Scene) -> tracer::rende
         dispersion::measures(&r.three, &r),
         dispersion::measures(&r.single, &r),
     );
-    for (what, e) in [("three etas", three), ("one index", one)] {
-        check.measure(
-            &format!("{what}: ΔE2000 mean"),
+    let kinds = [
+        (["three etas", "három eta"], three),
+        (["one index", "egy törésmutató"], one),
+    ];
+    for ([what, what_hu], e) in kinds {
+        let at = "the sphere's pixels";
+        check.measure_in_both(
+            [
+                &format!("{what}: ΔE2000 mean"),
+                &format!("{what_hu}: ΔE2000 átlag"),
+            ],
             e.delta_e_mean,
-            "the sphere's pixels",
+            at,
         );
-        check.measure(
-            &format!("{what}: ΔE2000 p99"),
+        check.measure_in_both(
+            [
+                &format!("{what}: ΔE2000 p99"),
+                &format!("{what_hu}: ΔE2000 p99"),
+            ],
             e.delta_e_p99,
-            "the sphere's pixels",
+            at,
         );
-        check.measure(
-            &format!("{what}: relative RMSE"),
+        check.measure_in_both(
+            [
+                &format!("{what}: relative RMSE"),
+                &format!("{what_hu}: relatív négyzetes középhiba"),
+            ],
             e.rel_rmse,
-            "the sphere's pixels",
+            at,
         );
     }
     if !(three.delta_e_mean < one.delta_e_mean && three.rel_rmse < one.rel_rmse) {
@@ -167,13 +211,9 @@ pub fn check_dispersion_render(three: fn(&tracer::scene::Scene) -> tracer::rende
             r.single.pixels[p].as_dvec3(),
         );
         let off = (a - b).abs().max_element() / b.abs().max_element().max(1e-3);
-        check.measure_at(
-            "away from the sphere: |spectral − one index|, relative",
-            off,
-            || format!("pixel {p}"),
-        );
+        check.measure_at_in_both(AWAY, off, || format!("pixel {p}"));
     }
-    if let Some(m) = check.worst("away from the sphere: |spectral − one index|, relative") {
+    if let Some(m) = check.worst(AWAY[0]) {
         if !(m.worst <= FLAT_SPECTRUM_RELATIVE) {
             check.fail(format!(
                 "{}: a flat spectrum comes back {:e} off",

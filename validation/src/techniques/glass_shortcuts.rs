@@ -131,11 +131,31 @@ fn off_sphere_changes(a: &Image, b: &Image, incidence: &[Option<f64>]) -> usize 
         .count()
 }
 
-/// `errors`' three numbers as measures of `check`, named `what`.
-fn record(check: &mut Check, what: &str, e: &Errors, at: &str) {
-    check.measure(&format!("{what}: relative RMSE"), e.rel_rmse, at);
-    check.measure(&format!("{what}: ΔE2000 mean"), e.delta_e_mean, at);
-    check.measure(&format!("{what}: ΔE2000 p99"), e.delta_e_p99, at);
+/// The pixels off the sphere a shortcut changed, a quantity of both checks.
+const OFF_SPHERE: [&str; 2] = [
+    "pixels off the sphere changed",
+    "megváltozott képpontok a gömbön kívül",
+];
+
+/// `errors`' three numbers as measures of `check`, named `what` in
+/// English and in Hungarian.
+fn record(check: &mut Check, [what, hu]: [&str; 2], e: &Errors, at: &str) {
+    let rmse = [
+        format!("{what}: relative RMSE"),
+        format!("{hu}: relatív négyzetes középhiba"),
+    ];
+    let mean = [
+        format!("{what}: ΔE2000 mean"),
+        format!("{hu}: ΔE2000 átlag"),
+    ];
+    let p99 = [format!("{what}: ΔE2000 p99"), format!("{hu}: ΔE2000 p99")];
+    for (name, value) in [
+        (rmse, e.rel_rmse),
+        (mean, e.delta_e_mean),
+        (p99, e.delta_e_p99),
+    ] {
+        check.measure_in_both([&name[0], &name[1]], value, at);
+    }
 }
 
 /// The band the cheap refraction's relative RMSE at the rim must fall in:
@@ -175,13 +195,16 @@ pub fn check_cheap_refraction_render(
     let (centre, rim) = RINGS;
     let mut check = Check::new(
         "techniques.refraction.render",
-        "The slides' cheap refraction (c = η − 1) rendered through a glass sphere against Snell's law",
+        [
+            "The slides' cheap refraction (c = η − 1) rendered through a glass sphere against Snell's law",
+            "A diák olcsó fénytörése (c = η − 1) üveggömbön át leképezve, a Snellius–Descartes-törvényhez mérve",
+        ],
         "the same tracer (Whitted) with Snell's refracted direction, the dispersion sphere at n_d",
-        &format!(
+        [&format!(
             "relative RMSE at most {CHEAP_CENTRE_RMSE} where sin θi < {centre}; expected to fail as \
              a shortcut at the rim (sin θi > {rim}): relative RMSE within [{lo}, {hi}]; no pixel off \
              the sphere changed"
-        ),
+        ), &format!("relatív négyzetes középhiba legfeljebb {CHEAP_CENTRE_RMSE}, ahol sin θi < {centre}; rövidítésként várhatóan elbukik a peremen (sin θi > {rim}): relatív négyzetes középhiba [{lo}, {hi}] között; a gömbön kívül egy képpont sem változik")],
     );
     let scene = glass_scene();
     let truth = render(&scene);
@@ -196,24 +219,24 @@ pub fn check_cheap_refraction_render(
     let e_outer = measures(&cheap, &truth, &outer);
     record(
         &mut check,
-        "sphere",
+        ["sphere", "gömb"],
         &e_whole,
         &format!("{} pixels", whole.count()),
     );
     record(
         &mut check,
-        "centre",
+        ["centre", "közép"],
         &e_inner,
         &format!("{} pixels", inner.count()),
     );
     record(
         &mut check,
-        "rim",
+        ["rim", "perem"],
         &e_outer,
         &format!("{} pixels", outer.count()),
     );
     let off = off_sphere_changes(&cheap, &truth, &incidence);
-    check.measure("pixels off the sphere changed", off as f64, "");
+    check.measure_in_both(OFF_SPHERE, off as f64, "");
     if e_inner.rel_rmse > CHEAP_CENTRE_RMSE {
         check.fail(format!(
             "at the centre the cheap refraction is {:.4} off (relative RMSE), above {CHEAP_CENTRE_RMSE}",
@@ -246,12 +269,15 @@ pub fn check_empirical_fresnel_render(
     let (lo, hi) = EMPIRICAL_RMSE;
     let mut check = Check::new(
         "techniques.empirical_fresnel.render",
-        "The slides' empirical Fresnel form, fitted to the glass, rendered on a glass sphere against the exact law",
+        [
+            "The slides' empirical Fresnel form, fitted to the glass, rendered on a glass sphere against the exact law",
+            "A diák empirikus Fresnel-alakja az üveghez illesztve, üveggömbön leképezve, a pontos törvényhez mérve",
+        ],
         "the same tracer (Whitted) with the exact Fresnel equations, the dispersion sphere at n_d",
-        &format!(
+        [&format!(
             "expected to show the fit's error: relative RMSE over the sphere within [{lo}, {hi}], \
              below Schlick's; no pixel off the sphere changed"
-        ),
+        ), &format!("várhatóan megmutatja az illesztés hibáját: a gömbön a relatív négyzetes középhiba [{lo}, {hi}] között, a Schlick-közelítésé alatt; a gömbön kívül egy képpont sem változik")],
     );
     let scene = glass_scene();
     let truth = render(&scene);
@@ -272,14 +298,15 @@ pub fn check_empirical_fresnel_render(
     let whole = ring(&incidence, 0.0..1.5);
     let at = format!("{} pixels", whole.count());
     let e = measures(&empirical, &truth, &whole);
-    record(&mut check, "fitted form", &e, &at);
+    record(&mut check, ["fitted form", "illesztett alak"], &e, &at);
     let s = measures(&schlick, &truth, &whole);
-    record(&mut check, &FresnelModel::SchlickRarer.to_string(), &s, &at);
-    check.measure("form: bias", form.bias, "");
-    check.measure("form: scale", form.scale, "");
-    check.measure("form: power", form.power, "");
+    let schlick_rarer = FresnelModel::SchlickRarer.to_string();
+    record(&mut check, [&schlick_rarer, &schlick_rarer], &s, &at);
+    check.measure_in_both(["form: bias", "alak: eltolás"], form.bias, "");
+    check.measure_in_both(["form: scale", "alak: skála"], form.scale, "");
+    check.measure_in_both(["form: power", "alak: kitevő"], form.power, "");
     let off = off_sphere_changes(&empirical, &truth, &incidence);
-    check.measure("pixels off the sphere changed", off as f64, "");
+    check.measure_in_both(OFF_SPHERE, off as f64, "");
     if !within(e.rel_rmse, EMPIRICAL_RMSE) {
         check.fail(format!(
             "the fitted form is {:.5} off (relative RMSE), outside [{lo}, {hi}]",

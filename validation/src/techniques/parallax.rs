@@ -64,6 +64,58 @@ pub struct DistanceCurve {
     pub fitted_exponent: f64,
 }
 
+/// Each distance's relative RMSE of the sweep named `[name, name_hu]`.
+fn record_rmse(check: &mut Check, [name, name_hu]: [&str; 2], rows: &[(f64, Errors)]) {
+    for (d, e) in rows {
+        let at = format!("{name}, d = {d}");
+        check.measure_in_both(
+            [
+                &format!("{name}: relative RMSE at d = {d}"),
+                &format!("{name_hu}: relatív négyzetes középhiba d = {d} esetén"),
+            ],
+            e.rel_rmse,
+            &at,
+        );
+    }
+}
+
+/// A sweep's surroundings ([`label`]) in Hungarian.
+fn label_hu(name: &str) -> &str {
+    match name {
+        "objects" => "tárgyak",
+        "sky" => "égbolt",
+        other => other,
+    }
+}
+
+/// What each sweep of [`SWEEPS`] is held to, in English and in Hungarian.
+fn distance_tolerance() -> [String; 2] {
+    let each = |s: &Sweep| {
+        let name = label(s.surroundings);
+        [
+            format!(
+                "{name}: falls at every doubling of d (relative RMSE and mean ΔE2000), RMSE ∝ d^p \
+                 with p = {} ± {}",
+                s.exponent, s.within
+            ),
+            format!(
+                "{}: csökken d minden duplázásánál (relatív négyzetes középhiba és ΔE2000 átlag), \
+                 középhiba ∝ d^p, p = {} ± {}",
+                label_hu(name),
+                s.exponent,
+                s.within
+            ),
+        ]
+    };
+    let all: Vec<[String; 2]> = SWEEPS.iter().map(each).collect();
+    [0, 1].map(|k| {
+        all.iter()
+            .map(|t| t[k].as_str())
+            .collect::<Vec<_>>()
+            .join("; ")
+    })
+}
+
 /// The mapped mirror against the traced one over each sweep of
 /// [`SWEEPS`], made by `compare` ([`one_sphere`] in the suite; a
 /// parameter, so that a wrong map can be shown to be caught): the error
@@ -76,21 +128,16 @@ pub fn check_distance(
 ) -> Check {
     let mut check = Check::new(
         "techniques.envmap.distance",
-        "Environment mapping against ray tracing: a mirror sphere's error as its surroundings move away",
+        [
+            "Environment mapping against ray tracing: a mirror sphere's error as its surroundings move away",
+            "Környezetleképzés a sugárkövetéshez mérve: egy tükörgömb hibája, ahogy a környezete távolodik",
+        ],
         "the same mirror traced among the same surroundings (Whitted); the map captured from its centre by the tracer (cube, 48² a face), 48 × 48 pixels",
-        &SWEEPS
-            .iter()
-            .map(|s| {
-                format!(
-                    "{}: falls at every doubling of d (relative RMSE and mean ΔE2000), RMSE ∝ d^p with p = {} ± {}",
-                    label(s.surroundings), s.exponent, s.within
-                )
-            })
-            .collect::<Vec<_>>()
-            .join("; "),
+        distance_tolerance().each_ref().map(String::as_str),
     );
     for sweep in SWEEPS {
         let name = label(sweep.surroundings);
+        let name_hu = label_hu(name);
         let rows: Vec<(f64, Errors)> = sweep
             .distances
             .iter()
@@ -108,14 +155,7 @@ pub fn check_distance(
             })
             .collect();
         check.cases += rows.len();
-        for (d, e) in &rows {
-            let at = format!("{name}, d = {d}");
-            check.measure(
-                &format!("{name}: relative RMSE at d = {d}"),
-                e.rel_rmse,
-                &at,
-            );
-        }
+        record_rmse(&mut check, [name, name_hu], &rows);
         for pair in rows.windows(2) {
             let ((d0, e0), (d1, e1)) = (pair[0], pair[1]);
             if !(e1.rel_rmse < e0.rel_rmse && e1.delta_e_mean < e0.delta_e_mean) {
@@ -127,7 +167,11 @@ pub fn check_distance(
         }
         let points: Vec<(f64, f64)> = rows.iter().map(|(d, e)| (*d, e.rel_rmse)).collect();
         let slope = log_log_slope(&points);
-        check.measure(&format!("{name}: fitted exponent of the RMSE"), slope, "");
+        let exponent = [
+            format!("{name}: fitted exponent of the RMSE"),
+            format!("{name_hu}: a középhiba illesztett kitevője"),
+        ];
+        check.measure_in_both([&exponent[0], &exponent[1]], slope, "");
         if !((slope - sweep.exponent).abs() <= sweep.within) {
             check.fail(format!(
                 "{name}: the RMSE falls as d^{slope:.3}, not d^({} ± {})",
@@ -166,12 +210,15 @@ pub fn check_self_reflection(
 ) -> Check {
     let mut check = Check::new(
         "techniques.envmap.self_reflection",
-        "Environment mapping against ray tracing: two mirrors side by side cannot show each other",
+        [
+            "Environment mapping against ray tracing: two mirrors side by side cannot show each other",
+            "Környezetleképzés a sugárkövetéshez mérve: két egymás melletti tükör nem mutathatja egymást",
+        ],
         "the pair traced (Whitted), each mirror's map captured from its centre; a lone mirror under the same sky",
-        &format!(
+        [&format!(
             "expected to fail as a shortcut: the pair's relative RMSE above {PAIR_RATIO} × a lone \
              mirror's, and a mean ΔE2000 above {SEEING_FLOOR} where each mirror shows the other"
-        ),
+        ), &format!("rövidítésként várhatóan elbukik: a pár relatív négyzetes középhibája nagyobb egy magányos tükörénél {PAIR_RATIO}-szer, és a ΔE2000 átlag {SEEING_FLOOR} fölött, ahol a tükrök egymást mutatják")],
     );
     let lone = one_sphere(Surroundings::Sky, PAIR_DISTANCE, RESOLUTION).errors;
     let c = pair(Surroundings::Sky, PAIR_DISTANCE, RESOLUTION);
@@ -183,8 +230,22 @@ pub fn check_self_reflection(
     ));
     check.cases = 2;
     let at = format!("sky at d = {PAIR_DISTANCE}");
-    check.measure("one mirror: relative RMSE", lone.rel_rmse, &at);
-    check.measure("two mirrors: relative RMSE", c.errors.rel_rmse, &at);
+    check.measure_in_both(
+        [
+            "one mirror: relative RMSE",
+            "egy tükör: relatív négyzetes középhiba",
+        ],
+        lone.rel_rmse,
+        &at,
+    );
+    check.measure_in_both(
+        [
+            "two mirrors: relative RMSE",
+            "két tükör: relatív négyzetes középhiba",
+        ],
+        c.errors.rel_rmse,
+        &at,
+    );
     if !(c.errors.rel_rmse > PAIR_RATIO * lone.rel_rmse) {
         check.fail(format!(
             "the pair's RMSE {:.4} is within {PAIR_RATIO} × a lone mirror's {:.4}",
@@ -194,13 +255,16 @@ pub fn check_self_reflection(
     match c.split {
         Some(split) if split.seeing_a_mirror_pixels > 0 => {
             let mean = split.seeing_a_mirror.delta_e_mean;
-            check.measure(
-                "where each shows the other: mean ΔE2000",
+            check.measure_in_both(
+                [
+                    "where each shows the other: mean ΔE2000",
+                    "ahol egymást mutatják: ΔE2000 átlag",
+                ],
                 mean,
                 &format!("{} px", split.seeing_a_mirror_pixels),
             );
-            check.measure(
-                "elsewhere: mean ΔE2000",
+            check.measure_in_both(
+                ["elsewhere: mean ΔE2000", "máshol: ΔE2000 átlag"],
                 split.elsewhere.delta_e_mean,
                 &format!("{} px", split.elsewhere_pixels),
             );

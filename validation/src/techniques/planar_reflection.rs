@@ -199,14 +199,17 @@ pub fn check_planar_reflection(
 ) -> Check {
     let mut check = Check::new(
         "techniques.planar.reflection_render",
-        "Planar reflection (the reflection matrix, two passes) against the traced mirror floor",
+        [
+            "Planar reflection (the reflection matrix, two passes) against the traced mirror floor",
+            "Síktükrözés (a tükrözési mátrix, két menet) a követett tükörpadlóhoz mérve",
+        ],
         "the same tracer (Whitted) with the floor a conductor, every reflected ray traced",
-        &format!(
+        [&format!(
             "weighted by the exact Fresnel law, the mirrored pass within {GEOMETRY_RELATIVE:e} \
              (relative) of the truth at all but {GEOMETRY_EDGE_SHARE} of the mirror's pixels; \
              expected to fail as a shortcut: the object below the floor shows at more than \
              {PHANTOM_FLOOR} pixels; pixels disagree beyond {CODES} displayed codes"
-        ),
+        ), &format!("a pontos Fresnel-törvénnyel súlyozva a tükrözött menet legfeljebb {GEOMETRY_RELATIVE:e} (relatív) eltéréssel egyezik a pontos képpel a tükör képpontjain, legfeljebb {GEOMETRY_EDGE_SHARE} részük kivételével; rövidítésként várhatóan elbukik: a padló alatti tárgy több mint {PHANTOM_FLOOR} képpontban látszik; a képpontok több mint {CODES} megjelenített kóddal térnek el")],
     );
     let r = reflections(scene, m);
     figures.push(strip(
@@ -279,8 +282,11 @@ impl Disagreements {
                 r.fresnel_weighted.pixels[p].as_dvec3(),
             );
             let relative = (t - f).abs().max_element() / t.max_element().max(1e-3);
-            check.measure_at(
-                "mirror, Fresnel-weighted: |pass − traced| / traced",
+            check.measure_at_in_both(
+                [
+                    "mirror, Fresnel-weighted: |pass − traced| / traced",
+                    "tükör, Fresnel-súlyozva: |menet − követett| / követett",
+                ],
                 relative,
                 || format!("pixel {p}"),
             );
@@ -297,23 +303,35 @@ impl Disagreements {
 
     /// Measures each count, `at` naming the mirror's pixels.
     fn measure(&self, check: &mut Check, at: &str) {
-        check.measure(
-            "mirror, Fresnel-weighted: pixels beyond the rounding",
+        check.measure_in_both(
+            [
+                "mirror, Fresnel-weighted: pixels beyond the rounding",
+                "tükör, Fresnel-súlyozva: a kerekítésen túli képpontok",
+            ],
             self.off_geometry as f64,
             at,
         );
-        check.measure(
-            "pixels that disagree: the mirror's Fresnel",
+        check.measure_in_both(
+            [
+                "pixels that disagree: the mirror's Fresnel",
+                "eltérő képpontok: a tükör Fresnel-tagja",
+            ],
             self.fresnel as f64,
             at,
         );
-        check.measure(
-            "pixels that disagree: the object behind the plane",
+        check.measure_in_both(
+            [
+                "pixels that disagree: the object behind the plane",
+                "eltérő képpontok: a sík mögötti tárgy",
+            ],
             self.phantom as f64,
             at,
         );
-        check.measure(
-            "pixels that disagree: off the mirror",
+        check.measure_in_both(
+            [
+                "pixels that disagree: off the mirror",
+                "eltérő képpontok: a tükrön kívül",
+            ],
             self.elsewhere as f64,
             "",
         );
@@ -334,8 +352,19 @@ fn mirror_errors(check: &mut Check, r: &Reflections, at: &str) {
         &Truth::new(r.truth.clone(), 0.0, &mask),
         &mask,
     );
-    check.measure("mirror: relative RMSE", e.rel_rmse, at);
-    check.measure("mirror: mean ΔE2000", e.delta_e_mean, at);
+    check.measure_in_both(
+        [
+            "mirror: relative RMSE",
+            "tükör: relatív négyzetes középhiba",
+        ],
+        e.rel_rmse,
+        at,
+    );
+    check.measure_in_both(
+        ["mirror: mean ΔE2000", "tükör: ΔE2000 átlag"],
+        e.delta_e_mean,
+        at,
+    );
 }
 
 /// The reflection matrix of [`mirror_scene`]'s floor.

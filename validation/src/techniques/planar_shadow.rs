@@ -211,13 +211,16 @@ pub fn check_planar_shadow(
 ) -> Check {
     let mut check = Check::new(
         "techniques.planar.shadow_render",
-        "Projected planar shadows (the shadow matrix) against the traced shadows",
+        [
+            "Projected planar shadows (the shadow matrix) against the traced shadows",
+            "Síkra vetített árnyékok (az árnyékmátrix) a követett árnyékokhoz mérve",
+        ],
         "the same tracer (Whitted) with its shadow rays",
-        &format!(
+        [&format!(
             "on the floor all but {FLOOR_EDGE_SHARE} of the pixels agree (the shadows' edges); \
              expected to fail as a shortcut: more than {MISSED_FLOOR} pixels of an object in \
              another's shadow left lit; pixels disagree beyond {CODES} displayed codes"
-        ),
+        ), &format!("a padlón a képpontok legfeljebb {FLOOR_EDGE_SHARE} részét kivéve egyeznek (az árnyékok szélei); rövidítésként várhatóan elbukik: egy másik árnyékában álló tárgy több mint {MISSED_FLOOR} képpontja megvilágítva marad; a képpontok több mint {CODES} megjelenített kóddal térnek el")],
     );
     let s = shadows(scene, matrix);
     figures.push(strip(
@@ -240,14 +243,27 @@ pub fn check_planar_shadow(
         }
     }
     let at = format!("{floor_pixels} floor pixels");
-    check.measure("pixels that disagree: the floor (edges)", floor as f64, &at);
-    check.measure(
-        "pixels that disagree: objects in another's shadow",
+    check.measure_in_both(
+        [
+            "pixels that disagree: the floor (edges)",
+            "eltérő képpontok: a padló (élek)",
+        ],
+        floor as f64,
+        &at,
+    );
+    check.measure_in_both(
+        [
+            "pixels that disagree: objects in another's shadow",
+            "eltérő képpontok: tárgyak egy másik árnyékában",
+        ],
         objects as f64,
         "",
     );
-    check.measure(
-        "triangles with a vertex not before the plane (on it: the sphere resting there)",
+    check.measure_in_both(
+        [
+            "triangles with a vertex not before the plane (on it: the sphere resting there)",
+            "háromszögek, amelyeknek egy csúcsa nem a sík előtt van (rajta: az ott nyugvó gömb)",
+        ],
         s.not_cast as f64,
         "",
     );

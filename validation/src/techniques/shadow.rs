@@ -15,9 +15,12 @@ pub fn check_projected_shadow() -> Check {
     const RELATIVE: f64 = 1e-4;
     let mut check = Check::new(
         "techniques.planar.shadow",
-        "The slides' projected-shadow matrix against the tracer's ray–plane intersection",
+        [
+            "The slides' projected-shadow matrix against the tracer's ray–plane intersection",
+            "A diák vetítettárnyék-mátrixa a sugárkövető sugár–sík metszéséhez mérve",
+        ],
         "tracer::geometry::Plane::intersect (f32) on the ray from the light through the vertex",
-        &format!("the points within {RELATIVE:e} of the distance, relative; Cast exactly when the vertex comes first"),
+        [&format!("the points within {RELATIVE:e} of the distance, relative; Cast exactly when the vertex comes first"), &format!("a pontok legfeljebb {RELATIVE:e} relatív eltéréssel a távolsághoz képest; pontosan akkor vet árnyékot, ha a csúcs van elöl")],
     );
     let normals = [
         DVec3::Y,
@@ -47,7 +50,14 @@ pub fn check_projected_shadow() -> Check {
                         let traced = hit.point.as_dvec3();
                         let distance = (traced - light).length();
                         let err = (p - traced).length() / distance.max(1.0);
-                        check.measure("|matrix − traced| / distance", err, &at);
+                        check.measure_in_both(
+                            [
+                                "|matrix − traced| / distance",
+                                "|mátrix − követett| / távolság",
+                            ],
+                            err,
+                            &at,
+                        );
                         if !(err <= RELATIVE) {
                             check.fail(format!(
                                 "{at}: the matrix puts it at {p}, the ray at {traced}"

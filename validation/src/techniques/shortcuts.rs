@@ -17,11 +17,14 @@ use crate::check::Check;
 pub fn check_cheap_refraction(curves: &mut Vec<RefractionCurve>) -> Check {
     let mut check = Check::new(
         "techniques.refraction.cheap",
-        "The slides' cheap refraction against Snell's law, entering water and glass",
+        [
+            "The slides' cheap refraction against Snell's law, entering water and glass",
+            "A diák olcsó fénytörése a Snellius–Descartes-törvényhez mérve, vízbe és üvegbe lépve",
+        ],
         "Snell's law in vector form (radiometry::specular::refract)",
-        "c = 1 bends by exactly half the incidence angle (to 1e-12 rad); the angles from Snell's law measured",
+        ["c = 1 bends by exactly half the incidence angle (to 1e-12 rad); the angles from Snell's law measured", "c = 1 pontosan a beesési szög felével tör (1e-12 rad-ig); a Snellius–Descartes-törvénytől való szögeltérés mérve"],
     );
-    for (medium, eta) in [("water", 1.33), ("glass", 1.5)] {
+    for ((medium, into_hu), eta) in [(("water", "vízbe"), 1.33), (("glass", "üvegbe"), 1.5)] {
         for (name, constant) in [
             ("c = 1", refraction::SLIDES_WATER),
             ("c = η − 1", Constant::FirstOrder),
@@ -45,8 +48,11 @@ pub fn check_cheap_refraction(curves: &mut Vec<RefractionCurve>) -> Check {
                     ));
                     continue;
                 };
-                check.measure(
-                    &format!("into {medium}, {name}: angle from Snell's law (°)"),
+                check.measure_in_both(
+                    [
+                        &format!("into {medium}, {name}: angle from Snell's law (°)"),
+                        &format!("{into_hu}, {name}: eltérés a Snellius–Descartes-törvénytől (°)"),
+                    ],
                     error.to_degrees(),
                     &format!("{degree}°"),
                 );
@@ -78,18 +84,38 @@ pub fn check_cheap_refraction(curves: &mut Vec<RefractionCurve>) -> Check {
 pub fn check_empirical_fresnel(curves: &mut Vec<FitCurve>) -> Check {
     let mut check = Check::new(
         "techniques.empirical_fresnel.fit",
-        "The slides' bias + scale (1 + I·N)^power fitted to the exact Fresnel law, beside Schlick",
+        [
+            "The slides' bias + scale (1 + I·N)^power fitted to the exact Fresnel law, beside Schlick",
+            "A diák eltolás + skála · (1 + I·N)^power alakja a pontos Fresnel-törvényhez illesztve, a Schlick-közelítés mellett",
+        ],
         "the exact dielectric and conductor laws (radiometry), every 0.1° from 0° to 90°",
-        "the fit's RMS no larger than Schlick's (Schlick is one member of the form's family)",
+        ["the fit's RMS no larger than Schlick's (Schlick is one member of the form's family)", "az illesztés RMS-hibája nem nagyobb a Schlick-közelítésénél (a Schlick-közelítés is az alak családjába tartozik)"],
     );
     for (name, interface) in SUITE {
         check.cases += 1;
         match empirical_fresnel::compare(interface, &AngleGrid::TENTH_OF_A_DEGREE) {
             Ok(c) => {
-                check.measure("fitted form: RMS error", c.fit.errors.rms, name);
-                check.measure("fitted form: largest error", c.fit.errors.max, name);
-                check.measure("Schlick: RMS error", c.schlick.rms, name);
-                check.measure("Schlick: largest error", c.schlick.max, name);
+                let errors = [
+                    (
+                        ["fitted form: RMS error", "illesztett alak: RMS-hiba"],
+                        c.fit.errors.rms,
+                    ),
+                    (
+                        [
+                            "fitted form: largest error",
+                            "illesztett alak: legnagyobb hiba",
+                        ],
+                        c.fit.errors.max,
+                    ),
+                    (["Schlick: RMS error", "Schlick: RMS-hiba"], c.schlick.rms),
+                    (
+                        ["Schlick: largest error", "Schlick: legnagyobb hiba"],
+                        c.schlick.max,
+                    ),
+                ];
+                for (quantity, value) in errors {
+                    check.measure_in_both(quantity, value, name);
+                }
                 if DRAWN_FITS.contains(&name) {
                     curves.push(fit_curve(name, interface, &c.fit.form));
                 }

@@ -58,6 +58,28 @@ pub fn read(dir: &Path) -> Result<Vec<Read>, ReferenceError> {
         .collect()
 }
 
+/// The check that fails where `dir` holds no record.
+pub fn none(dir: &Path) -> Check {
+    let mut none = Check::new(
+        "tradeoff.records",
+        [
+            "The speed/accuracy trade-off records",
+            "A sebesség és a pontosság cseréjének feljegyzései",
+        ],
+        DIR,
+        [
+            "one record a lit course scene",
+            "kurzusjelenetenként egy feljegyzés",
+        ],
+    );
+    none.cases = 1;
+    none.fail(format!(
+        "no record in {}: write them with `{REGENERATE}`",
+        dir.display()
+    ));
+    none
+}
+
 /// The check of one record, `file` named in it.
 pub fn check(file: &Path, record: &Result<Record, ReferenceError>) -> Check {
     let mut check = announced(file);
@@ -94,15 +116,18 @@ fn announced(file: &Path) -> Check {
         .map_or_else(String::new, |s| s.to_string_lossy().into_owned());
     Check::new(
         &format!("tradeoff.{stem}"),
-        &format!("{stem}: the speed/accuracy trade of every shortcut the scene allows, as recorded"),
+        [
+            &format!("{stem}: the speed/accuracy trade of every shortcut the scene allows, as recorded"),
+            &format!("{stem}: a jelenet minden megengedett rövidítésének sebesség–pontosság cseréje, ahogy feljegyezték"),
+        ],
         &format!("{}, written by `{REGENERATE}`", file.display()),
-        &format!(
+        [&format!(
             "schema {SCHEMA} version {SCHEMA_VERSION}; every measure finite, ≥ 0 and ꟻLIP ≤ 1; \
              the truth's relative noise ≤ {UNCONVERGED}; the fronts, verdicts and findings recorded \
              are those the recorded times and errors give; against Mitsuba's truth, where recorded, \
              every setting's light and relative RMSE finite and ≥ 0 and the ranking the one they give, \
              or a reason why there is no reference"
-        ),
+        ), &format!("séma: {SCHEMA}, {SCHEMA_VERSION}. változat; minden mérték véges, ≥ 0, és a ꟻLIP ≤ 1; a pontos kép relatív zaja ≤ {UNCONVERGED}; a feljegyzett frontok, ítéletek és megállapítások azok, amelyeket a feljegyzett idők és hibák adnak; a Mitsuba pontos képéhez mérve, ahol feljegyezték, minden beállítás fénye és relatív négyzetes középhibája véges és ≥ 0, és a sorrend az, amit ezek adnak, vagy indok, miért nincs referencia")],
     )
 }
 
@@ -120,8 +145,8 @@ fn current_and_converged(check: &mut Check, record: &Record) {
             record.truth.spp, record.truth.noise_relative
         ));
     }
-    check.measure(
-        "the truth's relative noise",
+    check.measure_in_both(
+        ["the truth's relative noise", "a pontos kép relatív zaja"],
         record.truth.noise_relative,
         "",
     );
@@ -135,13 +160,19 @@ fn against_mitsuba(check: &mut Check, record: &Record) {
         check.fail(failure);
     }
     if let Some(super::mitsuba::MitsubaTruth::Measured(m)) = &record.mitsuba {
-        check.measure(
-            "our truth's light against Mitsuba's, the floor",
+        check.measure_in_both(
+            [
+                "our truth's light against Mitsuba's, the floor",
+                "pontos képünk fénye a Mitsubáéhoz mérve, a padló",
+            ],
             m.floor.light,
             &m.estimate,
         );
-        check.measure(
-            "our truth's relative RMSE against Mitsuba's, the floor",
+        check.measure_in_both(
+            [
+                "our truth's relative RMSE against Mitsuba's, the floor",
+                "pontos képünk relatív négyzetes középhibája a Mitsubáéhoz mérve, a padló",
+            ],
             m.floor.rel_rmse,
             &m.estimate,
         );
@@ -164,14 +195,20 @@ fn findings(check: &mut Check, record: &Record) {
 /// What the record says of the scene's own settings `base` and of the
 /// `shortcuts`, measured for the report.
 fn shortcuts(check: &mut Check, base: &Point, shortcuts: &[Point]) {
-    check.measure(
-        "the scene's own settings: relative RMSE from all the light",
+    check.measure_in_both(
+        [
+            "the scene's own settings: relative RMSE from all the light",
+            "a jelenet saját beállításai: relatív négyzetes középhiba az összes fényhez",
+        ],
         base.errors.rel_rmse,
         &base.label,
     );
     for p in shortcuts {
-        check.measure(
-            "a shortcut's ΔE p99 against the scene's own",
+        check.measure_in_both(
+            [
+                "a shortcut's ΔE p99 against the scene's own",
+                "egy rövidítés ΔE p99-e a jelenet sajátjához mérve",
+            ],
             p.against_scene.delta_e_p99,
             &p.label,
         );
@@ -180,8 +217,11 @@ fn shortcuts(check: &mut Check, base: &Point, shortcuts: &[Point]) {
         .iter()
         .filter(|p| p.verdict == Some(Verdict::WorthIt))
         .count();
-    check.measure(
-        "shortcuts worth taking (not seen, faster)",
+    check.measure_in_both(
+        [
+            "shortcuts worth taking (not seen, faster)",
+            "megérő rövidítések (nem látható, gyorsabb)",
+        ],
         worth as f64,
         "",
     );

@@ -2,6 +2,7 @@
 //! settings' render (ΔE2000 p99 against [`JUST_NOTICEABLE`]) and whether it
 //! is faster (its time against [`WORTH_IT`] of theirs).
 
+use record::Lang;
 use serde::{Deserialize, Serialize};
 
 /// A ΔE2000 of 1 is the just-noticeable difference: a shortcut whose 99th
@@ -54,12 +55,21 @@ impl Verdict {
 
     /// The verdict in plain words.
     pub fn plain(self) -> &'static str {
-        match self {
-            Verdict::WorthIt => "worth it (not seen, faster)",
-            Verdict::Unseen => "not seen, no faster",
-            Verdict::Trade => "faster, seen",
-            Verdict::Worse => "seen, no faster",
-        }
+        self.said(Lang::En)
+    }
+
+    /// The verdict in plain words, in `lang`.
+    pub fn said(self, lang: Lang) -> &'static str {
+        let [en, hu] = match self {
+            Verdict::WorthIt => [
+                "worth it (not seen, faster)",
+                "megéri (nem látható, gyorsabb)",
+            ],
+            Verdict::Unseen => ["not seen, no faster", "nem látható, nem gyorsabb"],
+            Verdict::Trade => ["faster, seen", "gyorsabb, látható"],
+            Verdict::Worse => ["seen, no faster", "látható, nem gyorsabb"],
+        };
+        lang.pick(en, hu)
     }
 }
 

@@ -7,9 +7,9 @@ use std::collections::{BTreeMap, BTreeSet};
 
 use clap::{Command, CommandFactory};
 
-use super::english::{command_names, english_left, prose, words};
 use super::help::{self, english_texts, Text};
 use super::help_hu::SLOTS;
+use record::english::{command_names, english_left, prose, words};
 
 fn english() -> Vec<Text> {
     english_texts(crate::Cli::command())

@@ -127,18 +127,25 @@ pub fn check_random(
         .map(|&law| {
             let mut check = Check::new(
                 &format!("laws.mpmath.random.{}", law.name()),
-                &format!(
-                    "{} at seeded random inputs (seed {}), f64 and f32, uniform over the reals and over the floats",
-                    law.name(),
-                    reference.seed
-                ),
+                [
+                    &format!(
+                        "{} at seeded random inputs (seed {}), f64 and f32, uniform over the reals and over the floats",
+                        law.name(),
+                        reference.seed
+                    ),
+                    &format!(
+                        "{} rögzített magú véletlen bemeneteken (mag: {}), f64 és f32, egyenletesen a valós és a lebegőpontos számokon",
+                        law.name(),
+                        reference.seed
+                    ),
+                ],
                 &format!("mpmath {}, 50 digits, correctly rounded to the tier", reference.mpmath_version),
-                &format!(
+                [&format!(
                     "every case within {BOUND_ULPS} floating-point numbers of the correctly rounded value \
                      (dielectric in f64: {DIELECTRIC_F64_BOUND_ULPS}; conductor: {CONDUCTOR_BOUND_ULPS}; transmitted_angle: {BOUND_ULPS} + (8/π)·cond_θ), the same decision on total internal \
                      reflection and on a critical angle's existence; per set an average of at most \
                      {AVERAGE_BITS} bits of error (Herbie's log2(1 + numbers between))"
-                ),
+                ), &format!("minden eset legfeljebb {BOUND_ULPS} lebegőpontos számnyira a helyesen kerekített értéktől (dielektrikum f64-ben: {DIELECTRIC_F64_BOUND_ULPS}; vezető: {CONDUCTOR_BOUND_ULPS}; transmitted_angle: {BOUND_ULPS} + (8/π)·cond_θ), ugyanaz a döntés a teljes visszaverődésről és a határszög létezéséről; halmazonként átlagosan legfeljebb {AVERAGE_BITS} bit hiba (a Herbie-féle log2(1 + a köztes számok))")],
             );
             for tier in [Tier::F64, Tier::F32] {
                 for sampling in [Sampling::Reals, Sampling::Floats] {
@@ -170,8 +177,13 @@ pub fn check_random(
 /// The cases of one set, their regions, errors and averages.
 fn check_set(check: &mut Check, laws: &Laws, laws64: &Laws64, set: &CaseSet) {
     let prefix = format!("{} {}", set.tier.name(), set.sampling.name());
-    for (region, count) in regions::count(set) {
-        check.measure(&format!("{prefix}: {region} (cases)"), count as f64, "");
+    let hu = format!("{} {}", set.tier.name(), set.sampling.names()[1]);
+    for ([region, region_hu], count) in regions::count_in_both(set) {
+        let names = [
+            format!("{prefix}: {region} (cases)"),
+            format!("{hu}: {region_hu} (eset)"),
+        ];
+        check.measure_in_both([&names[0], &names[1]], count as f64, "");
     }
     let quantities = set.law.values();
     let mut sums = vec![(0.0f64, 0usize); quantities.len()];
@@ -204,8 +216,14 @@ fn check_set(check: &mut Check, laws: &Laws, laws64: &Laws64, set: &CaseSet) {
             let b = bits::bits(ulps);
             sums[q].0 += b;
             sums[q].1 += 1;
-            check.measure(&format!("{prefix} {name} (ulps)"), ulps as f64, &label);
-            check.measure(&format!("{prefix} {name} (bits, worst)"), b, &label);
+            let ulps_name = format!("{prefix} {name} (ulps)");
+            let ulps_hu = format!("{hu} {name} (ulps)");
+            check.measure_in_both([&ulps_name, &ulps_hu], ulps as f64, &label);
+            let bits_worst = [
+                format!("{prefix} {name} (bits, worst)"),
+                format!("{hu} {name} (bit, legrosszabb)"),
+            ];
+            check.measure_in_both([&bits_worst[0], &bits_worst[1]], b, &label);
             let bound = match set.law {
                 Law::TransmittedAngle => transmitted_angle_bound_ulps(set.column("cond_theta")[i]),
                 Law::Conductor => CONDUCTOR_BOUND_ULPS,
@@ -221,8 +239,11 @@ fn check_set(check: &mut Check, laws: &Laws, laws64: &Laws64, set: &CaseSet) {
     }
     for ((_, name), (sum, n)) in quantities.iter().zip(sums) {
         let average = if n == 0 { 0.0 } else { sum / n as f64 };
-        check.measure(
-            &format!("{prefix} {name} (bits, average)"),
+        check.measure_in_both(
+            [
+                &format!("{prefix} {name} (bits, average)"),
+                &format!("{hu} {name} (bit, átlag)"),
+            ],
             average,
             &format!("{n} values"),
         );

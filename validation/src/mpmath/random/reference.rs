@@ -92,10 +92,15 @@ pub enum Sampling {
 impl Sampling {
     /// Its name in the report.
     pub fn name(self) -> &'static str {
+        self.names()[0]
+    }
+
+    /// Its name in the report in English and in Hungarian.
+    pub fn names(self) -> [&'static str; 2] {
         match self {
-            Sampling::Reals => "reals",
-            Sampling::Floats => "floats",
-            Sampling::Near => "near",
+            Sampling::Reals => ["reals", "valós"],
+            Sampling::Floats => ["floats", "lebegőpontos"],
+            Sampling::Near => ["near", "közeli"],
         }
     }
 }

@@ -56,7 +56,7 @@ fn judge_by_sensitivity(
     let mut unexplained = Vec::new();
     for &(i, w) in tests {
         heat[i] = w.p.max(1e-300).ln() / threshold.ln();
-        check.measure_at("|t|", w.t.abs(), || pixel_label(sides.width, i));
+        check.measure_at_in_both(["|t|", "|t|"], w.t.abs(), || pixel_label(sides.width, i));
         let difference = (ours[i] - m_mean[i]).abs();
         if w.p >= threshold || difference <= tolerance(m_mean[i]) {
             continue;

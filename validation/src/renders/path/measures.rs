@@ -60,19 +60,28 @@ pub(super) fn record_power(
         _ => (pixel_least, pixel_label(sides.width, at)),
     };
     if let Some((shift, _)) = image_least {
-        check.measure(
-            "power: image mean, least relative shift detected",
+        check.measure_in_both(
+            [
+                "power: image mean, least relative shift detected",
+                "próbaerő: képátlag, a legkisebb kimutatott relatív eltolódás",
+            ],
             shift,
             "",
         );
     }
-    check.measure(
-        "power: least relative shift detected (a uniform shift of the image)",
+    check.measure_in_both(
+        [
+            "power: least relative shift detected (a uniform shift of the image)",
+            "próbaerő: a legkisebb kimutatott relatív eltolódás (a kép egyenletes eltolódása)",
+        ],
         least,
         &at,
     );
-    check.measure(
-        "power: median relative shift detected per pixel-channel",
+    check.measure_in_both(
+        [
+            "power: median relative shift detected per pixel-channel",
+            "próbaerő: a képpont-csatornánként kimutatott relatív eltolódás mediánja",
+        ],
         shifts[shifts.len() / 2].0,
         "",
     );
@@ -93,30 +102,50 @@ pub(super) fn record_metrics(
         .map_or(String::new(), |(i, _)| pixel_label(sides.width, *i));
     // Smaller p is worse: recorded as −log10 p beside the threshold's.
     // A p-value that underflows to 0 is shown as 10⁻³⁰⁰.
-    check.measure(
-        "−log10 smallest p",
+    check.measure_in_both(
+        ["−log10 smallest p", "−log10 legkisebb p"],
         0.0 - smallest.max(1e-300).log10(),
         &p_at,
     );
-    check.measure(
-        "−log10 (α/m), the threshold",
+    check.measure_in_both(
+        ["−log10 (α/m), the threshold", "−log10 (α/m), a küszöb"],
         -verdicts.threshold.log10(),
         "",
     );
-    check.measure("pixel-channel t-tests m", tests.len() as f64, "");
-    check.measure("tests rejected", verdicts.rejected as f64, "");
-    check.measure(
-        "rejected within Mitsuba's ray-offset sensitivity (findings)",
+    check.measure_in_both(
+        [
+            "pixel-channel t-tests m",
+            "képpont-csatornánkénti t-próbák m",
+        ],
+        tests.len() as f64,
+        "",
+    );
+    check.measure_in_both(
+        ["tests rejected", "elutasított próbák"],
+        verdicts.rejected as f64,
+        "",
+    );
+    check.measure_in_both(
+        [
+            "rejected within Mitsuba's ray-offset sensitivity (findings)",
+            "elutasítva a Mitsuba sugáreltolási érzékenységén belül (megállapítások)",
+        ],
         verdicts.offset_findings as f64,
         "",
     );
-    check.measure(
-        "rejected, agreeing under Mitsuba's offset rule (findings)",
+    check.measure_in_both(
+        [
+            "rejected, agreeing under Mitsuba's offset rule (findings)",
+            "elutasítva, a Mitsuba eltolási szabályával egyezve (megállapítások)",
+        ],
         verdicts.rule_findings as f64,
         "",
     );
-    check.measure(
-        "pixel-channels where neither side varies",
+    check.measure_in_both(
+        [
+            "pixel-channels where neither side varies",
+            "képpont-csatornák, ahol egyik oldal sem változik",
+        ],
         deterministic as f64,
         "",
     );

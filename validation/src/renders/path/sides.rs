@@ -96,8 +96,11 @@ pub(super) fn split(check: &mut Check, sides: &Sides) -> Split {
         split.compared += 1;
         let difference = (ours.mean[i] - mitsuba.mean[i]).abs();
         split.sum += difference;
-        check.measure_at(
-            "|mean ours − mean Mitsuba|, W/(sr m²)",
+        check.measure_at_in_both(
+            [
+                "|mean ours − mean Mitsuba|, W/(sr m²)",
+                "|miénk átlaga − Mitsuba átlaga|, W/(sr m²)",
+            ],
             difference,
             || pixel_label(sides.width, i),
         );

@@ -9,21 +9,30 @@ use record::Lang;
 /// How many of the worst errata the card names.
 const WORST: usize = 3;
 
-/// The card, after the areas' cards.
-pub(super) fn course_texts_card(h: &mut String) {
+/// The card, after the areas' cards, in `lang`.
+pub(super) fn course_texts_card(h: &mut String, lang: Lang) {
     let _ = write!(
         h,
-        "<div class=card id=course-texts><h3><a href=\"docs/errata.md\">Course texts</a></h3>\
-         <p>{}<br>worst:</p><ol class=small>",
-        escape(&errata::listing::tally(Lang::En))
+        "<div class=card id=course-texts><h3><a href=\"docs/errata.md\">{}</a></h3>\
+         <p>{}<br>{}</p><ol class=small>",
+        lang.pick("Course texts", "A kurzus szövegei"),
+        escape(&errata::listing::tally(lang)),
+        lang.pick("worst:", "a legsúlyosabbak:")
     );
     for erratum in errata::worst(WORST) {
         let _ = write!(
             h,
             "<li>{} <span class=small>({})</span></li>",
-            escape(&erratum.title.en),
-            escape(&erratum.place(Lang::En))
+            escape(erratum.title.pick(lang)),
+            escape(&erratum.place(lang))
         );
     }
-    h.push_str("</ol><p class=small>All of them, with what is right, in <code>docs/errata.md</code>.</p></div>\n");
+    let _ = writeln!(
+        h,
+        "</ol><p class=small>{}</p></div>",
+        lang.pick(
+            "All of them, with what is right, in <code>docs/errata.md</code>.",
+            "Mind, a helyes változattal együtt: <code>docs/errata.md</code>."
+        )
+    );
 }

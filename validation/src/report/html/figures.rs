@@ -1,4 +1,5 @@
-//! A figure in the page, captioned with the command that regenerates it.
+//! A figure in the page, captioned with the command that regenerates it,
+//! and a card's thumbnail; either opens the figure in full when clicked.
 
 use std::fmt::Write as _;
 
@@ -16,9 +17,18 @@ pub(super) fn figure(h: &mut String, file: &str) {
     };
     let _ = writeln!(
         h,
-        "<figure><img{pixels} src=\"{0}\" alt=\"{0}\"><figcaption>{0}: <code>{1}</code></figcaption></figure>",
+        "<figure><a href=\"{0}\"><img{pixels} src=\"{0}\" alt=\"{0}\"></a><figcaption>{0}: <code>{1}</code></figcaption></figure>",
         escape(file),
         regenerates(file)
+    );
+}
+
+/// A card's picture of `file`, a link to the figure in full.
+pub(super) fn thumbnail(h: &mut String, file: &str) {
+    let _ = write!(
+        h,
+        "<a href=\"{0}\"><img src=\"{0}\" alt=\"{0}\"></a>",
+        escape(file)
     );
 }
 

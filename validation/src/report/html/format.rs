@@ -3,6 +3,7 @@
 use std::fmt::Write as _;
 
 use crate::check::Check;
+use record::Lang;
 
 /// `text` safe inside an element or a quoted attribute.
 pub(super) fn escape(text: &str) -> String {
@@ -42,11 +43,25 @@ pub(super) fn inline_code(text: &str) -> String {
 }
 
 /// A check's verdict, marked.
-pub(super) fn status(check: &Check) -> &'static str {
+pub(super) fn status(check: &Check, lang: Lang) -> &'static str {
     if check.passed() {
-        "<span class=pass>pass</span>"
+        lang.pick("<span class=pass>pass</span>", "<span class=pass>jó</span>")
     } else {
-        "<span class=fail>FAIL</span>"
+        lang.pick(
+            "<span class=fail>FAIL</span>",
+            "<span class=fail>HIBA</span>",
+        )
+    }
+}
+
+/// A text the suite has only in English (a measured quantity's name, a
+/// finding in the check's own words), escaped; on a page in another
+/// language marked as English (`lang=en`), so that a screen reader reads
+/// it as English and the page's test knows it for what is left.
+pub(super) fn english(lang: Lang, text: &str) -> String {
+    match lang {
+        Lang::En => escape(text),
+        Lang::Hu => format!("<span lang=en>{}</span>", escape(text)),
     }
 }
 

@@ -1,69 +1,85 @@
-//! `report.html`: the report for people, section by section.
+//! `report.html`: the report for people, section by section, in English
+//! or Hungarian: each text of the page written in both languages at the
+//! place that writes it.
 
 mod areas;
 mod course_texts;
 mod figures;
 mod format;
+mod headline;
 mod renders;
+mod style;
 mod tables;
 mod tradeoff;
 
 use std::fmt::Write as _;
 
 use super::document::Report;
-use crate::check::{Check, Metric};
+use crate::check::Check;
 use areas::{gather, Gathered};
 use course_texts::course_texts_card;
-use figures::{figure, REGENERATE};
-use format::{escape, number, quote, readable, readable_at, status};
+use figures::{figure, thumbnail, REGENERATE};
+use format::{english, escape, number, readable, readable_at, status};
+use record::{say, Lang};
 use renders::render_gallery;
+use style::STYLE;
 use tables::{every_check, metal_colours, references, speed};
 
-/// `report.html`: the verdict and one card per area first, each area's
-/// section with its figures beside its numbers, every check in detail, and
-/// the references read; `figures` are file names relative to the report.
-pub fn to_html(report: &Report, figures: &[String]) -> String {
+/// `report.html` in `lang`: the verdict and one card per area first, each
+/// area's section with its figures beside its numbers, every check in
+/// detail, and the references read; `figures` are file names relative to
+/// the report.
+pub fn to_html(report: &Report, figures: &[String], lang: Lang) -> String {
     let areas = gather(report, figures);
     let mut h = String::new();
-    header(&mut h, report);
-    cards(&mut h, &areas);
-    findings(&mut h, report);
+    header(&mut h, report, lang);
+    cards(&mut h, &areas, lang);
+    findings(&mut h, report, lang);
     for area in &areas {
-        area_section(&mut h, area);
+        area_section(&mut h, area, lang);
         match area.area.key {
-            "renders" => render_gallery(&mut h, report, &area.figures),
-            "tradeoff" => tradeoff::tradeoffs(&mut h, report, &area.figures),
+            "renders" => render_gallery(&mut h, report, &area.figures, lang),
+            "tradeoff" => tradeoff::tradeoffs(&mut h, report, &area.figures, lang),
             _ => {}
         }
     }
-    metal_colours(&mut h, report);
-    speed(&mut h, report);
+    metal_colours(&mut h, report, lang);
+    speed(&mut h, report, lang);
     let claimed: Vec<&String> = areas
         .iter()
         .flat_map(|a| a.figures.iter().copied())
         .collect();
     let others: Vec<&String> = figures.iter().filter(|f| !claimed.contains(f)).collect();
     if !others.is_empty() {
-        h.push_str("<h2 id=figures>Other figures</h2>\n<div class=figures>\n");
+        let _ = writeln!(
+            h,
+            "<h2 id=figures>{}</h2>\n<div class=figures>",
+            lang.pick("Other figures", "További ábrák")
+        );
         for f in others {
             figure(&mut h, f);
         }
         h.push_str("</div>\n");
     }
-    every_check(&mut h, report);
-    references(&mut h, report);
+    every_check(&mut h, report, lang);
+    references(&mut h, report, lang);
     h
 }
 
 /// The page head, the style and the verdict.
-fn header(h: &mut String, report: &Report) {
+fn header(h: &mut String, report: &Report, lang: Lang) {
     let s = &report.summary;
+    let title = lang.pick(
+        "optics validation report",
+        "Az optics ellenőrzési jelentése",
+    );
     let _ = write!(
         h,
-        "<!doctype html>\n<html lang=en><head><meta charset=utf-8>\
+        "<!doctype html>\n<html lang={}><head><meta charset=utf-8>\
          <meta name=viewport content=\"width=device-width, initial-scale=1\">\
-         <title>optics validation report</title>\n<style>{STYLE}</style></head><body>\n\
-         <h1>optics validation report</h1>\n"
+         <title>{title}</title>\n<style>{STYLE}</style></head><body>\n\
+         <h1>{title}</h1>\n",
+        lang.pick("en", "hu")
     );
     let count = |field: &str, value: usize| {
         number(
@@ -73,61 +89,66 @@ fn header(h: &mut String, report: &Report) {
             &value.to_string(),
         )
     };
-    let verdict = if s.failed == 0 {
-        format!(
-            "<p class=\"verdict pass\">All {} checks pass.</p>",
-            count("checks", s.checks)
+    let (checks, passed, failed) = (
+        count("checks", s.checks),
+        count("passed", s.passed),
+        count("failed", s.failed),
+    );
+    let (verdict, tally) = if s.failed == 0 {
+        (
+            say!(
+                lang,
+                "<p class=\"verdict pass\">All {} checks pass.</p>",
+                "<p class=\"verdict pass\">{} ellenőrzés, mind sikeres.</p>",
+                checks
+            ),
+            say!(
+                lang,
+                "{} passed, {} failed",
+                "{} sikeres, {} sikertelen",
+                passed,
+                failed
+            ),
         )
     } else {
-        format!(
-            "<p class=\"verdict fail\">{} of {} checks FAIL.</p>",
-            count("failed", s.failed),
-            count("checks", s.checks)
+        (
+            say!(
+                lang,
+                "<p class=\"verdict fail\">{} of {} checks FAIL.</p>",
+                "<p class=\"verdict fail\">{1} ellenőrzésből {0} HIBÁS.</p>",
+                failed,
+                checks
+            ),
+            say!(lang, "{} passed", "{} sikeres", passed),
         )
     };
-    let tally = if s.failed == 0 {
-        format!(
-            "{} passed, {} failed",
-            count("passed", s.passed),
-            count("failed", s.failed)
-        )
-    } else {
-        format!("{} passed", count("passed", s.passed))
+    let set = match (report.quick, lang) {
+        (true, Lang::En) => "the reduced set",
+        (false, Lang::En) => "the full set",
+        (true, Lang::Hu) => "a szűkített készlet",
+        (false, Lang::Hu) => "a teljes készlet",
     };
     let _ = writeln!(
         h,
-        "{verdict}\n<p class=small>{tally}; {} findings about the references (below), which are not \
-         failures. Produced by <code>{}</code> ({}); regenerate everything here with <code>{REGENERATE}</code>.</p>",
-        count("findings", s.findings),
-        escape(&report.command),
-        if report.quick { "the reduced set" } else { "the full set" },
+        "{verdict}\n<p class=small>{}</p>",
+        say!(
+            lang,
+            "{}; {} findings about the references (below), which are not failures. Produced by \
+             <code>{}</code> ({}); regenerate everything here with <code>{}</code>.",
+            "{}; {} megállapítás a referenciákról (lent); ezek nem számítanak kudarcnak. \
+             Készítette: <code>{}</code> ({}); mindent, ami itt van, újragenerál: <code>{}</code>.",
+            tally,
+            count("findings", s.findings),
+            escape(&report.command),
+            set,
+            REGENERATE
+        )
     );
 }
 
-const STYLE: &str = "body{font-family:sans-serif;max-width:72em;margin:1em auto;padding:0 1em;line-height:1.4;overflow-wrap:anywhere}\
-h2{margin-top:2em;border-bottom:1px solid #ddd}\
-.verdict{font-size:1.3em;font-weight:bold;margin-bottom:.2em}.small{font-size:.9em;color:#444}\
-.cards{display:grid;grid-template-columns:repeat(auto-fill,minmax(12.5em,1fr));gap:.6em}\
-.card{border:1px solid #ccc;border-radius:.4em;padding:.6em;min-width:0}\
-.card h3{margin:0 0 .3em;font-size:1em}.card a{color:inherit}.card img{width:100%;height:6em;object-fit:contain}\
-.scroll{overflow-x:auto;max-width:100%}\
-table{border-collapse:collapse;margin:.5em 0}td,th{border:1px solid #ccc;padding:.2em .5em;text-align:left;vertical-align:top}\
-td{overflow-wrap:anywhere}td.num{text-align:right;font-family:monospace;white-space:nowrap}\
-.pass{color:#070}.fail{color:#b00;font-weight:bold}\
-.swatch{display:inline-block;width:2em;height:1em;border:1px solid #888;vertical-align:middle}\
-details{margin:.5em 0}summary{cursor:pointer}\
-.side{display:flex;flex-wrap:wrap;gap:1em;align-items:flex-start}.side>*{min-width:0;flex:1 1 24em}\
-.figures{display:flex;flex-wrap:wrap;gap:1em}figure{margin:0;max-width:100%;min-width:0}\
-img{max-width:100%}img.pixels{image-rendering:pixelated}\
-figcaption{font-size:.85em;color:#444;overflow-wrap:anywhere}\
-.render{width:16em;max-width:100%}.flip img{display:block;width:100%;height:100%;object-fit:cover;object-position:0 0}\
-.flip:hover img,.flip:focus img{object-position:var(--second) 0}.flip:focus{outline:2px solid #36c}\
-.trade td,.trade th{overflow-wrap:normal}.trade td:first-child{min-width:9em}.trade td:last-child{white-space:nowrap}.plot{max-width:48em}\
-.ramp{display:inline-block;width:8em;height:1em;border:1px solid #888;vertical-align:middle}code{background:#f4f4f4;overflow-wrap:anywhere}";
-
-/// One card per area: its pass count, its headline, its figure; then the
-/// course texts' card.
-fn cards(h: &mut String, areas: &[Gathered]) {
+/// One card per area: its pass count, its headline, its figure (a link to
+/// the figure in full); then the course texts' card.
+fn cards(h: &mut String, areas: &[Gathered], lang: Lang) {
     h.push_str("<div class=cards>\n");
     for a in areas {
         let passed = a.checks.iter().filter(|(_, c)| c.passed()).count();
@@ -136,68 +157,36 @@ fn cards(h: &mut String, areas: &[Gathered]) {
         } else {
             "fail"
         };
-        let _ = write!(
-            h,
-            "<div class=card><h3><a href=\"#{}\">{}</a></h3><p><span class={class}>{passed} of {} pass</span>",
-            a.area.key,
-            a.area.title,
+        let tally = say!(
+            lang,
+            "{} of {} pass",
+            "{} / {} sikeres",
+            passed,
             a.checks.len()
         );
-        if let Some(line) = headline(a.area.headline, &a.checks) {
+        let _ = write!(
+            h,
+            "<div class=card><h3><a href=\"#{}\">{}</a></h3><p><span class={class}>{tally}</span>",
+            a.area.key,
+            lang.pick(a.area.title[0], a.area.title[1]),
+        );
+        if let Some(line) = headline::headline(a.area, &a.checks, lang) {
             let _ = write!(h, "<br>{line}");
         }
         h.push_str("</p>");
         if let Some(f) = a.figures.first() {
-            let _ = write!(h, "<img src=\"{0}\" alt=\"{0}\">", escape(f));
+            thumbnail(h, f);
         }
         h.push_str("</div>\n");
     }
-    course_texts_card(h);
+    course_texts_card(h, lang);
     h.push_str("</div>\n");
-}
-
-/// The worst value of the area's `quantity` over its checks; without one,
-/// its worst Fresnel error in ulps where it measures them (the laws held to
-/// a bound in ulps alone; an angle's bound grows with its condition
-/// number); failing both, its number of findings.
-fn headline(quantity: Option<&str>, checks: &[(usize, &Check)]) -> Option<String> {
-    let metrics = || {
-        checks.iter().flat_map(|&(i, c)| {
-            c.metrics
-                .iter()
-                .enumerate()
-                .map(move |(j, m)| (format!("/checks/{i}/metrics/{j}/worst"), c, m))
-        })
-    };
-    let worst = |a: &(String, &Check, &Metric), b: &(String, &Check, &Metric)| {
-        a.2.worst.total_cmp(&b.2.worst)
-    };
-    let named =
-        quantity.and_then(|name| metrics().filter(|(_, _, m)| m.name == name).max_by(worst));
-    if let Some((at, _, m)) = named {
-        let value = quote(&at, m.worst, &readable(m.worst));
-        return Some(format!("largest {value}: {}", escape(&m.name)));
-    }
-    let ulps = metrics()
-        .filter(|(_, c, m)| c.id.contains("fresnel") || m.name.starts_with("fresnel"))
-        .filter(|(_, _, m)| m.name.contains("ulps") && m.worst.is_finite())
-        .max_by(worst);
-    if let Some((at, _, m)) = ulps {
-        let value = quote(&at, m.worst, &readable(m.worst));
-        return Some(format!(
-            "worst {value} ulps ({})",
-            escape(m.name.trim_end_matches(" (ulps)"))
-        ));
-    }
-    let findings: usize = checks.iter().map(|(_, c)| c.findings.len()).sum();
-    let plural = if findings == 1 { "" } else { "s" };
-    (findings > 0).then(|| format!("{findings} finding{plural} about the reference"))
 }
 
 /// The findings about the references: one plain sentence per check that
 /// has any (its [`Check::gist`], or its first finding where it has none),
 /// every finding in its check's own words folded beneath.
-fn findings(h: &mut String, report: &Report) {
+fn findings(h: &mut String, report: &Report, lang: Lang) {
     let with: Vec<&Check> = report
         .checks
         .iter()
@@ -208,24 +197,36 @@ fn findings(h: &mut String, report: &Report) {
     }
     let _ = writeln!(
         h,
-        "<h2 id=findings>What the references get wrong</h2>\n<p>Where a reference departs \
-         from the exact law or from the other reference, reported and not counted as a \
-         failure ({} findings in {} checks):</p><ul>",
-        report.summary.findings,
-        with.len()
+        "{}<ul>",
+        say!(
+            lang,
+            "<h2 id=findings>What the references get wrong</h2>\n<p>Where a reference departs \
+             from the exact law or from the other reference, reported and not counted as a \
+             failure ({} findings in {} checks):</p>",
+            "<h2 id=findings>Amiben a referenciák tévednek</h2>\n<p>Ahol egy referencia eltér \
+             a pontos törvénytől vagy a másik referenciától: jelentjük, de nem számít \
+             kudarcnak ({} megállapítás {} ellenőrzésben):</p>",
+            report.summary.findings,
+            with.len()
+        )
     );
     for check in with {
-        let gist = check.gist.as_deref().unwrap_or(&check.findings[0]);
+        let gist = match &check.gist {
+            Some(gist) => escape(gist.pick(lang)),
+            None => english(lang, &check.findings[0]),
+        };
+        let n = check.findings.len();
         let _ = writeln!(
             h,
-            "<li>{} <span class=small>({})</span><details><summary>{} finding{} in detail</summary><ul>",
-            escape(gist),
+            "<li>{gist} <span class=small>({})</span><details><summary>{}</summary><ul>",
             escape(&check.id),
-            check.findings.len(),
-            if check.findings.len() == 1 { "" } else { "s" }
+            match lang {
+                Lang::En => format!("{n} finding{} in detail", if n == 1 { "" } else { "s" }),
+                Lang::Hu => format!("{n} megállapítás részletesen"),
+            }
         );
         for f in &check.findings {
-            let _ = writeln!(h, "<li>{}</li>", escape(f));
+            let _ = writeln!(h, "<li>{}</li>", english(lang, f));
         }
         h.push_str("</ul></details></li>\n");
     }
@@ -233,8 +234,9 @@ fn findings(h: &mut String, report: &Report) {
 }
 
 /// An area: its figures beside the table of its checks' worst values.
-fn area_section(h: &mut String, a: &Gathered) {
-    let _ = writeln!(h, "<h2 id=\"{}\">{}</h2>", a.area.key, a.area.title);
+fn area_section(h: &mut String, a: &Gathered, lang: Lang) {
+    let title = lang.pick(a.area.title[0], a.area.title[1]);
+    let _ = writeln!(h, "<h2 id=\"{}\">{title}</h2>", a.area.key);
     let rows: usize = a.checks.iter().map(|(_, c)| c.metrics.len().max(1)).sum();
     h.push_str("<div class=side>\n");
     if let Some(f) = a.figures.first() {
@@ -247,27 +249,42 @@ fn area_section(h: &mut String, a: &Gathered) {
     if folded {
         let _ = writeln!(
             h,
-            "<details><summary>The worst value of each of {} quantities over {} checks</summary>",
-            rows,
-            a.checks.len()
+            "<details><summary>{}</summary>",
+            say!(
+                lang,
+                "The worst value of each of {} quantities over {} checks",
+                "{} mennyiség legrosszabb értéke {} ellenőrzésben",
+                rows,
+                a.checks.len()
+            )
         );
     }
-    h.push_str("<div class=scroll><table><tr><th>check</th><th>quantity</th><th>worst</th><th>at</th></tr>\n");
+    let _ = writeln!(
+        h,
+        "<div class=scroll><table><tr>{}</tr>",
+        lang.pick(
+            "<th>check</th><th>quantity</th><th>worst</th><th>at</th>",
+            "<th>ellenőrzés</th><th>mennyiség</th><th>legrosszabb</th><th>hol</th>"
+        )
+    );
     for &(i, check) in &a.checks {
         for (j, m) in check.metrics.iter().enumerate() {
             let _ = writeln!(
                 h,
                 "<tr><td>{} {}</td><td>{}</td>{}<td>{}</td></tr>",
-                status(check),
+                status(check, lang),
                 escape(short_id(&check.id)),
-                escape(&m.name),
+                match (lang, &m.name_hu) {
+                    (Lang::Hu, Some(hu)) => escape(hu),
+                    _ => english(lang, &m.name),
+                },
                 number(
                     "td",
                     &format!("/checks/{i}/metrics/{j}/worst"),
                     m.worst,
                     &readable(m.worst)
                 ),
-                escape(&readable_at(&m.at))
+                english(lang, &readable_at(&m.at))
             );
         }
     }
@@ -276,11 +293,22 @@ fn area_section(h: &mut String, a: &Gathered) {
         h.push_str("</details>\n");
     }
     h.push_str("</div></div>\n");
+    more_figures(h, a, lang);
+}
+
+/// The area's figures after its first, folded (the renders' and the
+/// trade-off's have sections of their own).
+fn more_figures(h: &mut String, a: &Gathered, lang: Lang) {
     if a.figures.len() > 1 && !["renders", "tradeoff"].contains(&a.area.key) {
         let _ = writeln!(
             h,
-            "<details><summary>{} more figures</summary><div class=figures>",
-            a.figures.len() - 1
+            "<details><summary>{}</summary><div class=figures>",
+            say!(
+                lang,
+                "{} more figures",
+                "további {} ábra",
+                a.figures.len() - 1
+            )
         );
         for f in &a.figures[1..] {
             figure(h, f);
@@ -321,12 +349,12 @@ mod tests {
     #[test]
     fn a_failed_check_is_shown_open_and_marked() {
         let mut report = Report::new(true, "optics validate --quick");
-        let mut check = Check::new("x.y", "t", "r", "tol");
+        let mut check = Check::new("x.y", ["t", "t"], "r", ["tol", "tol"]);
         check.cases = 1;
         check.fail("broken <law>".into());
         report.checks.push(check);
         report.summarise();
-        let html = to_html(&report, &[]);
+        let html = to_html(&report, &[], Lang::En);
         assert!(
             html.contains("<details open>")
                 && html.contains("FAIL")

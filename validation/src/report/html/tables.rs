@@ -3,15 +3,21 @@
 
 use std::fmt::Write as _;
 
-use super::format::{escape, number, readable, status, swatch};
+use super::format::{english, escape, number, readable, status, swatch};
 use crate::report::document::Report;
+use record::{say, Lang};
 
 /// The metal shortcuts' worst CIEDE2000, with swatches.
-pub(super) fn metal_colours(h: &mut String, report: &Report) {
+pub(super) fn metal_colours(h: &mut String, report: &Report, lang: Lang) {
     if !report.metal_delta_e.is_empty() {
-        h.push_str("<h2 id=metal-colours>Metal colours: CIEDE2000 of the shortcuts from the spectral colour</h2>\n\
-                    <p>Worst over the angles of incidence; about 1 is a just-noticeable difference.</p>\n\
-                    <div class=scroll><table><tr><th>metal</th><th>shortcut</th><th>worst ΔE00</th><th>at</th><th>spectral | shortcut at that angle</th></tr>\n");
+        h.push_str(lang.pick(
+            "<h2 id=metal-colours>Metal colours: CIEDE2000 of the shortcuts from the spectral colour</h2>\n\
+             <p>Worst over the angles of incidence; about 1 is a just-noticeable difference.</p>\n\
+             <div class=scroll><table><tr><th>metal</th><th>shortcut</th><th>worst ΔE00</th><th>at</th><th>spectral | shortcut at that angle</th></tr>\n",
+            "<h2 id=metal-colours>Fémek színe: a rövidítések CIEDE2000-eltérése a spektrális színtől</h2>\n\
+             <p>A legrosszabb a beesési szögek közül; nagyjából 1 az éppen észrevehető különbség.</p>\n\
+             <div class=scroll><table><tr><th>fém</th><th>rövidítés</th><th>legrosszabb ΔE00</th><th>hol</th><th>spektrális | rövidítés abban a szögben</th></tr>\n",
+        ));
         for (k, w) in report.metal_delta_e.iter().enumerate() {
             let find = |method: &str| {
                 report
@@ -27,8 +33,8 @@ pub(super) fn metal_colours(h: &mut String, report: &Report) {
             let _ = writeln!(
                 h,
                 "<tr><td>{}</td><td>{}</td>{}{}<td>{} {}</td></tr>",
-                escape(&w.metal),
-                escape(&w.method),
+                english(lang, &w.metal),
+                english(lang, &w.method),
                 number(
                     "td",
                     &at("delta_e_2000"),
@@ -50,14 +56,17 @@ pub(super) fn metal_colours(h: &mut String, report: &Report) {
 }
 
 /// The metal-colour timings.
-pub(super) fn speed(h: &mut String, report: &Report) {
+pub(super) fn speed(h: &mut String, report: &Report, lang: Lang) {
     if !report.speed.is_empty() {
-        h.push_str("<h2 id=speed>Speed: time per metal colour</h2>\n<div class=scroll><table><tr><th>method</th><th>ns per colour</th><th>colours timed</th></tr>\n");
+        h.push_str(lang.pick(
+            "<h2 id=speed>Speed: time per metal colour</h2>\n<div class=scroll><table><tr><th>method</th><th>ns per colour</th><th>colours timed</th></tr>\n",
+            "<h2 id=speed>Sebesség: egy fém színének ideje</h2>\n<div class=scroll><table><tr><th>módszer</th><th>ns színenként</th><th>mért színek</th></tr>\n",
+        ));
         for (k, t) in report.speed.iter().enumerate() {
             let _ = writeln!(
                 h,
                 "<tr><td>{}</td>{}{}</tr>",
-                escape(&t.method),
+                english(lang, &t.method),
                 number(
                     "td",
                     &format!("/speed/{k}/ns_per_colour"),
@@ -73,15 +82,21 @@ pub(super) fn speed(h: &mut String, report: &Report) {
             );
         }
         if let [spectral, rgb] = report.speed.as_slice() {
+            let unoptimised = match (spectral.optimised, lang) {
+                (true, _) => "",
+                (false, Lang::En) => "; an unoptimised build: <code>cargo run --release -p optics -- validate</code> gives representative times",
+                (false, Lang::Hu) => "; optimalizálatlan fordítás: jellemző időket a <code>cargo run --release -p optics -- validate</code> ad",
+            };
             let _ = writeln!(
                 h,
-                "</table></div>\n<p>The spectrum costs {:.1}× the three wavelengths (wall clock, this machine, one run{}).</p>",
-                spectral.ns_per_colour / rgb.ns_per_colour,
-                if spectral.optimised {
-                    ""
-                } else {
-                    "; an unoptimised build: <code>cargo run --release -p optics -- validate</code> gives representative times"
-                }
+                "</table></div>\n<p>{}</p>",
+                say!(
+                    lang,
+                    "The spectrum costs {:.1}× the three wavelengths (wall clock, this machine, one run{}).",
+                    "A spektrum a három hullámhossz {:.1}-szeresébe kerül (faliórán mérve, ezen a gépen, egy futás{}).",
+                    spectral.ns_per_colour / rgb.ns_per_colour,
+                    unoptimised
+                )
             );
         } else {
             h.push_str("</table></div>\n");
@@ -90,25 +105,49 @@ pub(super) fn speed(h: &mut String, report: &Report) {
 }
 
 /// Every check, failed ones open, with its failures and findings.
-pub(super) fn every_check(h: &mut String, report: &Report) {
-    h.push_str("<h2 id=checks>Every check in detail</h2>\n");
+pub(super) fn every_check(h: &mut String, report: &Report, lang: Lang) {
+    let _ = writeln!(
+        h,
+        "<h2 id=checks>{}</h2>",
+        lang.pick("Every check in detail", "Minden ellenőrzés részletesen")
+    );
     for (i, check) in report.checks.iter().enumerate() {
+        let cases = number(
+            "span",
+            &format!("/checks/{i}/cases"),
+            check.cases as f64,
+            &check.cases.to_string(),
+        );
         let _ = writeln!(
             h,
-            "<details{}><summary>{} <b>{}</b>: {} ({} cases)</summary>\n<p>Reference: {}.<br>Tolerance: {}.</p>",
+            "<details{}><summary>{} <b>{}</b>: {}</summary>\n<p>{}</p>",
             if check.passed() { "" } else { " open" },
-            status(check),
+            status(check, lang),
             escape(&check.id),
-            escape(&check.title),
-            number("span", &format!("/checks/{i}/cases"), check.cases as f64, &check.cases.to_string()),
-            escape(&check.reference),
-            escape(&check.tolerance)
+            say!(
+                lang,
+                "{} ({} cases)",
+                "{} ({} eset)",
+                escape(check.title.pick(lang)),
+                cases
+            ),
+            say!(
+                lang,
+                "Reference: {}.<br>Tolerance: {}.",
+                "Referencia: {}.<br>Tűrés: {}.",
+                english(lang, &check.reference),
+                escape(check.tolerance.pick(lang))
+            )
         );
-        for (kind, list) in [("Failures", &check.failures), ("Findings", &check.findings)] {
+        let kinds = [
+            (lang.pick("Failures", "Sikertelen esetek"), &check.failures),
+            (lang.pick("Findings", "Megállapítások"), &check.findings),
+        ];
+        for (kind, list) in kinds {
             if !list.is_empty() {
                 let _ = writeln!(h, "<p>{kind} ({}):</p><ul>", list.len());
                 for item in list {
-                    let _ = writeln!(h, "<li>{}</li>", escape(item));
+                    let _ = writeln!(h, "<li>{}</li>", english(lang, item));
                 }
                 h.push_str("</ul>\n");
             }
@@ -118,10 +157,11 @@ pub(super) fn every_check(h: &mut String, report: &Report) {
 }
 
 /// The references read, and the page's end.
-pub(super) fn references(h: &mut String, report: &Report) {
-    h.push_str(
+pub(super) fn references(h: &mut String, report: &Report, lang: Lang) {
+    h.push_str(lang.pick(
         "<h2 id=references>References</h2>\n<div class=scroll><table><tr><th>file</th><th>schema</th><th>regenerate</th></tr>\n",
-    );
+        "<h2 id=references>Referenciák</h2>\n<div class=scroll><table><tr><th>fájl</th><th>séma</th><th>újragenerálás</th></tr>\n",
+    ));
     for (name, info) in &report.references {
         let _ = writeln!(
             h,

@@ -7,9 +7,9 @@
 #[cfg(feature = "harness")]
 use crate::error::HarnessKind;
 use crate::error::{Error, ErrorKind};
-use crate::lang::english::{english_left, words};
 use clap::Parser;
 use radiometry::domain::{self, DomainError, Expected};
+use record::english::{english_left, words};
 use record::Lang;
 use std::collections::BTreeSet;
 #[cfg(feature = "harness")]

@@ -6,7 +6,7 @@ use clap::CommandFactory;
 use record::Lang;
 
 use crate::error::usage_rendered;
-use crate::lang::english::{command_names, english_left, words};
+use record::english::{command_names, english_left, words};
 
 /// The parser's error for `args` (after `optics --lang hu`), as the
 /// Hungarian parser reports it, in both languages.

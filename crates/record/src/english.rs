@@ -2,14 +2,14 @@
 //! letters or more that is also a word of the English it translates, or
 //! a common English word, and is not a name. What the text quotes or
 //! writes as code (`--spp`, `path`, `'glass'`, `docs/cli.md`, `sRGB`,
-//! `<SCENE>`) is not read as words at all. Shared by the checks of the
-//! errors' and of the help's Hungarian.
+//! `<SCENE>`) is not read as words at all. Shared by the checks of every
+//! Hungarian text the suite writes: the errors', the help's, the report's.
 
 use std::collections::BTreeSet;
 
 /// Names the Hungarian keeps as they are: people, programs, formats,
 /// and the suite's own words for things (`kappa`).
-pub(crate) const NAMES: &[&str] = &[
+pub const NAMES: &[&str] = &[
     "json",
     "kappa",
     "fresnel",
@@ -32,11 +32,23 @@ pub(crate) const NAMES: &[&str] = &[
     "albedó",
     "magyar",
     "erratum",
+    "brewster",
+    "sellmeier",
+    "fraunhofer",
+    "welch",
+    "sharma",
+    "dalal",
+    "flip",
+    "mpmath",
+    "ulps",
+    "herbie",
+    "bonferroni",
+    "delta",
 ];
 
 /// Common English words a translation might leave behind that the
 /// English it translates need not hold.
-pub(crate) const COMMON: &[&str] = &[
+pub const COMMON: &[&str] = &[
     "about",
     "after",
     "also",
@@ -102,7 +114,7 @@ pub(crate) const COMMON: &[&str] = &[
 ];
 
 /// The words of four letters or more, lower-cased.
-pub(crate) fn words(text: &str) -> BTreeSet<String> {
+pub fn words(text: &str) -> BTreeSet<String> {
     text.split(|c: char| !c.is_alphabetic())
         .filter(|word| word.chars().count() >= 4)
         .map(str::to_lowercase)
@@ -112,7 +124,7 @@ pub(crate) fn words(text: &str) -> BTreeSet<String> {
 /// The text without what it writes as code or quotes: spans in
 /// backticks or quotes, and tokens that are paths, flags, placeholders,
 /// acronyms or identifiers.
-pub(crate) fn prose(text: &str) -> String {
+pub fn prose(text: &str) -> String {
     let mut kept = String::new();
     let mut quote: Option<char> = None;
     let mut previous = ' ';
@@ -145,8 +157,9 @@ fn is_code(token: &str) -> bool {
 /// The English words left in `hungarian`: its words that are in
 /// `english` (the vocabulary of what it translates) or [`COMMON`], and
 /// neither in [`NAMES`] nor, as a whole token, in `names` (`reflect`,
-/// `shadow-matrix`, `lat-long`).
-pub(crate) fn english_left(
+/// `shadow-matrix`, `lat-long`), with or without the case ending
+/// Hungarian joins to a name by a hyphen (`colour-science-hez`).
+pub fn english_left(
     hungarian: &str,
     english: &BTreeSet<String>,
     names: &BTreeSet<String>,
@@ -158,7 +171,10 @@ pub(crate) fn english_left(
             // A name keeps its own hyphens and underscores, not the
             // sentence's commas and brackets.
             let bare = token.trim_matches(|c: char| !c.is_alphanumeric() && c != '-' && c != '_');
-            !names.contains(&token.to_lowercase()) && !names.contains(&bare.to_lowercase())
+            let stem = bare.rsplit_once('-').map_or(bare, |(stem, _)| stem);
+            ![token, bare, stem]
+                .iter()
+                .any(|t| names.contains(&t.to_lowercase()))
         })
         .flat_map(words)
         .filter(|word| english.contains(word) || COMMON.contains(&word.as_str()))
@@ -169,7 +185,8 @@ pub(crate) fn english_left(
 
 /// What a command line names rather than says: its commands, flags,
 /// values and placeholders, lower-cased.
-pub(crate) fn command_names(command: &clap::Command) -> BTreeSet<String> {
+#[cfg(feature = "clap")]
+pub fn command_names(command: &clap::Command) -> BTreeSet<String> {
     let mut found = BTreeSet::from([command.get_name().to_lowercase()]);
     for arg in command.get_arguments() {
         found.extend(arg.get_long().map(str::to_owned));
