@@ -3,7 +3,7 @@
 //! ([`schedule`]).
 //!
 //! A kind of check ([`CheckKind`]) reads the references it needs, appends its
-//! [`Check`]s and its figure data to the report, and says how many steps it
+//! [`Check`](crate::check::Check)s and its figure data to the report, and says how many steps it
 //! takes for the progress display. Adding a kind (the renders against
 //! Mitsuba, say) is one more implementation in [`standard_kinds`].
 

@@ -68,11 +68,13 @@ impl std::fmt::Display for FlagRefusal {
 
 impl std::error::Error for FlagRefusal {}
 
+#[cfg(feature = "harness")]
 /// What a flag's own number parser returns: a number that is not one is
 /// refused as the standard parser refuses it (so a decimal comma gets its
 /// hint), one outside the flag's range as a [`FlagRefusal`].
 pub(crate) type FlagNumber = Result<f64, Box<dyn std::error::Error + Send + Sync>>;
 
+#[cfg(feature = "harness")]
 /// `text` as a number that `accept` takes, else refused with `why`'s
 /// two sentences about it.
 pub(crate) fn flag_number(
