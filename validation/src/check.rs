@@ -6,9 +6,9 @@
 //! disagreement between two references (Mitsuba's float32 evaluation against
 //! the exact value, say) that the suite reports without failing for it.
 //!
-//! What a check says to a reader (its title, the gist of its findings) it
-//! says in English and in Hungarian, both given where the check is
-//! declared; `report.json` carries the English.
+//! What a check says to a reader (its title, its reference, the gist of
+//! its findings) it says in English and in Hungarian, both given where
+//! the check is declared; `report.json` carries the English.
 
 use errata::Words;
 use radiometry::Real;
@@ -23,7 +23,8 @@ pub struct Check {
     #[serde(serialize_with = "english")]
     pub title: Words,
     /// The reference the law is compared with, and its version.
-    pub reference: String,
+    #[serde(serialize_with = "english")]
+    pub reference: Words,
     /// The tolerance and why it is that.
     #[serde(serialize_with = "english")]
     pub tolerance: Words,
@@ -80,13 +81,13 @@ pub struct Metric {
 }
 
 impl Check {
-    /// A check with no cases compared yet; its `title` and `tolerance` in
-    /// English and in Hungarian.
-    pub fn new(id: &str, title: [&str; 2], reference: &str, tolerance: [&str; 2]) -> Self {
+    /// A check with no cases compared yet; its `title`, `reference` and
+    /// `tolerance` in English and in Hungarian.
+    pub fn new(id: &str, title: [&str; 2], reference: [&str; 2], tolerance: [&str; 2]) -> Self {
         Self {
             id: id.to_owned(),
             title: words(title),
-            reference: reference.to_owned(),
+            reference: words(reference),
             tolerance: words(tolerance),
             cases: 0,
             metrics: Vec::new(),
@@ -197,7 +198,7 @@ mod tests {
 
     #[test]
     fn measure_keeps_the_worst_and_where() {
-        let mut check = Check::new("t", ["t", "t"], "t", ["t", "t"]);
+        let mut check = Check::new("t", ["t", "t"], ["t", "t"], ["t", "t"]);
         check.measure("err", 1.0, "a");
         check.measure("err", 3.0, "b");
         check.measure("err", 2.0, "c");
@@ -208,6 +209,6 @@ mod tests {
 
     #[test]
     fn a_check_without_cases_does_not_pass() {
-        assert!(!Check::new("t", ["t", "t"], "t", ["t", "t"]).passed());
+        assert!(!Check::new("t", ["t", "t"], ["t", "t"], ["t", "t"]).passed());
     }
 }

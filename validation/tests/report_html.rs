@@ -192,7 +192,7 @@ fn check(id: &str, cases: usize, worst: &[(&str, f64, &str)]) -> Check {
     let mut check = Check::new(
         id,
         [&format!("the check {id}"), &format!("az ellenőrzés: {id}")],
-        "a reference",
+        ["a reference", "egy referencia"],
         ["a tolerance", "egy tűrés"],
     );
     check.cases = cases;

@@ -30,7 +30,10 @@ pub fn check_random(
              bemeneteken, a Mitsubához mérve, a pontos érték helyén f64 törvényeinkkel (az 50 jegyhez mért \
              véletlen esetek: laws.mpmath.random.*)",
         ],
-        &format!("{} on cases.json (seed {})", results.evaluator, cases.seed),
+        [
+            &format!("{} on cases.json (seed {})", results.evaluator, cases.seed),
+            &format!("{} a cases.json eseteire (mag: {})", results.evaluator, cases.seed),
+        ],
         [&format!(
             "ours (f32) within {OURS_ULPS} f32 ulps of our f64 law (itself within 8 f64 ulps of exact), directions within {DIRECTION_ABS:.1e} plus the refraction allowance near the critical angle; Mitsuba beyond {MITSUBA_ABS:.1e} is a finding; ours and Mitsuba within {GROSS_ABS:e}"
         ), &format!("a miénk (f32) legfeljebb {OURS_ULPS} f32 ulp-re az f64 törvényünktől (amely maga legfeljebb 8 f64 ulp-re a pontostól), az irányok legfeljebb {DIRECTION_ABS:.1e} eltéréssel, plusz a törés ráhagyása a határszög közelében; a Mitsuba {MITSUBA_ABS:.1e} fölötti eltérése megállapítás; a miénk és a Mitsubáé legfeljebb {GROSS_ABS:e} eltéréssel")],

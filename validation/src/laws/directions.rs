@@ -61,7 +61,7 @@ pub fn check_directions(laws: &Laws, reference: &MitsubaLaws) -> Check {
             "Mirror and refracted directions, both sides, tilted normals, TIR",
             "Tükrözött és megtört irányok, mindkét oldalról, döntött normálisokkal, teljes visszaverődéssel",
         ],
-        &reference.version(),
+        reference.version().each_ref().map(String::as_str),
         [&format!(
             "ours within {DIRECTION_ABS:.1e} of exact per component, plus the refraction_allowance for the conditioning near the critical angle; Mitsuba beyond {MITSUBA_ABS:.1e} is a finding; ours and Mitsuba within {GROSS_ABS:e}"
         ), &format!("a miénk komponensenként legfeljebb {DIRECTION_ABS:.1e} eltéréssel a pontostól, plusz a refraction_allowance a határszög közeli kondicionáltság miatt; a Mitsuba {MITSUBA_ABS:.1e} fölötti eltérése megállapítás; a miénk és a Mitsubáé legfeljebb {GROSS_ABS:e} eltéréssel")],

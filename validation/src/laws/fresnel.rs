@@ -88,7 +88,7 @@ pub fn check_dielectric(laws: &Laws, reference: &MitsubaLaws) -> Check {
             "Dielectric Fresnel R, R_s, R_p, both sides, normal to grazing, TIR",
             "Dielektrikum Fresnel-egyenletei: R, R_s, R_p, mindkét oldalról, merőlegestől súrolóig, teljes visszaverődéssel",
         ],
-        &reference.version(),
+        reference.version().each_ref().map(String::as_str),
         [&format!(
             "ours within {OURS_ULPS} f32 ulps of exact; Mitsuba beyond {MITSUBA_ABS:.1e} of exact is a finding; ours and Mitsuba within {GROSS_ABS:e}"
         ), &format!("a miénk legfeljebb {OURS_ULPS} f32 ulp-re a pontostól; a Mitsuba {MITSUBA_ABS:.1e} fölötti eltérése a pontostól megállapítás; a miénk és a Mitsubáé legfeljebb {GROSS_ABS:e} eltéréssel")],
@@ -141,7 +141,7 @@ pub fn check_conductor(laws: &Laws, reference: &MitsubaLaws) -> Check {
             "Conductor Fresnel R, R_s, R_p (n + iκ), normal to grazing",
             "Vezető Fresnel-egyenletei: R, R_s, R_p (n + iκ), merőlegestől súrolóig",
         ],
-        &reference.version(),
+        reference.version().each_ref().map(String::as_str),
         [&format!(
             "ours within {OURS_ULPS} f32 ulps of exact; Mitsuba beyond {MITSUBA_ABS:.1e} of exact is a finding; ours and Mitsuba within {GROSS_ABS:e}"
         ), &format!("a miénk legfeljebb {OURS_ULPS} f32 ulp-re a pontostól; a Mitsuba {MITSUBA_ABS:.1e} fölötti eltérése a pontostól megállapítás; a miénk és a Mitsubáé legfeljebb {GROSS_ABS:e} eltéréssel")],
@@ -199,7 +199,7 @@ pub fn check_schlick(laws: &Laws, reference: &MitsubaLaws) -> Check {
             "Schlick's approximation F0 + (1 − F0)(1 − cos)⁵ against its definition",
             "A Schlick-közelítés, F0 + (1 − F0)(1 − cos)⁵, a definíciójához mérve",
         ],
-        "mpmath, 50 digits",
+        ["mpmath, 50 digits", "mpmath, 50 jegyre"],
         [&format!("within {OURS_ULPS} f32 ulps: five products and a sum, each rounded once"), &format!("legfeljebb {OURS_ULPS} f32 ulp: öt szorzat és egy összeg, mindegyik egyszer kerekítve")],
     );
     for case in &reference.schlick {

@@ -111,7 +111,10 @@ fn new_check(name: &str) -> Check {
             &format!("{name}: the tracer's path against Mitsuba's path integrator, per-pixel Welch t-test"),
             &format!("{name}: a sugárkövető útkövetése a Mitsuba útkövető integrátorához mérve, képpontonkénti Welch-féle t-próba"),
         ],
-        "Mitsuba 3 path integrator through mi.render (scalar_rgb), box filter (mitsuba_renders.json)",
+        [
+            "Mitsuba 3 path integrator through mi.render (scalar_rgb), box filter (mitsuba_renders.json)",
+            "a Mitsuba 3 útkövető integrátora ('path') az mi.render útján (scalar_rgb), dobozszűrővel (mitsuba_renders.json)",
+        ],
         [&format!(
             "a pixel-channel fails when p < α/m, α = {ALPHA} over the m t-tests (Bonferroni: one correct \
              render in {:.0} fails by chance), and its means differ by more than the Whitted tolerance \

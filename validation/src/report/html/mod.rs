@@ -349,7 +349,7 @@ mod tests {
     #[test]
     fn a_failed_check_is_shown_open_and_marked() {
         let mut report = Report::new(true, "optics validate --quick");
-        let mut check = Check::new("x.y", ["t", "t"], "r", ["tol", "tol"]);
+        let mut check = Check::new("x.y", ["t", "t"], ["r", "r"], ["tol", "tol"]);
         check.cases = 1;
         check.fail("broken <law>".into());
         report.checks.push(check);

@@ -135,7 +135,7 @@ pub(super) fn every_check(h: &mut String, report: &Report, lang: Lang) {
                 lang,
                 "Reference: {}.<br>Tolerance: {}.",
                 "Referencia: {}.<br>Tűrés: {}.",
-                english(lang, &check.reference),
+                escape(check.reference.pick(lang)),
                 escape(check.tolerance.pick(lang))
             )
         );
