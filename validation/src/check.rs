@@ -34,8 +34,10 @@ pub struct Check {
     pub metrics: Vec<Metric>,
     /// Cases beyond tolerance, each naming the case and the numbers.
     pub failures: Vec<String>,
-    /// Disagreements between references, reported and not counted as failures.
-    pub findings: Vec<String>,
+    /// Disagreements between references, reported and not counted as
+    /// failures, each in English and in Hungarian.
+    #[serde(serialize_with = "english_each")]
+    pub findings: Vec<Words>,
     /// The findings in one plain sentence, the worst of them named, for a
     /// reader who will not read them all; set by the check that found them.
     #[serde(
@@ -48,6 +50,10 @@ pub struct Check {
 /// A text as `report.json` carries it: its English.
 fn english<S: Serializer>(words: &Words, serializer: S) -> Result<S::Ok, S::Error> {
     serializer.serialize_str(&words.en)
+}
+
+fn english_each<S: Serializer>(words: &[Words], serializer: S) -> Result<S::Ok, S::Error> {
+    serializer.collect_seq(words.iter().map(|w| &w.en))
 }
 
 fn english_if_any<S: Serializer>(words: &Option<Words>, serializer: S) -> Result<S::Ok, S::Error> {
@@ -158,9 +164,9 @@ impl Check {
         self.failures.push(message);
     }
 
-    /// Records a finding.
-    pub fn find(&mut self, message: String) {
-        self.findings.push(message);
+    /// Records a finding, `[English, Hungarian]`.
+    pub fn find(&mut self, [en, hu]: [String; 2]) {
+        self.findings.push(Words { en, hu });
     }
 
     /// Sums the findings up in one plain sentence, `gist`, in English and

@@ -5,6 +5,7 @@
 use glam::DVec3;
 
 use super::cases::{CasesFile, LawCase, LawResult, ResultsFile};
+use crate::case_words;
 use crate::check::{ulps_f32, Check};
 use crate::laws::directions::{max_abs, vec3};
 use crate::laws::{
@@ -134,9 +135,13 @@ fn compare_directions(
         }
         (None, None) => {
             if result.cos_t.is_some_and(|c| c != 0.0) {
-                check.find(format!(
-                    "Mitsuba at {label}: refracts under total internal reflection"
-                ));
+                check.find([
+                    format!("Mitsuba at {label}: refracts under total internal reflection"),
+                    format!(
+                        "a Mitsuba itt: {}: teljes visszaverődésnél is megtöri a sugarat",
+                        case_words::in_hungarian(label)
+                    ),
+                ]);
             }
         }
         _ => check.fail(format!(
@@ -181,9 +186,13 @@ fn scalar(check: &mut Check, law: &str, label: &str, ours: f64, mitsuba: Option<
             "{law} at {label}: ours {ours:e}, Mitsuba {mitsuba:e}"
         ));
     } else if verdict.mitsuba_off {
-        check.find(format!(
-            "Mitsuba {law} at {label}: {mitsuba:e}, exact {exact:e} (off by {err:.2e})"
-        ));
+        check.find([
+            format!("Mitsuba {law} at {label}: {mitsuba:e}, exact {exact:e} (off by {err:.2e})"),
+            format!(
+                "a Mitsuba {law} értéke itt: {}: {mitsuba:e}, a pontos {exact:e} (eltérés {err:.2e})",
+                case_words::in_hungarian(label)
+            ),
+        ]);
     }
 }
 
@@ -232,8 +241,12 @@ fn direction(
             "{law} at {label}: ours {ours:?}, Mitsuba {mitsuba:?}"
         ));
     } else if verdict.mitsuba_off {
-        check.find(format!(
-            "Mitsuba {law} at {label}: off the exact direction by {m_err:.2e}"
-        ));
+        check.find([
+            format!("Mitsuba {law} at {label}: off the exact direction by {m_err:.2e}"),
+            format!(
+                "a Mitsuba {law} iránya itt: {}: {m_err:.2e} eltérés a pontos iránytól",
+                case_words::in_hungarian(label)
+            ),
+        ]);
     }
 }

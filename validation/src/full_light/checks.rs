@@ -8,6 +8,7 @@ use super::statistics::{share, RegionMean};
 use super::thresholds::{
     missing_share_tolerance, tolerance_text, ALPHA, FINDING_RELATIVE, POWER, TOLERANCE_RELATIVE,
 };
+use crate::case_words;
 use crate::check::Check;
 
 /// A tracer render as the checks read it: per-pixel mean and unbiased
@@ -368,21 +369,27 @@ fn compare(
         };
         check.measure_in_both(["|t|", "|t|"], w.t.abs(), &at);
         if w.p < threshold && relative > allowance {
+            let (ours, theirs) = (mine.0.mean, reference.0.mean);
+            let (ours_se, theirs_se) = (mine.standard_error(), reference.standard_error());
             let message = format!(
-                "{at}: ours {:.6} ± {:.6}, Mitsuba {:.6} ± {:.6} (t = {:.2}, p = {:.2e} < {threshold:.2e}): \
+                "{at}: ours {ours:.6} ± {ours_se:.6}, Mitsuba {theirs:.6} ± {theirs_se:.6} (t = {:.2}, p = {:.2e} < {threshold:.2e}): \
                  ours is {:.4} of it",
-                mine.0.mean,
-                mine.standard_error(),
-                reference.0.mean,
-                reference.standard_error(),
                 w.t,
                 w.p,
-                mine.0.mean / reference.0.mean
+                ours / theirs
             );
             if relative <= allowance + FINDING_RELATIVE {
-                check.find(format!(
-                    "{message}, within {FINDING_RELATIVE} beyond the allowance"
-                ));
+                let at_hu = case_words::in_hungarian(&at);
+                check.find([
+                    format!("{message}, within {FINDING_RELATIVE} beyond the allowance"),
+                    format!(
+                        "{at_hu}: a miénk {ours:.6} ± {ours_se:.6}, a Mitsubáé {theirs:.6} ± {theirs_se:.6} (t = {:.2}, p = {:.2e} < {threshold:.2e}): \
+                         a miénk annak {:.4}-szerese, legfeljebb {FINDING_RELATIVE} eltéréssel a ráhagyáson túl",
+                        w.t,
+                        w.p,
+                        ours / theirs
+                    ),
+                ]);
             } else {
                 check.fail(message);
             }

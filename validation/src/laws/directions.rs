@@ -6,6 +6,7 @@ use glam::Vec3;
 use super::reference::{DirectionCase, MitsubaLaws};
 use super::under_test::Laws;
 use super::verdict::{Verdict, DIRECTION_ABS, GROSS_ABS, MITSUBA_ABS};
+use crate::case_words;
 use crate::check::Check;
 
 /// The extra allowance for a refracted direction near the critical angle,
@@ -95,9 +96,13 @@ pub fn check_directions(laws: &Laws, reference: &MitsubaLaws) -> Check {
             }
             (None, None) => {
                 if case.mitsuba.cos_t != 0.0 {
-                    check.find(format!(
-                        "Mitsuba at {label}: refracts under total internal reflection"
-                    ));
+                    check.find([
+                        format!("Mitsuba at {label}: refracts under total internal reflection"),
+                        format!(
+                            "a Mitsuba itt: {}: teljes visszaverődésnél is megtöri a sugarat",
+                            case_words::in_hungarian(label)
+                        ),
+                    ]);
                 }
             }
             (ours, exact) => check.fail(format!(
@@ -168,8 +173,12 @@ fn compare_direction(
             "{law} at {label}: ours {ours:?}, Mitsuba {mitsuba:?} differ by {disagreement:.2e}"
         ));
     } else if verdict.mitsuba_off {
-        check.find(format!(
-            "Mitsuba {law} at {label}: off the exact direction by {mitsuba_err:.2e}"
-        ));
+        check.find([
+            format!("Mitsuba {law} at {label}: off the exact direction by {mitsuba_err:.2e}"),
+            format!(
+                "a Mitsuba {law} iránya itt: {}: {mitsuba_err:.2e} eltérés a pontos iránytól",
+                case_words::in_hungarian(label)
+            ),
+        ]);
     }
 }

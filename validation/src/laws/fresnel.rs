@@ -5,6 +5,7 @@
 use super::reference::MitsubaLaws;
 use super::under_test::Laws;
 use super::verdict::{Verdict, GROSS_ABS, MITSUBA_ABS, OURS_ULPS};
+use crate::case_words;
 use crate::check::{ulps_f32, Check};
 
 fn power(amplitude: [f64; 2]) -> f64 {
@@ -59,10 +60,16 @@ fn compare_scalar(
             "{quantity} at {label}: ours {ours:e}, Mitsuba {mitsuba:e} differ by {disagreement:.2e} > {GROSS_ABS:e}"
         ));
     } else if verdict.mitsuba_off {
-        check.find(format!(
-            "Mitsuba {quantity} at {label}: {mitsuba:e}, exact {exact:e} (off by {mitsuba_err:.2e}, {:.0} f32 ulps)",
-            ulps_f32(mitsuba, exact)
-        ));
+        let ulps = ulps_f32(mitsuba, exact);
+        check.find([
+            format!(
+                "Mitsuba {quantity} at {label}: {mitsuba:e}, exact {exact:e} (off by {mitsuba_err:.2e}, {ulps:.0} f32 ulps)"
+            ),
+            format!(
+                "a Mitsuba {quantity} értéke itt: {}: {mitsuba:e}, a pontos {exact:e} (eltérés {mitsuba_err:.2e}, {ulps:.0} f32 ulps)",
+                case_words::in_hungarian(label)
+            ),
+        ]);
     }
 }
 
@@ -107,10 +114,19 @@ pub fn check_dielectric(laws: &Laws, reference: &MitsubaLaws) -> Check {
         // Mitsuba signals TIR by cos_t = 0, which index-matched grazing light also gives.
         let mitsuba_tir = case.mitsuba.cos_t == 0.0 && case.eta != 1.0;
         if mitsuba_tir != case.exact.tir {
-            check.find(format!(
-                "Mitsuba at {label}: total internal reflection {mitsuba_tir} but exactly {}",
-                case.exact.tir
-            ));
+            let yes_no = |tir: bool| if tir { "igen" } else { "nem" };
+            check.find([
+                format!(
+                    "Mitsuba at {label}: total internal reflection {mitsuba_tir} but exactly {}",
+                    case.exact.tir
+                ),
+                format!(
+                    "a Mitsuba itt: {}: teljes visszaverődés: {}, a pontos: {}",
+                    case_words::in_hungarian(label),
+                    yes_no(mitsuba_tir),
+                    yes_no(case.exact.tir)
+                ),
+            ]);
         }
         let (m, e) = (&case.mitsuba, &case.exact);
         compare_polarised(
