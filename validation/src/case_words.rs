@@ -1,6 +1,7 @@
 //! The cases' labels in Hungarian: where a check's worst value occurred
 //! (`glass inside critical +1ulp`, `pixel (42, 13) R`, `silver at 75°`),
-//! as the references and the checks name their cases.
+//! as the references and the checks name their cases, and the settings of
+//! a trade-off record (`integrator path, 16 spp`).
 //!
 //! A label is words from a small vocabulary around numbers, symbols and
 //! identifiers (`cos=0.3`, `theta_i=critical-1e-6rad`, `R_p`); the words
@@ -69,6 +70,7 @@ const WORDS: &[(&str, &str)] = &[
     ("scene", "jelenet"),
     ("exact", "pontos"),
     ("case", "eset"),
+    ("law", "törvény"),
     ("pair", "pár"),
     ("floats", "lebegőpontos"),
     ("reals", "valós"),
@@ -78,6 +80,17 @@ const WORDS: &[(&str, &str)] = &[
     ("yellow", "sárga"),
     ("primaries", "alapszínek"),
     ("ptracer", "fénykövető"),
+    ("integrator", "integrátor"),
+    ("local", "helyi"),
+    ("path", "útkövető"),
+    ("photon", "fotontérkép"),
+    ("fresnel", "Fresnel"),
+    ("schlick-rarer", "Schlick (a ritkább oldal szögével)"),
+    ("whitted", "Whitted"),
+    ("box", "doboz"),
+    ("fixed", "rögzített"),
+    ("scaled", "skálázott"),
+    ("precision", "pontosság"),
 ];
 
 /// Words and symbols a label keeps as they are: names, channels, units.
