@@ -34,6 +34,10 @@ pub struct Check {
     pub metrics: Vec<Metric>,
     /// Cases beyond tolerance, each naming the case and the numbers.
     pub failures: Vec<String>,
+    /// Each of [`Check::failures`] in Hungarian, where the check gave it
+    /// ([`Check::fail_in_both`]); not part of `report.json`.
+    #[serde(skip)]
+    failures_hu: Vec<Option<String>>,
     /// Disagreements between references, reported and not counted as
     /// failures, each in English and in Hungarian.
     #[serde(serialize_with = "english_each")]
@@ -98,6 +102,7 @@ impl Check {
             cases: 0,
             metrics: Vec::new(),
             failures: Vec::new(),
+            failures_hu: Vec::new(),
             findings: Vec::new(),
             gist: None,
         }
@@ -159,9 +164,29 @@ impl Check {
         self.metrics.iter().find(|m| m.name == name)
     }
 
-    /// Records a failure.
+    /// Records a failure, in English only.
     pub fn fail(&mut self, message: String) {
         self.failures.push(message);
+        self.failures_hu.push(None);
+    }
+
+    /// Records a failure, `[English, Hungarian]`.
+    pub fn fail_in_both(&mut self, [en, hu]: [String; 2]) {
+        self.failures.push(en);
+        self.failures_hu.push(Some(hu));
+    }
+
+    /// The failure `i` in Hungarian, where the check gave it.
+    pub fn failure_hu(&self, i: usize) -> Option<&str> {
+        self.failures_hu.get(i)?.as_deref()
+    }
+
+    /// Keeps the first `shown` failures and puts `rest` after them,
+    /// `[English, Hungarian]`.
+    pub fn keep_failures(&mut self, shown: usize, rest: [String; 2]) {
+        self.failures.truncate(shown);
+        self.failures_hu.truncate(shown);
+        self.fail_in_both(rest);
     }
 
     /// Records a finding, `[English, Hungarian]`.

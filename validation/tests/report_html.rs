@@ -68,7 +68,10 @@ fn sample() -> (Report, Vec<String>) {
             ("masked edge pixels", 104.0, ""),
         ],
     );
-    render.fail("pixel (1, 2) R: t = 99".into());
+    render.fail_in_both([
+        "pixel (1, 2) R: t = 99".into(),
+        "képpont (1, 2) R: t = 99".into(),
+    ]);
     let colour = check(
         "colour.colour-science.tables",
         471,

@@ -105,11 +105,27 @@ pub fn check_directions(laws: &Laws, reference: &MitsubaLaws) -> Check {
                     ]);
                 }
             }
-            (ours, exact) => check.fail(format!(
-                "{label}: refraction {} but exactly {}",
-                if ours.is_some() { "exists" } else { "is TIR" },
-                if exact.is_some() { "exists" } else { "is TIR" }
-            )),
+            (ours, exact) => check.fail_in_both([
+                format!(
+                    "{label}: refraction {} but exactly {}",
+                    if ours.is_some() { "exists" } else { "is TIR" },
+                    if exact.is_some() { "exists" } else { "is TIR" }
+                ),
+                format!(
+                    "{}: a törés {}, a pontos szerint {}",
+                    case_words::in_hungarian(label),
+                    if ours.is_some() {
+                        "létezik"
+                    } else {
+                        "teljes visszaverődés"
+                    },
+                    if exact.is_some() {
+                        "létezik"
+                    } else {
+                        "teljes visszaverődés"
+                    }
+                ),
+            ]),
         }
     }
     check
@@ -163,15 +179,26 @@ fn compare_direction(
         mitsuba_err,
         MITSUBA_ABS + allowance,
     );
+    let label_hu = case_words::in_hungarian(label);
     if verdict.ours_off {
-        check.fail(format!(
-            "{law} at {label}: ours {ours:?}, exact {exact:?} (off by {ours_err:.2e} > {bound:.1e})"
-        ));
+        check.fail_in_both([
+            format!(
+                "{law} at {label}: ours {ours:?}, exact {exact:?} (off by {ours_err:.2e} > {bound:.1e})"
+            ),
+            format!(
+                "{law} itt: {label_hu}: a miénk {ours:?}, a pontos {exact:?} (eltérés {ours_err:.2e} > {bound:.1e})"
+            ),
+        ]);
     }
     if verdict.gross {
-        check.fail(format!(
-            "{law} at {label}: ours {ours:?}, Mitsuba {mitsuba:?} differ by {disagreement:.2e}"
-        ));
+        check.fail_in_both([
+            format!(
+                "{law} at {label}: ours {ours:?}, Mitsuba {mitsuba:?} differ by {disagreement:.2e}"
+            ),
+            format!(
+                "{law} itt: {label_hu}: a miénk {ours:?} és a Mitsubáé {mitsuba:?} {disagreement:.2e}-vel tér el"
+            ),
+        ]);
     } else if verdict.mitsuba_off {
         check.find([
             format!("Mitsuba {law} at {label}: off the exact direction by {mitsuba_err:.2e}"),

@@ -50,15 +50,26 @@ fn compare_scalar(
         label,
     );
     let verdict = Verdict::of(ours_ulps, OURS_ULPS, disagreement, mitsuba_err, MITSUBA_ABS);
+    let label_hu = case_words::in_hungarian(label);
     if verdict.ours_off {
-        check.fail(format!(
-            "{quantity} at {label}: ours {ours:e}, exact {exact:e} ({ours_ulps:.1} ulps > {OURS_ULPS})"
-        ));
+        check.fail_in_both([
+            format!(
+                "{quantity} at {label}: ours {ours:e}, exact {exact:e} ({ours_ulps:.1} ulps > {OURS_ULPS})"
+            ),
+            format!(
+                "{quantity} itt: {label_hu}: a miénk {ours:e}, a pontos {exact:e} ({ours_ulps:.1} ulps > {OURS_ULPS})"
+            ),
+        ]);
     }
     if verdict.gross {
-        check.fail(format!(
-            "{quantity} at {label}: ours {ours:e}, Mitsuba {mitsuba:e} differ by {disagreement:.2e} > {GROSS_ABS:e}"
-        ));
+        check.fail_in_both([
+            format!(
+                "{quantity} at {label}: ours {ours:e}, Mitsuba {mitsuba:e} differ by {disagreement:.2e} > {GROSS_ABS:e}"
+            ),
+            format!(
+                "{quantity} itt: {label_hu}: a miénk {ours:e} és a Mitsubáé {mitsuba:e} {disagreement:.2e}-vel tér el (> {GROSS_ABS:e})"
+            ),
+        ]);
     } else if verdict.mitsuba_off {
         let ulps = ulps_f32(mitsuba, exact);
         check.find([
@@ -104,12 +115,21 @@ pub fn check_dielectric(laws: &Laws, reference: &MitsubaLaws) -> Check {
         let ours = (laws.dielectric)(case.cos_i as f32, case.eta as f32);
         let label = &case.label;
         check.cases += 1;
-        if ours.is_total_internal_reflection() != case.exact.tir {
-            check.fail(format!(
-                "{label}: total internal reflection {} but exactly {}",
-                ours.is_total_internal_reflection(),
-                case.exact.tir
-            ));
+        let ours_tir = ours.is_total_internal_reflection();
+        if ours_tir != case.exact.tir {
+            let yes_no = |tir: bool| if tir { "igen" } else { "nem" };
+            check.fail_in_both([
+                format!(
+                    "{label}: total internal reflection {ours_tir} but exactly {}",
+                    case.exact.tir
+                ),
+                format!(
+                    "{}: teljes visszaverődés: {}, a pontos: {}",
+                    case_words::in_hungarian(label),
+                    yes_no(ours_tir),
+                    yes_no(case.exact.tir)
+                ),
+            ]);
         }
         // Mitsuba signals TIR by cos_t = 0, which index-matched grazing light also gives.
         let mitsuba_tir = case.mitsuba.cos_t == 0.0 && case.eta != 1.0;
@@ -138,11 +158,18 @@ pub fn check_dielectric(laws: &Laws, reference: &MitsubaLaws) -> Check {
         );
         // The effective index along the path is a convention, not a rounding.
         if (f64::from(ours.eta_path()) - m.eta_it).abs() > 1e-6 * m.eta_it {
-            check.fail(format!(
-                "{label}: eta along the path {} but Mitsuba's eta_it is {}",
-                ours.eta_path(),
-                m.eta_it
-            ));
+            let eta = ours.eta_path();
+            check.fail_in_both([
+                format!(
+                    "{label}: eta along the path {eta} but Mitsuba's eta_it is {}",
+                    m.eta_it
+                ),
+                format!(
+                    "{}: az út menti eta {eta}, de a Mitsuba eta_it értéke {}",
+                    case_words::in_hungarian(label),
+                    m.eta_it
+                ),
+            ]);
         }
     }
     check.sum_up(|c| mitsuba_gist(c, "fresnel"));
@@ -228,10 +255,17 @@ pub fn check_schlick(laws: &Laws, reference: &MitsubaLaws) -> Check {
             &case.label,
         );
         if !(ulps <= OURS_ULPS) {
-            check.fail(format!(
-                "{}: ours {ours:e}, exact {:e} ({ulps:.1} ulps)",
-                case.label, case.exact
-            ));
+            check.fail_in_both([
+                format!(
+                    "{}: ours {ours:e}, exact {:e} ({ulps:.1} ulps)",
+                    case.label, case.exact
+                ),
+                format!(
+                    "{}: a miénk {ours:e}, a pontos {:e} ({ulps:.1} ulps)",
+                    case_words::in_hungarian(&case.label),
+                    case.exact
+                ),
+            ]);
         }
     }
     check

@@ -139,7 +139,12 @@ pub(super) fn every_check(h: &mut String, report: &Report, lang: Lang) {
                 escape(check.tolerance.pick(lang))
             )
         );
-        let failures: Vec<String> = (check.failures.iter()).map(|f| english(lang, f)).collect();
+        let failures: Vec<String> = (check.failures.iter().enumerate())
+            .map(|(k, f)| match (lang, check.failure_hu(k)) {
+                (Lang::Hu, Some(hu)) => escape(hu),
+                _ => english(lang, f),
+            })
+            .collect();
         let findings: Vec<String> = (check.findings.iter())
             .map(|f| escape(f.pick(lang)))
             .collect();
