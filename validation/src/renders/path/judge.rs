@@ -146,8 +146,7 @@ fn judge_under_offset_rule<'a>(
             }
             None => {
                 verdicts.rejected += 1;
-                let [en, _] = message;
-                check.fail(en);
+                check.fail_in_both(message);
             }
         }
     }
