@@ -6,9 +6,9 @@
 //! disagreement between two references (Mitsuba's float32 evaluation against
 //! the exact value, say) that the suite reports without failing for it.
 //!
-//! What a check says to a reader (its title, the gist of its findings) it
-//! says in English and in Hungarian, both given where the check is
-//! declared; `report.json` carries the English.
+//! What a check says to a reader (its title, its reference, the gist of
+//! its findings) it says in English and in Hungarian, both given where
+//! the check is declared; `report.json` carries the English.
 
 use errata::Words;
 use radiometry::Real;
@@ -23,7 +23,8 @@ pub struct Check {
     #[serde(serialize_with = "english")]
     pub title: Words,
     /// The reference the law is compared with, and its version.
-    pub reference: String,
+    #[serde(serialize_with = "english")]
+    pub reference: Words,
     /// The tolerance and why it is that.
     #[serde(serialize_with = "english")]
     pub tolerance: Words,
@@ -33,8 +34,14 @@ pub struct Check {
     pub metrics: Vec<Metric>,
     /// Cases beyond tolerance, each naming the case and the numbers.
     pub failures: Vec<String>,
-    /// Disagreements between references, reported and not counted as failures.
-    pub findings: Vec<String>,
+    /// Each of [`Check::failures`] in Hungarian, where the check gave it
+    /// ([`Check::fail_in_both`]); not part of `report.json`.
+    #[serde(skip)]
+    failures_hu: Vec<Option<String>>,
+    /// Disagreements between references, reported and not counted as
+    /// failures, each in English and in Hungarian.
+    #[serde(serialize_with = "english_each")]
+    pub findings: Vec<Words>,
     /// The findings in one plain sentence, the worst of them named, for a
     /// reader who will not read them all; set by the check that found them.
     #[serde(
@@ -47,6 +54,10 @@ pub struct Check {
 /// A text as `report.json` carries it: its English.
 fn english<S: Serializer>(words: &Words, serializer: S) -> Result<S::Ok, S::Error> {
     serializer.serialize_str(&words.en)
+}
+
+fn english_each<S: Serializer>(words: &[Words], serializer: S) -> Result<S::Ok, S::Error> {
+    serializer.collect_seq(words.iter().map(|w| &w.en))
 }
 
 fn english_if_any<S: Serializer>(words: &Option<Words>, serializer: S) -> Result<S::Ok, S::Error> {
@@ -80,17 +91,18 @@ pub struct Metric {
 }
 
 impl Check {
-    /// A check with no cases compared yet; its `title` and `tolerance` in
-    /// English and in Hungarian.
-    pub fn new(id: &str, title: [&str; 2], reference: &str, tolerance: [&str; 2]) -> Self {
+    /// A check with no cases compared yet; its `title`, `reference` and
+    /// `tolerance` in English and in Hungarian.
+    pub fn new(id: &str, title: [&str; 2], reference: [&str; 2], tolerance: [&str; 2]) -> Self {
         Self {
             id: id.to_owned(),
             title: words(title),
-            reference: reference.to_owned(),
+            reference: words(reference),
             tolerance: words(tolerance),
             cases: 0,
             metrics: Vec::new(),
             failures: Vec::new(),
+            failures_hu: Vec::new(),
             findings: Vec::new(),
             gist: None,
         }
@@ -152,14 +164,34 @@ impl Check {
         self.metrics.iter().find(|m| m.name == name)
     }
 
-    /// Records a failure.
+    /// Records a failure, in English only.
     pub fn fail(&mut self, message: String) {
         self.failures.push(message);
+        self.failures_hu.push(None);
     }
 
-    /// Records a finding.
-    pub fn find(&mut self, message: String) {
-        self.findings.push(message);
+    /// Records a failure, `[English, Hungarian]`.
+    pub fn fail_in_both(&mut self, [en, hu]: [String; 2]) {
+        self.failures.push(en);
+        self.failures_hu.push(Some(hu));
+    }
+
+    /// The failure `i` in Hungarian, where the check gave it.
+    pub fn failure_hu(&self, i: usize) -> Option<&str> {
+        self.failures_hu.get(i)?.as_deref()
+    }
+
+    /// Keeps the first `shown` failures and puts `rest` after them,
+    /// `[English, Hungarian]`.
+    pub fn keep_failures(&mut self, shown: usize, rest: [String; 2]) {
+        self.failures.truncate(shown);
+        self.failures_hu.truncate(shown);
+        self.fail_in_both(rest);
+    }
+
+    /// Records a finding, `[English, Hungarian]`.
+    pub fn find(&mut self, [en, hu]: [String; 2]) {
+        self.findings.push(Words { en, hu });
     }
 
     /// Sums the findings up in one plain sentence, `gist`, in English and
@@ -197,7 +229,7 @@ mod tests {
 
     #[test]
     fn measure_keeps_the_worst_and_where() {
-        let mut check = Check::new("t", ["t", "t"], "t", ["t", "t"]);
+        let mut check = Check::new("t", ["t", "t"], ["t", "t"], ["t", "t"]);
         check.measure("err", 1.0, "a");
         check.measure("err", 3.0, "b");
         check.measure("err", 2.0, "c");
@@ -208,6 +240,6 @@ mod tests {
 
     #[test]
     fn a_check_without_cases_does_not_pass() {
-        assert!(!Check::new("t", ["t", "t"], "t", ["t", "t"]).passed());
+        assert!(!Check::new("t", ["t", "t"], ["t", "t"], ["t", "t"]).passed());
     }
 }

@@ -192,7 +192,10 @@ pub fn check_tables(reference: &Colorimetry) -> Check {
             "CIE 1931 2° colour-matching functions and D65, compiled into the radiometry crate",
             "A CIE 1931 2°-os színillesztő függvények és a D65, a radiometriai könyvtárba fordítva",
         ],
-        &format!("colour-science {}", reference.colour_science_version),
+        [
+            &format!("colour-science {}", reference.colour_science_version),
+            &format!("colour-science {}", reference.colour_science_version),
+        ],
         [
             "bit-identical: the tables are copied, not computed",
             "bitre azonos: a táblázatok másolatok, nem számítottak",
@@ -222,7 +225,10 @@ pub fn check_spectra(laws: &ColourLaws, reference: &Colorimetry) -> Check {
             "Reflectance spectra to XYZ (D65), linear sRGB, sRGB and CIELAB: flat, smooth and the 24 ColorChecker patches",
             "Visszaverődési spektrumok XYZ-be (D65), lineáris sRGB-be, sRGB-be és CIELAB-ba: egyenletes, sima és a 24 ColorChecker-mező",
         ],
-        &format!("colour-science {}", reference.colour_science_version),
+        [
+            &format!("colour-science {}", reference.colour_science_version),
+            &format!("colour-science {}", reference.colour_science_version),
+        ],
         [&format!("XYZ and linear sRGB within {XYZ_ABS:e}, sRGB within {SRGB_ABS:e}, CIELAB within {LAB_ABS:e} (summation order)"), &format!("XYZ és lineáris sRGB legfeljebb {XYZ_ABS:e}, sRGB legfeljebb {SRGB_ABS:e}, CIELAB legfeljebb {LAB_ABS:e} eltéréssel (az összegzés sorrendje)")],
     );
     for case in &reference.spectra {
@@ -253,7 +259,10 @@ pub fn check_delta_e(laws: &ColourLaws, reference: &Colorimetry) -> Check {
             "CIEDE2000 of the 34 test pairs of Sharma, Wu & Dalal (2005)",
             "Sharma, Wu és Dalal (2005) 34 tesztpárjának CIEDE2000-értéke",
         ],
-        &format!("colour-science {} and the paper's printed values", reference.colour_science_version),
+        [
+            &format!("colour-science {} and the paper's printed values", reference.colour_science_version),
+            &format!("colour-science {} és a cikkben nyomtatott értékek", reference.colour_science_version),
+        ],
         [&format!("within {DELTA_E_ABS:e} of colour-science, {PRINTED_ABS:e} of the printed four decimals"), &format!("legfeljebb {DELTA_E_ABS:e} eltérés a colour-science értékétől, {PRINTED_ABS:e} a nyomtatott négy tizedestől")],
     );
     for case in &reference.delta_e_2000 {

@@ -142,10 +142,16 @@ pub fn check_against_nvidia(flip: ErrorMap, reference: &FlipReference) -> Check 
             "LDR ꟻLIP error maps (nv-flip) of image pairs of known character",
             "Ismert jellegű képpárok LDR ꟻLIP-hibatérképei (nv-flip)",
         ],
-        &format!(
-            "NVIDIA's flip-evaluator {} at {} pixels per degree",
-            reference.flip_evaluator_version, reference.pixels_per_degree
-        ),
+        [
+            &format!(
+                "NVIDIA's flip-evaluator {} at {} pixels per degree",
+                reference.flip_evaluator_version, reference.pixels_per_degree
+            ),
+            &format!(
+                "az NVIDIA flip-evaluator {} programja, fokonként {} képponttal",
+                reference.flip_evaluator_version, reference.pixels_per_degree
+            ),
+        ],
         [&format!("mean within {MEAN_ABS:e}, maximum within {MAX_ABS:e} (NVIDIA sums the mean in single precision; the reference keeps seven digits)"), &format!("átlag legfeljebb {MEAN_ABS:e}, a legnagyobb legfeljebb {MAX_ABS:e} eltéréssel (az NVIDIA egyszeres pontossággal összegzi az átlagot; a referencia hét jegyet őriz)")],
     );
     if reference.pixels_per_degree != PIXELS_PER_DEGREE {

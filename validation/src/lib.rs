@@ -28,6 +28,7 @@
 #![warn(missing_docs)]
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
+pub mod case_words;
 pub mod check;
 pub mod checkout;
 pub mod colorimetry;

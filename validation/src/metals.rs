@@ -187,10 +187,16 @@ pub fn check_spectral_colours(laws: &MetalLaws, reference: &MetalsReference) -> 
             "Exact reflectance spectra of gold, silver, copper, aluminium (Mitsuba's measured n, κ) and their colour",
             "Az arany, az ezüst, a réz és az alumínium pontos visszaverődési spektruma (a Mitsuba mért n, κ értékeivel) és színük",
         ],
-        &format!(
-            "colour-science {} on mpmath reflectances; indices from Mitsuba {}",
-            reference.colour_science_version, reference.mitsuba_version
-        ),
+        [
+            &format!(
+                "colour-science {} on mpmath reflectances; indices from Mitsuba {}",
+                reference.colour_science_version, reference.mitsuba_version
+            ),
+            &format!(
+                "colour-science {} az mpmath visszaverődési tényezőin; a törésmutatók a Mitsuba {} adatai",
+                reference.colour_science_version, reference.mitsuba_version
+            ),
+        ],
         [&format!(
             "reflectance within {REFLECTANCE_ABS:e}; colour as in the colorimetry check ({:e} XYZ, {:e} CIELAB)",
             colorimetry::XYZ_ABS,

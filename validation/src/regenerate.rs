@@ -102,8 +102,12 @@ pub fn regenerate(
             "Every committed reference is current by its key, or regenerates with the pinned tools",
             "Minden tárolt referencia naprakész a kulcsa szerint, vagy újragenerálódik a rögzített eszközökkel",
         ],
-        "python-checks/reference_keys.py (the key: generator, inputs, pinned tools) and the \
-         python-checks/ generators in the pinned environment",
+        [
+            "python-checks/reference_keys.py (the key: generator, inputs, pinned tools) and the \
+             python-checks/ generators in the pinned environment",
+            "python-checks/reference_keys.py (a kulcs: generátor, bemenetek, rögzített eszközök) és a \
+             python-checks/ generátorai a rögzített környezetben",
+        ],
         ["the rule of python-checks/reproduce.py: byte-identical, but for the files written \
          through colour-science's BLAS products, whose numbers may move within its stated \
          tolerance", "a python-checks/reproduce.py szabálya: bájtra azonos, kivéve a colour-science BLAS-szorzatain át írt fájlokat, amelyek számai a megadott tűrésén belül mozoghatnak"],

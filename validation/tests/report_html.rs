@@ -40,7 +40,10 @@ fn sample() -> (Report, Vec<String>) {
             ),
         ],
     );
-    laws.find("Mitsuba R at eta=1.0001 outside cos=0.01: 7.180912792682648e-2, exact 7.178980365261572e-2 (off by 1.93e-5, 2594 f32 ulps)".into());
+    laws.find([
+        "Mitsuba R at eta=1.0001 outside cos=0.01: 7.180912792682648e-2, exact 7.178980365261572e-2 (off by 1.93e-5, 2594 f32 ulps)".into(),
+        "a Mitsuba R értéke itt: eta=1.0001 kívül cos=0.01: 7.180912792682648e-2, a pontos 7.178980365261572e-2 (eltérés 1.93e-5, 2594 f32 ulps)".into(),
+    ]);
     let mpmath = check(
         "laws.mpmath.fresnel_dielectric",
         400,
@@ -65,7 +68,10 @@ fn sample() -> (Report, Vec<String>) {
             ("masked edge pixels", 104.0, ""),
         ],
     );
-    render.fail("pixel (1, 2) R: t = 99".into());
+    render.fail_in_both([
+        "pixel (1, 2) R: t = 99".into(),
+        "képpont (1, 2) R: t = 99".into(),
+    ]);
     let colour = check(
         "colour.colour-science.tables",
         471,
@@ -192,7 +198,7 @@ fn check(id: &str, cases: usize, worst: &[(&str, f64, &str)]) -> Check {
     let mut check = Check::new(
         id,
         [&format!("the check {id}"), &format!("az ellenőrzés: {id}")],
-        "a reference",
+        ["a reference", "egy referencia"],
         ["a tolerance", "egy tűrés"],
     );
     check.cases = cases;

@@ -34,6 +34,7 @@ pub const NAMES: &[&str] = &[
     "erratum",
     "brewster",
     "sellmeier",
+    "schott",
     "fraunhofer",
     "welch",
     "sharma",

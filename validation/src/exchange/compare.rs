@@ -5,6 +5,7 @@
 use glam::DVec3;
 
 use super::cases::{CasesFile, LawCase, LawResult, ResultsFile};
+use crate::case_words;
 use crate::check::{ulps_f32, Check};
 use crate::laws::directions::{max_abs, vec3};
 use crate::laws::{
@@ -30,17 +31,20 @@ pub fn check_random(
              bemeneteken, a Mitsubához mérve, a pontos érték helyén f64 törvényeinkkel (az 50 jegyhez mért \
              véletlen esetek: laws.mpmath.random.*)",
         ],
-        &format!("{} on cases.json (seed {})", results.evaluator, cases.seed),
+        [
+            &format!("{} on cases.json (seed {})", results.evaluator, cases.seed),
+            &format!("{} a cases.json eseteire (mag: {})", results.evaluator, cases.seed),
+        ],
         [&format!(
             "ours (f32) within {OURS_ULPS} f32 ulps of our f64 law (itself within 8 f64 ulps of exact), directions within {DIRECTION_ABS:.1e} plus the refraction allowance near the critical angle; Mitsuba beyond {MITSUBA_ABS:.1e} is a finding; ours and Mitsuba within {GROSS_ABS:e}"
         ), &format!("a miénk (f32) legfeljebb {OURS_ULPS} f32 ulp-re az f64 törvényünktől (amely maga legfeljebb 8 f64 ulp-re a pontostól), az irányok legfeljebb {DIRECTION_ABS:.1e} eltéréssel, plusz a törés ráhagyása a határszög közelében; a Mitsuba {MITSUBA_ABS:.1e} fölötti eltérése megállapítás; a miénk és a Mitsubáé legfeljebb {GROSS_ABS:e} eltéréssel")],
     );
     if cases.cases.len() != results.results.len() {
-        check.fail(format!(
-            "{} cases but {} results",
-            cases.cases.len(),
-            results.results.len()
-        ));
+        let (cases, results) = (cases.cases.len(), results.results.len());
+        check.fail_in_both([
+            format!("{cases} cases but {results} results"),
+            format!("{cases} eset, de {results} eredmény"),
+        ]);
         return check;
     }
     for (i, (case, result)) in cases.cases.iter().zip(&results.results).enumerate() {
@@ -68,9 +72,7 @@ fn compare_case(
             let ours = (laws.dielectric)(cos_i as f32, eta as f32);
             let exact = (laws64.dielectric)(cos_i, eta);
             if ours.is_total_internal_reflection() != exact.is_total_internal_reflection() {
-                check.fail(format!(
-                    "{label}: total internal reflection differs between f32 and f64"
-                ));
+                check.fail_in_both(tir_differs(label));
             }
             scalar(
                 check,
@@ -131,14 +133,16 @@ fn compare_directions(
         }
         (None, None) => {
             if result.cos_t.is_some_and(|c| c != 0.0) {
-                check.find(format!(
-                    "Mitsuba at {label}: refracts under total internal reflection"
-                ));
+                check.find([
+                    format!("Mitsuba at {label}: refracts under total internal reflection"),
+                    format!(
+                        "a Mitsuba itt: {}: teljes visszaverődésnél is megtöri a sugarat",
+                        case_words::in_hungarian(label)
+                    ),
+                ]);
             }
         }
-        _ => check.fail(format!(
-            "{label}: total internal reflection differs between f32 and f64"
-        )),
+        _ => check.fail_in_both(tir_differs(label)),
     }
 }
 
@@ -157,12 +161,16 @@ fn scalar(check: &mut Check, law: &str, label: &str, ours: f64, mitsuba: Option<
         label,
     );
     if verdict.ours_off {
-        check.fail(format!(
-            "{law} at {label}: ours {ours:e}, f64 law {exact:e} ({ulps:.1} ulps)"
-        ));
+        check.fail_in_both([
+            format!("{law} at {label}: ours {ours:e}, f64 law {exact:e} ({ulps:.1} ulps)"),
+            format!(
+                "{law} itt: {}: a miénk {ours:e}, az f64 törvény {exact:e} ({ulps:.1} ulps)",
+                case_words::in_hungarian(label)
+            ),
+        ]);
     }
     let Some(mitsuba) = mitsuba else {
-        check.fail(format!("{law} at {label}: no result from Mitsuba"));
+        check.fail_in_both(no_result(law, label));
         return;
     };
     check.measure_in_both(
@@ -174,13 +182,21 @@ fn scalar(check: &mut Check, law: &str, label: &str, ours: f64, mitsuba: Option<
         label,
     );
     if verdict.gross {
-        check.fail(format!(
-            "{law} at {label}: ours {ours:e}, Mitsuba {mitsuba:e}"
-        ));
+        check.fail_in_both([
+            format!("{law} at {label}: ours {ours:e}, Mitsuba {mitsuba:e}"),
+            format!(
+                "{law} itt: {}: a miénk {ours:e}, a Mitsubáé {mitsuba:e}",
+                case_words::in_hungarian(label)
+            ),
+        ]);
     } else if verdict.mitsuba_off {
-        check.find(format!(
-            "Mitsuba {law} at {label}: {mitsuba:e}, exact {exact:e} (off by {err:.2e})"
-        ));
+        check.find([
+            format!("Mitsuba {law} at {label}: {mitsuba:e}, exact {exact:e} (off by {err:.2e})"),
+            format!(
+                "a Mitsuba {law} értéke itt: {}: {mitsuba:e}, a pontos {exact:e} (eltérés {err:.2e})",
+                case_words::in_hungarian(label)
+            ),
+        ]);
     }
 }
 
@@ -208,12 +224,18 @@ fn direction(
         label,
     );
     if verdict.ours_off {
-        check.fail(format!(
-            "{law} at {label}: ours {ours:?}, f64 law {exact:?} (off by {err:.2e} > {bound:.1e})"
-        ));
+        check.fail_in_both([
+            format!(
+                "{law} at {label}: ours {ours:?}, f64 law {exact:?} (off by {err:.2e} > {bound:.1e})"
+            ),
+            format!(
+                "{law} itt: {}: a miénk {ours:?}, az f64 törvény {exact:?} (eltérés {err:.2e} > {bound:.1e})",
+                case_words::in_hungarian(label)
+            ),
+        ]);
     }
     let Some(mitsuba) = mitsuba else {
-        check.fail(format!("{law} at {label}: no result from Mitsuba"));
+        check.fail_in_both(no_result(law, label));
         return;
     };
     check.measure_in_both(
@@ -225,12 +247,43 @@ fn direction(
         label,
     );
     if verdict.gross {
-        check.fail(format!(
-            "{law} at {label}: ours {ours:?}, Mitsuba {mitsuba:?}"
-        ));
+        check.fail_in_both([
+            format!("{law} at {label}: ours {ours:?}, Mitsuba {mitsuba:?}"),
+            format!(
+                "{law} itt: {}: a miénk {ours:?}, a Mitsubáé {mitsuba:?}",
+                case_words::in_hungarian(label)
+            ),
+        ]);
     } else if verdict.mitsuba_off {
-        check.find(format!(
-            "Mitsuba {law} at {label}: off the exact direction by {m_err:.2e}"
-        ));
+        check.find([
+            format!("Mitsuba {law} at {label}: off the exact direction by {m_err:.2e}"),
+            format!(
+                "a Mitsuba {law} iránya itt: {}: {m_err:.2e} eltérés a pontos iránytól",
+                case_words::in_hungarian(label)
+            ),
+        ]);
     }
+}
+
+/// The failure of a case whose total internal reflection differs between
+/// the tiers, `[English, Hungarian]`.
+fn tir_differs(label: &str) -> [String; 2] {
+    [
+        format!("{label}: total internal reflection differs between f32 and f64"),
+        format!(
+            "{}: a teljes visszaverődés eltér f32 és f64 között",
+            case_words::in_hungarian(label)
+        ),
+    ]
+}
+
+/// The failure of a case Mitsuba gave no result for, `[English, Hungarian]`.
+fn no_result(law: &str, label: &str) -> [String; 2] {
+    [
+        format!("{law} at {label}: no result from Mitsuba"),
+        format!(
+            "{law} itt: {}: a Mitsuba nem adott eredményt",
+            case_words::in_hungarian(label)
+        ),
+    ]
 }

@@ -8,6 +8,7 @@ use super::statistics::{share, RegionMean};
 use super::thresholds::{
     missing_share_tolerance, tolerance_text, ALPHA, FINDING_RELATIVE, POWER, TOLERANCE_RELATIVE,
 };
+use crate::case_words;
 use crate::check::Check;
 
 /// A tracer render as the checks read it: per-pixel mean and unbiased
@@ -64,7 +65,10 @@ pub fn check_independent(name: &str, decoded: &DecodedLight) -> Option<Check> {
             &format!("{name}: Mitsuba's light tracer against its path tracer with area lights, where the camera sees a diffuse surface"),
             &format!("{name}: a Mitsuba fénykövetője az útkövetőjéhez mérve felületi fényforrásokkal, ahol a kamera diffúz felületet lát"),
         ],
-        "Mitsuba 3 ptracer and path (scalar_rgb), mitsuba_full_light.json",
+        [
+            "Mitsuba 3 ptracer and path (scalar_rgb), mitsuba_full_light.json",
+            "a Mitsuba 3 fénykövetője ('ptracer') és útkövetője ('path', scalar_rgb), mitsuba_full_light.json",
+        ],
         [&format!("Welch's t on the region's mean per pass (R + G + B): fails when p < α = {ALPHA}"), &format!("Welch-féle t a tartomány átlagára menetenként (R + G + B): hibás, ha p < α = {ALPHA}")],
     );
     check.cases = 1;
@@ -112,7 +116,10 @@ pub fn check_missing_share(name: &str, decoded: &DecodedLight) -> Check {
             &format!("{name}: the share of the light Mitsuba's path integrator misses, 1 − path / full"),
             &format!("{name}: a fény része, amelyet a Mitsuba útkövető integrátora nem talál meg, 1 − út / teljes"),
         ],
-        "Mitsuba 3 ptracer and path with area lights (scalar_rgb), mitsuba_full_light.json",
+        [
+            "Mitsuba 3 ptracer and path with area lights (scalar_rgb), mitsuba_full_light.json",
+            "a Mitsuba 3 fénykövetője ('ptracer') és útkövetője ('path') felületi fényforrásokkal (scalar_rgb), mitsuba_full_light.json",
+        ],
         missing_share_tolerance(control).each_ref().map(String::as_str),
     );
     let pairs: Vec<(Region, Estimate)> = Region::ALL
@@ -183,7 +190,10 @@ pub fn check_all_the_light_in(
             &format!("{name}: the tracer's {integrator} against all the light (Mitsuba's light tracer and area lights)"),
             &format!("{name}: a sugárkövető {integrator} integrátora az összes fényhez mérve (a Mitsuba fénykövetője és felületi fényforrások)"),
         ],
-        "Mitsuba 3 ptracer and path with area lights (scalar_rgb), mitsuba_full_light.json",
+        [
+            "Mitsuba 3 ptracer and path with area lights (scalar_rgb), mitsuba_full_light.json",
+            "a Mitsuba 3 fénykövetője ('ptracer') és útkövetője ('path') felületi fényforrásokkal (scalar_rgb), mitsuba_full_light.json",
+        ],
         tolerance_text().each_ref().map(String::as_str),
     );
     let pairs: Vec<(Region, Estimate)> = regions
@@ -219,7 +229,10 @@ pub fn check_same_missing_light(
             &format!("{name}: the tracer's {integrator} misses what Mitsuba's path misses"),
             &format!("{name}: a sugárkövető {integrator} integrátora ugyanazt nem találja meg, amit a Mitsuba útkövetője"),
         ],
-        "Mitsuba 3 path (scalar_rgb), mitsuba_full_light.json",
+        [
+            "Mitsuba 3 path (scalar_rgb), mitsuba_full_light.json",
+            "a Mitsuba 3 útkövetője ('path', scalar_rgb), mitsuba_full_light.json",
+        ],
         tolerance_text().each_ref().map(String::as_str),
     );
     for region in Region::ALL {
@@ -356,21 +369,27 @@ fn compare(
         };
         check.measure_in_both(["|t|", "|t|"], w.t.abs(), &at);
         if w.p < threshold && relative > allowance {
+            let (ours, theirs) = (mine.0.mean, reference.0.mean);
+            let (ours_se, theirs_se) = (mine.standard_error(), reference.standard_error());
             let message = format!(
-                "{at}: ours {:.6} ± {:.6}, Mitsuba {:.6} ± {:.6} (t = {:.2}, p = {:.2e} < {threshold:.2e}): \
+                "{at}: ours {ours:.6} ± {ours_se:.6}, Mitsuba {theirs:.6} ± {theirs_se:.6} (t = {:.2}, p = {:.2e} < {threshold:.2e}): \
                  ours is {:.4} of it",
-                mine.0.mean,
-                mine.standard_error(),
-                reference.0.mean,
-                reference.standard_error(),
                 w.t,
                 w.p,
-                mine.0.mean / reference.0.mean
+                ours / theirs
             );
             if relative <= allowance + FINDING_RELATIVE {
-                check.find(format!(
-                    "{message}, within {FINDING_RELATIVE} beyond the allowance"
-                ));
+                let at_hu = case_words::in_hungarian(&at);
+                check.find([
+                    format!("{message}, within {FINDING_RELATIVE} beyond the allowance"),
+                    format!(
+                        "{at_hu}: a miénk {ours:.6} ± {ours_se:.6}, a Mitsubáé {theirs:.6} ± {theirs_se:.6} (t = {:.2}, p = {:.2e} < {threshold:.2e}): \
+                         a miénk annak {:.4}-szerese, legfeljebb {FINDING_RELATIVE} eltéréssel a ráhagyáson túl",
+                        w.t,
+                        w.p,
+                        ours / theirs
+                    ),
+                ]);
             } else {
                 check.fail(message);
             }

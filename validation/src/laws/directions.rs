@@ -6,6 +6,7 @@ use glam::Vec3;
 use super::reference::{DirectionCase, MitsubaLaws};
 use super::under_test::Laws;
 use super::verdict::{Verdict, DIRECTION_ABS, GROSS_ABS, MITSUBA_ABS};
+use crate::case_words;
 use crate::check::Check;
 
 /// The extra allowance for a refracted direction near the critical angle,
@@ -61,7 +62,7 @@ pub fn check_directions(laws: &Laws, reference: &MitsubaLaws) -> Check {
             "Mirror and refracted directions, both sides, tilted normals, TIR",
             "Tükrözött és megtört irányok, mindkét oldalról, döntött normálisokkal, teljes visszaverődéssel",
         ],
-        &reference.version(),
+        reference.version().each_ref().map(String::as_str),
         [&format!(
             "ours within {DIRECTION_ABS:.1e} of exact per component, plus the refraction_allowance for the conditioning near the critical angle; Mitsuba beyond {MITSUBA_ABS:.1e} is a finding; ours and Mitsuba within {GROSS_ABS:e}"
         ), &format!("a miénk komponensenként legfeljebb {DIRECTION_ABS:.1e} eltéréssel a pontostól, plusz a refraction_allowance a határszög közeli kondicionáltság miatt; a Mitsuba {MITSUBA_ABS:.1e} fölötti eltérése megállapítás; a miénk és a Mitsubáé legfeljebb {GROSS_ABS:e} eltéréssel")],
@@ -95,16 +96,36 @@ pub fn check_directions(laws: &Laws, reference: &MitsubaLaws) -> Check {
             }
             (None, None) => {
                 if case.mitsuba.cos_t != 0.0 {
-                    check.find(format!(
-                        "Mitsuba at {label}: refracts under total internal reflection"
-                    ));
+                    check.find([
+                        format!("Mitsuba at {label}: refracts under total internal reflection"),
+                        format!(
+                            "a Mitsuba itt: {}: teljes visszaverődésnél is megtöri a sugarat",
+                            case_words::in_hungarian(label)
+                        ),
+                    ]);
                 }
             }
-            (ours, exact) => check.fail(format!(
-                "{label}: refraction {} but exactly {}",
-                if ours.is_some() { "exists" } else { "is TIR" },
-                if exact.is_some() { "exists" } else { "is TIR" }
-            )),
+            (ours, exact) => check.fail_in_both([
+                format!(
+                    "{label}: refraction {} but exactly {}",
+                    if ours.is_some() { "exists" } else { "is TIR" },
+                    if exact.is_some() { "exists" } else { "is TIR" }
+                ),
+                format!(
+                    "{}: a törés {}, a pontos szerint {}",
+                    case_words::in_hungarian(label),
+                    if ours.is_some() {
+                        "létezik"
+                    } else {
+                        "teljes visszaverődés"
+                    },
+                    if exact.is_some() {
+                        "létezik"
+                    } else {
+                        "teljes visszaverődés"
+                    }
+                ),
+            ]),
         }
     }
     check
@@ -158,18 +179,33 @@ fn compare_direction(
         mitsuba_err,
         MITSUBA_ABS + allowance,
     );
+    let label_hu = case_words::in_hungarian(label);
     if verdict.ours_off {
-        check.fail(format!(
-            "{law} at {label}: ours {ours:?}, exact {exact:?} (off by {ours_err:.2e} > {bound:.1e})"
-        ));
+        check.fail_in_both([
+            format!(
+                "{law} at {label}: ours {ours:?}, exact {exact:?} (off by {ours_err:.2e} > {bound:.1e})"
+            ),
+            format!(
+                "{law} itt: {label_hu}: a miénk {ours:?}, a pontos {exact:?} (eltérés {ours_err:.2e} > {bound:.1e})"
+            ),
+        ]);
     }
     if verdict.gross {
-        check.fail(format!(
-            "{law} at {label}: ours {ours:?}, Mitsuba {mitsuba:?} differ by {disagreement:.2e}"
-        ));
+        check.fail_in_both([
+            format!(
+                "{law} at {label}: ours {ours:?}, Mitsuba {mitsuba:?} differ by {disagreement:.2e}"
+            ),
+            format!(
+                "{law} itt: {label_hu}: a miénk {ours:?} és a Mitsubáé {mitsuba:?} {disagreement:.2e}-vel tér el"
+            ),
+        ]);
     } else if verdict.mitsuba_off {
-        check.find(format!(
-            "Mitsuba {law} at {label}: off the exact direction by {mitsuba_err:.2e}"
-        ));
+        check.find([
+            format!("Mitsuba {law} at {label}: off the exact direction by {mitsuba_err:.2e}"),
+            format!(
+                "a Mitsuba {law} iránya itt: {}: {mitsuba_err:.2e} eltérés a pontos iránytól",
+                case_words::in_hungarian(label)
+            ),
+        ]);
     }
 }

@@ -5,6 +5,7 @@
 use super::reference::MitsubaLaws;
 use super::under_test::Laws;
 use super::verdict::{Verdict, GROSS_ABS, MITSUBA_ABS, OURS_ULPS};
+use crate::case_words;
 use crate::check::{ulps_f32, Check};
 
 fn power(amplitude: [f64; 2]) -> f64 {
@@ -49,20 +50,37 @@ fn compare_scalar(
         label,
     );
     let verdict = Verdict::of(ours_ulps, OURS_ULPS, disagreement, mitsuba_err, MITSUBA_ABS);
+    let label_hu = case_words::in_hungarian(label);
     if verdict.ours_off {
-        check.fail(format!(
-            "{quantity} at {label}: ours {ours:e}, exact {exact:e} ({ours_ulps:.1} ulps > {OURS_ULPS})"
-        ));
+        check.fail_in_both([
+            format!(
+                "{quantity} at {label}: ours {ours:e}, exact {exact:e} ({ours_ulps:.1} ulps > {OURS_ULPS})"
+            ),
+            format!(
+                "{quantity} itt: {label_hu}: a miénk {ours:e}, a pontos {exact:e} ({ours_ulps:.1} ulps > {OURS_ULPS})"
+            ),
+        ]);
     }
     if verdict.gross {
-        check.fail(format!(
-            "{quantity} at {label}: ours {ours:e}, Mitsuba {mitsuba:e} differ by {disagreement:.2e} > {GROSS_ABS:e}"
-        ));
+        check.fail_in_both([
+            format!(
+                "{quantity} at {label}: ours {ours:e}, Mitsuba {mitsuba:e} differ by {disagreement:.2e} > {GROSS_ABS:e}"
+            ),
+            format!(
+                "{quantity} itt: {label_hu}: a miénk {ours:e} és a Mitsubáé {mitsuba:e} {disagreement:.2e}-vel tér el (> {GROSS_ABS:e})"
+            ),
+        ]);
     } else if verdict.mitsuba_off {
-        check.find(format!(
-            "Mitsuba {quantity} at {label}: {mitsuba:e}, exact {exact:e} (off by {mitsuba_err:.2e}, {:.0} f32 ulps)",
-            ulps_f32(mitsuba, exact)
-        ));
+        let ulps = ulps_f32(mitsuba, exact);
+        check.find([
+            format!(
+                "Mitsuba {quantity} at {label}: {mitsuba:e}, exact {exact:e} (off by {mitsuba_err:.2e}, {ulps:.0} f32 ulps)"
+            ),
+            format!(
+                "a Mitsuba {quantity} értéke itt: {}: {mitsuba:e}, a pontos {exact:e} (eltérés {mitsuba_err:.2e}, {ulps:.0} f32 ulps)",
+                case_words::in_hungarian(label)
+            ),
+        ]);
     }
 }
 
@@ -88,7 +106,7 @@ pub fn check_dielectric(laws: &Laws, reference: &MitsubaLaws) -> Check {
             "Dielectric Fresnel R, R_s, R_p, both sides, normal to grazing, TIR",
             "Dielektrikum Fresnel-egyenletei: R, R_s, R_p, mindkét oldalról, merőlegestől súrolóig, teljes visszaverődéssel",
         ],
-        &reference.version(),
+        reference.version().each_ref().map(String::as_str),
         [&format!(
             "ours within {OURS_ULPS} f32 ulps of exact; Mitsuba beyond {MITSUBA_ABS:.1e} of exact is a finding; ours and Mitsuba within {GROSS_ABS:e}"
         ), &format!("a miénk legfeljebb {OURS_ULPS} f32 ulp-re a pontostól; a Mitsuba {MITSUBA_ABS:.1e} fölötti eltérése a pontostól megállapítás; a miénk és a Mitsubáé legfeljebb {GROSS_ABS:e} eltéréssel")],
@@ -97,20 +115,38 @@ pub fn check_dielectric(laws: &Laws, reference: &MitsubaLaws) -> Check {
         let ours = (laws.dielectric)(case.cos_i as f32, case.eta as f32);
         let label = &case.label;
         check.cases += 1;
-        if ours.is_total_internal_reflection() != case.exact.tir {
-            check.fail(format!(
-                "{label}: total internal reflection {} but exactly {}",
-                ours.is_total_internal_reflection(),
-                case.exact.tir
-            ));
+        let ours_tir = ours.is_total_internal_reflection();
+        if ours_tir != case.exact.tir {
+            let yes_no = |tir: bool| if tir { "igen" } else { "nem" };
+            check.fail_in_both([
+                format!(
+                    "{label}: total internal reflection {ours_tir} but exactly {}",
+                    case.exact.tir
+                ),
+                format!(
+                    "{}: teljes visszaverődés: {}, a pontos: {}",
+                    case_words::in_hungarian(label),
+                    yes_no(ours_tir),
+                    yes_no(case.exact.tir)
+                ),
+            ]);
         }
         // Mitsuba signals TIR by cos_t = 0, which index-matched grazing light also gives.
         let mitsuba_tir = case.mitsuba.cos_t == 0.0 && case.eta != 1.0;
         if mitsuba_tir != case.exact.tir {
-            check.find(format!(
-                "Mitsuba at {label}: total internal reflection {mitsuba_tir} but exactly {}",
-                case.exact.tir
-            ));
+            let yes_no = |tir: bool| if tir { "igen" } else { "nem" };
+            check.find([
+                format!(
+                    "Mitsuba at {label}: total internal reflection {mitsuba_tir} but exactly {}",
+                    case.exact.tir
+                ),
+                format!(
+                    "a Mitsuba itt: {}: teljes visszaverődés: {}, a pontos: {}",
+                    case_words::in_hungarian(label),
+                    yes_no(mitsuba_tir),
+                    yes_no(case.exact.tir)
+                ),
+            ]);
         }
         let (m, e) = (&case.mitsuba, &case.exact);
         compare_polarised(
@@ -122,11 +158,18 @@ pub fn check_dielectric(laws: &Laws, reference: &MitsubaLaws) -> Check {
         );
         // The effective index along the path is a convention, not a rounding.
         if (f64::from(ours.eta_path()) - m.eta_it).abs() > 1e-6 * m.eta_it {
-            check.fail(format!(
-                "{label}: eta along the path {} but Mitsuba's eta_it is {}",
-                ours.eta_path(),
-                m.eta_it
-            ));
+            let eta = ours.eta_path();
+            check.fail_in_both([
+                format!(
+                    "{label}: eta along the path {eta} but Mitsuba's eta_it is {}",
+                    m.eta_it
+                ),
+                format!(
+                    "{}: az út menti eta {eta}, de a Mitsuba eta_it értéke {}",
+                    case_words::in_hungarian(label),
+                    m.eta_it
+                ),
+            ]);
         }
     }
     check.sum_up(|c| mitsuba_gist(c, "fresnel"));
@@ -141,7 +184,7 @@ pub fn check_conductor(laws: &Laws, reference: &MitsubaLaws) -> Check {
             "Conductor Fresnel R, R_s, R_p (n + iκ), normal to grazing",
             "Vezető Fresnel-egyenletei: R, R_s, R_p (n + iκ), merőlegestől súrolóig",
         ],
-        &reference.version(),
+        reference.version().each_ref().map(String::as_str),
         [&format!(
             "ours within {OURS_ULPS} f32 ulps of exact; Mitsuba beyond {MITSUBA_ABS:.1e} of exact is a finding; ours and Mitsuba within {GROSS_ABS:e}"
         ), &format!("a miénk legfeljebb {OURS_ULPS} f32 ulp-re a pontostól; a Mitsuba {MITSUBA_ABS:.1e} fölötti eltérése a pontostól megállapítás; a miénk és a Mitsubáé legfeljebb {GROSS_ABS:e} eltéréssel")],
@@ -199,7 +242,7 @@ pub fn check_schlick(laws: &Laws, reference: &MitsubaLaws) -> Check {
             "Schlick's approximation F0 + (1 − F0)(1 − cos)⁵ against its definition",
             "A Schlick-közelítés, F0 + (1 − F0)(1 − cos)⁵, a definíciójához mérve",
         ],
-        "mpmath, 50 digits",
+        ["mpmath, 50 digits", "mpmath, 50 jegyre"],
         [&format!("within {OURS_ULPS} f32 ulps: five products and a sum, each rounded once"), &format!("legfeljebb {OURS_ULPS} f32 ulp: öt szorzat és egy összeg, mindegyik egyszer kerekítve")],
     );
     for case in &reference.schlick {
@@ -212,10 +255,17 @@ pub fn check_schlick(laws: &Laws, reference: &MitsubaLaws) -> Check {
             &case.label,
         );
         if !(ulps <= OURS_ULPS) {
-            check.fail(format!(
-                "{}: ours {ours:e}, exact {:e} ({ulps:.1} ulps)",
-                case.label, case.exact
-            ));
+            check.fail_in_both([
+                format!(
+                    "{}: ours {ours:e}, exact {:e} ({ulps:.1} ulps)",
+                    case.label, case.exact
+                ),
+                format!(
+                    "{}: a miénk {ours:e}, a pontos {:e} ({ulps:.1} ulps)",
+                    case_words::in_hungarian(&case.label),
+                    case.exact
+                ),
+            ]);
         }
     }
     check

@@ -182,10 +182,12 @@ impl MitsubaLaws {
         crate::reference::load(dir, FILE, SCHEMA)
     }
 
-    pub(super) fn version(&self) -> String {
-        format!(
-            "Mitsuba {} ({}, float32) and mpmath exact values",
-            self.mitsuba_version, self.mitsuba_variant
-        )
+    /// The reference and its version, `[English, Hungarian]`.
+    pub(super) fn version(&self) -> [String; 2] {
+        let (version, variant) = (&self.mitsuba_version, &self.mitsuba_variant);
+        [
+            format!("Mitsuba {version} ({variant}, float32) and mpmath exact values"),
+            format!("Mitsuba {version} ({variant}, float32) és az mpmath pontos értékei"),
+        ]
     }
 }

@@ -38,7 +38,10 @@ pub fn check_angles(laws: &Laws, laws64: &Laws64, reference: &FresnelMpmath) -> 
             "Snell's law for angles, the critical and Brewster angles, in f64 and f32",
             "A Snellius–Descartes-törvény a szögekre, a határszög és a Brewster-szög, f64-ben és f32-ben",
         ],
-        &format!("mpmath {}, 50 digits", reference.mpmath_version),
+        [
+            &format!("mpmath {}, 50 digits", reference.mpmath_version),
+            &format!("mpmath {}, 50 jegyre", reference.mpmath_version),
+        ],
         [&format!(
             "transmitted_angle within {BOUND_ULPS} + (8/π)·cond_θ ulps of the tier, cond_θ its \
              condition number over θ_i (the law reads a sine or cosine of θ_i, rounded once), \

@@ -23,7 +23,10 @@ pub fn check_dielectric(laws: &Laws, laws64: &Laws64, reference: &FresnelMpmath)
             "Dielectric Fresnel R_s, R_p, R, T in f64 and f32, extremes included",
             "Dielektrikum Fresnel-egyenletei: R_s, R_p, R, T f64-ben és f32-ben, a szélsőségekkel együtt",
         ],
-        &format!("mpmath {}, 50 digits", reference.mpmath_version),
+        [
+            &format!("mpmath {}, 50 digits", reference.mpmath_version),
+            &format!("mpmath {}, 50 jegyre", reference.mpmath_version),
+        ],
         [&format!(
             "within {DIELECTRIC_F64_BOUND_ULPS} ulps in f64 and {BOUND_ULPS} in f32: a handful of \
              roundings from correctly rounded, doubled in R_p's square"
@@ -67,7 +70,10 @@ pub fn check_conductor(laws: &Laws, laws64: &Laws64, reference: &FresnelMpmath) 
             "Conductor Fresnel R_s, R_p, R in f64 and f32, extremes included",
             "Vezető Fresnel-egyenletei: R_s, R_p, R f64-ben és f32-ben, a szélsőségekkel együtt",
         ],
-        &format!("mpmath {}, 50 digits", reference.mpmath_version),
+        [
+            &format!("mpmath {}, 50 digits", reference.mpmath_version),
+            &format!("mpmath {}, 50 jegyre", reference.mpmath_version),
+        ],
         [&format!(
             "within {CONDUCTOR_BOUND_ULPS} ulps of the tier: about ten roundings, squared in R_p"
         ), &format!("legfeljebb {CONDUCTOR_BOUND_ULPS} ulp a szint szerint: nagyjából tíz kerekítés, R_p-ben négyzetre emelve")],

@@ -83,7 +83,7 @@ mod tests {
             f64::EPSILON / 2.0
         );
         assert_eq!(Exact(-1.0, -f64::EPSILON / 8.0).ulp("f64"), f64::EPSILON);
-        let mut check = Check::new("t", ["t", "t"], "t", ["t", "t"]);
+        let mut check = Check::new("t", ["t", "t"], ["t", "t"], ["t", "t"]);
         compare(
             &mut check,
             "f64",

@@ -85,7 +85,7 @@ pub(super) fn figures_or_report(
                     "The report's figures, drawn by python-checks/plot_report.py",
                     "A jelentés ábrái, a python-checks/plot_report.py rajzolja",
                 ],
-                "matplotlib",
+                ["matplotlib", "matplotlib"],
                 ["the script succeeds", "a szkript sikeresen lefut"],
             );
             check.cases = 1;

@@ -45,8 +45,10 @@ pub(super) fn summarise_failures(check: &mut Check) {
     const SHOWN: usize = 10;
     if check.failures.len() > SHOWN {
         let rest = check.failures.len() - SHOWN;
-        check.failures.truncate(SHOWN);
-        check.failures.push(format!("… and {rest} more"));
+        check.keep_failures(
+            SHOWN,
+            [format!("… and {rest} more"), format!("… és még {rest}")],
+        );
     }
 }
 

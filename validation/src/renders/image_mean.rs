@@ -84,9 +84,15 @@ pub(super) fn judge(
         if !differs(a.mean, b.mean, w, threshold) {
             continue;
         }
+        let numbers = |[mine, theirs]: [&str; 2]| {
+            format!(
+                "{mine} {:.6} (n = {}), {theirs} {:.6} (n = {}), t = {:.2}, p = {:.2e} < {threshold:.2e}",
+                a.mean, ours.samples, b.mean, mitsuba.samples, w.t, w.p
+            )
+        };
         let message = format!(
-            "the image's mean, {channel}: ours {:.6} (n = {}), Mitsuba {:.6} (n = {}), t = {:.2}, p = {:.2e} < {threshold:.2e}",
-            a.mean, ours.samples, b.mean, mitsuba.samples, w.t, w.p
+            "the image's mean, {channel}: {}",
+            numbers(["ours", "Mitsuba"])
         );
         let agrees_moved = moved().is_some_and(|(mean, variance)| {
             let moved = Side {
@@ -98,9 +104,16 @@ pub(super) fn judge(
             statistics::welch(moved, b).is_none_or(|w| !differs(moved.mean, b.mean, w, threshold))
         });
         if agrees_moved {
-            check.find(format!(
-                "{message}; the tracer under Mitsuba's offset rule agrees: Mitsuba's offsets move this light"
-            ));
+            check.find([
+                format!(
+                    "{message}; the tracer under Mitsuba's offset rule agrees: Mitsuba's offsets move this light"
+                ),
+                format!(
+                    "a kép átlaga, {channel}: {}; a sugárkövető a Mitsuba eltolási szabályával egyezik: \
+                     ezt a fényt a Mitsuba sugáreltolásai mozdítják el",
+                    numbers(["a miénk", "a Mitsubáé"])
+                ),
+            ]);
         } else {
             check.fail(message);
         }

@@ -111,7 +111,10 @@ fn new_check(name: &str) -> Check {
             &format!("{name}: the tracer's path against Mitsuba's path integrator, per-pixel Welch t-test"),
             &format!("{name}: a sugárkövető útkövetése a Mitsuba útkövető integrátorához mérve, képpontonkénti Welch-féle t-próba"),
         ],
-        "Mitsuba 3 path integrator through mi.render (scalar_rgb), box filter (mitsuba_renders.json)",
+        [
+            "Mitsuba 3 path integrator through mi.render (scalar_rgb), box filter (mitsuba_renders.json)",
+            "a Mitsuba 3 útkövető integrátora ('path') az mi.render útján (scalar_rgb), dobozszűrővel (mitsuba_renders.json)",
+        ],
         [&format!(
             "a pixel-channel fails when p < α/m, α = {ALPHA} over the m t-tests (Bonferroni: one correct \
              render in {:.0} fails by chance), and its means differ by more than the Whitted tolerance \
@@ -125,28 +128,41 @@ fn new_check(name: &str) -> Check {
 /// The findings of a comparison whose rejections Mitsuba's ray offsets
 /// explain, an example of each, and the check's summary.
 fn record_findings(check: &mut Check, name: &str, verdicts: &Verdicts) {
-    if let Some(example) = &verdicts.offset_example {
-        check.find(format!(
-            "{} pixel-channels differ significantly from Mitsuba's path integrator, each by \
-             less than Mitsuba's own ray offsets (RayEpsilon ≈ 8.9e-5 relative) move it; e.g. {example}",
-            verdicts.offset_findings
-        ));
+    if let Some([en, hu]) = &verdicts.offset_example {
+        let n = verdicts.offset_findings;
+        check.find([
+            format!(
+                "{n} pixel-channels differ significantly from Mitsuba's path integrator, each by \
+                 less than Mitsuba's own ray offsets (RayEpsilon ≈ 8.9e-5 relative) move it; e.g. {en}"
+            ),
+            format!(
+                "{n} képpont-színcsatorna szignifikánsan eltér a Mitsuba útkövető integrátorától, \
+                 mindegyik kevesebbel, mint amennyivel a Mitsuba saját sugáreltolásai (RayEpsilon ≈ 8.9e-5 \
+                 relatív) elmozdítják; például {hu}"
+            ),
+        ]);
     }
-    if let Some(example) = &verdicts.rule_example {
-        check.find(format!(
-            "{} pixel-channels differ significantly from Mitsuba's path integrator, and agree with it \
-             when the tracer starts its secondary rays as Mitsuba does, {:.3e} (1 + max |p_i|) off the \
-             surface: Mitsuba's offsets move this light; e.g. {example}",
-            verdicts.rule_findings,
-            MITSUBA_RAY_EPSILON
-        ));
+    if let Some([en, hu]) = &verdicts.rule_example {
+        let n = verdicts.rule_findings;
+        check.find([
+            format!(
+                "{n} pixel-channels differ significantly from Mitsuba's path integrator, and agree with it \
+                 when the tracer starts its secondary rays as Mitsuba does, {MITSUBA_RAY_EPSILON:.3e} (1 + max |p_i|) off the \
+                 surface: Mitsuba's offsets move this light; e.g. {en}"
+            ),
+            format!(
+                "{n} képpont-színcsatorna szignifikánsan eltér a Mitsuba útkövető integrátorától, és egyezik \
+                 vele, ha a sugárkövető a Mitsubához hasonlóan {MITSUBA_RAY_EPSILON:.3e} (1 + max |p_i|) távolságra \
+                 indítja a másodlagos sugarait a felülettől: ezt a fényt a Mitsuba sugáreltolásai mozdítják el; például {hu}"
+            ),
+        ]);
     }
     check.sum_up(|c| {
         let pixels = verdicts.offset_findings + verdicts.rule_findings;
         let means = c
             .findings
             .iter()
-            .filter(|f| f.starts_with("the image's mean"))
+            .filter(|f| f.en.starts_with("the image's mean"))
             .count();
         [
             format!(

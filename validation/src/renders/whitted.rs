@@ -31,7 +31,10 @@ pub fn compare_whitted(name: &str, reference: &Decoded, ours: &Image) -> Compare
             &format!("{name}: the tracer's whitted against a Whitted integrator on Mitsuba's primitives, per pixel"),
             &format!("{name}: a sugárkövető Whitted-féle képe egy Whitted-integrátorhoz mérve a Mitsuba primitívjein, képpontonként"),
         ],
-        "Mitsuba 3 (scalar_rgb, float32): ray_intersect, fresnel_conductor, reflect (mitsuba_renders.json)",
+        [
+            "Mitsuba 3 (scalar_rgb, float32): ray_intersect, fresnel_conductor, reflect (mitsuba_renders.json)",
+            "Mitsuba 3 (scalar_rgb, float32): ray_intersect, fresnel_conductor, 'reflect' (mitsuba_renders.json)",
+        ],
         [&format!(
             "|ours − Mitsuba| ≤ {TOLERANCE_ABSOLUTE:e} + {TOLERANCE_RELATIVE:e} · |Mitsuba| per channel, \
              edge pixels masked: both float32, different intersections and ray offsets; the s = 100 lobe \

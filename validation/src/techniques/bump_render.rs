@@ -86,7 +86,10 @@ pub fn check_bump_render(
             "Bump mapping in a render: shading changes, silhouettes and shadows do not",
             "Buckaleképzés egy képen: az árnyalás változik, a körvonalak és az árnyékok nem",
         ],
-        "the same scene without its bump field (Whitted, bump_sphere.json)",
+        [
+            "the same scene without its bump field (Whitted, bump_sphere.json)",
+            "ugyanaz a jelenet a buckatere nélkül (Whitted, bump_sphere.json)",
+        ],
         [&format!(
             "exact: a flat field changes no bit, the first object seen changes at no pixel, no \
              pixel off the bumped sphere changes; more than {CHANGED_SHARE:.3} of the bumped sphere's pixels change"

@@ -31,7 +31,10 @@ pub fn check_envmap() -> Check {
             "Environment maps (lat-long, cube, sphere): a direction back from its texel",
             "Környezeti térképek (lat-long, kocka, gömb): egy irány vissza a texeléből",
         ],
-        "the direction itself; the slides' cube-map example worked by hand (−Z, u = 29/42, v = 11/56)",
+        [
+            "the direction itself; the slides' cube-map example worked by hand (−Z, u = 29/42, v = 11/56)",
+            "maga az irány; a diák kockatérkép-példája kézzel kiszámolva (−Z, u = 29/42, v = 11/56)",
+        ],
         [&format!(
             "{ENVMAP_ROUND_TRIP:.2e} rad (lat-long, cube), 32 ε / m rad up to 4 √ε (sphere, m = |r + e|), the example to 4 ε"
         ), &format!("{ENVMAP_ROUND_TRIP:.2e} rad (lat-long, kocka), 32 ε / m rad legfeljebb 4 √ε-ig (gömb, m = |r + e|), a példa 4 ε-ig")],

@@ -29,7 +29,10 @@ pub fn check_sellmeier(glass: &Sellmeier) -> Check {
             "N-BK7's refractive index by the Sellmeier equation at the Fraunhofer lines",
             "Az N-BK7 törésmutatója a Sellmeier-egyenletből a Fraunhofer-vonalaknál",
         ],
-        "Schott's N-BK7 data sheet (five printed decimals)",
+        [
+            "Schott's N-BK7 data sheet (five printed decimals)",
+            "a Schott N-BK7 adatlapja (öt nyomtatott tizedesjegy)",
+        ],
         [
             &format!("within {DATA_SHEET_ABS:e}, half a unit in the last printed digit"),
             &format!("legfeljebb {DATA_SHEET_ABS:e}, fél egység az utolsó nyomtatott jegyben"),
@@ -71,7 +74,10 @@ pub fn check_prism(glass: &Sellmeier) -> Check {
             "A 60° prism: the traced deviation at symmetric incidence is the analytic minimum deviation",
             "Egy 60°-os prizma: a szimmetrikus beesésnél követett eltérítés az analitikus legkisebb eltérítés",
         ],
-        "δ_min = 2 asin(n sin(A/2)) − A (Snell's law at both faces of a symmetric passage)",
+        [
+            "δ_min = 2 asin(n sin(A/2)) − A (Snell's law at both faces of a symmetric passage)",
+            "δ_min = 2 arcsin(n sin(A/2)) − A (a Snellius–Descartes-törvény mindkét lapon, szimmetrikus áthaladásnál)",
+        ],
         [&format!("within {PRISM_ABS:e} rad; any other incidence deviates more"), &format!("legfeljebb {PRISM_ABS:e} rad; minden más beesés jobban eltérít")],
     );
     let prism = Prism::new(60f64.to_radians()).expect("60° is an apex angle");
@@ -156,7 +162,10 @@ pub fn check_dispersion_render(three: fn(&tracer::scene::Scene) -> tracer::rende
             "A glass sphere of N-BK7: the slides' three etas and one index against the spectral render",
             "N-BK7 üveggömb: a diák három eta-értéke és egyetlen törésmutatója a spektrális képhez mérve",
         ],
-        "85 Whitted renders at the Sellmeier index, integrated with the CIE 1931 tables under D65",
+        [
+            "85 Whitted renders at the Sellmeier index, integrated with the CIE 1931 tables under D65",
+            "85 Whitted-féle kép a Sellmeier-féle törésmutatóval, a CIE 1931 táblázataival integrálva D65 alatt",
+        ],
         [&format!(
             "the three etas closer than one index in ΔE2000 mean and relative RMSE; away from the \
              sphere the spectral render equals the single-index one within {FLAT_SPECTRUM_RELATIVE:e}, relative"

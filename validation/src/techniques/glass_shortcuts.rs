@@ -199,7 +199,10 @@ pub fn check_cheap_refraction_render(
             "The slides' cheap refraction (c = η − 1) rendered through a glass sphere against Snell's law",
             "A diák olcsó fénytörése (c = η − 1) üveggömbön át leképezve, a Snellius–Descartes-törvényhez mérve",
         ],
-        "the same tracer (Whitted) with Snell's refracted direction, the dispersion sphere at n_d",
+        [
+            "the same tracer (Whitted) with Snell's refracted direction, the dispersion sphere at n_d",
+            "ugyanaz a sugárkövető (Whitted) a Snellius–Descartes-törvény szerint megtört iránnyal, a diszperziós gömb n_d-nél",
+        ],
         [&format!(
             "relative RMSE at most {CHEAP_CENTRE_RMSE} where sin θi < {centre}; expected to fail as \
              a shortcut at the rim (sin θi > {rim}): relative RMSE within [{lo}, {hi}]; no pixel off \
@@ -273,7 +276,10 @@ pub fn check_empirical_fresnel_render(
             "The slides' empirical Fresnel form, fitted to the glass, rendered on a glass sphere against the exact law",
             "A diák empirikus Fresnel-alakja az üveghez illesztve, üveggömbön leképezve, a pontos törvényhez mérve",
         ],
-        "the same tracer (Whitted) with the exact Fresnel equations, the dispersion sphere at n_d",
+        [
+            "the same tracer (Whitted) with the exact Fresnel equations, the dispersion sphere at n_d",
+            "ugyanaz a sugárkövető (Whitted) a pontos Fresnel-egyenletekkel, a diszperziós gömb n_d-nél",
+        ],
         [&format!(
             "expected to show the fit's error: relative RMSE over the sphere within [{lo}, {hi}], \
              below Schlick's; no pixel off the sphere changed"

@@ -132,7 +132,10 @@ pub fn check_distance(
             "Environment mapping against ray tracing: a mirror sphere's error as its surroundings move away",
             "Környezetleképzés a sugárkövetéshez mérve: egy tükörgömb hibája, ahogy a környezete távolodik",
         ],
-        "the same mirror traced among the same surroundings (Whitted); the map captured from its centre by the tracer (cube, 48² a face), 48 × 48 pixels",
+        [
+            "the same mirror traced among the same surroundings (Whitted); the map captured from its centre by the tracer (cube, 48² a face), 48 × 48 pixels",
+            "ugyanaz a tükör ugyanabban a környezetben követve (Whitted); a térképet a sugárkövető a középpontjából rögzíti (kocka, lapja 48²), 48 × 48 képpont",
+        ],
         distance_tolerance().each_ref().map(String::as_str),
     );
     for sweep in SWEEPS {
@@ -214,7 +217,10 @@ pub fn check_self_reflection(
             "Environment mapping against ray tracing: two mirrors side by side cannot show each other",
             "Környezetleképzés a sugárkövetéshez mérve: két egymás melletti tükör nem mutathatja egymást",
         ],
-        "the pair traced (Whitted), each mirror's map captured from its centre; a lone mirror under the same sky",
+        [
+            "the pair traced (Whitted), each mirror's map captured from its centre; a lone mirror under the same sky",
+            "a pár követve (Whitted), mindkét tükör térképe a saját középpontjából rögzítve; egy magányos tükör ugyanazon ég alatt",
+        ],
         [&format!(
             "expected to fail as a shortcut: the pair's relative RMSE above {PAIR_RATIO} × a lone \
              mirror's, and a mean ΔE2000 above {SEEING_FLOOR} where each mirror shows the other"

@@ -203,7 +203,10 @@ pub fn check_planar_reflection(
             "Planar reflection (the reflection matrix, two passes) against the traced mirror floor",
             "Síktükrözés (a tükrözési mátrix, két menet) a követett tükörpadlóhoz mérve",
         ],
-        "the same tracer (Whitted) with the floor a conductor, every reflected ray traced",
+        [
+            "the same tracer (Whitted) with the floor a conductor, every reflected ray traced",
+            "ugyanaz a sugárkövető (Whitted) vezető padlóval, minden visszavert sugarat követve",
+        ],
         [&format!(
             "weighted by the exact Fresnel law, the mirrored pass within {GEOMETRY_RELATIVE:e} \
              (relative) of the truth at all but {GEOMETRY_EDGE_SHARE} of the mirror's pixels; \

@@ -215,7 +215,10 @@ pub fn check_planar_shadow(
             "Projected planar shadows (the shadow matrix) against the traced shadows",
             "Síkra vetített árnyékok (az árnyékmátrix) a követett árnyékokhoz mérve",
         ],
-        "the same tracer (Whitted) with its shadow rays",
+        [
+            "the same tracer (Whitted) with its shadow rays",
+            "ugyanaz a sugárkövető (Whitted) az árnyéksugaraival",
+        ],
         [&format!(
             "on the floor all but {FLOOR_EDGE_SHARE} of the pixels agree (the shadows' edges); \
              expected to fail as a shortcut: more than {MISSED_FLOOR} pixels of an object in \

@@ -19,7 +19,10 @@ pub fn check_projected_shadow() -> Check {
             "The slides' projected-shadow matrix against the tracer's ray–plane intersection",
             "A diák vetítettárnyék-mátrixa a sugárkövető sugár–sík metszéséhez mérve",
         ],
-        "tracer::geometry::Plane::intersect (f32) on the ray from the light through the vertex",
+        [
+            "tracer::geometry::Plane::intersect (f32) on the ray from the light through the vertex",
+            "tracer::geometry::Plane::intersect (f32) a fényforrásból a csúcson át haladó sugáron",
+        ],
         [&format!("the points within {RELATIVE:e} of the distance, relative; Cast exactly when the vertex comes first"), &format!("a pontok legfeljebb {RELATIVE:e} relatív eltéréssel a távolsághoz képest; pontosan akkor vet árnyékot, ha a csúcs van elöl")],
     );
     let normals = [

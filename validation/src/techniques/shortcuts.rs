@@ -21,7 +21,10 @@ pub fn check_cheap_refraction(curves: &mut Vec<RefractionCurve>) -> Check {
             "The slides' cheap refraction against Snell's law, entering water and glass",
             "A diák olcsó fénytörése a Snellius–Descartes-törvényhez mérve, vízbe és üvegbe lépve",
         ],
-        "Snell's law in vector form (radiometry::specular::refract)",
+        [
+            "Snell's law in vector form (radiometry::specular::refract)",
+            "a Snellius–Descartes-törvény vektoros alakja ('radiometry::specular::refract')",
+        ],
         ["c = 1 bends by exactly half the incidence angle (to 1e-12 rad); the angles from Snell's law measured", "c = 1 pontosan a beesési szög felével tör (1e-12 rad-ig); a Snellius–Descartes-törvénytől való szögeltérés mérve"],
     );
     for ((medium, into_hu), eta) in [(("water", "vízbe"), 1.33), (("glass", "üvegbe"), 1.5)] {
@@ -88,7 +91,10 @@ pub fn check_empirical_fresnel(curves: &mut Vec<FitCurve>) -> Check {
             "The slides' bias + scale (1 + I·N)^power fitted to the exact Fresnel law, beside Schlick",
             "A diák eltolás + skála · (1 + I·N)^power alakja a pontos Fresnel-törvényhez illesztve, a Schlick-közelítés mellett",
         ],
-        "the exact dielectric and conductor laws (radiometry), every 0.1° from 0° to 90°",
+        [
+            "the exact dielectric and conductor laws (radiometry), every 0.1° from 0° to 90°",
+            "a dielektrikum és a vezető pontos törvényei (a 'radiometry' könyvtárban), 0°-tól 90°-ig 0,1°-onként",
+        ],
         ["the fit's RMS no larger than Schlick's (Schlick is one member of the form's family)", "az illesztés RMS-hibája nem nagyobb a Schlick-közelítésénél (a Schlick-közelítés is az alak családjába tartozik)"],
     );
     for (name, interface) in SUITE {

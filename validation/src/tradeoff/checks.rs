@@ -66,7 +66,7 @@ pub fn none(dir: &Path) -> Check {
             "The speed/accuracy trade-off records",
             "A sebesség és a pontosság cseréjének feljegyzései",
         ],
-        DIR,
+        [DIR, DIR],
         [
             "one record a lit course scene",
             "kurzusjelenetenként egy feljegyzés",
@@ -120,7 +120,10 @@ fn announced(file: &Path) -> Check {
             &format!("{stem}: the speed/accuracy trade of every shortcut the scene allows, as recorded"),
             &format!("{stem}: a jelenet minden megengedett rövidítésének sebesség–pontosság cseréje, ahogy feljegyezték"),
         ],
-        &format!("{}, written by `{REGENERATE}`", file.display()),
+        [
+            &format!("{}, written by `{REGENERATE}`", file.display()),
+            &format!("{}, a `{REGENERATE}` írta", file.display()),
+        ],
         [&format!(
             "schema {SCHEMA} version {SCHEMA_VERSION}; every measure finite, ≥ 0 and ꟻLIP ≤ 1; \
              the truth's relative noise ≤ {UNCONVERGED}; the fronts, verdicts and findings recorded \

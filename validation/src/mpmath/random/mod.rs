@@ -139,7 +139,10 @@ pub fn check_random(
                         reference.seed
                     ),
                 ],
-                &format!("mpmath {}, 50 digits, correctly rounded to the tier", reference.mpmath_version),
+                [
+                    &format!("mpmath {}, 50 digits, correctly rounded to the tier", reference.mpmath_version),
+                    &format!("mpmath {}, 50 jegyre, a pontossági szintre helyesen kerekítve", reference.mpmath_version),
+                ],
                 [&format!(
                     "every case within {BOUND_ULPS} floating-point numbers of the correctly rounded value \
                      (dielectric in f64: {DIELECTRIC_F64_BOUND_ULPS}; conductor: {CONDUCTOR_BOUND_ULPS}; transmitted_angle: {BOUND_ULPS} + (8/π)·cond_θ), the same decision on total internal \

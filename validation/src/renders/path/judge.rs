@@ -3,6 +3,7 @@
 //! finding; and the pixel-channels where neither side varies.
 
 use super::sides::{Sides, Verdicts};
+use crate::case_words;
 use crate::check::Check;
 use crate::compare::welch::guarded_variance;
 use crate::renders::common::{pixel_label, tolerance, ALPHA};
@@ -42,14 +43,14 @@ pub(super) fn judge_tests<'a>(
 /// The first pass of [`judge_tests`]: each t-test at the threshold, a
 /// rejection within what Mitsuba's own ray offsets move its pixel (the
 /// generator's measured sensitivity) kept as a finding. Returns the
-/// rejections left unexplained, with their messages.
+/// rejections left unexplained, with their messages `[English, Hungarian]`.
 fn judge_by_sensitivity(
     check: &mut Check,
     sides: &Sides,
     tests: &[(usize, Welch)],
     heat: &mut [f64],
     verdicts: &mut Verdicts,
-) -> Vec<(usize, String)> {
+) -> Vec<(usize, [String; 2])> {
     let (ours, m_mean) = (sides.ours.0, &sides.mitsuba.mean);
     let offset_sensitivity = &sides.mitsuba.offset_sensitivity;
     let threshold = verdicts.threshold;
@@ -67,24 +68,31 @@ fn judge_by_sensitivity(
         let standard_error = difference / w.t.abs();
         let shifted = (difference - allowance).max(0.0) / standard_error;
         let p_shifted = statistics::student_t_two_sided(shifted.abs(), w.dof);
-        let message = format!(
-            "{}: ours {:.6} (n = {}), Mitsuba {:.6} (n = {}), t = {:.2}, p = {:.2e} < {threshold:.2e}",
-            pixel_label(sides.width, i),
-            ours[i],
-            sides.our_samples,
-            m_mean[i],
-            sides.mitsuba_samples,
-            w.t,
-            w.p
-        );
+        let label = pixel_label(sides.width, i);
+        let figures = |[mine, theirs]: [&str; 2]| {
+            format!(
+                "{mine} {:.6} (n = {}), {theirs} {:.6} (n = {}), t = {:.2}, p = {:.2e} < {threshold:.2e}",
+                ours[i], sides.our_samples, m_mean[i], sides.mitsuba_samples, w.t, w.p
+            )
+        };
+        let message = [
+            format!("{label}: {}", figures(["ours", "Mitsuba"])),
+            format!(
+                "{}: {}",
+                case_words::in_hungarian(&label),
+                figures(["a miénk", "a Mitsubáé"])
+            ),
+        ];
         if p_shifted >= threshold {
             verdicts.offset_findings += 1;
             verdicts.explained[i] = true;
             if verdicts.offset_example.is_none() {
-                verdicts.offset_example = Some(format!(
-                    "{message}, within the {:.2e} that Mitsuba's ray offsets move this pixel",
-                    offset_sensitivity[i]
-                ));
+                let [en, hu] = message;
+                let moved = offset_sensitivity[i];
+                verdicts.offset_example = Some([
+                    format!("{en}, within the {moved:.2e} that Mitsuba's ray offsets move this pixel"),
+                    format!("{hu}, azon a {moved:.2e}-n belül, amennyivel a Mitsuba sugáreltolásai ezt a képpontot elmozdítják"),
+                ]);
             }
         } else {
             unexplained.push((i, message));
@@ -99,7 +107,7 @@ fn judge_by_sensitivity(
 fn judge_under_offset_rule<'a>(
     check: &mut Check,
     sides: &Sides,
-    unexplained: Vec<(usize, String)>,
+    unexplained: Vec<(usize, [String; 2])>,
     verdicts: &mut Verdicts,
     moved_render: &dyn Fn() -> &'a Result<(Vec<f64>, Vec<f64>), String>,
 ) {
@@ -129,14 +137,16 @@ fn judge_under_offset_rule<'a>(
                 verdicts.rule_findings += 1;
                 verdicts.explained[i] = true;
                 if verdicts.rule_example.is_none() {
-                    verdicts.rule_example = Some(format!(
-                        "{message}; under Mitsuba's offsets ours {moved_mean:.6}"
-                    ));
+                    let [en, hu] = message;
+                    verdicts.rule_example = Some([
+                        format!("{en}; under Mitsuba's offsets ours {moved_mean:.6}"),
+                        format!("{hu}; a Mitsuba sugáreltolásaival a miénk {moved_mean:.6}"),
+                    ]);
                 }
             }
             None => {
                 verdicts.rejected += 1;
-                check.fail(message);
+                check.fail_in_both(message);
             }
         }
     }

@@ -51,9 +51,9 @@ pub(super) struct Verdicts {
     pub(super) threshold: f64,
     pub(super) rejected: usize,
     pub(super) offset_findings: usize,
-    pub(super) offset_example: Option<String>,
+    pub(super) offset_example: Option<[String; 2]>,
     pub(super) rule_findings: usize,
-    pub(super) rule_example: Option<String>,
+    pub(super) rule_example: Option<[String; 2]>,
     /// Per pixel-channel: a rejection attributed to Mitsuba's offsets.
     pub(super) explained: Vec<bool>,
 }

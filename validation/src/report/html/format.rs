@@ -2,6 +2,7 @@
 
 use std::fmt::Write as _;
 
+use crate::case_words;
 use crate::check::Check;
 use record::Lang;
 
@@ -62,6 +63,16 @@ pub(super) fn english(lang: Lang, text: &str) -> String {
     match lang {
         Lang::En => escape(text),
         Lang::Hu => format!("<span lang=en>{}</span>", escape(text)),
+    }
+}
+
+/// A case's label (where a worst value occurred, a metal), escaped; on
+/// the Hungarian page in Hungarian where its words are all in
+/// [`case_words`]'s vocabulary, and marked as English where they are not.
+pub(super) fn case(lang: Lang, label: &str) -> String {
+    match (lang, case_words::hungarian(label)) {
+        (Lang::Hu, Some(hu)) => escape(&hu),
+        _ => english(lang, label),
     }
 }
 

@@ -19,7 +19,7 @@ use crate::check::Check;
 use areas::{gather, Gathered};
 use course_texts::course_texts_card;
 use figures::{figure, thumbnail, REGENERATE};
-use format::{english, escape, number, readable, readable_at, status};
+use format::{case, english, escape, number, readable, readable_at, status};
 use record::{say, Lang};
 use renders::render_gallery;
 use style::STYLE;
@@ -213,7 +213,7 @@ fn findings(h: &mut String, report: &Report, lang: Lang) {
     for check in with {
         let gist = match &check.gist {
             Some(gist) => escape(gist.pick(lang)),
-            None => english(lang, &check.findings[0]),
+            None => escape(check.findings[0].pick(lang)),
         };
         let n = check.findings.len();
         let _ = writeln!(
@@ -226,7 +226,7 @@ fn findings(h: &mut String, report: &Report, lang: Lang) {
             }
         );
         for f in &check.findings {
-            let _ = writeln!(h, "<li>{}</li>", english(lang, f));
+            let _ = writeln!(h, "<li>{}</li>", escape(f.pick(lang)));
         }
         h.push_str("</ul></details></li>\n");
     }
@@ -284,7 +284,7 @@ fn area_section(h: &mut String, a: &Gathered, lang: Lang) {
                     m.worst,
                     &readable(m.worst)
                 ),
-                english(lang, &readable_at(&m.at))
+                case(lang, &readable_at(&m.at))
             );
         }
     }
@@ -349,7 +349,7 @@ mod tests {
     #[test]
     fn a_failed_check_is_shown_open_and_marked() {
         let mut report = Report::new(true, "optics validate --quick");
-        let mut check = Check::new("x.y", ["t", "t"], "r", ["tol", "tol"]);
+        let mut check = Check::new("x.y", ["t", "t"], ["r", "r"], ["tol", "tol"]);
         check.cases = 1;
         check.fail("broken <law>".into());
         report.checks.push(check);

@@ -3,7 +3,7 @@
 
 use std::fmt::Write as _;
 
-use super::format::{english, escape, number, readable, status, swatch};
+use super::format::{case, english, escape, number, readable, status, swatch};
 use crate::report::document::Report;
 use record::{say, Lang};
 
@@ -33,8 +33,8 @@ pub(super) fn metal_colours(h: &mut String, report: &Report, lang: Lang) {
             let _ = writeln!(
                 h,
                 "<tr><td>{}</td><td>{}</td>{}{}<td>{} {}</td></tr>",
-                english(lang, &w.metal),
-                english(lang, &w.method),
+                case(lang, &w.metal),
+                case(lang, &w.method),
                 number(
                     "td",
                     &at("delta_e_2000"),
@@ -66,7 +66,7 @@ pub(super) fn speed(h: &mut String, report: &Report, lang: Lang) {
             let _ = writeln!(
                 h,
                 "<tr><td>{}</td>{}{}</tr>",
-                english(lang, &t.method),
+                case(lang, &t.method),
                 number(
                     "td",
                     &format!("/speed/{k}/ns_per_colour"),
@@ -135,19 +135,28 @@ pub(super) fn every_check(h: &mut String, report: &Report, lang: Lang) {
                 lang,
                 "Reference: {}.<br>Tolerance: {}.",
                 "Referencia: {}.<br>Tűrés: {}.",
-                english(lang, &check.reference),
+                escape(check.reference.pick(lang)),
                 escape(check.tolerance.pick(lang))
             )
         );
+        let failures: Vec<String> = (check.failures.iter().enumerate())
+            .map(|(k, f)| match (lang, check.failure_hu(k)) {
+                (Lang::Hu, Some(hu)) => escape(hu),
+                _ => english(lang, f),
+            })
+            .collect();
+        let findings: Vec<String> = (check.findings.iter())
+            .map(|f| escape(f.pick(lang)))
+            .collect();
         let kinds = [
-            (lang.pick("Failures", "Sikertelen esetek"), &check.failures),
-            (lang.pick("Findings", "Megállapítások"), &check.findings),
+            (lang.pick("Failures", "Sikertelen esetek"), failures),
+            (lang.pick("Findings", "Megállapítások"), findings),
         ];
         for (kind, list) in kinds {
             if !list.is_empty() {
                 let _ = writeln!(h, "<p>{kind} ({}):</p><ul>", list.len());
                 for item in list {
-                    let _ = writeln!(h, "<li>{}</li>", english(lang, item));
+                    let _ = writeln!(h, "<li>{item}</li>");
                 }
                 h.push_str("</ul>\n");
             }

@@ -5,9 +5,10 @@
 use std::fmt::Write as _;
 
 use super::figures::figure;
-use super::format::{english, escape, inline_code, number, readable};
+use super::format::{case, english, escape, inline_code, number, readable};
 use crate::report::document::Report;
 use crate::tradeoff::checks::REGENERATE;
+use crate::tradeoff::prose::sentences;
 use crate::tradeoff::record::{Point, Record};
 use record::{say, Lang};
 
@@ -54,9 +55,9 @@ pub(super) fn tradeoffs(h: &mut String, report: &Report, figures: &[&String], la
         );
         stamp(h, record, lang);
         if let Some(words) = report.tradeoff_words.get(&stem) {
-            let words = match lang {
-                Lang::En => inline_code(words),
-                Lang::Hu => format!("<span lang=en>{}</span>", inline_code(words)),
+            let words = match (lang, &record.findings) {
+                (Lang::Hu, Some(findings)) => inline_code(&sentences(findings, lang).join(" ")),
+                _ => inline_code(words),
             };
             let _ = writeln!(
                 h,
@@ -80,7 +81,7 @@ fn stamp(h: &mut String, record: &Record, lang: Lang) {
     let load = if record.load.is_empty() {
         String::new()
     } else {
-        format!(" ({})", english(lang, &record.load))
+        format!(" ({})", case(lang, &record.load))
     };
     let _ = writeln!(
         h,
@@ -122,7 +123,7 @@ fn table(h: &mut String, k: usize, record: &Record, lang: Lang) {
         let _ = writeln!(
             h,
             "<tr><td>{}</td>{}<td class=num>{}</td>{}{}{}{}{light}{}<td>{}</td></tr>",
-            english(lang, &p.label),
+            case(lang, &p.label),
             time(p, &at),
             readable(p.seconds_median / base),
             cell("errors/rel_rmse", p.errors.rel_rmse),
