@@ -4,7 +4,8 @@
 //! the machine.
 
 use criterion::{black_box, criterion_group, Criterion};
-use validation::metals::{MetalLaws, MetalsReference, COURSE_GOLD_KAPPA, COURSE_GOLD_N};
+use radiometry::course::{GOLD_000_KAPPA, GOLD_000_N};
+use validation::metals::{MetalLaws, MetalsReference};
 use validation::reference::committed_dir;
 use validation::speed::{rgb_lab, spectral_lab};
 
@@ -25,14 +26,7 @@ fn metal_colour(c: &mut Criterion) {
         b.iter(|| spectral_lab(&laws, &index, black_box(cos_60deg)))
     });
     c.bench_function(RGB, |b| {
-        b.iter(|| {
-            rgb_lab(
-                &laws,
-                COURSE_GOLD_N,
-                COURSE_GOLD_KAPPA,
-                black_box(cos_60deg),
-            )
-        })
+        b.iter(|| rgb_lab(&laws, GOLD_000_N, GOLD_000_KAPPA, black_box(cos_60deg)))
     });
 }
 

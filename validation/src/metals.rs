@@ -23,6 +23,7 @@
 //! as a three-wavelength renderer does.
 
 use radiometry::colour;
+use radiometry::course::{GOLD_000_KAPPA, GOLD_000_N};
 use radiometry::fresnel;
 use radiometry::spectrum::{self, SAMPLES};
 use serde::{Deserialize, Serialize};
@@ -39,11 +40,6 @@ pub const REFLECTANCE_ABS: f64 = 1e-13;
 pub const FILE: &str = "metals.json";
 /// Its schema.
 pub const SCHEMA: &str = "metals/1";
-
-/// The course's three-wavelength gold (seed `000`): `n` per channel.
-pub const COURSE_GOLD_N: [f64; 3] = radiometry::course::GOLD_000_N;
-/// The course's three-wavelength gold: `κ` per channel.
-pub const COURSE_GOLD_KAPPA: [f64; 3] = radiometry::course::GOLD_000_KAPPA;
 
 /// Wavelength choices for the per-channel shortcut: a label and `[R, G, B]` in nm.
 pub const WAVELENGTH_CHOICES: [(&str, [f64; 3]); 2] = [
@@ -280,7 +276,7 @@ pub fn shortcut_colours(laws: &MetalLaws, reference: &MetalsReference) -> Vec<Me
             if metal.name == "gold" {
                 push(
                     "course RGB n, κ (seed 000)",
-                    three_channel(laws, cos_i, COURSE_GOLD_N, COURSE_GOLD_KAPPA),
+                    three_channel(laws, cos_i, GOLD_000_N, GOLD_000_KAPPA),
                 );
             }
             for (name, nm) in WAVELENGTH_CHOICES {

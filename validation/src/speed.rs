@@ -11,7 +11,8 @@ use radiometry::colour;
 use radiometry::spectrum::{self, SAMPLES};
 use serde::Serialize;
 
-use crate::metals::{Metal, MetalLaws, COURSE_GOLD_KAPPA, COURSE_GOLD_N};
+use crate::metals::{Metal, MetalLaws};
+use radiometry::course::{GOLD_000_KAPPA, GOLD_000_N};
 
 /// One timed method.
 #[derive(Clone, Debug, Serialize)]
@@ -66,7 +67,7 @@ pub fn time_gold(laws: &MetalLaws, gold: &Metal, iterations: u64) -> Option<[Tim
             |c| spectral_lab(laws, &index, c),
         ),
         time("course RGB: 3 wavelengths, matrix, Lab", iterations, |c| {
-            rgb_lab(laws, COURSE_GOLD_N, COURSE_GOLD_KAPPA, c)
+            rgb_lab(laws, GOLD_000_N, GOLD_000_KAPPA, c)
         }),
     ])
 }

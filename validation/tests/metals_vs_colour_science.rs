@@ -87,8 +87,8 @@ fn a_scenes_three_channel_metal_is_measured_as_the_course_gold() {
     let measured = metals::three_channel_delta_e(
         &laws,
         gold,
-        metals::COURSE_GOLD_N,
-        metals::COURSE_GOLD_KAPPA,
+        radiometry::course::GOLD_000_N,
+        radiometry::course::GOLD_000_KAPPA,
     )
     .unwrap();
     let table: Vec<(f64, f64)> = metals::shortcut_colours(&laws, &reference)

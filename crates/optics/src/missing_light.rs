@@ -115,8 +115,16 @@ fn reference_line(m: &Measured, integrator: IntegratorKind, lang: Lang) -> Strin
         m.file,
         m.surface.0,
         m.surface.1,
-        m.diffuse.map_or_else(|| lang.pick("none", "nincs ilyen").to_owned(), |d| format!("{:.3} ± {:.3}", d.0, d.1)),
+        diffuse_share(m.diffuse, lang),
         verdict
+    )
+}
+
+/// A diffuse region's share and its standard error, or that there is none.
+fn diffuse_share(share: Option<(f64, f64)>, lang: Lang) -> String {
+    share.map_or_else(
+        || lang.pick("none", "nincs ilyen").to_owned(),
+        |d| format!("{:.3} ± {:.3}", d.0, d.1),
     )
 }
 
@@ -130,10 +138,7 @@ struct Here {
 
 /// The line of a measurement on the scene itself.
 fn here_line(h: &Here, job: &RenderJob, lang: Lang) -> String {
-    let diffuse = h.diffuse.map_or_else(
-        || lang.pick("none", "nincs ilyen").to_owned(),
-        |d| format!("{:.3} ± {:.3}", d.0, d.1),
-    );
+    let diffuse = diffuse_share(h.diffuse, lang);
     say!(
         lang,
         "measured on the scene as written, its materials, background and ambient light included ({} renders each of path and photon, {} samples per pixel, {:.1} s): path misses {:.3} ± {:.3} of the light photon finds where the camera sees a surface, {} where it sees a diffuse one; the photon map's own blur of a caustic is not in that error",

@@ -409,8 +409,8 @@ fn a_metal_scene_carries_its_metals_rgb_error_and_its_depth_and_schlick_findings
     let want = metals::three_channel_delta_e(
         &MetalLaws::radiometry(),
         gold,
-        f32s(metals::COURSE_GOLD_N),
-        f32s(metals::COURSE_GOLD_KAPPA),
+        f32s(radiometry::course::GOLD_000_N),
+        f32s(radiometry::course::GOLD_000_KAPPA),
     )
     .unwrap();
     let got = rgb["delta_e"].as_array().unwrap();
